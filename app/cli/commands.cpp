@@ -1,0 +1,129 @@
+#include "cli/commands.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "cli/session.h"
+#include "scene/scene_catalog.h"
+
+namespace shadelab {
+
+static int fail(const std::string& message) {
+  std::fprintf(stderr, "shadelab: %s\n", message.c_str());
+  return 1;
+}
+
+static std::string passSummary(const std::vector<gl::PassTiming>& passes) {
+  std::string s;
+  for (auto& p : passes) s += (s.empty() ? "" : ", ") + p.name + " " + formatNumber(p.gpuMs) + " ms";
+  return s.empty() ? "none" : s;
+}
+
+int runRender(const Options& o) {
+  if (o.out.empty()) return fail("render: --out FILE.png is required");
+  Session s;
+  if (auto err = openSession(o, s); !err.empty()) return fail(err);
+  LabHost& host = *s.host;
+  const TimedFrames t = renderTimed(host, o.size, o.time, o.warmup, o.frames);
+  ImageF image = host.readImage();
+  if (auto err = writePng(o.out, image); !err.empty()) return fail(err);
+
+  nlohmann::json meta = host.stateJson();
+  meta["size"] = {o.size.x, o.size.y};
+  meta["time"] = o.time;
+  meta["renderer"] = s.context->describe();
+  meta["gpu_ms"] = t.gpuMs;
+  meta["passes"] = nlohmann::json::array();
+  for (auto& p : t.passes) meta["passes"].push_back({{"name", p.name}, {"gpu_ms", p.gpuMs}, {"cpu_ms", p.cpuMs}});
+  meta["non_finite_values"] = countNonFinite(image);
+  meta["warnings"] = host.warnings();
+  const std::string jsonPath = std::filesystem::path(o.out).replace_extension(".json").string();
+  std::ofstream(jsonPath + ".tmp") << meta.dump(2) << "\n";
+  std::filesystem::rename(jsonPath + ".tmp", jsonPath);
+
+  for (auto& w : host.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  std::printf("%s: %dx%d, lab %s, scene %s, passes: %s (median of %d frames)\n", o.out.c_str(), o.size.x, o.size.y,
+              std::string(host.lab().id()).c_str(), host.sceneId().c_str(), passSummary(t.passes).c_str(), o.frames);
+  return 0;
+}
+
+int runList(const Options& o) {
+  std::printf("labs:\n");
+  for (auto& id : labIds()) {
+    auto lab = makeLab(id);
+    std::printf("%s  %s\n  %s\n  default scene: %s\n  params:\n", id.c_str(), std::string(lab->title()).c_str(),
+                std::string(lab->summary()).c_str(), std::string(lab->defaultScene()).c_str());
+    DescribeParams d(id);
+    lab->visitParams(d);
+    for (auto& line : d.lines) std::printf("  %s\n", line.c_str());
+    std::printf("  stress cases:");
+    for (auto& c : lab->stressCases()) std::printf(" %s", c.name.c_str());
+    std::printf("\n");
+  }
+  std::printf("\nscenes (or any .gltf/.glb/.obj/.off file):\n");
+  for (auto& s : listScenes()) std::printf("  %-14s %s\n", s.id.c_str(), s.description.c_str());
+  std::printf("\nheadless backends: %s\n", std::string(kHeadlessBackends).c_str());
+  return 0;
+}
+
+int runCheckShaders(const Options& o) {
+  std::string err;
+  auto context = createHeadlessContext(o.backend, err);
+  if (!context) return fail(err);
+  ShaderLibrary shaders(shaderSearchPath(o));
+  int programs = 0, failed = 0;
+  for (auto& id : labIds()) {
+    if (!o.lab.empty() && id != o.lab) continue;
+    for (auto& spec : makeLab(id)->allPrograms()) {
+      ++programs;
+      auto p = shaders.program(spec);  // diagnostics go to stderr as file:line:col: error: ...
+      if (!p->hasGoodProgram()) {
+        ++failed;
+        std::string defines;
+        for (auto& [n, v] : spec.defines) defines += " " + n + "=" + v;
+        std::fprintf(stderr, "FAIL %s:%s\n", spec.name.c_str(), defines.c_str());
+      }
+    }
+  }
+  std::printf("check-shaders: %d programs, %d failed (%s)\n", programs, failed, context->describe().c_str());
+  return failed ? 1 : 0;
+}
+
+int runStress(const Options& o) {
+  Session s;
+  if (auto err = openSession(o, s); !err.empty()) return fail(err);
+  LabHost& host = *s.host;
+  const Settings defaults = host.currentSettings();
+  const std::string defaultScene = host.sceneId();
+  const auto cases = host.lab().stressCases();
+  const glm::ivec2 size = o.sizeGiven ? o.size : glm::ivec2(320, 180);
+  int failures = 0, n = 0;
+  for (auto& c : cases) {
+    host.applySettings(defaults);
+    std::string why;
+    const std::string scene = c.scene.empty() ? defaultScene : c.scene;
+    if (scene != host.sceneId()) why = host.selectScene(scene);
+    else host.resetCamera();
+    if (why.empty()) why = host.applySettings(c.settings);
+    if (why.empty()) why = applyCamera(host, c.camera);
+    if (why.empty()) {
+      host.renderFrame(size, o.time);
+      const ImageF image = host.readImage();
+      const size_t bad = countNonFinite(image);
+      if (bad) why = std::to_string(bad) + " NaN/Inf values in the float target";
+      if (why.empty() && !c.expectWarning.empty()) {
+        bool warned = false;
+        for (auto& w : host.warnings()) warned |= w.find(c.expectWarning) != std::string::npos;
+        if (!warned) why = "expected a warning containing '" + c.expectWarning + "'";
+      }
+    }
+    progress(++n, int(cases.size()), c.name);
+    std::printf("%s %s%s%s\n", why.empty() ? "PASS" : "FAIL", c.name.c_str(), why.empty() ? "" : ": ", why.c_str());
+    failures += !why.empty();
+  }
+  std::printf("stress %s: %d passed, %d failed\n", std::string(host.lab().id()).c_str(), int(cases.size()) - failures,
+              failures);
+  return failures ? 1 : 0;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,14 @@
+// The headless subcommands. Each returns the process exit code and prints errors as one line
+// on stderr.
+#pragma once
+#include "cli/options.h"
+
+namespace shadelab {
+
+int runRender(const Options& o);
+int runList(const Options& o);
+int runCheckShaders(const Options& o);
+int runSweep(const Options& o);
+int runStress(const Options& o);
+
+}  // namespace shadelab

@@ -1,0 +1,97 @@
+#include "cli/options.h"
+
+#include <cstdlib>
+
+namespace shadelab {
+
+std::string usage() {
+  return R"(usage: shadelab [COMMAND] [OPTIONS]
+
+commands:
+  (none)          open the window (GLFW + Dear ImGui)
+  render          render one frame headless:   --out FILE.png (a FILE.json of the settings is written beside it)
+  sweep           error against GPU time:      --out DIR [--vary key=a,b,c ...]  (no --vary: the lab's standard sweep)
+  stress          run the lab's extreme cases; non-zero exit if any fails
+  list            labs, their parameters with ranges, and scenes
+  check-shaders   compile every program and variant of every lab; non-zero exit on any error
+
+options:
+  --lab ID            lab to run (see `shadelab list`)
+  --scene NAME|FILE   procedural scene name, or a .gltf/.glb/.obj/.off file
+  --set LAB.KEY=VAL   set a parameter (repeatable)
+  --preset FILE.json  load lab, scene, params and camera saved by the app or by render
+  --size WxH          image size (default 960x540)
+  --camera SPEC       yaw=30,pitch=20,distance=4,target=x;y;z,fov=45,near=0.1,far=100
+  --time SECONDS      scene time for repeatable frames (default 0)
+  --frames N          timed frames per configuration, medians reported (default 5)
+  --shaders DIR       search DIR for shader files before shaders/ (repeatable; first wins)
+  --backend NAME      headless context: osmesa (default) or egl
+  --out PATH          output file or folder
+  -h, --help          this text
+)";
+}
+
+static std::string parseSize(const std::string& text, glm::ivec2& size) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 16 || h < 16 || w > 16384 ||
+      h > 16384)
+    return "--size: '" + text + "' is not WxH with 16 <= W,H <= 16384 (e.g. 1280x720)";
+  size = {w, h};
+  return {};
+}
+
+std::string parseOptions(int argc, char** argv, Options& o) {
+  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders"};
+  int i = 1;
+  if (i < argc && argv[i][0] != '-') {
+    o.command = argv[i++];
+    bool known = false;
+    for (auto c : kCommands) known |= o.command == c;
+    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders)";
+  }
+  for (; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      o.help = true;
+      continue;
+    }
+    if (arg.rfind("--", 0) != 0) return "unexpected argument '" + arg + "' (see --help)";
+    if (i + 1 >= argc) return arg + ": missing value";
+    const std::string v = argv[++i];
+    if (arg == "--lab") o.lab = v;
+    else if (arg == "--scene") o.scene = v;
+    else if (arg == "--set") o.sets.push_back(v);
+    else if (arg == "--vary") o.varies.push_back(v);
+    else if (arg == "--shaders") o.shaderDirs.emplace_back(v);
+    else if (arg == "--camera") o.camera = v;
+    else if (arg == "--preset") o.preset = v;
+    else if (arg == "--backend") o.backend = v;
+    else if (arg == "--out") o.out = v;
+    else if (arg == "--size") {
+      if (auto e = parseSize(v, o.size); !e.empty()) return e;
+      o.sizeGiven = true;
+    } else if (arg == "--time" || arg == "--frames") {
+      char* end = nullptr;
+      const double d = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end || !(d >= 0) || d > 1e6) return arg + ": '" + v + "' is not a number >= 0";
+      if (arg == "--time") o.time = float(d);
+      else if (d < 1 || d != int(d)) return "--frames: '" + v + "' is not an integer >= 1";
+      else o.frames = int(d);
+    } else {
+      return "unknown option '" + arg +
+             "' (valid: --lab, --scene, --set, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
+             "--backend, --out)";
+    }
+  }
+  for (auto& dir : o.shaderDirs)
+    if (!std::filesystem::is_directory(dir)) return "--shaders: '" + dir.string() + "' is not a folder";
+  return {};
+}
+
+std::filesystem::path builtinShaderDir() {
+  if (const char* env = std::getenv("SHADELAB_SHADERS"); env && *env) return env;
+  return std::filesystem::path(SHADELAB_SOURCE_DIR) / "shaders";
+}
+
+}  // namespace shadelab

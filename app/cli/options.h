@@ -1,0 +1,38 @@
+// Command-line options shared by every subcommand.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace shadelab {
+
+struct Options {
+  std::string command;  // "" (window), render, sweep, stress, list, check-shaders
+  std::string lab;      // "" = the default (or the preset's)
+  std::string scene;    // "" = the lab's default
+  std::vector<std::string> sets;                 // --set lab.key=value, in order
+  std::vector<std::string> varies;               // --vary key=a,b,c (sweep)
+  std::vector<std::filesystem::path> shaderDirs; // --shaders DIR (student folders, searched first)
+  std::string camera;                            // --camera yaw=..,pitch=..
+  std::string preset;                            // --preset file.json (as written by the app)
+  std::string backend = "osmesa";                // --backend osmesa|egl
+  std::string out;                               // --out file.png (render) or DIR (sweep)
+  glm::ivec2 size{960, 540};
+  bool sizeGiven = false;
+  float time = 0.0f;
+  int frames = 5;                                // timed frames per configuration (medians)
+  int warmup = 2;
+  bool help = false;
+};
+
+// Returns "" or a one-line error naming the bad option and what is valid.
+std::string parseOptions(int argc, char** argv, Options& out);
+std::string usage();
+
+// The built-in shader folder: $SHADELAB_SHADERS, else shaders/ in the source tree.
+std::filesystem::path builtinShaderDir();
+
+}  // namespace shadelab

@@ -1,0 +1,89 @@
+#include "cli/session.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+namespace shadelab {
+
+ShaderSearchPath shaderSearchPath(const Options& o) {
+  std::vector<std::filesystem::path> roots = o.shaderDirs;
+  roots.push_back(builtinShaderDir());
+  return ShaderSearchPath(roots);
+}
+
+std::string applyCamera(LabHost& host, const std::string& spec) {
+  if (spec.empty()) return {};
+  if (auto err = host.camera().parse(spec); !err.empty()) return err;
+  if (spec.find("near=") == std::string::npos && spec.find("far=") == std::string::npos) {
+    const Bounds b = host.scene().worldBounds();
+    host.camera().fitDepthRange(b.center(), b.radius());
+  }
+  return {};
+}
+
+std::string openSession(const Options& o, Session& s) {
+  std::string err;
+  s.context = createHeadlessContext(o.backend, err);
+  if (!s.context) return err;
+  s.host = std::make_unique<LabHost>(shaderSearchPath(o));
+  LabHost& host = *s.host;
+  if (!o.preset.empty()) {
+    std::ifstream in(o.preset);
+    if (!in) return o.preset + ": cannot open preset";
+    nlohmann::json state = nlohmann::json::parse(in, nullptr, false);
+    if (state.is_discarded()) return o.preset + ": not valid JSON";
+    if (auto e = host.applyStateJson(state); !e.empty()) return o.preset + ": " + e;
+  }
+  if (!o.lab.empty() && o.lab != host.lab().id())
+    if (auto e = host.selectLab(o.lab); !e.empty()) return e;
+  if (!o.scene.empty())
+    if (auto e = host.selectScene(o.scene); !e.empty()) return e;
+  for (auto& s : o.sets)
+    if (auto e = host.set(s); !e.empty()) return "--set: " + e;
+  return applyCamera(host, o.camera);
+}
+
+static double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+TimedFrames renderTimed(LabHost& host, glm::ivec2 size, float time, int warmup, int frames) {
+  for (int i = 0; i < warmup; ++i) host.renderFrame(size, time);
+  std::vector<double> gpu, cpu;
+  std::vector<std::vector<double>> perPass;
+  TimedFrames out;
+  for (int i = 0; i < std::max(frames, 1); ++i) {
+    const auto& passes = host.renderFrame(size, time);
+    double g = 0, c = 0;
+    perPass.resize(std::max(perPass.size(), passes.size()));
+    for (size_t p = 0; p < passes.size(); ++p) {
+      g += passes[p].gpuMs;
+      c += passes[p].cpuMs;
+      perPass[p].push_back(passes[p].gpuMs);
+    }
+    gpu.push_back(g);
+    cpu.push_back(c);
+    out.passes = passes;
+  }
+  out.gpuMs = median(gpu);
+  out.cpuMs = median(cpu);
+  for (size_t p = 0; p < out.passes.size() && p < perPass.size(); ++p) out.passes[p].gpuMs = median(perPass[p]);
+  return out;
+}
+
+void progress(int done, int total, const std::string& label) {
+  const int width = 24, filled = total > 0 ? width * done / total : width;
+  std::string bar(size_t(filled), '#');
+  bar.resize(size_t(width), '.');
+  const bool tty = isatty(fileno(stderr));
+  std::fprintf(stderr, "%s[%s] %d/%d %s%s", tty ? "\r\033[K" : "", bar.c_str(), done, total, label.c_str(),
+               tty && done < total ? "" : "\n");
+  std::fflush(stderr);
+}
+
+}  // namespace shadelab

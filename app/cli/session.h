@@ -1,0 +1,35 @@
+// A headless session: context + host, configured from the command line in a fixed order
+// (preset, lab, scene, --set, camera), so `render`, `sweep` and `stress` agree on a frame.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "cli/options.h"
+#include "context/gl_context.h"
+#include "host/lab_host.h"
+
+namespace shadelab {
+
+struct Session {
+  std::unique_ptr<GlContext> context;
+  std::unique_ptr<LabHost> host;
+};
+
+ShaderSearchPath shaderSearchPath(const Options& o);
+// Returns "" or the one-line error to print; `s` is usable only on success.
+std::string openSession(const Options& o, Session& s);
+// Applies the camera option: parsed over the framed camera; near/far refit unless given.
+std::string applyCamera(LabHost& host, const std::string& spec);
+
+struct TimedFrames {
+  double gpuMs = 0;  // median over the timed frames of the frame's summed pass times
+  double cpuMs = 0;
+  std::vector<gl::PassTiming> passes;  // per pass, medians
+};
+// Renders `warmup` untimed frames, then `frames` timed ones.
+TimedFrames renderTimed(LabHost& host, glm::ivec2 size, float time, int warmup, int frames);
+
+// "[#######.......] 7/15 label" on stderr, redrawn in place.
+void progress(int done, int total, const std::string& label);
+
+}  // namespace shadelab

@@ -1,0 +1,138 @@
+// shadelab sweep: every combination of the varied parameters, each rendered, timed and
+// compared with the lab's reference; CSV + HTML report with error-against-GPU-time plots.
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include "cli/commands.h"
+#include "cli/session.h"
+#include "measure/report.h"
+
+namespace shadelab {
+
+static std::string parseVary(const std::string& text, SweepAxis& axis) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq + 1 >= text.size()) return "--vary: '" + text + "' is not key=a,b,c";
+  axis.key = text.substr(0, eq);
+  if (const auto dot = axis.key.find('.'); dot != std::string::npos) axis.key = axis.key.substr(dot + 1);
+  std::stringstream ss(text.substr(eq + 1));
+  std::string v;
+  while (std::getline(ss, v, ',')) axis.values.push_back(v);
+  return {};
+}
+
+static ImageF thumbnail(const ImageF& image) {
+  int f = 1;
+  while (image.size.x / (f + 1) >= 200) ++f;  // about 200-400 px wide
+  return downsample(image, f);
+}
+
+int runSweep(const Options& o) {
+  auto fail = [](const std::string& m) {
+    std::fprintf(stderr, "shadelab: %s\n", m.c_str());
+    return 1;
+  };
+  if (o.out.empty()) return fail("sweep: --out DIR is required");
+  Session s;
+  if (auto err = openSession(o, s); !err.empty()) return fail(err);
+  LabHost& host = *s.host;
+  const std::string labId(host.lab().id());
+
+  std::vector<SweepAxis> axes;
+  for (auto& v : o.varies) {
+    SweepAxis a;
+    if (auto err = parseVary(v, a); !err.empty()) return fail(err);
+    axes.push_back(a);
+  }
+  if (axes.empty()) axes = host.lab().standardSweep();
+  if (axes.empty()) return fail("sweep: lab " + labId + " has no standard sweep; give --vary key=a,b,c");
+
+  // Validate every value before rendering anything.
+  const Settings base = host.currentSettings();
+  for (auto& a : axes)
+    for (auto& v : a.values)
+      if (auto err = host.set(a.key + "=" + v); !err.empty()) return fail("--vary: " + err);
+  host.applySettings(base);
+
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (!std::filesystem::is_directory(o.out)) return fail(o.out + ": cannot create the output folder");
+
+  size_t total = 1;
+  for (auto& a : axes) total *= a.values.size();
+  SweepReport report;
+  report.title = "ShadeLab sweep: " + labId + " on " + host.sceneId() + " at " + std::to_string(o.size.x) + "x" +
+                 std::to_string(o.size.y);
+  report.renderer = s.context->describe();
+  report.reference = host.lab().reference().description;
+  report.errorKeys = {"rmse", "max_error"};
+  std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
+                    std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
+  for (auto& v : o.varies) cmd += " --vary " + v;
+  for (auto& v : o.sets) cmd += " --set " + v;
+  if (!o.camera.empty()) cmd += " --camera '" + o.camera + "'";
+  cmd += " --out " + o.out;
+  report.command = cmd;
+
+  std::map<std::string, ImageF> references;  // keyed by the settings the reference actually uses
+  for (size_t index = 0; index < total; ++index) {
+    host.applySettings(base);
+    std::string label;
+    size_t rest = index;
+    for (auto it = axes.rbegin(); it != axes.rend(); ++it) {
+      const std::string& v = it->values[rest % it->values.size()];
+      rest /= it->values.size();
+      host.set(it->key + "=" + v);
+    }
+    for (auto& a : axes) {
+      CollectAsText c;
+      host.lab().visitParams(c);
+      for (auto& [k, v] : c.values)
+        if (k == a.key) label += (label.empty() ? "" : " ") + k + "=" + v;
+    }
+    progress(int(index), int(total), label);
+
+    const Settings settings = host.currentSettings();
+    host.applySettings(host.lab().reference().overrides);
+    std::string refKey;
+    for (auto& [k, v] : host.currentSettings()) refKey += k + "=" + v + ";";
+    host.applySettings(settings);
+    if (!references.count(refKey)) references[refKey] = host.renderReference(o.size, o.time);
+    const ImageF& reference = references[refKey];
+
+    const TimedFrames t = renderTimed(host, o.size, o.time, o.warmup, o.frames);
+    const ImageF image = host.readImage();
+    const ImageError err = compareImages(image, reference);
+
+    SweepRow row;
+    row.params = settings;
+    row.label = label;
+    row.group = label.substr(0, label.find(' '));
+    row.values = {{"rmse", err.rmse}, {"max_error", err.maxError}, {"mean_error", err.meanError},
+                  {"bad_pixel_pct", err.badPixelPct}, {"non_finite", double(countNonFinite(image))},
+                  {"gpu_ms", t.gpuMs}, {"cpu_ms", t.cpuMs}};
+    row.thumbnail = thumbnail(image);
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%03zu.png", index);
+    writePng(o.out + name, image);
+    if (report.referenceThumbnail.rgba.empty()) {
+      report.referenceThumbnail = thumbnail(reference);
+      writePng(o.out + "/reference.png", reference);
+    }
+    report.rows.push_back(std::move(row));
+  }
+  progress(int(total), int(total), "done");
+
+  const std::string csvPath = o.out + "/" + labId + "_sweep.csv", htmlPath = o.out + "/" + labId + "_sweep.html";
+  if (auto err = writeTextFile(csvPath, sweepCsv(report)); !err.empty()) return fail(err);
+  if (auto err = writeTextFile(htmlPath, sweepHtml(report)); !err.empty()) return fail(err);
+  std::printf("%-40s %10s %10s %10s\n", "configuration", "rmse", "max_error", "gpu_ms");
+  for (auto& row : report.rows)
+    std::printf("%-40s %10.5f %10.5f %10.3f\n", row.label.c_str(), row.value("rmse"), row.value("max_error"),
+                row.value("gpu_ms"));
+  std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
+  return 0;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,38 @@
+#include "gl/gl.h"
+
+namespace gl {
+
+bool loadFunctions(ShlGetProcAddress getProc, const char** missing) {
+  shlLoadGL(getProc);
+  // A handful of functions are enough to tell a usable 3.3+ core context from a broken one;
+  // later-version entry points may legitimately be absent on older drivers.
+  const bool usable = glGetString && glGenVertexArrays && glCreateShader && glGenQueries && glTexImage2D;
+  if (!usable && missing) *missing = shlFirstMissingGL();
+  return usable;
+}
+
+const char* errorString(GLenum error) {
+  switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    default: return "GL_UNKNOWN_ERROR";
+  }
+}
+
+std::string drainErrors() {
+  std::string out;
+  for (int i = 0; i < 16; ++i) {  // bounded: a lost context can report errors forever
+    GLenum e = glGetError();
+    if (e == GL_NO_ERROR) break;
+    if (!out.empty()) out += ", ";
+    out += errorString(e);
+  }
+  return out;
+}
+
+}  // namespace gl

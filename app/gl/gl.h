@@ -1,0 +1,23 @@
+// The one include for OpenGL in ShadeLab: the generated core-profile loader plus the few
+// extension tokens the labs use. Raw GL calls belong in app/gl/ and in a lab's render().
+#pragma once
+#include <string>
+
+#include "gl_loader.h"
+
+#ifndef GL_TEXTURE_MAX_ANISOTROPY
+#define GL_TEXTURE_MAX_ANISOTROPY 0x84FE  // ARB_texture_filter_anisotropic (core in 4.6)
+#define GL_MAX_TEXTURE_MAX_ANISOTROPY 0x84FF
+#endif
+
+namespace gl {
+
+// Fills the loader through the context's getProcAddress. Returns false (with the name of the
+// first missing function in `missing`) when the context lacks a core function we rely on.
+bool loadFunctions(ShlGetProcAddress getProc, const char** missing = nullptr);
+
+// Drains glGetError; returns "" or a comma-separated list such as "GL_INVALID_ENUM".
+const char* errorString(GLenum error);
+std::string drainErrors();
+
+}  // namespace gl

@@ -1,0 +1,74 @@
+#include "gl/pass_timer.h"
+
+#include <cassert>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+
+namespace gl {
+
+static double nowMs() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+PassTimer::PassTimer() {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
+  clock_ = software ? Clock::Finish : Clock::GpuQuery;
+  if (const char* env = std::getenv("SHADELAB_TIMER")) {
+    if (std::strcmp(env, "query") == 0) clock_ = Clock::GpuQuery;
+    if (std::strcmp(env, "finish") == 0) clock_ = Clock::Finish;
+  }
+}
+
+const char* PassTimer::clockName() const {
+  return clock_ == Clock::GpuQuery ? "GL_TIME_ELAPSED queries" : "wall time between glFinish calls";
+}
+
+void PassTimer::beginFrame() {
+  passes_.clear();
+  inPass_ = false;
+}
+
+void PassTimer::begin(std::string name) {
+  assert(!inPass_ && "GPU passes cannot nest");
+  const size_t q = passes_.size();
+  if (clock_ == Clock::Finish) {
+    glFinish();  // earlier work must not count against this pass
+  } else {
+    if (q == pool_.size()) pool_.push_back(Query::make());
+    glBeginQuery(GL_TIME_ELAPSED, pool_[q].get());
+  }
+  passes_.push_back({{std::move(name), 0.0, 0.0}, nowMs()});
+  inPass_ = true;
+}
+
+void PassTimer::end() {
+  assert(inPass_);
+  Open& p = passes_.back();
+  p.timing.cpuMs = nowMs() - p.start;
+  if (clock_ == Clock::Finish) {
+    glFinish();
+    p.timing.gpuMs = nowMs() - p.start;
+  } else {
+    glEndQuery(GL_TIME_ELAPSED);
+  }
+  inPass_ = false;
+}
+
+const std::vector<PassTiming>& PassTimer::endFrame() {
+  last_.clear();
+  for (size_t i = 0; i < passes_.size(); ++i) {
+    if (clock_ == Clock::GpuQuery) {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(pool_[i].get(), GL_QUERY_RESULT, &ns);
+      passes_[i].timing.gpuMs = double(ns) * 1e-6;
+    }
+    last_.push_back(passes_[i].timing);
+  }
+  passes_.clear();
+  return last_;
+}
+
+}  // namespace gl

@@ -1,0 +1,90 @@
+#include "gl/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gl {
+
+static int fullMipChain(glm::ivec2 s) { return 1 + int(std::floor(std::log2(std::max(1, std::max(s.x, s.y))))); }
+
+Texture2D Texture2D::allocate(glm::ivec2 size, GLenum internalFormat, int levels) {
+  Texture2D t;
+  t.name_ = TextureName::make();
+  t.size_ = size;
+  t.levels_ = levels > 0 ? levels : fullMipChain(size);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexStorage2D(GL_TEXTURE_2D, t.levels_, internalFormat, size.x, size.y);
+  SamplerState s;
+  s.minFilter = t.levels_ > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR;
+  s.wrapS = s.wrapT = GL_CLAMP_TO_EDGE;
+  t.setSampler(s);
+  return t;
+}
+
+Texture2D Texture2D::fromRgba8(glm::ivec2 size, const uint8_t* pixels, const SamplerState& sampler, bool srgb) {
+  const bool mips = sampler.minFilter != GL_LINEAR && sampler.minFilter != GL_NEAREST;
+  Texture2D t = allocate(size, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, mips ? 0 : 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  if (mips) glGenerateMipmap(GL_TEXTURE_2D);
+  t.setSampler(sampler);
+  return t;
+}
+
+void Texture2D::setSampler(const SamplerState& s) const {
+  glBindTexture(GL_TEXTURE_2D, id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, s.minFilter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, s.magFilter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, s.wrapS);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, s.wrapT);
+  if (s.maxAnisotropy > 1.0f) {
+    float limit = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &limit);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, std::min(s.maxAnisotropy, limit));
+  }
+}
+
+void Texture2D::bind(int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, id());
+}
+
+RenderTarget RenderTarget::create(glm::ivec2 size, GLenum colorFormat) {
+  RenderTarget rt;
+  rt.size_ = size;
+  rt.color_ = Texture2D::allocate(size, colorFormat, 1);
+  rt.depth_ = Renderbuffer::make();
+  glBindRenderbuffer(GL_RENDERBUFFER, rt.depth_.get());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);
+  rt.fbo_ = FramebufferName::make();
+  glBindFramebuffer(GL_FRAMEBUFFER, rt.fbo_.get());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, rt.color_.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rt.depth_.get());
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("render target " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                             " is incomplete (status 0x" + std::to_string(status) + ")");
+  return rt;
+}
+
+void RenderTarget::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+  glViewport(0, 0, size_.x, size_.y);
+}
+
+std::vector<float> RenderTarget::readRgba() const {
+  std::vector<float> rows(size_t(size_.x) * size_.y * 4), flipped(rows.size());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, rows.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  const size_t stride = size_t(size_.x) * 4;
+  for (int y = 0; y < size_.y; ++y)
+    std::copy_n(rows.begin() + (size_.y - 1 - y) * stride, stride, flipped.begin() + y * stride);
+  return flipped;
+}
+
+}  // namespace gl

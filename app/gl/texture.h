@@ -1,0 +1,58 @@
+// 2D textures and offscreen render targets.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "gl/handle.h"
+
+namespace gl {
+
+struct SamplerState {
+  GLenum minFilter = GL_LINEAR_MIPMAP_LINEAR;
+  GLenum magFilter = GL_LINEAR;
+  GLenum wrapS = GL_REPEAT;
+  GLenum wrapT = GL_REPEAT;
+  float maxAnisotropy = 1.0f;  // 1 = isotropic; clamped to the driver's limit
+};
+
+class Texture2D {
+ public:
+  Texture2D() = default;
+  // Immutable storage of `levels` mip levels (0 = full chain) in `internalFormat`.
+  static Texture2D allocate(glm::ivec2 size, GLenum internalFormat, int levels = 1);
+  // RGBA8 pixels, rows bottom-up as GL expects; builds mipmaps when the sampler asks for them.
+  static Texture2D fromRgba8(glm::ivec2 size, const uint8_t* pixels, const SamplerState& sampler, bool srgb);
+
+  void setSampler(const SamplerState& s) const;
+  void bind(int unit) const;
+  GLuint id() const { return name_.get(); }
+  glm::ivec2 size() const { return size_; }
+  explicit operator bool() const { return bool(name_); }
+
+ private:
+  TextureName name_;
+  glm::ivec2 size_{0};
+  int levels_ = 1;
+};
+
+// Colour (float, so NaN and values above 1 survive for the stability scans) + depth.
+class RenderTarget {
+ public:
+  static RenderTarget create(glm::ivec2 size, GLenum colorFormat = GL_RGBA16F);
+  void bind() const;
+  glm::ivec2 size() const { return size_; }
+  const Texture2D& color() const { return color_; }
+  GLuint fbo() const { return fbo_.get(); }
+  // Reads the colour attachment as RGBA float, rows top-down (image order).
+  std::vector<float> readRgba() const;
+
+ private:
+  FramebufferName fbo_;
+  Texture2D color_;
+  Renderbuffer depth_;
+  glm::ivec2 size_{0};
+};
+
+}  // namespace gl

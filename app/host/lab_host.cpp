@@ -1,0 +1,155 @@
+#include "host/lab_host.h"
+
+#include "scene/scene_catalog.h"
+
+namespace shadelab {
+
+LabHost::LabHost(ShaderSearchPath shaderPath) : shaders_(std::make_unique<ShaderLibrary>(std::move(shaderPath))) {
+  selectLab(labIds().front());
+}
+
+LabHost::~LabHost() {
+  if (lab_ && labReady_) lab_->teardown();
+}
+
+std::string LabHost::selectLab(std::string_view id) {
+  auto next = makeLab(id);
+  if (!next) {
+    std::string valid;
+    for (auto& l : labIds()) valid += (valid.empty() ? "" : ", ") + l;
+    return "unknown lab '" + std::string(id) + "' (valid: " + valid + ")";
+  }
+  LabContext ctx{*shaders_};
+  if (auto err = next->setup(ctx); !err.empty()) {
+    next->teardown();
+    return std::string(id) + ": setup failed: " + err;
+  }
+  if (lab_ && labReady_) lab_->teardown();
+  lab_ = std::move(next);
+  labReady_ = true;
+  const std::string scene = std::string(lab_->defaultScene());
+  if (auto err = rebuildScene(scene, lab_->needs(), true); !err.empty()) return err;
+  return {};
+}
+
+std::string LabHost::selectScene(const std::string& idOrPath) {
+  return rebuildScene(idOrPath, lab_->needs(), true);
+}
+
+std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe) {
+  Scene next;
+  if (auto err = buildScene(id, needs, next); !err.empty()) return err;
+  std::vector<std::string> warnings = next.warnings;
+  GpuScene gpu;
+  gpu.upload(next, needs, warnings);
+  scene_ = std::move(next);
+  gpu_ = std::move(gpu);
+  sceneId_ = id;
+  builtNeeds_ = needs;
+  sceneWarnings_ = std::move(warnings);
+  ++sceneBuilds_;
+  if (reframe) resetCamera();
+  return {};
+}
+
+std::string LabHost::ensureScene() {
+  const SceneNeeds needs = lab_->needs();
+  if (needs == builtNeeds_ && !sceneId_.empty()) return {};
+  return rebuildScene(sceneId_, needs, false);
+}
+
+void LabHost::resetCamera() {
+  const Bounds b = scene_.worldBounds();
+  camera_ = OrbitCamera{};
+  camera_.frame(b.center(), b.radius());
+}
+
+std::string LabHost::set(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos) return "'" + assignment + "': expected key=value, e.g. " + std::string(lab_->id()) + ".mode=phong";
+  std::string key = assignment.substr(0, eq);
+  const std::string value = assignment.substr(eq + 1);
+  const std::string prefix = std::string(lab_->id()) + ".";
+  if (key.rfind(prefix, 0) == 0) key = key.substr(prefix.size());
+  else if (key.find('.') != std::string::npos)
+    return "'" + key + "' belongs to another lab (the current lab is " + std::string(lab_->id()) + ")";
+  SetFromString setter(lab_->id(), key, value);
+  lab_->visitParams(setter);
+  return setter.result();
+}
+
+std::string LabHost::applySettings(const Settings& settings) {
+  for (auto& [k, v] : settings)
+    if (auto err = set(k + "=" + v); !err.empty()) return err;
+  return {};
+}
+
+Settings LabHost::currentSettings() {
+  CollectAsText c;
+  lab_->visitParams(c);
+  return c.values;
+}
+
+void LabHost::resetParams() { lab_->resetParams(); }
+
+const std::vector<gl::PassTiming>& LabHost::renderFrame(glm::ivec2 size, float time, float dt) {
+  shaders_->reloadChanged();
+  ensureScene();  // on failure the last good scene stays; warnings() tells why
+  if (!target_ || target_->size() != size) target_ = gl::RenderTarget::create(size);
+  lab_->update(dt);
+  timer_.beginFrame();
+  target_->bind();
+  Frame frame{*target_, scene_, gpu_, camera_, timer_, time};
+  lab_->render(frame);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  return timer_.endFrame();
+}
+
+ImageF LabHost::renderReference(glm::ivec2 size, float time) {
+  const ReferenceSpec spec = lab_->reference();
+  const Settings saved = currentSettings();
+  applySettings(spec.overrides);
+  const int ss = std::max(spec.supersample, 1);
+  renderFrame(size * ss, time);
+  ImageF ref = downsample(readImage(), ss);
+  applySettings(saved);
+  return ref;
+}
+
+std::vector<std::string> LabHost::warnings() const {
+  std::vector<std::string> w = sceneWarnings_;
+  for (auto& s : lab_->warnings()) w.push_back(s);
+  return w;
+}
+
+nlohmann::json LabHost::stateJson() {
+  nlohmann::json params = nlohmann::json::object();
+  for (auto& [k, v] : currentSettings()) params[k] = v;
+  return {{"lab", lab_->id()}, {"scene", sceneId_}, {"params", params}, {"camera", camera_.toString()}};
+}
+
+std::string LabHost::applyStateJson(const nlohmann::json& state) {
+  if (!state.is_object()) return "preset: expected a JSON object with lab, scene, params, camera";
+  if (state.contains("lab") && state["lab"].is_string() && state["lab"].get<std::string>() != lab_->id())
+    if (auto err = selectLab(state["lab"].get<std::string>()); !err.empty()) return err;
+  if (state.contains("scene") && state["scene"].is_string() && state["scene"].get<std::string>() != sceneId_)
+    if (auto err = selectScene(state["scene"].get<std::string>()); !err.empty()) return err;
+  if (state.contains("params")) {
+    if (!state["params"].is_object()) return "preset: 'params' must be an object of key: value";
+    const Settings before = currentSettings();
+    for (auto& [k, v] : state["params"].items()) {
+      const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+      if (auto err = set(k + "=" + text); !err.empty()) {
+        applySettings(before);  // all or nothing
+        return "preset: " + err;
+      }
+    }
+  }
+  if (state.contains("camera") && state["camera"].is_string())
+    if (auto err = camera_.parse(state["camera"].get<std::string>()); !err.empty()) return "preset: " + err;
+  return {};
+}
+
+}  // namespace shadelab

@@ -1,0 +1,216 @@
+#include "measure/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <stb_image_write.h>
+
+#include "labs/params.h"
+
+namespace shadelab {
+
+double SweepRow::value(const std::string& key) const {
+  for (auto& [k, v] : values)
+    if (k == key) return v;
+  return std::nan("");
+}
+
+std::string writeTextFile(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!(out << text)) return path + ": cannot write";
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  return ec ? path + ": " + ec.message() : std::string();
+}
+
+static std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string sweepCsv(const SweepReport& r) {
+  if (r.rows.empty()) return "";
+  std::string csv;
+  const auto& first = r.rows.front();
+  for (auto& [k, v] : first.params) csv += csvField(k) + ",";
+  for (size_t i = 0; i < first.values.size(); ++i) csv += csvField(first.values[i].first) + (i + 1 < first.values.size() ? "," : "\n");
+  for (auto& row : r.rows) {
+    for (auto& [k, v] : row.params) csv += csvField(v) + ",";
+    for (size_t i = 0; i < row.values.size(); ++i)
+      csv += formatNumber(row.values[i].second) + (i + 1 < row.values.size() ? "," : "\n");
+  }
+  return csv;
+}
+
+std::vector<size_t> paretoFront(const SweepReport& r, const std::string& errorKey) {
+  std::vector<size_t> order(r.rows.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return r.rows[a].value(r.costKey) < r.rows[b].value(r.costKey);
+  });
+  std::vector<size_t> front;
+  double best = INFINITY;
+  for (size_t i : order)
+    if (r.rows[i].value(errorKey) < best) {
+      best = r.rows[i].value(errorKey);
+      front.push_back(i);
+    }
+  return front;
+}
+
+namespace {
+
+std::string escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<') o += "&lt;";
+    else if (c == '>') o += "&gt;";
+    else if (c == '&') o += "&amp;";
+    else if (c == '"') o += "&quot;";
+    else o += c;
+  }
+  return o;
+}
+
+std::string base64(const std::vector<unsigned char>& data) {
+  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < data.size(); i += 3) {
+    const unsigned v = unsigned(data[i]) << 16 | (i + 1 < data.size() ? unsigned(data[i + 1]) << 8 : 0u) |
+                       (i + 2 < data.size() ? unsigned(data[i + 2]) : 0u);
+    out += t[(v >> 18) & 63];
+    out += t[(v >> 12) & 63];
+    out += i + 1 < data.size() ? t[(v >> 6) & 63] : '=';
+    out += i + 2 < data.size() ? t[v & 63] : '=';
+  }
+  return out;
+}
+
+std::string dataUri(const ImageF& img) {
+  if (img.rgba.empty()) return "";
+  std::vector<unsigned char> rgb(size_t(img.size.x) * img.size.y * 3), png;
+  for (size_t i = 0; i < rgb.size() / 3; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const float v = img.rgba[i * 4 + size_t(c)];
+      rgb[i * 3 + size_t(c)] = (unsigned char)std::lround(std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) * 255 : 255);
+    }
+  stbi_write_png_to_func([](void* ctx, void* d, int n) {
+        auto* out = static_cast<std::vector<unsigned char>*>(ctx);
+        out->insert(out->end(), static_cast<unsigned char*>(d), static_cast<unsigned char*>(d) + n);
+      }, &png, img.size.x, img.size.y, 3, rgb.data(), img.size.x * 3);
+  return "data:image/png;base64," + base64(png);
+}
+
+const char* kPalette[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+
+// Nice axis ticks: 1, 2 or 5 times a power of ten.
+std::vector<double> ticks(double lo, double hi) {
+  const double span = std::max(hi - lo, 1e-12), raw = span / 5;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  const double step = raw / mag < 2 ? 2 * mag : raw / mag < 5 ? 5 * mag : 10 * mag;
+  std::vector<double> t;
+  for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * span; v += step) t.push_back(v);
+  return t;
+}
+
+std::string plot(const SweepReport& r, const std::string& errorKey) {
+  const double W = 640, H = 400, L = 70, R = 170, T = 20, B = 50;
+  double x0 = INFINITY, x1 = -INFINITY, y0 = 0, y1 = -INFINITY;
+  for (auto& row : r.rows) {
+    x0 = std::min(x0, row.value(r.costKey));
+    x1 = std::max(x1, row.value(r.costKey));
+    y1 = std::max(y1, row.value(errorKey));
+  }
+  if (!(x1 > x0)) { x0 -= 0.5; x1 += 0.5; }
+  if (!(y1 > y0)) y1 = y0 + 1;
+  const double padX = (x1 - x0) * 0.05;
+  x0 = std::max(0.0, x0 - padX);
+  x1 += padX;
+  y1 *= 1.08;
+  auto sx = [&](double v) { return L + (v - x0) / (x1 - x0) * (W - L - R); };
+  auto sy = [&](double v) { return H - B - (v - y0) / (y1 - y0) * (H - T - B); };
+  std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + formatNumber(W) + "' height='" + formatNumber(H) +
+                  "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  for (double t : ticks(x0, x1))
+    s += "<line x1='" + formatNumber(sx(t)) + "' x2='" + formatNumber(sx(t)) + "' y1='" + formatNumber(T) + "' y2='" +
+         formatNumber(H - B) + "' stroke='#eee'/><text x='" + formatNumber(sx(t)) + "' y='" + formatNumber(H - B + 16) +
+         "' text-anchor='middle'>" + formatNumber(t) + "</text>\n";
+  for (double t : ticks(y0, y1))
+    s += "<line x1='" + formatNumber(L) + "' x2='" + formatNumber(W - R) + "' y1='" + formatNumber(sy(t)) + "' y2='" +
+         formatNumber(sy(t)) + "' stroke='#eee'/><text x='" + formatNumber(L - 6) + "' y='" + formatNumber(sy(t) + 4) +
+         "' text-anchor='end'>" + formatNumber(t) + "</text>\n";
+  s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
+       formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
+  s += "<text x='" + formatNumber((L + W - R) / 2) + "' y='" + formatNumber(H - 12) + "' text-anchor='middle'>" +
+       escape(r.costKey) + " (median, lower is cheaper)</text>\n";
+  s += "<text transform='translate(16," + formatNumber((T + H - B) / 2) + ") rotate(-90)' text-anchor='middle'>" +
+       escape(errorKey) + " (lower is closer to the reference)</text>\n";
+  // Pareto front: the configurations nothing else beats on both axes.
+  std::string path;
+  for (size_t i : paretoFront(r, errorKey))
+    path += (path.empty() ? "M" : " L") + formatNumber(sx(r.rows[i].value(r.costKey))) + "," +
+            formatNumber(sy(r.rows[i].value(errorKey)));
+  s += "<path d='" + path + "' fill='none' stroke='#999' stroke-dasharray='4 3'/>\n";
+  std::map<std::string, int> groups;
+  for (auto& row : r.rows) groups.emplace(row.group, int(groups.size()));
+  for (auto& row : r.rows) {
+    const char* color = kPalette[groups[row.group] % 8];
+    s += "<circle cx='" + formatNumber(sx(row.value(r.costKey))) + "' cy='" + formatNumber(sy(row.value(errorKey))) +
+         "' r='5' fill='" + color + "' fill-opacity='0.8'><title>" + escape(row.label) + ": " + errorKey + " " +
+         formatNumber(row.value(errorKey)) + ", " + r.costKey + " " + formatNumber(row.value(r.costKey)) +
+         "</title></circle>\n";
+  }
+  int k = 0;
+  for (auto& [name, index] : groups) {
+    const double y = T + 14 + 18 * k++;
+    s += "<circle cx='" + formatNumber(W - R + 16) + "' cy='" + formatNumber(y - 4) + "' r='5' fill='" +
+         kPalette[index % 8] + "'/><text x='" + formatNumber(W - R + 26) + "' y='" + formatNumber(y) + "'>" +
+         escape(name) + "</text>\n";
+  }
+  s += "<text x='" + formatNumber(W - R + 10) + "' y='" + formatNumber(T + 14 + 18 * k + 6) +
+       "' fill='#777'>- - Pareto front</text>\n</svg>\n";
+  return s;
+}
+
+}  // namespace
+
+std::string sweepHtml(const SweepReport& r) {
+  std::string h = "<!doctype html>\n<html><head><meta charset='utf-8'><title>" + escape(r.title) +
+                  "</title>\n<style>body{font-family:sans-serif;margin:24px;max-width:1400px}"
+                  "table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 7px;"
+                  "text-align:right}code{background:#f4f4f4;padding:2px 4px}.imgs{display:flex;flex-wrap:wrap;gap:10px}"
+                  ".imgs figure{margin:0;font-size:12px}</style></head><body>\n";
+  h += "<h1>" + escape(r.title) + "</h1>\n";
+  h += "<p>Made by <code>" + escape(r.command) + "</code></p>\n";
+  h += "<p>Renderer: " + escape(r.renderer) + "<br>Reference: " + escape(r.reference) + "<br>Cost: " +
+       escape(r.costKey) + ", the median over the timed frames of the GPU time of every pass (GL_TIME_ELAPSED).</p>\n";
+  for (auto& key : r.errorKeys) h += "<h2>" + escape(key) + " against " + escape(r.costKey) + "</h2>\n" + plot(r, key);
+  h += "<h2>Configurations</h2>\n<table><tr><th>configuration</th>";
+  if (!r.rows.empty())
+    for (auto& [k, v] : r.rows.front().values) h += "<th>" + escape(k) + "</th>";
+  h += "</tr>\n";
+  for (auto& row : r.rows) {
+    h += "<tr><td style='text-align:left'>" + escape(row.label) + "</td>";
+    for (auto& [k, v] : row.values) h += "<td>" + formatNumber(v) + "</td>";
+    h += "</tr>\n";
+  }
+  h += "</table>\n<h2>Images</h2>\n<div class='imgs'>\n";
+  if (!r.referenceThumbnail.rgba.empty())
+    h += "<figure><img src='" + dataUri(r.referenceThumbnail) + "'><figcaption>reference</figcaption></figure>\n";
+  for (auto& row : r.rows)
+    h += "<figure><img src='" + dataUri(row.thumbnail) + "'><figcaption>" + escape(row.label) + "<br>" +
+         (r.errorKeys.empty() ? "" : r.errorKeys.front() + " " + formatNumber(row.value(r.errorKeys.front()))) + ", " +
+         r.costKey + " " + formatNumber(row.value(r.costKey)) + "</figcaption></figure>\n";
+  h += "</div>\n</body></html>\n";
+  return h;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,193 @@
+// glTF 2.0 through Debian's libtinygltf. Node transforms are flattened into instances; images
+// are kept encoded (our image callback stores the bytes) until a lab needs them.
+#include <tiny_gltf.h>
+
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/loaders.h"
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+namespace {
+
+bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                 const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->width = image->height = -1;  // marks "still encoded"
+  return true;
+}
+
+// Reads component `c` of element `i` as float (normalised integers map to [0,1] / [-1,1]).
+float readComponent(const unsigned char* p, int type, bool normalized) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_BYTE: { auto v = float(int8_t(*p)); return normalized ? std::max(v / 127.0f, -1.0f) : v; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0f : float(v); }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0f, -1.0f) : float(v); }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return float(v); }
+    default: return 0.0f;
+  }
+}
+
+// All elements of an accessor as floats, `comps` per element; "" or an error.
+std::string readAccessor(const tinygltf::Model& m, int index, int comps, std::vector<float>& out) {
+  if (index < 0 || size_t(index) >= m.accessors.size()) return "accessor " + std::to_string(index) + " does not exist";
+  const auto& acc = m.accessors[size_t(index)];
+  if (acc.bufferView < 0 || size_t(acc.bufferView) >= m.bufferViews.size()) return "accessor without buffer view";
+  const auto& view = m.bufferViews[size_t(acc.bufferView)];
+  const auto& buffer = m.buffers[size_t(view.buffer)];
+  const int compSize = tinygltf::GetComponentSizeInBytes(uint32_t(acc.componentType));
+  const int stride = acc.ByteStride(view);
+  if (compSize <= 0 || stride <= 0) return "accessor " + std::to_string(index) + " has a bad component type";
+  const size_t start = view.byteOffset + acc.byteOffset;
+  if (acc.count > 0 && start + size_t(stride) * (acc.count - 1) + size_t(compSize * comps) > buffer.data.size())
+    return "accessor " + std::to_string(index) + " reads past the end of its buffer";
+  out.resize(acc.count * size_t(comps));
+  for (size_t i = 0; i < acc.count; ++i)
+    for (int c = 0; c < comps; ++c)
+      out[i * size_t(comps) + size_t(c)] =
+          readComponent(&buffer.data[start + i * size_t(stride) + size_t(c * compSize)], acc.componentType, acc.normalized);
+  return {};
+}
+
+GLenum wrapMode(int w) {
+  return w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE ? GL_CLAMP_TO_EDGE
+         : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? GL_MIRRORED_REPEAT : GL_REPEAT;
+}
+
+glm::mat4 nodeTransform(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) {
+    glm::dmat4 m = glm::make_mat4(n.matrix.data());
+    return glm::mat4(m);
+  }
+  glm::mat4 t(1.0f);
+  if (n.translation.size() == 3) t = glm::translate(t, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+  if (n.rotation.size() == 4)
+    t *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+  if (n.scale.size() == 3) t = glm::scale(t, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+  return t;
+}
+
+struct Importer {
+  const tinygltf::Model& model;
+  Scene& scene;
+  std::vector<std::vector<int>> meshPrimitives;  // glTF mesh -> our mesh indices
+  int imageBase = 0, materialBase = 0;
+
+  int image(int textureIndex) {
+    if (textureIndex < 0 || size_t(textureIndex) >= model.textures.size()) return -1;
+    const auto& tex = model.textures[size_t(textureIndex)];
+    if (tex.source < 0) return -1;
+    ImageSource& img = scene.images[size_t(imageBase + tex.source)];
+    if (tex.sampler >= 0) {
+      const auto& s = model.samplers[size_t(tex.sampler)];
+      img.sampler.wrapS = wrapMode(s.wrapS);
+      img.sampler.wrapT = wrapMode(s.wrapT);
+      if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) img.sampler.magFilter = GL_NEAREST;
+      if (s.minFilter > 0) img.sampler.minFilter = GLenum(s.minFilter);  // glTF uses the GL enums
+    }
+    return imageBase + tex.source;
+  }
+
+  std::string primitive(const tinygltf::Primitive& prim, MeshData& mesh) {
+    auto pos = prim.attributes.find("POSITION");
+    if (pos == prim.attributes.end()) return "primitive without POSITION";
+    std::vector<float> f;
+    if (auto e = readAccessor(model, pos->second, 3, f); !e.empty()) return e;
+    for (size_t i = 0; i + 2 < f.size(); i += 3) mesh.positions.emplace_back(f[i], f[i + 1], f[i + 2]);
+    if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+      if (auto e = readAccessor(model, it->second, 3, f); !e.empty()) return e;
+      for (size_t i = 0; i + 2 < f.size(); i += 3) mesh.normals.emplace_back(f[i], f[i + 1], f[i + 2]);
+    }
+    if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+      if (auto e = readAccessor(model, it->second, 2, f); !e.empty()) return e;
+      for (size_t i = 0; i + 1 < f.size(); i += 2) mesh.uvs.emplace_back(f[i], 1.0f - f[i + 1]);  // glTF: v down
+    }
+    if (prim.indices >= 0) {
+      if (auto e = readAccessor(model, prim.indices, 1, f); !e.empty()) return e;
+      for (float v : f) mesh.indices.push_back(uint32_t(v));
+    } else {
+      for (uint32_t i = 0; i < mesh.positions.size(); ++i) mesh.indices.push_back(i);
+    }
+    if (mesh.normals.size() != mesh.positions.size()) computeNormals(mesh);
+    mesh.material = prim.material >= 0 ? materialBase + prim.material : 0;
+    return validateMesh(mesh);
+  }
+
+  void node(int index, const glm::mat4& parent, int depth) {
+    if (index < 0 || size_t(index) >= model.nodes.size() || depth > 64) return;
+    const auto& n = model.nodes[size_t(index)];
+    const glm::mat4 world = parent * nodeTransform(n);
+    if (n.mesh >= 0 && size_t(n.mesh) < meshPrimitives.size())
+      for (int m : meshPrimitives[size_t(n.mesh)]) scene.instances.push_back({m, world});
+    for (int child : n.children) node(child, world, depth + 1);
+  }
+};
+
+}  // namespace
+
+std::string loadGltf(const fs::path& file, Scene& scene) {
+  if (!fs::is_regular_file(file)) return file.string() + ": no such file";
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keepEncoded, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  const bool ok = file.extension() == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
+                                             : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
+  if (!ok) {
+    while (!err.empty() && (err.back() == '\n')) err.pop_back();
+    return file.string() + ": " + (err.empty() ? "not a valid glTF 2.0 file" : err.substr(0, err.find('\n')));
+  }
+  if (!warn.empty()) scene.warnings.push_back(file.string() + ": " + warn.substr(0, warn.find('\n')));
+
+  Importer im{model, scene, {}, int(scene.images.size()), int(scene.materials.size())};
+  for (auto& img : model.images) {
+    ImageSource src;
+    src.name = img.uri.empty() ? img.name : img.uri;
+    src.bytes = img.image;
+    scene.images.push_back(std::move(src));
+  }
+  for (auto& m : model.materials) {
+    Material mat;
+    mat.name = m.name;
+    const auto& pbr = m.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() == 4)
+      mat.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+    mat.metallic = float(pbr.metallicFactor);
+    mat.roughness = float(pbr.roughnessFactor);
+    mat.baseColorImage = im.image(pbr.baseColorTexture.index);
+    mat.metallicRoughnessImage = im.image(pbr.metallicRoughnessTexture.index);
+    mat.normalImage = im.image(m.normalTexture.index);
+    scene.materials.push_back(mat);
+  }
+  for (auto& mesh : model.meshes) {
+    im.meshPrimitives.emplace_back();
+    for (auto& prim : mesh.primitives) {
+      if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+        scene.warnings.push_back(file.string() + ": mesh '" + mesh.name + "': skipped a non-triangle primitive");
+        continue;
+      }
+      MeshData data;
+      data.name = mesh.name;
+      if (auto e = im.primitive(prim, data); !e.empty()) return file.string() + ": mesh '" + mesh.name + "': " + e;
+      im.meshPrimitives.back().push_back(int(scene.meshes.size()));
+      scene.meshes.push_back(std::move(data));
+    }
+  }
+  const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (size_t(sceneIndex) < model.scenes.size()) {
+    for (int root : model.scenes[size_t(sceneIndex)].nodes) im.node(root, glm::mat4(1.0f), 0);
+  } else {
+    for (size_t i = 0; i < scene.meshes.size(); ++i) scene.instances.push_back({int(i), glm::mat4(1.0f)});
+  }
+  if (scene.instances.empty()) return file.string() + ": the glTF scene has no triangle meshes";
+  return {};
+}
+
+}  // namespace shadelab

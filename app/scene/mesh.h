@@ -1,0 +1,48 @@
+// Triangle meshes on the CPU, and the attribute work done only when a lab needs it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+struct Bounds {
+  glm::vec3 min{1e30f}, max{-1e30f};
+  void extend(const glm::vec3& p) {
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+  }
+  bool empty() const { return min.x > max.x; }
+  glm::vec3 center() const { return empty() ? glm::vec3(0) : (min + max) * 0.5f; }
+  float radius() const { return empty() ? 1.0f : glm::length(max - min) * 0.5f; }
+};
+
+struct MeshData {
+  std::string name;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;   // empty until present or computed
+  std::vector<glm::vec2> uvs;       // empty when the source has none
+  std::vector<glm::vec4> tangents;  // xyz tangent, w = handedness; built only on request
+  std::vector<uint32_t> indices;    // triangles
+  int material = 0;
+
+  size_t triangleCount() const { return indices.size() / 3; }
+  Bounds bounds() const;
+};
+
+// Area-weighted vertex normals. Degenerate triangles contribute nothing; a vertex left with a
+// zero normal gets +Z, so shading never divides by zero.
+void computeNormals(MeshData& mesh);
+
+// Per-vertex tangent frames from UV derivatives (Lengyel), Gram-Schmidt against the normal.
+// Zero-area UV triangles are skipped; vertices they leave without a tangent get any unit
+// vector perpendicular to the normal. Returns how many vertices needed that fallback.
+int computeTangents(MeshData& mesh);
+
+// Rejects what would crash or poison the renderer: out-of-range indices, NaN/Inf positions,
+// attribute arrays of the wrong length. Returns "" or a one-line reason.
+std::string validateMesh(const MeshData& mesh);
+
+}  // namespace shadelab

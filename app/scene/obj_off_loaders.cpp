@@ -1,0 +1,153 @@
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <tiny_obj_loader.h>
+
+#include "scene/loaders.h"
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+
+static std::string firstLine(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
+  const auto nl = s.find('\n');
+  return nl == std::string::npos ? s : s.substr(0, nl) + " (and more)";
+}
+
+std::string loadObj(const fs::path& file, Scene& scene) {
+  if (!fs::is_regular_file(file)) return file.string() + ": no such file";
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  config.mtl_search_path = file.parent_path().string();
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(file.string(), config))
+    return file.string() + ": " + firstLine(reader.Error().empty() ? "not a valid OBJ file" : reader.Error());
+  if (!reader.Warning().empty()) scene.warnings.push_back(file.string() + ": " + firstLine(reader.Warning()));
+  const auto& attrib = reader.GetAttrib();
+  const auto& shapes = reader.GetShapes();
+
+  // Materials: MTL diffuse colour and map_Kd (recorded, decoded later on demand).
+  const int materialBase = int(scene.materials.size());
+  for (auto& m : reader.GetMaterials()) {
+    Material mat;
+    mat.name = m.name;
+    mat.baseColor = glm::vec4(m.diffuse[0], m.diffuse[1], m.diffuse[2], 1.0f);
+    if (!m.diffuse_texname.empty()) {
+      ImageSource img;
+      img.name = m.diffuse_texname;
+      img.file = file.parent_path() / m.diffuse_texname;
+      mat.baseColorImage = int(scene.images.size());
+      scene.images.push_back(img);
+    }
+    if (!m.normal_texname.empty() || !m.bump_texname.empty()) {
+      ImageSource img;
+      img.name = !m.normal_texname.empty() ? m.normal_texname : m.bump_texname;
+      img.file = file.parent_path() / img.name;
+      mat.normalImage = int(scene.images.size());
+      scene.images.push_back(img);
+    }
+    scene.materials.push_back(mat);
+  }
+
+  // OBJ indexes positions, normals and UVs separately; GL wants one index per vertex, so each
+  // distinct (v, vt, vn) triple becomes one vertex. UV seams split vertices, as they must.
+  for (auto& shape : shapes) {
+    MeshData mesh;
+    mesh.name = shape.name.empty() ? file.stem().string() : shape.name;
+    const int mid = shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids.front();
+    mesh.material = mid >= 0 ? materialBase + mid : 0;
+    std::map<std::tuple<int, int, int>, uint32_t> remap;
+    const bool hasNormals = !attrib.normals.empty(), hasUvs = !attrib.texcoords.empty();
+    for (auto& idx : shape.mesh.indices) {
+      const auto key = std::make_tuple(idx.vertex_index, hasNormals ? idx.normal_index : -1,
+                                       hasUvs ? idx.texcoord_index : -1);
+      auto [it, added] = remap.emplace(key, uint32_t(mesh.positions.size()));
+      if (added) {
+        const float* p = &attrib.vertices[size_t(3 * idx.vertex_index)];
+        mesh.positions.emplace_back(p[0], p[1], p[2]);
+        if (hasNormals && idx.normal_index >= 0) {
+          const float* n = &attrib.normals[size_t(3 * idx.normal_index)];
+          mesh.normals.emplace_back(n[0], n[1], n[2]);
+        } else if (hasNormals) {
+          mesh.normals.emplace_back(0, 0, 0);
+        }
+        if (hasUvs && idx.texcoord_index >= 0) {
+          const float* t = &attrib.texcoords[size_t(2 * idx.texcoord_index)];
+          mesh.uvs.emplace_back(t[0], t[1]);
+        } else if (hasUvs) {
+          mesh.uvs.emplace_back(0, 0);
+        }
+      }
+      mesh.indices.push_back(it->second);
+    }
+    if (mesh.normals.empty()) computeNormals(mesh);
+    if (auto err = validateMesh(mesh); !err.empty()) return file.string() + ": " + err;
+    scene.instances.push_back({int(scene.meshes.size()), glm::mat4(1.0f)});
+    scene.meshes.push_back(std::move(mesh));
+  }
+  if (scene.meshes.empty()) return file.string() + ": no faces in OBJ file";
+  return {};
+}
+
+// OFF: "OFF", then "V F E", then V lines of x y z, then F lines of "n i0 i1 ... i(n-1)".
+std::string loadOff(const fs::path& file, Scene& scene) {
+  std::ifstream in(file);
+  if (!in) return file.string() + ": no such file";
+  auto nextLine = [&](std::string& line) {
+    while (std::getline(in, line)) {
+      const auto hash = line.find('#');
+      if (hash != std::string::npos) line.resize(hash);
+      if (line.find_first_not_of(" \t\r") != std::string::npos) return true;
+    }
+    return false;
+  };
+  std::string line;
+  if (!nextLine(line) || line.rfind("OFF", 0) != 0) return file.string() + ": not an OFF file (first line must be OFF)";
+  std::istringstream rest(line.substr(3));
+  long v = -1, f = -1;
+  if (!(rest >> v >> f)) {
+    if (!nextLine(line)) return file.string() + ": missing vertex/face counts";
+    std::istringstream counts(line);
+    counts >> v >> f;
+  }
+  if (v <= 0 || f <= 0 || v > 50'000'000 || f > 100'000'000)
+    return file.string() + ": bad vertex/face counts (" + std::to_string(v) + ", " + std::to_string(f) + ")";
+  MeshData mesh;
+  mesh.name = file.stem().string();
+  for (long i = 0; i < v; ++i) {
+    glm::vec3 p;
+    if (!nextLine(line) || !(std::istringstream(line) >> p.x >> p.y >> p.z))
+      return file.string() + ": vertex " + std::to_string(i) + " is missing or malformed";
+    mesh.positions.push_back(p);
+  }
+  for (long i = 0; i < f; ++i) {
+    std::istringstream face;
+    int n = 0;
+    if (nextLine(line)) face.str(line);
+    if (!(face >> n) || n < 3 || n > 65536) return file.string() + ": face " + std::to_string(i) + " is missing or malformed";
+    std::vector<uint32_t> poly(static_cast<size_t>(n));
+    for (auto& idx : poly)
+      if (!(face >> idx)) return file.string() + ": face " + std::to_string(i) + " has too few indices";
+    for (int k = 1; k + 1 < n; ++k) mesh.indices.insert(mesh.indices.end(), {poly[0], poly[size_t(k)], poly[size_t(k) + 1]});
+  }
+  if (auto err = validateMesh(mesh); !err.empty()) return file.string() + ": " + err;
+  computeNormals(mesh);
+  scene.instances.push_back({int(scene.meshes.size()), glm::mat4(1.0f)});
+  scene.meshes.push_back(std::move(mesh));
+  return {};
+}
+
+std::string loadSceneFile(const fs::path& file, Scene& scene) {
+  std::string ext = file.extension().string();
+  for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  scene.name = file.filename().string();
+  if (ext == ".gltf" || ext == ".glb") return loadGltf(file, scene);
+  if (ext == ".obj") return loadObj(file, scene);
+  if (ext == ".off") return loadOff(file, scene);
+  return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off)";
+}
+
+}  // namespace shadelab

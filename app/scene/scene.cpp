@@ -1,0 +1,50 @@
+#include "scene/scene.h"
+
+#include <stb_image.h>
+
+namespace shadelab {
+
+Bounds Scene::worldBounds() const {
+  Bounds b;
+  for (auto& inst : instances) {
+    const Bounds mb = meshes[size_t(inst.mesh)].bounds();
+    if (mb.empty()) continue;
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p((corner & 1) ? mb.max.x : mb.min.x, (corner & 2) ? mb.max.y : mb.min.y,
+                        (corner & 4) ? mb.max.z : mb.min.z);
+      b.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+    }
+  }
+  return b;
+}
+
+size_t Scene::triangleCount() const {
+  size_t n = 0;
+  for (auto& inst : instances) n += meshes[size_t(inst.mesh)].triangleCount();
+  return n;
+}
+
+std::string decodeImage(const ImageSource& src, std::vector<unsigned char>& rgba, glm::ivec2& size) {
+  if (!src.rgba.empty()) {
+    rgba = src.rgba;
+    size = src.size;
+    return {};
+  }
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = nullptr;
+  if (!src.bytes.empty())
+    pixels = stbi_load_from_memory(src.bytes.data(), int(src.bytes.size()), &w, &h, &channels, 4);
+  else
+    pixels = stbi_load(src.file.c_str(), &w, &h, &channels, 4);
+  if (!pixels) {
+    const std::string where = src.file.empty() ? src.name : src.file.string();
+    return where + ": cannot decode image (" + (stbi_failure_reason() ? stbi_failure_reason() : "unknown") +
+           "; valid: PNG, JPEG, TGA, BMP)";
+  }
+  rgba.assign(pixels, pixels + size_t(w) * h * 4);
+  size = {w, h};
+  stbi_image_free(pixels);
+  return {};
+}
+
+}  // namespace shadelab

@@ -1,0 +1,66 @@
+// A scene as the labs see it: meshes, materials, instances with their world transforms, and
+// image sources that stay encoded until a lab asks for them.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/texture.h"
+#include "scene/mesh.h"
+
+namespace shadelab {
+
+// What a configuration requires. The host builds exactly this, and nothing else.
+struct SceneNeeds {
+  bool uvs = false;               // texture coordinates (else dropped before upload)
+  bool tangents = false;          // only a normal map needs them
+  bool baseColorTextures = false; // decode and upload base-colour images
+  bool normalTextures = false;    // decode and upload normal-map images
+  int tessellation = 32;          // segments of procedural primitives (ignored by files)
+  bool operator==(const SceneNeeds&) const = default;
+};
+
+// An image referenced by a material; decoded only on demand.
+struct ImageSource {
+  std::string name;                 // for messages
+  std::filesystem::path file;       // on disk, or
+  std::vector<unsigned char> bytes; // encoded (PNG/JPEG) bytes embedded in a glTF, or
+  std::vector<unsigned char> rgba;  // already decoded (procedural), rows top-down
+  glm::ivec2 size{0};               // of `rgba`
+  gl::SamplerState sampler;
+};
+
+struct Material {
+  std::string name = "default";
+  glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};
+  float metallic = 0.0f;
+  float roughness = 0.5f;
+  int baseColorImage = -1;  // index into Scene::images
+  int normalImage = -1;
+  int metallicRoughnessImage = -1;
+};
+
+struct Instance {
+  int mesh = 0;
+  glm::mat4 model{1.0f};
+};
+
+struct Scene {
+  std::string name;
+  std::vector<MeshData> meshes;
+  std::vector<Material> materials{Material{}};
+  std::vector<ImageSource> images;
+  std::vector<Instance> instances;
+  std::vector<std::string> warnings;  // shown in the UI, printed by the CLI
+
+  Bounds worldBounds() const;
+  size_t triangleCount() const;
+};
+
+// Decodes an image to RGBA8, rows top-down. Returns "" or a one-line error naming the file.
+std::string decodeImage(const ImageSource& source, std::vector<unsigned char>& rgba, glm::ivec2& size);
+
+}  // namespace shadelab

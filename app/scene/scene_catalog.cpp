@@ -1,0 +1,137 @@
+#include "scene/scene_catalog.h"
+
+#include <cstdlib>
+#include <functional>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/loaders.h"
+#include "scene/procedural.h"
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+namespace {
+
+void add(Scene& s, MeshData mesh, const glm::mat4& model, int material = 0) {
+  mesh.material = material;
+  s.instances.push_back({int(s.meshes.size()), model});
+  s.meshes.push_back(std::move(mesh));
+}
+
+glm::mat4 at(float x, float y, float z) { return glm::translate(glm::mat4(1.0f), {x, y, z}); }
+
+int addMaterial(Scene& s, const char* name, glm::vec3 color, int image = -1) {
+  Material m;
+  m.name = name;
+  m.baseColor = glm::vec4(color, 1.0f);
+  m.baseColorImage = image;
+  s.materials.push_back(m);
+  return int(s.materials.size()) - 1;
+}
+
+// A floor whose two big triangles make affine UV interpolation visibly wrong.
+int checkerFloor(Scene& s) {
+  s.images.push_back(makeCheckerImage(512, 8));
+  return addMaterial(s, "checker", glm::vec3(1.0f), int(s.images.size()) - 1);
+}
+
+struct Builder {
+  const char* id;
+  const char* description;
+  std::function<void(Scene&, int tessellation)> build;
+};
+
+const std::vector<Builder>& builders() {
+  static const std::vector<Builder> list = {
+      {"shading", "sphere and torus over a two-triangle checker floor (the shading lab's default)",
+       [](Scene& s, int seg) {
+         const int floor = checkerFloor(s);
+         add(s, makePlane(8.0f, 1, 2.0f), glm::mat4(1.0f), floor);
+         add(s, makeUvSphere(1.0f, seg), at(-1.3f, 1.0f, 0.0f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
+         add(s, makeTorus(0.75f, 0.3f, seg), glm::rotate(at(1.4f, 1.0f, 0.0f), 1.2f, {1, 0, 0}),
+             addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
+       }},
+      {"sphere", "one UV sphere", [](Scene& s, int seg) { add(s, makeUvSphere(1.0f, seg), glm::mat4(1.0f)); }},
+      {"torus", "one torus", [](Scene& s, int seg) { add(s, makeTorus(1.0f, 0.4f, seg), glm::mat4(1.0f)); }},
+      {"cube", "one unit cube", [](Scene& s, int) { add(s, makeBox(glm::vec3(0.5f)), glm::mat4(1.0f)); }},
+      {"checker-plane", "a two-triangle checker floor alone (perspective-correct vs affine UVs)",
+       [](Scene& s, int) { add(s, makePlane(8.0f, 1, 2.0f), glm::mat4(1.0f), checkerFloor(s)); }},
+      {"shadow-test", "ground, four pillars, a torus and a sphere (grazing, acne-prone surfaces)",
+       [](Scene& s, int seg) {
+         add(s, makePlane(12.0f, 1, 6.0f), glm::mat4(1.0f), addMaterial(s, "ground", {0.75f, 0.75f, 0.7f}));
+         const int stone = addMaterial(s, "stone", {0.7f, 0.65f, 0.55f});
+         for (int i = 0; i < 4; ++i)
+           add(s, makeBox({0.25f, 1.25f, 0.25f}), at(-3.0f + 2.0f * i, 1.25f, -2.5f), stone);
+         add(s, makeTorus(0.8f, 0.25f, seg), glm::rotate(at(1.2f, 0.9f, 0.8f), 1.0f, {1, 0, 0}),
+             addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
+         add(s, makeUvSphere(0.7f, seg), at(-1.3f, 0.7f, 0.9f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
+       }},
+  };
+  return list;
+}
+
+struct DataScene {
+  const char* id;
+  const char* relPath;
+  const char* description;
+};
+const DataScene kDataScenes[] = {
+    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)"},
+    {"teapot", "meshes/teapot_pytorch3d/teapot.obj", "the Utah teapot (shared data)"},
+};
+
+}  // namespace
+
+fs::path dataDirectory() {
+  if (const char* env = std::getenv("SHADELAB_DATA"); env && *env) return fs::path(env);
+  std::error_code ec;
+  const fs::path beside = fs::path(SHADELAB_SOURCE_DIR).parent_path() / "shared" / "data";
+  return fs::is_directory(beside, ec) ? beside : fs::path();
+}
+
+std::vector<SceneEntry> listScenes() {
+  std::vector<SceneEntry> out;
+  for (auto& b : builders()) out.push_back({b.id, b.description});
+  const fs::path data = dataDirectory();
+  std::error_code ec;
+  for (auto& d : kDataScenes)
+    if (!data.empty() && fs::is_regular_file(data / d.relPath, ec)) out.push_back({d.id, d.description});
+  return out;
+}
+
+std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Scene& out) {
+  out = Scene{};
+  out.name = idOrPath;
+  bool found = false;
+  for (auto& b : builders())
+    if (idOrPath == b.id) {
+      b.build(out, needs.tessellation);
+      found = true;
+    }
+  if (!found) {
+    fs::path file = idOrPath;
+    for (auto& d : kDataScenes)
+      if (idOrPath == d.id) file = dataDirectory() / d.relPath;
+    const bool looksLikeFile = file.has_extension() || file.string().find('/') != std::string::npos;
+    if (!looksLikeFile) {
+      std::string valid;
+      for (auto& e : listScenes()) valid += (valid.empty() ? "" : ", ") + e.id;
+      return "unknown scene '" + idOrPath + "' (valid: " + valid + ", or a .gltf/.glb/.obj/.off file)";
+    }
+    if (auto err = loadSceneFile(file, out); !err.empty()) return err;
+    out.name = idOrPath;
+  }
+  // Leave out what the configuration does not use.
+  for (auto& mesh : out.meshes) {
+    if (!needs.uvs) mesh.uvs.clear();
+    if (needs.tangents && !mesh.uvs.empty()) {
+      if (int n = computeTangents(mesh); n > 0)
+        out.warnings.push_back("mesh '" + mesh.name + "': " + std::to_string(n) +
+                               " vertices have degenerate UVs; their tangent is an arbitrary perpendicular");
+    }
+  }
+  return {};
+}
+
+}  // namespace shadelab

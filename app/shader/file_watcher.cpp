@@ -1,0 +1,59 @@
+#include "shader/file_watcher.h"
+
+#include <sys/inotify.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+
+FileWatcher::FileWatcher(std::chrono::milliseconds debounce)
+    : fd_(inotify_init1(IN_NONBLOCK | IN_CLOEXEC)), debounce_(debounce) {}
+
+FileWatcher::~FileWatcher() {
+  if (fd_ >= 0) close(fd_);
+}
+
+void FileWatcher::watch(const fs::path& file) {
+  std::error_code ec;
+  const fs::path abs = fs::weakly_canonical(file, ec);
+  if (!files_.insert(abs).second || fd_ < 0) return;
+  const fs::path dir = abs.parent_path();
+  for (auto& [wd, d] : dirs_)
+    if (d == dir) return;
+  const int wd = inotify_add_watch(fd_, dir.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE);
+  if (wd >= 0) dirs_[wd] = dir;
+}
+
+std::vector<fs::path> FileWatcher::poll() {
+  const auto now = std::chrono::steady_clock::now();
+  if (fd_ >= 0) {
+    alignas(inotify_event) char buf[8192];
+    for (;;) {
+      const ssize_t n = read(fd_, buf, sizeof buf);
+      if (n <= 0) break;  // EAGAIN: nothing more for now
+      for (char* p = buf; p < buf + n;) {
+        auto* ev = reinterpret_cast<inotify_event*>(p);
+        p += sizeof(inotify_event) + ev->len;
+        auto dir = dirs_.find(ev->wd);
+        if (dir == dirs_.end() || ev->len == 0) continue;
+        const fs::path file = dir->second / ev->name;
+        if (files_.count(file)) pending_[file] = now;
+      }
+    }
+  }
+  std::vector<fs::path> ready;
+  for (auto it = pending_.begin(); it != pending_.end();) {
+    if (now - it->second >= debounce_) {
+      ready.push_back(it->first);
+      it = pending_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  return ready;
+}
+
+}  // namespace shadelab

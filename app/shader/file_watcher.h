@@ -1,0 +1,39 @@
+// Watches directories with inotify and reports which watched files changed.
+//
+// Directories, not files: editors that save by writing a temp file and renaming it replace the
+// inode, and a watch on the old inode would go quiet. IN_CLOSE_WRITE catches in-place saves,
+// IN_MOVED_TO catches rename saves. Events are debounced (an editor may write twice in a row);
+// whether the content really changed is decided later, by hash, by whoever reloads.
+// This class never touches GL.
+#pragma once
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+class FileWatcher {
+ public:
+  explicit FileWatcher(std::chrono::milliseconds debounce = std::chrono::milliseconds(30));
+  ~FileWatcher();
+  FileWatcher(const FileWatcher&) = delete;
+  FileWatcher& operator=(const FileWatcher&) = delete;
+
+  // Starts reporting changes to `file` (its directory gets a watch if it has none).
+  void watch(const std::filesystem::path& file);
+  // Non-blocking: the files whose last event is older than the debounce interval.
+  std::vector<std::filesystem::path> poll();
+  bool active() const { return fd_ >= 0; }
+
+ private:
+  int fd_ = -1;
+  std::chrono::milliseconds debounce_;
+  std::map<int, std::filesystem::path> dirs_;           // inotify wd -> directory
+  std::set<std::filesystem::path> files_;               // what we report on
+  std::map<std::filesystem::path, std::chrono::steady_clock::time_point> pending_;
+};
+
+}  // namespace shadelab

@@ -1,0 +1,147 @@
+#include "shader/preprocessor.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+
+void ShaderSearchPath::overrideFile(std::string relPath, fs::path file) {
+  for (auto& [rel, f] : overrides_)
+    if (rel == relPath) {
+      f = std::move(file);
+      return;
+    }
+  overrides_.emplace_back(std::move(relPath), std::move(file));
+}
+
+fs::path ShaderSearchPath::resolve(const std::string& relPath) const {
+  for (auto& [rel, file] : overrides_)
+    if (rel == relPath) return file;
+  std::error_code ec;
+  for (auto& root : roots_)
+    if (fs::is_regular_file(root / relPath, ec)) return root / relPath;
+  return {};
+}
+
+namespace {
+
+bool readFile(const fs::path& p, std::string& out) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return true;
+}
+
+// `#include "name"` -> name; anything else -> empty.
+std::string includeTarget(const std::string& line) {
+  size_t i = line.find_first_not_of(" \t");
+  if (i == std::string::npos || line.compare(i, 8, "#include") != 0) return {};
+  size_t a = line.find('"', i + 8), b = a == std::string::npos ? a : line.find('"', a + 1);
+  return (a != std::string::npos && b != std::string::npos) ? line.substr(a + 1, b - a - 1) : std::string("\x01");
+}
+
+bool isVersionLine(const std::string& line) {
+  size_t i = line.find_first_not_of(" \t");
+  return i != std::string::npos && line.compare(i, 8, "#version") == 0;
+}
+
+struct Expander {
+  const ShaderSearchPath& path;
+  PreprocessedSource& out;
+  std::vector<std::string> stack;  // rel paths being expanded, to report cycles
+
+  // Includes resolve next to the including file first ("lighting.glsl" from common/), then
+  // from the search roots ("common/lighting.glsl").
+  std::string resolveInclude(const std::string& from, const std::string& name) const {
+    const std::string sibling = (fs::path(from).parent_path() / name).lexically_normal().string();
+    return path.resolve(sibling).empty() ? name : sibling;
+  }
+
+  bool expand(const std::string& rel, const std::string& text, int fileIndex, bool isMain) {
+    std::istringstream in(text);
+    std::string line;
+    int lineNo = 0;
+    bool sawVersion = false;
+    while (std::getline(in, line)) {
+      ++lineNo;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (isMain && !sawVersion && isVersionLine(line)) {
+        sawVersion = true;
+        out.text += '\n';  // already emitted ahead of the defines; an empty line keeps numbering
+        continue;
+      }
+      const std::string target = includeTarget(line);
+      if (target.empty()) {
+        out.text += line;
+        out.text += '\n';
+        continue;
+      }
+      const std::string where = out.files[fileIndex].string() + ":" + std::to_string(lineNo);
+      if (target == "\x01") {
+        out.error = where + ": error: #include expects \"file\"";
+        return false;
+      }
+      const std::string incRel = resolveInclude(rel, target);
+      for (auto& s : stack)
+        if (s == incRel) {
+          out.error = where + ": error: #include \"" + target + "\" is circular";
+          return false;
+        }
+      bool already = false;
+      for (auto& r : out.relPaths) already |= r == incRel;
+      if (!already) {  // every file is included once per program, like #pragma once
+        const fs::path file = path.resolve(incRel);
+        std::string incText;
+        if (file.empty() || !readFile(file, incText)) {
+          out.error = where + ": error: cannot find include \"" + target + "\"";
+          return false;
+        }
+        const int k = int(out.files.size());
+        out.files.push_back(file);
+        out.relPaths.push_back(incRel);
+        out.text += "#line 1 " + std::to_string(k) + "\n";
+        stack.push_back(incRel);
+        if (!expand(incRel, incText, k, false)) return false;
+        stack.pop_back();
+      }
+      out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(fileIndex) + "\n";
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
+                                    const Defines& defines) {
+  PreprocessedSource out;
+  const fs::path file = path.resolve(relPath);
+  std::string text;
+  if (file.empty() || !readFile(file, text)) {
+    out.error = relPath + ": error: shader file not found in the search path";
+    return out;
+  }
+  out.files.push_back(file);
+  out.relPaths.push_back(relPath);
+
+  // #version must come first; find the file's own, or default to the project's 330 core.
+  std::istringstream in(text);
+  std::string line, version = "#version 330 core";
+  while (std::getline(in, line))
+    if (isVersionLine(line)) {
+      version = line;
+      break;
+    }
+  out.text = version + "\n";
+  for (auto& [name, value] : defines) out.text += "#define " + name + " " + value + "\n";
+  out.text += "#line 1 0\n";
+  Expander ex{path, out, {relPath}};
+  if (!ex.expand(relPath, text, 0, true)) out.text.clear();
+  return out;
+}
+
+}  // namespace shadelab

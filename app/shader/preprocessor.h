@@ -1,0 +1,48 @@
+// GLSL preprocessing the driver does not do for us: #include, injected #define variants, and
+// #line directives so every compiler message points back at the real file and line.
+//
+// Output layout:   #version ...          (the file's own, kept first as GLSL requires)
+//                  #define NAME VALUE    (one per variant define)
+//                  #line 2 0             (source-string 0 = the main file, resumes after #version)
+//                  ...main file, with each #include replaced by
+//                  #line 1 k  <included file k>  #line n+1 parent
+#pragma once
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shadelab {
+
+using Defines = std::vector<std::pair<std::string, std::string>>;
+
+// Where shader files are looked up, first match wins: the student's folder(s), then shaders/.
+class ShaderSearchPath {
+ public:
+  explicit ShaderSearchPath(std::vector<std::filesystem::path> roots = {}) : roots_(std::move(roots)) {}
+  void prepend(std::filesystem::path root) { roots_.insert(roots_.begin(), std::move(root)); }
+  // A single file that overrides `relPath` wherever it is asked for (a file dropped on the window).
+  void overrideFile(std::string relPath, std::filesystem::path file);
+  // The file that serves `relPath`, or empty if none does.
+  std::filesystem::path resolve(const std::string& relPath) const;
+  const std::vector<std::filesystem::path>& roots() const { return roots_; }
+  const std::vector<std::pair<std::string, std::filesystem::path>>& overrides() const { return overrides_; }
+
+ private:
+  std::vector<std::filesystem::path> roots_;
+  std::vector<std::pair<std::string, std::filesystem::path>> overrides_;
+};
+
+struct PreprocessedSource {
+  std::string text;
+  // Source-string number k in #line directives (and so in driver logs) -> the file it names.
+  std::vector<std::filesystem::path> files;
+  std::vector<std::string> relPaths;  // the same files, as asked for (for the watcher and overrides)
+  std::string error;                  // "file:line: error: ..." when a file or include is missing
+  bool ok() const { return error.empty(); }
+};
+
+PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
+                                    const Defines& defines);
+
+}  // namespace shadelab

@@ -1,0 +1,230 @@
+#include "shader/shader_library.h"
+
+#include <cstdio>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+namespace {
+
+// The loud fallback: a magenta/black screen-space checker. Kept in C++ on purpose: it must
+// work when the shader folder itself is broken or missing.
+const char* kFallbackVs = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_model;
+uniform mat4 u_viewProj;
+void main() { gl_Position = u_viewProj * u_model * vec4(a_position, 1.0); }
+)";
+const char* kFallbackFs = R"(#version 330 core
+out vec4 o_color;
+void main() {
+  ivec2 cell = ivec2(gl_FragCoord.xy) / 16;
+  o_color = ((cell.x + cell.y) & 1) == 0 ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
+}
+)";
+
+std::string infoLog(GLuint object, bool isProgram) {
+  GLint len = 0;
+  isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &len);
+  std::string log(size_t(std::max(len, 1)), '\0');
+  isProgram ? glGetProgramInfoLog(object, len, nullptr, log.data()) : glGetShaderInfoLog(object, len, nullptr, log.data());
+  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
+  return log;
+}
+
+// Compiles and links; on failure returns an empty name and fills `log`.
+gl::ProgramName buildProgram(const std::vector<std::pair<GLenum, std::string>>& sources,
+                             std::vector<std::string>& logs, int& failedStage) {
+  gl::ProgramName program = gl::ProgramName::make();
+  std::vector<gl::ShaderName> shaders;
+  failedStage = -1;
+  for (size_t i = 0; i < sources.size(); ++i) {
+    gl::ShaderName s = gl::ShaderName::make(sources[i].first);
+    const char* text = sources[i].second.c_str();
+    glShaderSource(s.get(), 1, &text, nullptr);
+    glCompileShader(s.get());
+    GLint ok = 0;
+    glGetShaderiv(s.get(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      logs.push_back(infoLog(s.get(), false));
+      failedStage = int(i);
+      return {};
+    }
+    glAttachShader(program.get(), s.get());
+    shaders.push_back(std::move(s));
+  }
+  glLinkProgram(program.get());
+  GLint ok = 0;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+  for (auto& s : shaders) glDetachShader(program.get(), s.get());
+  if (!ok) {
+    logs.push_back(infoLog(program.get(), true));
+    return {};
+  }
+  return program;
+}
+
+}  // namespace
+
+GLenum stageFromExtension(const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  if (ext == ".vert") return GL_VERTEX_SHADER;
+  if (ext == ".frag") return GL_FRAGMENT_SHADER;
+  if (ext == ".geom") return GL_GEOMETRY_SHADER;
+  if (ext == ".tesc") return GL_TESS_CONTROL_SHADER;
+  if (ext == ".tese") return GL_TESS_EVALUATION_SHADER;
+  if (ext == ".comp") return GL_COMPUTE_SHADER;
+  return 0;
+}
+
+std::string ProgramSpec::key() const {
+  std::string k;
+  for (auto& s : stages) k += s.path + "|";
+  for (auto& [n, v] : defines) k += n + "=" + v + ";";
+  return k;
+}
+
+void Program::use() {
+  const GLuint id = good_ ? good_.get() : fallback_;
+  if (id != bound_) {
+    locations_.clear();
+    bound_ = id;
+  }
+  glUseProgram(id);
+}
+
+GLint Program::location(const char* name) {
+  auto it = locations_.find(name);
+  if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(bound_, name)).first;
+  return it->second;
+}
+
+void Program::set(const char* n, int v) { glUniform1i(location(n), v); }
+void Program::set(const char* n, float v) { glUniform1f(location(n), v); }
+void Program::set(const char* n, const glm::vec2& v) { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec3& v) { glUniform3fv(location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::vec4& v) { glUniform4fv(location(n), 1, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::mat3& v) { glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::mat4& v) { glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
+
+ShaderLibrary::ShaderLibrary(ShaderSearchPath path) : path_(std::move(path)) {
+  onDiagnostic = [](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.format().c_str()); };
+  std::vector<std::string> logs;
+  int failed = -1;
+  fallback_ = buildProgram({{GL_VERTEX_SHADER, kFallbackVs}, {GL_FRAGMENT_SHADER, kFallbackFs}}, logs, failed);
+}
+
+ShaderLibrary::~ShaderLibrary() = default;
+
+ProgramRef ShaderLibrary::program(const ProgramSpec& spec) {
+  const std::string key = spec.key();
+  if (auto it = cache_.find(key); it != cache_.end())
+    if (auto live = it->second.lock()) return live;
+  auto p = std::make_shared<Program>();
+  p->spec_ = spec;
+  p->fallback_ = fallback_.get();
+  rebuild(*p, true);
+  cache_[key] = p;
+  return p;
+}
+
+bool ShaderLibrary::rebuild(Program& p, bool force) {
+  std::vector<std::pair<GLenum, std::string>> sources;
+  std::vector<PreprocessedSource> pre;
+  p.diagnostics_.clear();
+  p.hasErrors_ = false;
+  p.files_.clear();
+  p.relPaths_.clear();
+  size_t hash = 0;
+  for (auto& stage : p.spec_.stages) {
+    pre.push_back(preprocessShader(path_, stage.path, p.spec_.defines));
+    auto& src = pre.back();
+    for (size_t i = 0; i < src.files.size(); ++i) {
+      p.files_.push_back(src.files[i]);
+      p.relPaths_.push_back(src.relPaths[i]);
+    }
+    if (!src.ok()) {
+      Diagnostic d;
+      d.message = src.error;
+      d.raw = src.error;
+      p.diagnostics_.push_back(d);
+      continue;
+    }
+    hash = hash * 1099511628211ull ^ std::hash<std::string>{}(src.text);
+    sources.emplace_back(stage.type, src.text);
+  }
+  watchFiles(p);
+  if (!p.diagnostics_.empty()) {
+    p.hasErrors_ = true;
+    for (auto& d : p.diagnostics_) onDiagnostic(d);
+    return false;
+  }
+  if (!force && p.good_ && hash == p.sourceHash_) return true;  // saved, but nothing changed
+
+  std::vector<std::string> logs;
+  int failedStage = -1;
+  gl::ProgramName built = buildProgram(sources, logs, failedStage);
+  const auto& files = failedStage >= 0 ? pre[size_t(failedStage)].files : pre.front().files;
+  for (auto& log : logs)
+    for (auto& d : parseCompileLog(log, files)) p.diagnostics_.push_back(std::move(d));
+  attachSourceLines(p.diagnostics_);
+  if (!built) {
+    p.hasErrors_ = true;
+    if (p.diagnostics_.empty()) p.diagnostics_.push_back({"", 0, 0, true, p.spec_.name + ": link failed", "", ""});
+    for (auto& d : p.diagnostics_) onDiagnostic(d);
+    return false;
+  }
+  p.good_ = std::move(built);
+  p.sourceHash_ = hash;
+  p.bound_ = 0;
+  p.locations_.clear();
+  ++p.generation_;
+  return true;
+}
+
+void ShaderLibrary::watchFiles(const Program& p) {
+  // Every root's candidate for every file, so a student's new copy that starts overriding a
+  // built-in file is picked up too.
+  for (auto& rel : p.relPaths_)
+    for (auto& root : path_.roots()) watcher_.watch(root / rel);
+  for (auto& f : p.files_) watcher_.watch(f);
+}
+
+int ShaderLibrary::reloadChanged() {
+  const auto changed = watcher_.poll();
+  if (changed.empty()) return 0;
+  int rebuilt = 0;
+  for (auto& p : livePrograms()) {
+    bool affected = false;
+    for (auto& c : changed) {
+      for (auto& rel : p->relPaths_) affected |= c.filename() == fs::path(rel).filename();
+    }
+    if (affected) {
+      rebuild(*p);
+      ++rebuilt;
+    }
+  }
+  return rebuilt;
+}
+
+std::string ShaderLibrary::overrideByName(const fs::path& file) {
+  std::string replaced;
+  for (auto& p : livePrograms())
+    for (auto& rel : p->relPaths_)
+      if (fs::path(rel).filename() == file.filename()) replaced = rel;
+  if (replaced.empty()) return {};
+  path_.overrideFile(replaced, fs::absolute(file));
+  for (auto& p : livePrograms()) rebuild(*p, true);
+  return replaced;
+}
+
+std::vector<ProgramRef> ShaderLibrary::livePrograms() const {
+  std::vector<ProgramRef> out;
+  for (auto& [key, weak] : cache_)
+    if (auto p = weak.lock()) out.push_back(std::move(p));
+  return out;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,104 @@
+// Programs built from files on the shader search path, cached by (stages, defines), rebuilt
+// when any file they read changes on disk. A failed rebuild keeps the last good program; a
+// program that never compiled draws the library's loud fallback instead of nothing.
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/handle.h"
+#include "shader/compile_log.h"
+#include "shader/file_watcher.h"
+#include "shader/preprocessor.h"
+
+namespace shadelab {
+
+struct StageSource {
+  GLenum type;       // GL_VERTEX_SHADER, ...
+  std::string path;  // relative to the search roots, e.g. "shading/shade.frag"
+};
+
+struct ProgramSpec {
+  std::string name;  // for messages: "shading/phong"
+  std::vector<StageSource> stages;
+  Defines defines;
+  std::string key() const;
+};
+
+class Program {
+ public:
+  // Binds the last good program, or the fallback if this one never compiled.
+  void use();
+  bool hasGoodProgram() const { return bool(good_); }
+  bool lastBuildFailed() const { return !diagnostics_.empty() && hasErrors_; }
+  int generation() const { return generation_; }  // successful builds so far
+  const ProgramSpec& spec() const { return spec_; }
+  const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+  const std::vector<std::filesystem::path>& files() const { return files_; }
+
+  // Uniforms of the bound program; names it does not use are ignored (as GL does for -1).
+  void set(const char* name, int v);
+  void set(const char* name, float v);
+  void set(const char* name, const glm::vec2& v);
+  void set(const char* name, const glm::vec3& v);
+  void set(const char* name, const glm::vec4& v);
+  void set(const char* name, const glm::mat3& v);
+  void set(const char* name, const glm::mat4& v);
+
+ private:
+  friend class ShaderLibrary;
+  GLint location(const char* name);
+
+  ProgramSpec spec_;
+  gl::ProgramName good_;
+  GLuint fallback_ = 0;
+  GLuint bound_ = 0;
+  std::unordered_map<std::string, GLint> locations_;  // of bound_
+  std::vector<std::filesystem::path> files_;
+  std::vector<std::string> relPaths_;
+  size_t sourceHash_ = 0;
+  int generation_ = 0;
+  bool hasErrors_ = false;
+  std::vector<Diagnostic> diagnostics_;
+};
+
+using ProgramRef = std::shared_ptr<Program>;
+
+class ShaderLibrary {
+ public:
+  // Needs a current GL context (it builds the fallback program at once).
+  explicit ShaderLibrary(ShaderSearchPath path);
+  ~ShaderLibrary();
+
+  // Built on first request. Programs live while someone holds the reference.
+  ProgramRef program(const ProgramSpec& spec);
+  // Polls the file watcher and rebuilds every live program that reads a changed file.
+  // Returns how many programs were rebuilt (successfully or not).
+  int reloadChanged();
+  // Recompiles now; false when it failed (the last good program stays).
+  bool rebuild(Program& p, bool force = false);
+  // Serves `file` wherever a shader asks for a file of the same name (a file dropped on the
+  // window). Returns the relative path it replaced, or "" when no live program uses that name.
+  std::string overrideByName(const std::filesystem::path& file);
+
+  std::vector<ProgramRef> livePrograms() const;
+  const ShaderSearchPath& searchPath() const { return path_; }
+  // Called for every diagnostic of a failed build; default: one line to stderr.
+  std::function<void(const Diagnostic&)> onDiagnostic;
+
+ private:
+  void watchFiles(const Program& p);
+  ShaderSearchPath path_;
+  FileWatcher watcher_;
+  gl::ProgramName fallback_;
+  std::map<std::string, std::weak_ptr<Program>> cache_;
+};
+
+GLenum stageFromExtension(const std::string& path);  // .vert .geom .frag .tesc .tese .comp; 0 if unknown
+
+}  // namespace shadelab

@@ -1,0 +1,102 @@
+#include <imgui.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "ui/panels.h"
+
+namespace shadelab {
+
+void FrameHistory::push(float frame, float gpu) {
+  frameMs.push_back(frame);
+  gpuMs.push_back(gpu);
+  while (frameMs.size() > 240) frameMs.pop_front();
+  while (gpuMs.size() > 240) gpuMs.pop_front();
+}
+
+void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiMs) {
+  const auto& passes = host.lastPasses();
+  double gpu = 0, cpu = 0;
+  for (auto& p : passes) {
+    gpu += p.gpuMs;
+    cpu += p.cpuMs;
+  }
+  ImGui::Text("Passes that ran this frame: %d", int(passes.size()));
+  if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("GPU ms");
+    ImGui::TableSetupColumn("CPU ms");
+    ImGui::TableHeadersRow();
+    for (auto& p : passes) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(p.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", p.gpuMs);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", p.cpuMs);
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("total");
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", gpu);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", cpu);
+    ImGui::EndTable();
+  }
+  ImGui::Text("UI %.2f ms   scene: %zu triangles, %d textures, %d builds", uiMs, host.scene().triangleCount(),
+              host.gpuScene().texturesUploaded(), host.sceneBuilds());
+  std::vector<float> frame(history.frameMs.begin(), history.frameMs.end()), g(history.gpuMs.begin(), history.gpuMs.end());
+  if (!frame.empty()) {
+    const float top = *std::max_element(frame.begin(), frame.end()) * 1.1f;
+    const std::string fl = "frame " + std::to_string(int(frame.back() + 0.5f)) + " ms";
+    ImGui::PlotLines("##frame", frame.data(), int(frame.size()), 0, fl.c_str(), 0.0f, top, ImVec2(-1, 50));
+    const std::string gl = "GPU " + std::to_string(int(g.back() + 0.5f)) + " ms";
+    ImGui::PlotLines("##gpu", g.data(), int(g.size()), 0, gl.c_str(), 0.0f, top, ImVec2(-1, 50));
+  }
+}
+
+void drawShaderPanel(LabHost& host, std::string& status) {
+  auto& lib = host.shaders();
+  ImGui::TextUnformatted("Search path (first match wins):");
+  for (auto& root : lib.searchPath().roots()) ImGui::BulletText("%s", root.string().c_str());
+  for (auto& [rel, file] : lib.searchPath().overrides())
+    ImGui::BulletText("%s -> %s (dropped)", rel.c_str(), file.string().c_str());
+  if (ImGui::Button("Rebuild all")) {
+    int failed = 0;
+    for (auto& p : host.lab().activePrograms()) failed += !lib.rebuild(*p, true);
+    status = failed ? std::to_string(failed) + " program(s) failed to build" : "rebuilt";
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("Edit a file and save: it reloads. Drop a .vert/.frag/.geom/.glsl on the window to override it.");
+  for (auto& p : host.lab().activePrograms()) {
+    const bool failed = p->lastBuildFailed();
+    ImGui::PushStyleColor(ImGuiCol_Text, failed ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.5f, 1, 0.5f, 1));
+    ImGui::Text("%s %s (build %d)%s", failed ? "[error]" : "[ok]", p->spec().name.c_str(), p->generation(),
+                !p->hasGoodProgram() ? " - never compiled: drawing the fallback" : failed ? " - showing last good" : "");
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) {
+      std::string files;
+      for (auto& f : p->files()) files += f.string() + "\n";
+      ImGui::SetTooltip("%s", files.c_str());
+    }
+    if (!failed) continue;
+    for (auto& d : p->diagnostics()) {
+      ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", d.format().c_str());
+      if (!d.sourceLine.empty()) {
+        ImGui::TextUnformatted(("    " + d.sourceLine).c_str());
+        if (d.column > 0) ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "    %s^", std::string(size_t(d.column - 1), ' ').c_str());
+      } else if (d.line == 0 && d.raw != d.message && !d.raw.empty()) {
+        ImGui::TextDisabled("    %s", d.raw.c_str());
+      }
+    }
+  }
+}
+
+void drawWarnings(const LabHost& host, const std::string& lastError) {
+  if (!lastError.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", lastError.c_str());
+  for (auto& w : host.warnings()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "! %s", w.c_str());
+}
+
+}  // namespace shadelab

@@ -1,0 +1,70 @@
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "ui/panels.h"
+
+namespace shadelab {
+namespace {
+
+class ImGuiParams final : public ParamVisitor {
+ public:
+  bool changed = false;
+
+  void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale) override {
+    const std::string label = withUnits(info);
+    changed |= ImGui::SliderFloat(label.c_str(), &value, min, max, logScale ? "%.4g" : "%.3f",
+                                  logScale ? ImGuiSliderFlags_Logarithmic : 0);
+    value = std::clamp(value, min, max);  // ctrl+click typing may leave the range
+    tooltip(info);
+  }
+  void intParam(const ParamInfo& info, int& value, int min, int max) override {
+    const std::string label = withUnits(info);
+    changed |= ImGui::SliderInt(label.c_str(), &value, min, max);
+    value = std::clamp(value, min, max);
+    tooltip(info);
+  }
+  void boolParam(const ParamInfo& info, bool& value) override {
+    changed |= ImGui::Checkbox(std::string(info.label).c_str(), &value);
+    tooltip(info);
+  }
+  void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override {
+    const std::string label(info.label);
+    if (ImGui::BeginCombo(label.c_str(), std::string(names[size_t(index)]).c_str())) {
+      for (size_t i = 0; i < names.size(); ++i)
+        if (ImGui::Selectable(std::string(names[i]).c_str(), int(i) == index)) {
+          changed |= int(i) != index;
+          index = int(i);
+        }
+      ImGui::EndCombo();
+    }
+    tooltip(info);
+  }
+
+ private:
+  static std::string withUnits(const ParamInfo& info) {
+    return info.units.empty() ? std::string(info.label) : std::string(info.label) + " (" + std::string(info.units) + ")";
+  }
+  static void tooltip(const ParamInfo& info) {
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+      ImGui::TextUnformatted(std::string(info.help).c_str());
+      ImGui::TextDisabled("--set %s", std::string(info.key).c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
+  }
+};
+
+}  // namespace
+
+bool drawParamWidgets(Lab& lab) {
+  ImGuiParams v;
+  ImGui::PushItemWidth(-150);
+  lab.visitParams(v);
+  ImGui::PopItemWidth();
+  return v.changed;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,248 @@
+// The main loop, top to bottom:
+//   1. events (mouse on the viewport moves the camera; F12 takes a screenshot; dropped files)
+//   2. render the lab into its offscreen target at the viewport's size
+//   3. lay out the UI: lab/scene pickers and parameters (left), viewport (centre), stats,
+//      shaders and warnings (right)
+//   4. draw the UI into the window and swap
+#include "ui/window_app.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "cli/session.h"
+#include "scene/scene_catalog.h"
+#include "ui/panels.h"
+#include "ui/window_files.h"
+
+namespace shadelab {
+namespace {
+
+struct AppState {
+  LabHost* host = nullptr;
+  std::string message;          // last error or confirmation, shown in the UI
+  std::vector<std::string> dropped;
+  glm::ivec2 viewport{960, 600};
+  FrameHistory history;
+  bool screenshotRequested = false;
+};
+
+void onDrop(GLFWwindow* w, int count, const char** paths) {
+  auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
+  for (int i = 0; i < count; ++i) app->dropped.emplace_back(paths[i]);
+}
+
+void handleDrops(AppState& app) {
+  for (auto& path : app.dropped) {
+    const std::filesystem::path p(path);
+    const std::string ext = p.extension().string();
+    if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl" || ext == ".tesc" || ext == ".tese") {
+      const std::string replaced = app.host->shaders().overrideByName(p);
+      app.message = replaced.empty() ? path + ": no shader of the current lab is named " + p.filename().string()
+                                     : "now using " + path + " for " + replaced;
+    } else if (ext == ".json") {
+      app.message = loadPreset(*app.host, path);
+    } else {
+      const std::string err = app.host->selectScene(path);
+      app.message = err.empty() ? "loaded scene " + path : err;
+    }
+  }
+  app.dropped.clear();
+}
+
+void viewportControls(AppState& app) {
+  ImGuiIO& io = ImGui::GetIO();
+  OrbitCamera& cam = app.host->camera();
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
+    cam.orbit(-io.MouseDelta.x * 0.3f, io.MouseDelta.y * 0.3f);
+  if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
+    cam.pan(io.MouseDelta.x / float(app.viewport.y), io.MouseDelta.y / float(app.viewport.y));
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) cam.zoom(std::pow(0.9f, io.MouseWheel));
+}
+
+void leftPanel(AppState& app) {
+  LabHost& host = *app.host;
+  const auto ids = labIds();
+  int current = 0;
+  for (size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] == host.lab().id()) current = int(i);
+  int next = current;
+  if (ImGui::ArrowButton("##prev", ImGuiDir_Left)) next = (current + int(ids.size()) - 1) % int(ids.size());
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-40);
+  if (ImGui::BeginCombo("##lab", std::string(host.lab().title()).c_str())) {
+    for (size_t i = 0; i < ids.size(); ++i)
+      if (ImGui::Selectable(ids[i].c_str(), int(i) == current)) next = int(i);
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::ArrowButton("##next", ImGuiDir_Right)) next = (current + 1) % int(ids.size());
+  if (next != current) {
+    const std::string err = host.selectLab(ids[size_t(next)]);
+    app.message = err;
+  }
+  ImGui::TextWrapped("%s", std::string(host.lab().summary()).c_str());
+
+  ImGui::Separator();
+  if (ImGui::BeginCombo("Scene", host.sceneId().c_str())) {
+    for (auto& s : listScenes())
+      if (ImGui::Selectable(s.id.c_str(), s.id == host.sceneId())) {
+        const std::string err = host.selectScene(s.id);
+        app.message = err;
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off file on the window.");
+  ImGui::Separator();
+  drawParamWidgets(host.lab());
+  if (ImGui::Button("Reset parameters")) host.resetParams();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset view")) host.resetCamera();
+  ImGui::Separator();
+  if (ImGui::Button("Screenshot (F12)")) app.screenshotRequested = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Save preset")) app.message = savePreset(host);
+  if (ImGui::BeginCombo("Load preset", "choose...")) {
+    for (auto& file : listPresets())
+      if (ImGui::Selectable(file.c_str())) app.message = loadPreset(host, file);
+    ImGui::EndCombo();
+  }
+}
+
+}  // namespace
+
+int runWindow(const Options& options, const WindowOptions& wopt) {
+  glfwSetErrorCallback([](int, const char* d) { std::fprintf(stderr, "glfw: %s\n", d); });
+  if (!glfwInit()) return 2;
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(1280, 800, "ShadeLab", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    return 2;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  const char* missing = "";
+  if (!gl::loadFunctions(reinterpret_cast<ShlGetProcAddress>(glfwGetProcAddress), &missing)) {
+    std::fprintf(stderr, "shadelab: the window's OpenGL context lacks %s\n", missing);
+    return 1;
+  }
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write nothing into the user's folder
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exitCode = 0;
+  {
+    AppState app;
+    LabHost host(shaderSearchPath(options));
+    app.host = &host;
+    glfwSetWindowUserPointer(window, &app);
+    glfwSetDropCallback(window, onDrop);
+    if (!options.preset.empty()) app.message = loadPreset(host, options.preset);
+    if (!options.lab.empty()) app.message = host.selectLab(options.lab);
+    if (!options.scene.empty()) app.message = host.selectScene(options.scene);
+    for (auto& s : options.sets)
+      if (auto e = host.set(s); !e.empty()) app.message = e;
+    if (auto e = applyCamera(host, options.camera); !e.empty()) app.message = e;
+
+    auto last = std::chrono::steady_clock::now();
+    double uiMs = 0;
+    const auto labs = labIds();
+    for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
+      // 1. events
+      glfwPollEvents();
+      handleDrops(app);
+      if (wopt.cycleLabs && frame % 3 == 0) app.message = host.selectLab(labs[size_t(frame / 3) % labs.size()]);
+      const auto now = std::chrono::steady_clock::now();
+      const float dt = std::chrono::duration<float>(now - last).count();
+      last = now;
+
+      // 2. the lab's frame (at the viewport size the last layout gave it)
+      const auto& passes = host.renderFrame(app.viewport, float(glfwGetTime()), dt);
+      double gpu = 0;
+      for (auto& p : passes) gpu += p.gpuMs;
+      app.history.push(dt * 1000.0f, float(gpu));
+      if (app.screenshotRequested || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
+        app.message = saveScreenshot(host, app.viewport);
+        app.screenshotRequested = false;
+      }
+
+      // 3. UI layout
+      const auto uiStart = std::chrono::steady_clock::now();
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      int fbw = 0, fbh = 0;
+      glfwGetFramebufferSize(window, &fbw, &fbh);
+      const float leftW = 340, rightW = 360;
+      const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+      ImGui::SetNextWindowPos({0, 0});
+      ImGui::SetNextWindowSize({leftW, float(fbh)});
+      ImGui::Begin("Lab", nullptr, fixed);
+      leftPanel(app);
+      ImGui::End();
+
+      ImGui::SetNextWindowPos({leftW, 0});
+      ImGui::SetNextWindowSize({float(fbw) - leftW - rightW, float(fbh)});
+      ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+      ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
+      const ImVec2 avail = ImGui::GetContentRegionAvail();
+      app.viewport = glm::max(glm::ivec2(int(avail.x), int(avail.y)), glm::ivec2(16));
+      const ImVec2 origin = ImGui::GetCursorScreenPos();
+      ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(host.target()->color().id())), avail, {0, 1}, {1, 0});
+      ImGui::SetCursorScreenPos(origin);
+      ImGui::InvisibleButton("viewport", avail, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                                    ImGuiButtonFlags_MouseButtonMiddle);
+      viewportControls(app);
+      ImGui::End();
+      ImGui::PopStyleVar();
+
+      ImGui::SetNextWindowPos({float(fbw) - rightW, 0});
+      ImGui::SetNextWindowSize({rightW, float(fbh)});
+      ImGui::Begin("Inspect", nullptr, fixed);
+      if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
+      if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
+      if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
+      ImGui::End();
+
+      // 4. draw the UI
+      ImGui::Render();
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glViewport(0, 0, fbw, fbh);
+      glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uiStart).count();
+
+      if (wopt.exitAfterFrames > 0 && frame + 1 >= wopt.exitAfterFrames) {
+        if (!wopt.screenshot.empty())
+          if (auto err = saveWindowImage(wopt.screenshot, {fbw, fbh}); !err.empty()) {
+            std::fprintf(stderr, "shadelab: %s\n", err.c_str());
+            exitCode = 1;
+          }
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+      }
+      glfwSwapBuffers(window);
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exitCode;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,16 @@
+// The window front end: GLFW + Dear ImGui around a LabHost.
+#pragma once
+#include "cli/options.h"
+
+namespace shadelab {
+
+struct WindowOptions {
+  int exitAfterFrames = 0;  // 0 = run until closed (tests: run N frames, then exit 0)
+  bool cycleLabs = false;   // tests: switch to every lab in turn while running
+  std::string screenshot;   // tests: save the whole window (UI included) here before exiting
+};
+
+// Returns the exit code; 2 when no window could be opened (no display), having printed why.
+int runWindow(const Options& options, const WindowOptions& window);
+
+}  // namespace shadelab

@@ -1,0 +1,88 @@
+#include "ui/window_files.h"
+
+#include <cstdlib>
+#include <ctime>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "gl/gl.h"
+#include "measure/report.h"
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+
+static fs::path outputDir(const char* sub) {
+  const char* env = std::getenv("SHADELAB_OUT");
+  fs::path dir = fs::path(env && *env ? env : "out") / sub;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  return dir;
+}
+
+// out/<sub>/<stem>-YYYYmmdd-HHMMSS[-n]<ext>, never an existing name.
+static fs::path freshName(const char* sub, const std::string& stem, const std::string& ext) {
+  char stamp[32];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&t));
+  const fs::path dir = outputDir(sub);
+  fs::path p = dir / (stem + "-" + stamp + ext);
+  for (int n = 2; fs::exists(p) || fs::exists(fs::path(p).replace_extension(".json")); ++n)
+    p = dir / (stem + "-" + stamp + "-" + std::to_string(n) + ext);
+  return p;
+}
+
+std::string saveScreenshot(LabHost& host, glm::ivec2 size) {
+  const fs::path png = freshName("screenshots", std::string(host.lab().id()), ".png");
+  if (auto err = writePng(png.string(), host.readImage()); !err.empty()) return err;
+  nlohmann::json state = host.stateJson();
+  state["size"] = {size.x, size.y};
+  const std::string cmd = "shadelab render --preset " + fs::path(png).replace_extension(".json").string() +
+                          " --size " + std::to_string(size.x) + "x" + std::to_string(size.y) + " --out again.png";
+  state["reproduce"] = cmd;
+  if (auto err = writeTextFile(fs::path(png).replace_extension(".json").string(), state.dump(2) + "\n"); !err.empty())
+    return err;
+  return "saved " + png.string() + " (+ .json; reproduce with: " + cmd + ")";
+}
+
+std::string savePreset(LabHost& host) {
+  const fs::path p = freshName("presets", std::string(host.lab().id()), ".json");
+  if (auto err = writeTextFile(p.string(), host.stateJson().dump(2) + "\n"); !err.empty()) return err;
+  return "saved preset " + p.string();
+}
+
+std::string loadPreset(LabHost& host, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return path + ": cannot open preset";
+  const nlohmann::json state = nlohmann::json::parse(in, nullptr, false);
+  if (state.is_discarded()) return path + ": not valid JSON; nothing changed";
+  if (auto err = host.applyStateJson(state); !err.empty()) return path + ": " + err;
+  return "loaded " + path;
+}
+
+std::vector<std::string> listPresets() {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (auto& e : fs::directory_iterator(outputDir("presets"), ec))
+    if (e.path().extension() == ".json") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string saveWindowImage(const std::string& path, glm::ivec2 size) {
+  ImageF img;
+  img.size = size;
+  std::vector<unsigned char> rgba(size_t(size.x) * size.y * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  img.rgba.resize(rgba.size());
+  for (int y = 0; y < size.y; ++y)
+    for (size_t i = 0; i < size_t(size.x) * 4; ++i)
+      img.rgba[size_t(y) * size.x * 4 + i] = rgba[size_t(size.y - 1 - y) * size.x * 4 + i] / 255.0f;
+  return writePng(path, img);
+}
+
+}  // namespace shadelab

@@ -1,0 +1,112 @@
+#include "labs/params.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace shadelab {
+
+std::string formatNumber(double v) {
+  char buf[32];
+  for (int precision = 6; precision <= 9; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+    if (float(std::strtod(buf, nullptr)) == float(v)) break;
+  }
+  return buf;
+}
+
+static std::string joined(std::span<const std::string_view> names) {
+  std::string s;
+  for (auto n : names) s += (s.empty() ? "" : ", ") + std::string(n);
+  return s;
+}
+
+std::string SetFromString::fail(const ParamInfo& info, const std::string& valid) {
+  error_ = labId_ + "." + std::string(info.key) + ": invalid value '" + text_ + "' (valid: " + valid + ")";
+  return error_;
+}
+
+void SetFromString::floatParam(const ParamInfo& info, float& value, float min, float max, bool) {
+  keys_.emplace_back(info.key);
+  if (info.key != key_) return;
+  found_ = true;
+  char* end = nullptr;
+  const double v = std::strtod(text_.c_str(), &end);
+  if (text_.empty() || *end != '\0' || !std::isfinite(v) || v < min || v > max)
+    fail(info, "a number in [" + formatNumber(min) + ", " + formatNumber(max) + "]" +
+                   (info.units.empty() ? "" : " " + std::string(info.units)));
+  else
+    value = float(v);
+}
+
+void SetFromString::intParam(const ParamInfo& info, int& value, int min, int max) {
+  keys_.emplace_back(info.key);
+  if (info.key != key_) return;
+  found_ = true;
+  int v = 0;
+  auto [ptr, ec] = std::from_chars(text_.data(), text_.data() + text_.size(), v);
+  if (ec != std::errc() || ptr != text_.data() + text_.size() || v < min || v > max)
+    fail(info, "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+  else
+    value = v;
+}
+
+void SetFromString::boolParam(const ParamInfo& info, bool& value) {
+  keys_.emplace_back(info.key);
+  if (info.key != key_) return;
+  found_ = true;
+  if (text_ == "1" || text_ == "true" || text_ == "on") value = true;
+  else if (text_ == "0" || text_ == "false" || text_ == "off") value = false;
+  else fail(info, "on, off, true, false, 1, 0");
+}
+
+void SetFromString::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
+  keys_.emplace_back(info.key);
+  if (info.key != key_) return;
+  found_ = true;
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == text_) {
+      index = int(i);
+      return;
+    }
+  fail(info, joined(names));
+}
+
+std::string SetFromString::result() const {
+  if (found_) return error_;
+  std::string valid;
+  for (auto& k : keys_) valid += (valid.empty() ? "" : ", ") + labId_ + "." + k;
+  return "unknown parameter '" + labId_ + "." + key_ + "' (valid: " + valid + ")";
+}
+
+void CollectAsText::floatParam(const ParamInfo& info, float& value, float, float, bool) {
+  values.emplace_back(info.key, formatNumber(value));
+}
+void CollectAsText::intParam(const ParamInfo& info, int& value, int, int) {
+  values.emplace_back(info.key, std::to_string(value));
+}
+void CollectAsText::boolParam(const ParamInfo& info, bool& value) {
+  values.emplace_back(info.key, value ? "on" : "off");
+}
+void CollectAsText::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
+  values.emplace_back(info.key, std::string(names[size_t(index)]));
+}
+
+void DescribeParams::add(const ParamInfo& info, const std::string& type, const std::string& value) {
+  std::string line = "  " + labId_ + "." + std::string(info.key) + " = " + value + "  " + type;
+  if (!info.units.empty()) line += " " + std::string(info.units);
+  line += "\n      " + std::string(info.help);
+  lines.push_back(line);
+}
+void DescribeParams::floatParam(const ParamInfo& info, float& value, float min, float max, bool) {
+  add(info, "float [" + formatNumber(min) + ", " + formatNumber(max) + "]", formatNumber(value));
+}
+void DescribeParams::intParam(const ParamInfo& info, int& value, int min, int max) {
+  add(info, "int [" + std::to_string(min) + ", " + std::to_string(max) + "]", std::to_string(value));
+}
+void DescribeParams::boolParam(const ParamInfo& info, bool& value) { add(info, "on|off", value ? "on" : "off"); }
+void DescribeParams::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
+  add(info, "one of " + joined(names), std::string(names[size_t(index)]));
+}
+
+}  // namespace shadelab

@@ -1,0 +1,83 @@
+// One list of parameters per lab, visited by everyone who needs it: the ImGui panel, the CLI
+// (--set lab.key=value), JSON presets, `shadelab list` and the tutorial tables. A lab writes
+// each field once, with range, units and help, in its visitParams().
+#pragma once
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadelab {
+
+struct ParamInfo {
+  std::string_view key;    // CLI/JSON key within the lab, e.g. "shininess"
+  std::string_view label;  // UI label, e.g. "Shininess"
+  std::string_view units;  // "", "deg", "W", "px", ...
+  std::string_view help;   // one or two sentences; tooltip, `list`, error messages
+};
+
+class ParamVisitor {
+ public:
+  virtual ~ParamVisitor() = default;
+  virtual void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale = false) = 0;
+  virtual void intParam(const ParamInfo& info, int& value, int min, int max) = 0;
+  virtual void boolParam(const ParamInfo& info, bool& value) = 0;
+  virtual void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) = 0;
+
+  // Enums are stored as enum classes in Params and visited as named choices.
+  template <typename E>
+  void enumParam(const ParamInfo& info, E& value, std::span<const std::string_view> names) {
+    int i = static_cast<int>(value);
+    choiceParam(info, i, names);
+    value = static_cast<E>(i);
+  }
+};
+
+// Sets one parameter from text ("0.25", "on", "phong"). Returns "" or a one-line error that
+// names the key and what is valid.
+class SetFromString final : public ParamVisitor {
+ public:
+  SetFromString(std::string_view labId, std::string_view key, std::string_view text)
+      : labId_(labId), key_(key), text_(text) {}
+  void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale) override;
+  void intParam(const ParamInfo& info, int& value, int min, int max) override;
+  void boolParam(const ParamInfo& info, bool& value) override;
+  void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  // Call after visiting: the error, including "unknown key" with the valid keys.
+  std::string result() const;
+
+ private:
+  std::string fail(const ParamInfo& info, const std::string& valid);
+  std::string labId_, key_, text_, error_;
+  std::vector<std::string> keys_;
+  bool found_ = false;
+};
+
+// Writes every parameter as "key": value text pairs (value as SetFromString accepts it).
+class CollectAsText final : public ParamVisitor {
+ public:
+  void floatParam(const ParamInfo& info, float& value, float, float, bool) override;
+  void intParam(const ParamInfo& info, int& value, int, int) override;
+  void boolParam(const ParamInfo& info, bool& value) override;
+  void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  std::vector<std::pair<std::string, std::string>> values;
+};
+
+// One line per parameter for `shadelab list`: key, type, default/current, range, units, help.
+class DescribeParams final : public ParamVisitor {
+ public:
+  explicit DescribeParams(std::string_view labId) : labId_(labId) {}
+  void floatParam(const ParamInfo& info, float& value, float min, float max, bool) override;
+  void intParam(const ParamInfo& info, int& value, int min, int max) override;
+  void boolParam(const ParamInfo& info, bool& value) override;
+  void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  std::vector<std::string> lines;
+
+ private:
+  void add(const ParamInfo& info, const std::string& type, const std::string& value);
+  std::string labId_;
+};
+
+std::string formatNumber(double v);  // shortest text that reads back to the same float
+
+}  // namespace shadelab

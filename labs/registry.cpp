@@ -1,0 +1,15 @@
+// Every lab, listed by hand: static self-registration is silently dropped by linkers when a
+// lab's object file is otherwise unreferenced.
+#include "labs/lab.h"
+#include "labs/shading/shading_lab.h"
+
+namespace shadelab {
+
+std::vector<std::string> labIds() { return {"shading"}; }
+
+std::unique_ptr<Lab> makeLab(std::string_view id) {
+  if (id == "shading") return std::make_unique<ShadingLab>();
+  return nullptr;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,204 @@
+#include "labs/shading/shading_lab.h"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+namespace shadelab {
+namespace {
+
+constexpr std::string_view kModeNames[] = {"flat", "gouraud", "phong"};
+constexpr std::string_view kSpecularNames[] = {"blinn-phong", "phong"};
+constexpr std::string_view kUvNames[] = {"perspective", "affine"};
+
+// Light k sits on a ring around the scene at the chosen elevation, with its own colour, so
+// several highlights are told apart.
+const glm::vec3 kLightColor[4] = {{1.0f, 0.95f, 0.9f}, {0.6f, 0.75f, 1.0f}, {1.0f, 0.7f, 0.5f}, {0.8f, 1.0f, 0.8f}};
+const float kLightAzimuthDeg[4] = {35.0f, 215.0f, 125.0f, 305.0f};
+
+}  // namespace
+
+std::string_view ShadingLab::summary() const {
+  return "Where lighting is evaluated changes what you see. Flat shading lights each triangle once, "
+         "Gouraud lights each vertex and blends colours, Phong lights each pixel with an interpolated normal. "
+         "Blinn-Phong and Phong differ in the highlight lobe. The checker floor is two triangles: "
+         "switch uv_interpolation to affine to see why GPUs divide by w.";
+}
+
+void ShadingLab::visitParams(ParamVisitor& v) {
+  auto& p = params;
+  v.enumParam({"mode", "Shading frequency", "", "flat: once per triangle (face normal); gouraud: per vertex, "
+               "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, kModeNames);
+  v.enumParam({"specular", "Specular model", "", "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
+               "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."}, p.specular, kSpecularNames);
+  v.enumParam({"uv_interpolation", "UV interpolation", "", "perspective: correct (divide by w); affine: "
+               "linear in screen space (noperspective), bends the checker on large triangles."}, p.uvInterpolation, kUvNames);
+  v.intParam({"tessellation", "Tessellation", "segments", "Segments around the procedural spheres and tori "
+              "(rings = half). Files are drawn as loaded."}, p.tessellation, 3, kReferenceTessellation);
+  v.floatParam({"ka", "Ambient ka", "", "Ambient reflectance: the constant term that stands in for indirect light."}, p.ka, 0.0f, 1.0f);
+  v.floatParam({"kd", "Diffuse kd", "", "Diffuse (Lambertian) reflectance."}, p.kd, 0.0f, 1.0f);
+  v.floatParam({"ks", "Specular ks", "", "Specular reflectance."}, p.ks, 0.0f, 1.0f);
+  v.floatParam({"shininess", "Shininess p", "", "Specular exponent: larger = smaller, sharper highlight."}, p.shininess, 1.0f, 1024.0f, true);
+  v.intParam({"lights", "Point lights", "", "Number of point lights (0 = ambient only). A compile-time loop bound."}, p.lights, 0, 4);
+  v.floatParam({"light_power", "Light power", "x r^2", "Radiant intensity, in units of the scene radius squared; "
+                "irradiance falls off as 1/r^2."}, p.lightPower, 0.0f, 1e6f, true);
+  v.floatParam({"light_elevation", "Light elevation", "deg", "Height of the lights above the horizon. Near 0 the "
+                "light grazes the floor: N.L -> 0."}, p.lightElevationDeg, -10.0f, 90.0f);
+  v.boolParam({"textures", "Textures", "", "Use base-colour textures. Off: no image is decoded or uploaded."}, p.textures);
+}
+
+SceneNeeds ShadingLab::needs() const {
+  SceneNeeds n;
+  n.uvs = params.textures;
+  n.baseColorTextures = params.textures;
+  n.tessellation = params.tessellation;
+  return n;
+}
+
+ProgramSpec ShadingLab::programSpec(const ShadingParams& p, bool textured) const {
+  ProgramSpec spec;
+  spec.name = "shading/" + std::string(kModeNames[int(p.mode)]);
+  spec.stages.push_back({GL_VERTEX_SHADER, "shading/shade.vert"});
+  if (p.mode == ShadingMode::Flat) spec.stages.push_back({GL_GEOMETRY_SHADER, "shading/flat.geom"});
+  spec.stages.push_back({GL_FRAGMENT_SHADER, "shading/shade.frag"});
+  static const char* modeDefine[] = {"MODE_FLAT", "MODE_GOURAUD", "MODE_PHONG"};
+  spec.defines.emplace_back(modeDefine[int(p.mode)], "1");
+  spec.defines.emplace_back("NUM_LIGHTS", std::to_string(p.lights));
+  if (p.specular == SpecularModel::Phong) spec.defines.emplace_back("SPECULAR_PHONG", "1");
+  if (p.uvInterpolation == UvInterpolation::Affine) spec.defines.emplace_back("AFFINE_UV", "1");
+  if (textured) spec.defines.emplace_back("BASE_COLOR_MAP", "1");
+  return spec;
+}
+
+std::vector<ProgramSpec> ShadingLab::allPrograms() const {
+  std::vector<ProgramSpec> all;
+  ShadingParams p;
+  for (int mode = 0; mode < 3; ++mode)
+    for (int spec = 0; spec < 2; ++spec)
+      for (int uv = 0; uv < 2; ++uv)
+        for (int textured = 0; textured < 2; ++textured) {
+          p.mode = ShadingMode(mode);
+          p.specular = SpecularModel(spec);
+          p.uvInterpolation = UvInterpolation(uv);
+          for (int lights : {0, 4}) {
+            p.lights = lights;
+            all.push_back(programSpec(p, textured));
+          }
+        }
+  return all;
+}
+
+std::string ShadingLab::setup(LabContext& ctx) {
+  shaders_ = &ctx.shaders;
+  return {};
+}
+
+void ShadingLab::teardown() {
+  for (auto& p : programs_) p.reset();
+  for (auto& k : keys_) k.clear();
+  shaders_ = nullptr;
+}
+
+ProgramRef& ShadingLab::program(bool textured) {
+  const ProgramSpec spec = programSpec(params, textured);
+  const std::string key = spec.key();
+  if (keys_[textured] != key) {
+    programs_[textured] = shaders_->program(spec);
+    keys_[textured] = key;
+  }
+  return programs_[textured];
+}
+
+void ShadingLab::render(Frame& frame) {
+  auto pass = frame.pass("shade");
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);  // open meshes (the teapot) show their inside
+  glClearColor(0.02f, 0.02f, 0.025f, 1.0f);  // stays below 0.2 in sRGB: dark, not black
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  const glm::mat4 viewProj = frame.camera.projection(frame.aspect()) * frame.camera.view();
+  const Bounds bounds = frame.scene.worldBounds();
+  const float radius = bounds.radius();
+  glm::vec3 lightPos[4], lightPower[4];
+  const float elevation = glm::radians(params.lightElevationDeg);
+  for (int k = 0; k < 4; ++k) {
+    const float az = glm::radians(kLightAzimuthDeg[k]);
+    const glm::vec3 dir(std::cos(elevation) * std::sin(az), std::sin(elevation), std::cos(elevation) * std::cos(az));
+    lightPos[k] = bounds.center() + dir * radius * 1.5f;
+    lightPower[k] = kLightColor[k] * params.lightPower * radius * radius;
+  }
+
+  for (const Instance& inst : frame.scene.instances) {
+    const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
+    const gl::Texture2D* tex = params.textures ? frame.gpu.baseColorTexture(mat) : nullptr;
+    Program& prog = *program(tex != nullptr);
+    prog.use();
+    prog.set("u_model", inst.model);
+    prog.set("u_viewProj", viewProj);
+    prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(inst.model)));
+    prog.set("u_eye", frame.camera.eye());
+    for (int k = 0; k < 4; ++k) {
+      const std::string i = "[" + std::to_string(k) + "]";
+      prog.set(("u_lightPos" + i).c_str(), lightPos[k]);
+      prog.set(("u_lightPower" + i).c_str(), lightPower[k]);
+    }
+    prog.set("u_ambient", glm::vec3(1.0f));
+    prog.set("u_ka", params.ka);
+    prog.set("u_kd", params.kd);
+    prog.set("u_ks", params.ks);
+    prog.set("u_shininess", params.shininess);
+    prog.set("u_baseColor", mat.baseColor);
+    if (tex) {
+      tex->bind(0);
+      prog.set("u_baseColorMap", 0);
+    }
+    frame.gpu.draw(inst);
+  }
+}
+
+std::vector<ProgramRef> ShadingLab::activePrograms() const {
+  std::vector<ProgramRef> out;
+  for (auto& p : programs_)
+    if (p) out.push_back(p);
+  return out;
+}
+
+std::vector<std::string> ShadingLab::warnings() const {
+  std::vector<std::string> w;
+  if (params.lights == 0) w.push_back("no lights: only the ambient term ka is drawn");
+  if (params.lights > 0 && params.lightElevationDeg < 2.0f)
+    w.push_back("grazing light (elevation " + formatNumber(params.lightElevationDeg) +
+                " deg): N.L is near 0 on the floor, so it is lit by the ambient term alone");
+  if (params.mode == ShadingMode::Gouraud && params.shininess > 100.0f && params.tessellation < 64)
+    w.push_back("Gouraud with shininess " + formatNumber(params.shininess) +
+                ": highlights narrower than a triangle fall between vertices and are lost");
+  if (params.lightPower > 1000.0f) w.push_back("light power above 1000: most lit pixels saturate to white");
+  return w;
+}
+
+ReferenceSpec ShadingLab::reference() const {
+  return {{{"mode", "phong"}, {"uv_interpolation", "perspective"}, {"tessellation", std::to_string(kReferenceTessellation)}},
+          2,
+          "per-fragment Phong shading, 256-segment tessellation, perspective-correct UVs, 2x2 supersampled"};
+}
+
+std::vector<StressCase> ShadingLab::stressCases() const {
+  return {
+      {"grazing-light", {{"light_elevation", "0.1"}}, "", "", "grazing light"},
+      {"light-below-horizon", {{"light_elevation", "-10"}}, "", "", ""},
+      {"flat-degenerate-poles", {{"mode", "flat"}, {"tessellation", "3"}}, "sphere", "", ""},
+      {"gouraud-sharp-highlight", {{"mode", "gouraud"}, {"shininess", "1024"}, {"ks", "1"}}, "", "", "highlights narrower"},
+      {"shininess-1", {{"shininess", "1"}, {"ks", "1"}}, "", "", ""},
+      {"no-lights", {{"lights", "0"}}, "", "", "no lights"},
+      {"huge-power", {{"light_power", "1000000"}, {"lights", "4"}}, "", "", "saturate"},
+      {"affine-grazing-camera", {{"uv_interpolation", "affine"}}, "checker-plane", "pitch=0.5", ""},
+      {"extreme-depth-range", {}, "", "near=0.000001,far=1000000", ""},
+      {"camera-inside-sphere", {}, "sphere", "distance=0.5", ""},
+  };
+}
+
+std::vector<SweepAxis> ShadingLab::standardSweep() const {
+  return {{"mode", {"flat", "gouraud", "phong"}}, {"tessellation", {"8", "16", "32", "64", "128"}}};
+}
+
+}  // namespace shadelab

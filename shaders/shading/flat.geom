@@ -1,0 +1,44 @@
+#version 330 core
+// Shading lab, flat mode: one lighting evaluation per triangle, at its centroid, with the true
+// face normal (not any vertex's). The result is passed on `flat`, so every fragment of the face
+// gets exactly this colour. Zero-area triangles (the poles of a UV sphere) have no normal:
+// safeNormalize falls back to the averaged vertex normal rather than producing NaN.
+#include "common/lighting.glsl"
+#include "shading/interpolation.glsl"
+
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+
+uniform vec3 u_eye;
+
+in Vertex {
+  vec3 worldPos;
+  vec3 normal;
+  UV_INTERP vec2 uv;
+} gin[];
+
+out Surface {
+  vec3 worldPos;
+  vec3 normal;
+  UV_INTERP vec2 uv;
+  flat vec3 diffuse;
+  flat vec3 specular;
+} gout;
+
+void main() {
+  vec3 center = (gin[0].worldPos + gin[1].worldPos + gin[2].worldPos) / 3.0;
+  vec3 averaged = gin[0].normal + gin[1].normal + gin[2].normal;
+  vec3 face = cross(gin[1].worldPos - gin[0].worldPos, gin[2].worldPos - gin[0].worldPos);
+  vec3 N = safeNormalize(face, safeNormalize(averaged, vec3(0.0, 1.0, 0.0)));
+  Reflected lit = reflectLights(center, N, u_eye);
+  for (int i = 0; i < 3; ++i) {
+    gout.worldPos = gin[i].worldPos;
+    gout.normal = N;
+    gout.uv = gin[i].uv;
+    gout.diffuse = lit.diffuse;
+    gout.specular = lit.specular;
+    gl_Position = gl_in[i].gl_Position;
+    EmitVertex();
+  }
+  EndPrimitive();
+}

@@ -1,0 +1,44 @@
+#version 330 core
+// Shading lab, fragment stage. Phong shading lights every fragment with the interpolated
+// (renormalised) normal; flat and Gouraud only multiply the colour they were handed by the
+// surface albedo. Try: raise shininess in Gouraud mode and watch the highlight vanish between
+// vertices; switch to Phong and it comes back.
+#include "common/lighting.glsl"
+#include "common/output.glsl"
+#include "shading/interpolation.glsl"
+
+uniform vec3 u_eye;
+uniform vec4 u_baseColor;
+#ifdef BASE_COLOR_MAP
+uniform sampler2D u_baseColorMap;  // sRGB texture: sampled values are already linear
+#endif
+
+in Surface {
+  vec3 worldPos;
+  vec3 normal;
+  UV_INTERP vec2 uv;
+#if defined(MODE_GOURAUD) || defined(MODE_FLAT)
+  LIGHT_INTERP vec3 diffuse;
+  LIGHT_INTERP vec3 specular;
+#endif
+} fin;
+
+out vec4 o_color;
+
+void main() {
+  vec3 albedo = u_baseColor.rgb;
+#ifdef BASE_COLOR_MAP
+  albedo *= texture(u_baseColorMap, fin.uv).rgb;
+#endif
+#if defined(MODE_GOURAUD) || defined(MODE_FLAT)
+  vec3 diffuse = fin.diffuse;
+  vec3 specular = fin.specular;
+#else
+  // Seen from behind (open meshes, the inside of a teapot), light the side we see.
+  vec3 N = gl_FrontFacing ? fin.normal : -fin.normal;
+  Reflected lit = reflectLights(fin.worldPos, N, u_eye);
+  vec3 diffuse = lit.diffuse;
+  vec3 specular = lit.specular;
+#endif
+  o_color = encodeOutput(albedo * diffuse + specular);
+}
