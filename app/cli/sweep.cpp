@@ -66,7 +66,7 @@ int runSweep(const Options& o) {
                  std::to_string(o.size.y);
   report.renderer = s.context->describe();
   report.reference = host.lab().reference().description;
-  report.errorKeys = {"rmse", "max_error"};
+  report.errorKeys = {"rmse", "surface_rmse"};
   std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
                     std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
   for (auto& v : o.varies) cmd += " --vary " + v;
@@ -109,7 +109,8 @@ int runSweep(const Options& o) {
     row.params = settings;
     row.label = label;
     row.group = label.substr(0, label.find(' '));
-    row.values = {{"rmse", err.rmse}, {"max_error", err.maxError}, {"mean_error", err.meanError},
+    row.values = {{"rmse", err.rmse}, {"surface_rmse", err.coveredRmse}, {"max_error", err.maxError},
+                  {"mean_error", err.meanError},
                   {"bad_pixel_pct", err.badPixelPct}, {"non_finite", double(countNonFinite(image))},
                   {"gpu_ms", t.gpuMs}, {"cpu_ms", t.cpuMs}};
     row.thumbnail = thumbnail(image);
@@ -127,10 +128,10 @@ int runSweep(const Options& o) {
   const std::string csvPath = o.out + "/" + labId + "_sweep.csv", htmlPath = o.out + "/" + labId + "_sweep.html";
   if (auto err = writeTextFile(csvPath, sweepCsv(report)); !err.empty()) return fail(err);
   if (auto err = writeTextFile(htmlPath, sweepHtml(report)); !err.empty()) return fail(err);
-  std::printf("%-40s %10s %10s %10s\n", "configuration", "rmse", "max_error", "gpu_ms");
+  std::printf("%-40s %10s %12s %10s %10s\n", "configuration", "rmse", "surface_rmse", "max_error", "gpu_ms");
   for (auto& row : report.rows)
-    std::printf("%-40s %10.5f %10.5f %10.3f\n", row.label.c_str(), row.value("rmse"), row.value("max_error"),
-                row.value("gpu_ms"));
+    std::printf("%-40s %10.5f %12.5f %10.5f %10.3f\n", row.label.c_str(), row.value("rmse"), row.value("surface_rmse"),
+                row.value("max_error"), row.value("gpu_ms"));
   std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
   return 0;
 }

@@ -53,6 +53,7 @@ class LabHost {
   // Scene warnings (loader, degenerate UVs, missing textures) and the lab's own.
   std::vector<std::string> warnings() const;
   int sceneBuilds() const { return sceneBuilds_; }
+  const char* timerClock() const { return timer_.clockName(); }
 
  private:
   std::string ensureScene();

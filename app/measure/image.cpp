@@ -14,17 +14,22 @@ static float clamp01(float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.
 
 ImageError compareImages(const ImageF& a, const ImageF& b, double badThreshold) {
   ImageError e;
-  if (a.size != b.size || a.rgba.empty()) return {1.0, 1.0, 1.0, 100.0};
-  double sumSq = 0.0, sum = 0.0;
-  size_t bad = 0;
+  if (a.size != b.size || a.rgba.empty()) return {1.0, 1.0, 1.0, 100.0, 1.0, 0.0};
+  double sumSq = 0.0, sum = 0.0, coveredSq = 0.0;
+  size_t bad = 0, covered = 0;
   const size_t pixels = size_t(a.size.x) * a.size.y;
   for (size_t i = 0; i < pixels; ++i) {
-    double worst = 0.0;
+    double worst = 0.0, pixelSq = 0.0;
     for (int c = 0; c < 3; ++c) {
       const double d = std::abs(double(clamp01(a.rgba[i * 4 + c])) - clamp01(b.rgba[i * 4 + c]));
-      sumSq += d * d;
+      pixelSq += d * d;
       sum += d;
       worst = std::max(worst, d);
+    }
+    sumSq += pixelSq;
+    if (a.rgba[i * 4 + 3] > 0.5f && b.rgba[i * 4 + 3] > 0.5f) {
+      coveredSq += pixelSq;
+      ++covered;
     }
     e.maxError = std::max(e.maxError, worst);
     bad += worst > badThreshold;
@@ -32,6 +37,8 @@ ImageError compareImages(const ImageF& a, const ImageF& b, double badThreshold) 
   e.rmse = std::sqrt(sumSq / double(pixels * 3));
   e.meanError = sum / double(pixels * 3);
   e.badPixelPct = 100.0 * double(bad) / double(pixels);
+  e.coveredRmse = covered ? std::sqrt(coveredSq / double(covered * 3)) : 0.0;
+  e.coveredPct = 100.0 * double(covered) / double(pixels);
   return e;
 }
 

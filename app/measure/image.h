@@ -19,6 +19,10 @@ struct ImageError {
   double maxError = 0.0;  // largest per-channel absolute difference
   double meanError = 0.0;
   double badPixelPct = 0.0;  // pixels whose largest channel difference exceeds the threshold
+  // RMSE over the pixels both images cover (alpha > 0.5): the error *inside* surfaces, without
+  // the silhouette differences that dominate `rmse` when geometry is coarse. Labs clear to alpha 0.
+  double coveredRmse = 0.0;
+  double coveredPct = 0.0;  // share of pixels in that set
 };
 
 // Both images must have the same size.

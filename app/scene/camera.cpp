@@ -19,13 +19,16 @@ glm::vec3 OrbitCamera::eye() const {
 glm::mat4 OrbitCamera::view() const { return glm::lookAt(eye(), target, glm::vec3(0, 1, 0)); }
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
-  return glm::perspective(glm::radians(fovYDeg), aspect, nearPlane, farPlane);
+  // fov spans the *smaller* side of the image, so a framed scene stays framed in a tall viewport.
+  float fovY = glm::radians(fovYDeg);
+  if (aspect < 1.0f) fovY = 2.0f * std::atan(std::tan(fovY * 0.5f) / aspect);
+  return glm::perspective(fovY, aspect, nearPlane, farPlane);
 }
 
 void OrbitCamera::frame(const glm::vec3& center, float radius) {
   target = center;
   radius = std::max(radius, 1e-4f);
-  distance = radius / std::sin(glm::radians(fovYDeg) * 0.5f) * 0.8f;
+  distance = radius / std::sin(glm::radians(fovYDeg) * 0.5f);  // the sphere just fits
   fitDepthRange(center, radius);
 }
 

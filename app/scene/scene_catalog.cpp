@@ -47,7 +47,7 @@ const std::vector<Builder>& builders() {
       {"shading", "sphere and torus over a two-triangle checker floor (the shading lab's default)",
        [](Scene& s, int seg) {
          const int floor = checkerFloor(s);
-         add(s, makePlane(8.0f, 1, 2.0f), glm::mat4(1.0f), floor);
+         add(s, makePlane(6.0f, 1, 1.5f), glm::mat4(1.0f), floor);
          add(s, makeUvSphere(1.0f, seg), at(-1.3f, 1.0f, 0.0f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
          add(s, makeTorus(0.75f, 0.3f, seg), glm::rotate(at(1.4f, 1.0f, 0.0f), 1.2f, {1, 0, 0}),
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
@@ -56,7 +56,7 @@ const std::vector<Builder>& builders() {
       {"torus", "one torus", [](Scene& s, int seg) { add(s, makeTorus(1.0f, 0.4f, seg), glm::mat4(1.0f)); }},
       {"cube", "one unit cube", [](Scene& s, int) { add(s, makeBox(glm::vec3(0.5f)), glm::mat4(1.0f)); }},
       {"checker-plane", "a two-triangle checker floor alone (perspective-correct vs affine UVs)",
-       [](Scene& s, int) { add(s, makePlane(8.0f, 1, 2.0f), glm::mat4(1.0f), checkerFloor(s)); }},
+       [](Scene& s, int) { add(s, makePlane(6.0f, 1, 1.5f), glm::mat4(1.0f), checkerFloor(s)); }},
       {"shadow-test", "ground, four pillars, a torus and a sphere (grazing, acne-prone surfaces)",
        [](Scene& s, int seg) {
          add(s, makePlane(12.0f, 1, 6.0f), glm::mat4(1.0f), addMaterial(s, "ground", {0.75f, 0.75f, 0.7f}));

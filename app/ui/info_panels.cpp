@@ -45,7 +45,9 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
     ImGui::Text("%.3f", cpu);
     ImGui::EndTable();
   }
-  ImGui::Text("UI %.2f ms   scene: %zu triangles, %d textures, %d builds", uiMs, host.scene().triangleCount(),
+  ImGui::Text("timer: %s", host.timerClock());
+  ImGui::Text("UI %.2f ms", uiMs);
+  ImGui::TextWrapped("scene: %zu triangles, %d textures decoded, built %d times", host.scene().triangleCount(),
               host.gpuScene().texturesUploaded(), host.sceneBuilds());
   std::vector<float> frame(history.frameMs.begin(), history.frameMs.end()), g(history.gpuMs.begin(), history.gpuMs.end());
   if (!frame.empty()) {

@@ -61,7 +61,7 @@ class ImGuiParams final : public ParamVisitor {
 
 bool drawParamWidgets(Lab& lab) {
   ImGuiParams v;
-  ImGui::PushItemWidth(-150);
+  ImGui::PushItemWidth(-175);
   lab.visitParams(v);
   ImGui::PopItemWidth();
   return v.changed;

@@ -186,7 +186,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       ImGui::NewFrame();
       int fbw = 0, fbh = 0;
       glfwGetFramebufferSize(window, &fbw, &fbh);
-      const float leftW = 340, rightW = 360;
+      const float leftW = 380, rightW = 380;
       const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
       ImGui::SetNextWindowPos({0, 0});
       ImGui::SetNextWindowSize({leftW, float(fbh)});

@@ -22,7 +22,7 @@ struct ShadingParams {
   float ks = 0.5f;              // specular reflectance
   float shininess = 64.0f;      // specular exponent p
   int lights = 2;               // point lights in use, 0..4
-  float lightPower = 4.0f;      // radiant intensity in units of scene-radius^2 (so any scene size looks alike)
+  float lightPower = 0.8f;      // irradiance at the scene centre (so any scene size looks alike)
   float lightElevationDeg = 45; // height of the lights above the horizon; near 0 = grazing
   bool textures = true;         // base-colour textures (the checker floor, OBJ/glTF maps)
 };

@@ -1,0 +1,90 @@
+// Every lab: every program variant compiles; setup -> 3 frames -> teardown with no GL error and
+// no GL object left behind; only the passes and textures the configuration needs.
+#include <gtest/gtest.h>
+
+#include "gl_test.h"
+
+using namespace shadelab;
+
+TEST(Shaders, EveryProgramOfEveryLabCompiles) {
+  ShaderLibrary lib(test::builtinShaders());
+  lib.onDiagnostic = [](const Diagnostic& d) { ADD_FAILURE() << d.format(); };
+  for (auto& id : labIds())
+    for (auto& spec : makeLab(id)->allPrograms()) {
+      auto p = lib.program(spec);
+      EXPECT_TRUE(p->hasGoodProgram()) << id << ": " << spec.key();
+    }
+}
+
+TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
+  gl::drainErrors();
+  const int before = gl::liveObjectsTotal();
+  {
+    LabHost host(test::builtinShaders());
+    for (auto& id : labIds()) {
+      ASSERT_EQ(host.selectLab(id), "");
+      for (int i = 0; i < 3; ++i) host.renderFrame({128, 72}, float(i) / 60.0f, 1.0f / 60.0f);
+      EXPECT_EQ(gl::drainErrors(), "") << id;
+      EXPECT_FALSE(host.lastPasses().empty()) << id << " ran no pass";
+      // Switching configurations must not accumulate objects either.
+      const int during = gl::liveObjectsTotal();
+      host.set("mode=flat");
+      host.renderFrame({128, 72});
+      host.set("mode=phong");
+      host.renderFrame({128, 72});
+      EXPECT_LE(gl::liveObjectsTotal(), during + 2) << "programs of a dropped variant were kept alive";
+    }
+  }
+  EXPECT_EQ(gl::drainErrors(), "");
+  for (int k = 0; k < int(gl::Kind::Count); ++k)
+    EXPECT_EQ(gl::liveObjects(gl::Kind(k)), 0) << gl::kindName(gl::Kind(k)) << " objects leaked";
+  EXPECT_EQ(gl::liveObjectsTotal(), before);
+}
+
+TEST(Needs, TexturesDecodedOnlyWhenUsed) {
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectLab("shading"), "");
+  host.renderFrame({64, 64});
+  EXPECT_EQ(host.gpuScene().texturesUploaded(), 1);  // the checker floor
+  ASSERT_EQ(host.set("shading.textures=off"), "");
+  host.renderFrame({64, 64});
+  EXPECT_EQ(host.gpuScene().texturesUploaded(), 0);
+  for (auto& m : host.scene().meshes) EXPECT_TRUE(m.uvs.empty());
+  // A parameter that changes no need does not rebuild the scene.
+  const int builds = host.sceneBuilds();
+  host.set("shading.ks=0.9");
+  host.renderFrame({64, 64});
+  EXPECT_EQ(host.sceneBuilds(), builds);
+  host.set("shading.tessellation=40");
+  host.renderFrame({64, 64});
+  EXPECT_EQ(host.sceneBuilds(), builds + 1);
+}
+
+TEST(Needs, FlatModeAloneBuildsAGeometryStage) {
+  LabHost host(test::builtinShaders());
+  host.set("shading.mode=phong");
+  host.renderFrame({64, 64});
+  for (auto& p : host.lab().activePrograms())
+    for (auto& s : p->spec().stages) EXPECT_NE(s.type, GLenum(GL_GEOMETRY_SHADER));
+  host.set("shading.mode=flat");
+  host.renderFrame({64, 64});
+  bool geometry = false;
+  for (auto& p : host.lab().activePrograms())
+    for (auto& s : p->spec().stages) geometry |= s.type == GL_GEOMETRY_SHADER;
+  EXPECT_TRUE(geometry);
+}
+
+TEST(Host, BadInputKeepsLastGoodState) {
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectScene("sphere"), "");
+  EXPECT_NE(host.selectScene("/no/such/file.obj"), "");
+  EXPECT_EQ(host.sceneId(), "sphere");
+  EXPECT_EQ(host.selectLab("nope"), "unknown lab 'nope' (valid: shading)");
+  EXPECT_EQ(host.lab().id(), "shading");
+  nlohmann::json bad = {{"params", {{"mode", "phong"}, {"shininess", 99999}}}};
+  host.set("shading.mode=flat");
+  EXPECT_NE(host.applyStateJson(bad), "");
+  CollectAsText c;
+  host.lab().visitParams(c);
+  EXPECT_EQ(c.values.front().second, "flat");  // the preset was all-or-nothing
+}

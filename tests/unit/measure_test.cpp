@@ -1,0 +1,59 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "measure/image.h"
+#include "measure/report.h"
+
+using namespace shadelab;
+
+static ImageF flat(int w, int h, float v) {
+  ImageF img;
+  img.size = {w, h};
+  img.rgba.assign(size_t(w) * h * 4, v);
+  return img;
+}
+
+TEST(ImageMetrics, RmseMaxAndBadPixels) {
+  ImageF a = flat(4, 4, 0.5f), b = flat(4, 4, 0.5f);
+  EXPECT_DOUBLE_EQ(compareImages(a, b).rmse, 0.0);
+  b.at(0, 0)[0] = 1.0f;  // one channel of one pixel off by 0.5
+  const ImageError e = compareImages(a, b);
+  EXPECT_NEAR(e.rmse, std::sqrt(0.25 / 48.0), 1e-9);
+  EXPECT_DOUBLE_EQ(e.maxError, 0.5);
+  EXPECT_DOUBLE_EQ(e.badPixelPct, 100.0 / 16.0);
+  EXPECT_DOUBLE_EQ(compareImages(a, flat(2, 2, 0.5f)).rmse, 1.0);  // size mismatch is maximal error
+}
+
+TEST(ImageMetrics, NonFiniteCountedAndDownsampleAverages) {
+  ImageF a = flat(4, 4, 0.0f);
+  a.at(1, 1)[2] = NAN;
+  a.at(2, 2)[0] = INFINITY;
+  EXPECT_EQ(countNonFinite(a), 2u);
+  ImageF b = flat(4, 4, 0.0f);
+  b.at(0, 0)[0] = 1.0f;
+  const ImageF d = downsample(b, 2);
+  EXPECT_EQ(d.size, glm::ivec2(2, 2));
+  EXPECT_FLOAT_EQ(d.at(0, 0)[0], 0.25f);
+}
+
+TEST(Report, ParetoFrontCsvAndHtml) {
+  SweepReport r;
+  r.errorKeys = {"rmse"};
+  auto row = [](const char* label, double err, double ms) {
+    SweepRow s;
+    s.label = label;
+    s.group = label;
+    s.params = {{"mode", label}};
+    s.values = {{"rmse", err}, {"gpu_ms", ms}};
+    return s;
+  };
+  r.rows = {row("a", 0.3, 1.0), row("b", 0.1, 5.0), row("c", 0.4, 6.0), row("d", 0.05, 9.0)};
+  EXPECT_EQ(paretoFront(r, "rmse"), (std::vector<size_t>{0, 1, 3}));  // c is beaten by b on both axes
+  EXPECT_EQ(sweepCsv(r), "mode,rmse,gpu_ms\na,0.3,1\nb,0.1,5\nc,0.4,6\nd,0.05,9\n");
+  r.command = "shadelab sweep --lab x <&>";
+  const std::string html = sweepHtml(r);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("shadelab sweep --lab x &lt;&amp;&gt;"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);  // self-contained and static
+}

@@ -1,0 +1,85 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "labs/shading/shading_lab.h"
+
+using namespace shadelab;
+
+static std::string setParam(Lab& lab, const std::string& key, const std::string& value) {
+  SetFromString s(lab.id(), key, value);
+  lab.visitParams(s);
+  return s.result();
+}
+
+TEST(Params, SetsEveryKind) {
+  ShadingLab lab;
+  EXPECT_EQ(setParam(lab, "mode", "flat"), "");
+  EXPECT_EQ(lab.params.mode, ShadingMode::Flat);
+  EXPECT_EQ(setParam(lab, "shininess", "128.5"), "");
+  EXPECT_FLOAT_EQ(lab.params.shininess, 128.5f);
+  EXPECT_EQ(setParam(lab, "lights", "4"), "");
+  EXPECT_EQ(lab.params.lights, 4);
+  EXPECT_EQ(setParam(lab, "textures", "off"), "");
+  EXPECT_FALSE(lab.params.textures);
+}
+
+TEST(Params, RejectsOutOfRangeAndKeepsValue) {
+  ShadingLab lab;
+  const float before = lab.params.shininess;
+  EXPECT_EQ(setParam(lab, "shininess", "0"), "shading.shininess: invalid value '0' (valid: a number in [1, 1024])");
+  EXPECT_EQ(setParam(lab, "shininess", "nan"), "shading.shininess: invalid value 'nan' (valid: a number in [1, 1024])");
+  EXPECT_EQ(setParam(lab, "shininess", "12abc"), "shading.shininess: invalid value '12abc' (valid: a number in [1, 1024])");
+  EXPECT_FLOAT_EQ(lab.params.shininess, before);
+  EXPECT_EQ(setParam(lab, "lights", "2.5"), "shading.lights: invalid value '2.5' (valid: an integer in [0, 4])");
+  EXPECT_EQ(setParam(lab, "lights", "5"), "shading.lights: invalid value '5' (valid: an integer in [0, 4])");
+  EXPECT_EQ(setParam(lab, "textures", "maybe"), "shading.textures: invalid value 'maybe' (valid: on, off, true, false, 1, 0)");
+  EXPECT_EQ(setParam(lab, "mode", "toon"), "shading.mode: invalid value 'toon' (valid: flat, gouraud, phong)");
+}
+
+TEST(Params, UnknownKeyListsValidOnes) {
+  ShadingLab lab;
+  const std::string err = setParam(lab, "bogus", "1");
+  EXPECT_NE(err.find("unknown parameter 'shading.bogus'"), std::string::npos);
+  EXPECT_NE(err.find("shading.mode"), std::string::npos);
+  EXPECT_NE(err.find("shading.light_elevation"), std::string::npos);
+}
+
+TEST(Params, TextRoundTripAndReset) {
+  ShadingLab lab;
+  setParam(lab, "mode", "gouraud");
+  setParam(lab, "ka", "0.3333333");
+  CollectAsText saved;
+  lab.visitParams(saved);
+  lab.resetParams();
+  EXPECT_EQ(lab.params.mode, ShadingMode::Phong);
+  for (auto& [k, v] : saved.values) EXPECT_EQ(setParam(lab, k, v), "") << k << "=" << v;
+  EXPECT_EQ(lab.params.mode, ShadingMode::Gouraud);
+  EXPECT_FLOAT_EQ(lab.params.ka, 0.3333333f);  // formatNumber keeps every float bit
+}
+
+TEST(Params, DescribeListsEveryParamOnce) {
+  ShadingLab lab;
+  DescribeParams d("shading");
+  lab.visitParams(d);
+  CollectAsText c;
+  lab.visitParams(c);
+  EXPECT_EQ(d.lines.size(), c.values.size());
+  EXPECT_NE(d.lines.front().find("shading.mode = phong  one of flat, gouraud, phong"), std::string::npos);
+}
+
+TEST(Params, NeedsFollowConfiguration) {
+  ShadingLab lab;
+  EXPECT_TRUE(lab.needs().baseColorTextures);
+  EXPECT_FALSE(lab.needs().tangents);  // no normal maps in this lab
+  setParam(lab, "textures", "off");
+  EXPECT_FALSE(lab.needs().baseColorTextures);
+  EXPECT_FALSE(lab.needs().uvs);
+}
+
+TEST(Params, ProgramVariantsAreDistinct) {
+  ShadingLab lab;
+  std::set<std::string> keys;
+  for (auto& spec : lab.allPrograms()) EXPECT_TRUE(keys.insert(spec.key()).second) << spec.key();
+  EXPECT_EQ(keys.size(), 48u);
+}

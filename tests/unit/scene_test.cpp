@@ -1,0 +1,152 @@
+// Loaders on good and malformed files, procedural meshes, tangents, camera parsing. No GL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "scene/camera.h"
+#include "scene/loaders.h"
+#include "scene/procedural.h"
+#include "scene/scene_catalog.h"
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+static const fs::path kData = SHADELAB_TEST_DATA;
+
+static fs::path tempFile(const std::string& name, const std::string& text) {
+  const fs::path p = fs::temp_directory_path() / name;
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
+}
+
+TEST(Loaders, OffTriangulatesPolygons) {
+  Scene s;
+  ASSERT_EQ(loadSceneFile(kData / "quad.off", s), "");
+  ASSERT_EQ(s.meshes.size(), 1u);
+  EXPECT_EQ(s.meshes[0].triangleCount(), 3u);  // a triangle and a quad
+  EXPECT_EQ(s.meshes[0].normals.size(), 4u);
+}
+
+TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
+  Scene s;
+  EXPECT_EQ(loadSceneFile(kData / "malformed.off", s), (kData / "malformed.off").string() + ": face 1 has too few indices");
+  const auto badIndex = tempFile("shadelab_badindex.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  EXPECT_EQ(loadSceneFile(badIndex, s), badIndex.string() + ": index 7 out of range (3 vertices)");
+  const auto nanVertex = tempFile("shadelab_nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(loadSceneFile(nanVertex, s), nanVertex.string() + ": vertex 1 is missing or malformed");
+  const auto notOff = tempFile("shadelab_not.off", "PLY\n");
+  EXPECT_EQ(loadSceneFile(notOff, s), notOff.string() + ": not an OFF file (first line must be OFF)");
+  EXPECT_EQ(loadSceneFile("/no/such.obj", s), "/no/such.obj: no such file");
+  EXPECT_EQ(loadSceneFile("mesh.stl", s), "mesh.stl: unknown scene file type '.stl' (valid: .gltf, .glb, .obj, .off)");
+  const auto badGltf = tempFile("shadelab_bad.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { ");
+  EXPECT_EQ(loadSceneFile(badGltf, s).rfind(badGltf.string() + ": ", 0), 0u);
+  const auto emptyObj = tempFile("shadelab_empty.obj", "# nothing\n");
+  EXPECT_EQ(loadSceneFile(emptyObj, s), emptyObj.string() + ": no faces in OBJ file");
+}
+
+TEST(Loaders, GltfWithNodeTransformsAndMaterial) {
+  Scene s;
+  ASSERT_EQ(loadSceneFile(kData / "triangle.gltf", s), "");
+  ASSERT_EQ(s.instances.size(), 2u);  // one mesh, two nodes
+  EXPECT_FLOAT_EQ(s.instances[1].model[3][0], 2.0f);  // translation of the second node
+  EXPECT_EQ(s.meshes[0].triangleCount(), 1u);
+  EXPECT_EQ(s.meshes[0].uvs.size(), 3u);
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[0].y, 0.0f);  // glTF v=1 (bottom of the image) -> our v=0
+  EXPECT_FLOAT_EQ(s.meshes[0].uvs[2].y, 1.0f);
+  const Material& m = s.materials[size_t(s.meshes[0].material)];
+  EXPECT_FLOAT_EQ(m.baseColor.r, 1.0f);
+  EXPECT_FLOAT_EQ(m.baseColor.g, 0.5f);
+}
+
+TEST(Loaders, SharedObjWithTexturesIsNotDecodedAtLoad) {
+  const fs::path data = dataDirectory();
+  if (data.empty()) GTEST_SKIP() << "shared data folder not found";
+  Scene s;
+  SceneNeeds needs;
+  needs.uvs = true;
+  ASSERT_EQ(buildScene("spot", needs, s), "");
+  EXPECT_EQ(s.meshes[0].positions.size(), 3225u);  // UV seams split the 2,930 positions
+  EXPECT_EQ(s.meshes[0].triangleCount(), 5856u);
+  ASSERT_EQ(s.images.size(), 1u);
+  EXPECT_TRUE(s.images[0].rgba.empty());  // recorded, not decoded
+  std::vector<unsigned char> rgba;
+  glm::ivec2 size;
+  EXPECT_EQ(decodeImage(s.images[0], rgba, size), "");
+  EXPECT_EQ(size, glm::ivec2(1024, 1024));
+}
+
+TEST(Scenes, LeaveOutUvsAndTangentsUnlessNeeded) {
+  Scene s;
+  SceneNeeds needs;
+  ASSERT_EQ(buildScene("shading", needs, s), "");
+  for (auto& m : s.meshes) {
+    EXPECT_TRUE(m.uvs.empty());
+    EXPECT_TRUE(m.tangents.empty());
+  }
+  needs.uvs = needs.tangents = true;
+  ASSERT_EQ(buildScene("shading", needs, s), "");
+  for (auto& m : s.meshes) EXPECT_EQ(m.tangents.size(), m.positions.size());
+  EXPECT_NE(buildScene("nowhere", needs, s).find("unknown scene 'nowhere' (valid: shading, sphere"), std::string::npos);
+}
+
+TEST(Mesh, SphereNormalsPointOutAndTessellationScales) {
+  const MeshData coarse = makeUvSphere(1.0f, 8), fine = makeUvSphere(1.0f, 64);
+  EXPECT_EQ(coarse.triangleCount(), 8u * 4 * 2);
+  EXPECT_EQ(fine.triangleCount(), 64u * 32 * 2);
+  for (size_t i = 0; i < fine.positions.size(); ++i) EXPECT_NEAR(glm::dot(fine.positions[i], fine.normals[i]), 1.0f, 1e-5f);
+  // Winding: counter-clockwise seen from outside, so the geometric normal agrees with the vertex normals.
+  MeshData recomputed = fine;
+  computeNormals(recomputed);
+  for (size_t i = 0; i < fine.normals.size(); ++i)
+    if (std::abs(fine.normals[i].y) < 0.99f) EXPECT_GT(glm::dot(recomputed.normals[i], fine.normals[i]), 0.99f);
+}
+
+TEST(Mesh, DegenerateGeometryNeverYieldsNaN) {
+  MeshData m;
+  m.positions = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  m.uvs = {{0, 0}, {0, 0}, {0, 0}};  // zero-area in UV space too
+  m.indices = {0, 1, 2};
+  computeNormals(m);
+  EXPECT_EQ(computeTangents(m), 3);
+  for (auto& t : m.tangents) {
+    EXPECT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
+    EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-5f);
+  }
+}
+
+TEST(Mesh, MirroredUvsFlipHandedness) {
+  MeshData m = makePlane(2.0f, 1, 1.0f);
+  computeTangents(m);
+  const float handedness = m.tangents[0].w;
+  EXPECT_EQ(std::abs(handedness), 1.0f);
+  for (auto& uv : m.uvs) uv.x = -uv.x;
+  computeTangents(m);
+  EXPECT_EQ(m.tangents[0].w, -handedness);
+}
+
+TEST(Camera, ParseAndErrors) {
+  OrbitCamera c;
+  EXPECT_EQ(c.parse("yaw=10,pitch=-5,distance=3,target=1;2;3,fov=60"), "");
+  EXPECT_FLOAT_EQ(c.yawDeg, 10.0f);
+  EXPECT_FLOAT_EQ(c.target.z, 3.0f);
+  OrbitCamera again;
+  EXPECT_EQ(again.parse(c.toString()), "");
+  EXPECT_NEAR(glm::length(again.eye() - c.eye()), 0.0f, 1e-5f);
+  EXPECT_EQ(c.parse("tilt=3"), "--camera: unknown key 'tilt' (valid keys: yaw, pitch, distance, target=x;y;z, fov, near, far)");
+  EXPECT_EQ(c.parse("pitch=95"), "--camera: bad value for pitch: '95'");
+  EXPECT_EQ(c.parse("target=1;2"), "--camera: bad value for target: '1;2'");
+  EXPECT_EQ(c.parse("near=10,far=1"), "--camera: near must be smaller than far");
+  EXPECT_FLOAT_EQ(c.yawDeg, 10.0f);  // a failed parse changes nothing
+}
+
+TEST(Camera, ProjectionFinite) {
+  OrbitCamera c;
+  c.nearPlane = 1e-6f;
+  c.farPlane = 1e6f;
+  for (float aspect : {0.1f, 1.0f, 10.0f}) {
+    const glm::mat4 p = c.projection(aspect) * c.view();
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) EXPECT_TRUE(std::isfinite(p[i][j]));
+  }
+}

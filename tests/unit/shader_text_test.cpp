@@ -1,0 +1,97 @@
+// Preprocessor (#include, defines, #line mapping) and driver log parsing, no GL.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+#include "shader/compile_log.h"
+#include "shader/preprocessor.h"
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+class ShaderText : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::temp_directory_path() / ("shadelab_pp_" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    fs::create_directories(root / "common");
+    fs::create_directories(root / "lab");
+  }
+  void TearDown() override { fs::remove_all(root); }
+  void write(const std::string& rel, const std::string& text) { std::ofstream(root / rel) << text; }
+  fs::path root;
+};
+
+TEST_F(ShaderText, VersionFirstThenDefinesThenLineMappedSource) {
+  write("lab/a.frag", "// header comment\n#version 410 core\nvoid main() {}\n");
+  auto out = preprocessShader(ShaderSearchPath({root}), "lab/a.frag", {{"MODE_FLAT", "1"}});
+  ASSERT_TRUE(out.ok()) << out.error;
+  EXPECT_EQ(out.text.rfind("#version 410 core\n#define MODE_FLAT 1\n#line 1 0\n", 0), 0u) << out.text;
+  // Line 3 of the file ("void main") must still be line 3 after #line 1 0.
+  const auto body = out.text.substr(out.text.find("#line 1 0\n") + 10);
+  EXPECT_EQ(body, "// header comment\n\nvoid main() {}\n");
+}
+
+TEST_F(ShaderText, IncludesAreExpandedOnceWithLineDirectives) {
+  write("common/light.glsl", "float light() { return 1.0; }\n");
+  write("lab/b.frag", "#version 330 core\n#include \"common/light.glsl\"\n#include \"common/light.glsl\"\nvoid main() {}\n");
+  auto out = preprocessShader(ShaderSearchPath({root}), "lab/b.frag", {});
+  ASSERT_TRUE(out.ok()) << out.error;
+  ASSERT_EQ(out.files.size(), 2u);
+  EXPECT_EQ(out.files[1], root / "common/light.glsl");
+  EXPECT_NE(out.text.find("#line 1 1\nfloat light() { return 1.0; }\n#line 3 0\n"), std::string::npos) << out.text;
+  EXPECT_EQ(out.text.find("float light()"), out.text.rfind("float light()"));  // included once
+  EXPECT_NE(out.text.find("#line 4 0\nvoid main"), std::string::npos) << out.text;
+}
+
+TEST_F(ShaderText, SiblingIncludeAndStudentOverride) {
+  write("lab/helper.glsl", "// built-in helper\n");
+  write("lab/c.frag", "#version 330 core\n#include \"helper.glsl\"\n");
+  const fs::path student = root / "student";
+  fs::create_directories(student / "lab");
+  std::ofstream(student / "lab/helper.glsl") << "// student helper\n";
+  auto out = preprocessShader(ShaderSearchPath({student, root}), "lab/c.frag", {});
+  ASSERT_TRUE(out.ok()) << out.error;
+  EXPECT_NE(out.text.find("// student helper"), std::string::npos);
+  EXPECT_EQ(out.relPaths[1], "lab/helper.glsl");
+}
+
+TEST_F(ShaderText, MissingAndCircularIncludesAreErrorsAtFileLine) {
+  write("lab/d.frag", "#version 330 core\n\n#include \"nope.glsl\"\n");
+  auto out = preprocessShader(ShaderSearchPath({root}), "lab/d.frag", {});
+  EXPECT_EQ(out.error, (root / "lab/d.frag").string() + ":3: error: cannot find include \"nope.glsl\"");
+  write("lab/x.glsl", "#include \"y.glsl\"\n");
+  write("lab/y.glsl", "#include \"x.glsl\"\n");
+  write("lab/e.frag", "#version 330 core\n#include \"x.glsl\"\n");
+  out = preprocessShader(ShaderSearchPath({root}), "lab/e.frag", {});
+  EXPECT_NE(out.error.find("is circular"), std::string::npos) << out.error;
+  out = preprocessShader(ShaderSearchPath({root}), "lab/none.frag", {});
+  EXPECT_EQ(out.error, "lab/none.frag: error: shader file not found in the search path");
+}
+
+TEST(CompileLog, MesaNvidiaAmdAndRawLines) {
+  const std::vector<fs::path> files = {"shaders/lab/a.frag", "shaders/common/light.glsl"};
+  const auto d = parseCompileLog(
+      "0:12(5): error: `foo' undeclared\n"
+      "1(7) : error C1008: undefined variable \"bar\"\n"
+      "ERROR: 0:3: 'baz' : undeclared identifier\n"
+      "WARNING: 1:9: unused\n"
+      "error: linking failed\n",
+      files);
+  ASSERT_EQ(d.size(), 5u);
+  EXPECT_EQ(d[0].format(), "shaders/lab/a.frag:12:5: error: `foo' undeclared");
+  EXPECT_EQ(d[1].format(), "shaders/common/light.glsl:7: error: C1008: undefined variable \"bar\"");
+  EXPECT_EQ(d[2].format(), "shaders/lab/a.frag:3: error: 'baz' : undeclared identifier");
+  EXPECT_FALSE(d[3].isError);
+  EXPECT_EQ(d[3].file, "shaders/common/light.glsl");
+  EXPECT_EQ(d[4].line, 0);
+  EXPECT_EQ(d[4].message, "error: linking failed");  // unparsed: kept verbatim
+}
+
+TEST(CompileLog, UnknownSourceStringIsNamedNotDropped) {
+  const auto d = parseCompileLog("7:1(1): error: x\n", {"a.frag"});
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].file, "source-string 7");
+}
