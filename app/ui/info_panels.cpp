@@ -50,12 +50,13 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
   ImGui::TextWrapped("scene: %zu triangles, %d textures decoded, built %d times", host.scene().triangleCount(),
               host.gpuScene().texturesUploaded(), host.sceneBuilds());
   std::vector<float> frame(history.frameMs.begin(), history.frameMs.end()), g(history.gpuMs.begin(), history.gpuMs.end());
-  if (!frame.empty()) {
+  if (frame.size() >= 2) {
+    const ImVec2 plotSize(ImGui::GetContentRegionAvail().x, 50);  // 1.86 takes no negative widths here
     const float top = *std::max_element(frame.begin(), frame.end()) * 1.1f;
     const std::string fl = "frame " + std::to_string(int(frame.back() + 0.5f)) + " ms";
-    ImGui::PlotLines("##frame", frame.data(), int(frame.size()), 0, fl.c_str(), 0.0f, top, ImVec2(-1, 50));
+    ImGui::PlotLines("##frame", frame.data(), int(frame.size()), 0, fl.c_str(), 0.0f, top, plotSize);
     const std::string gl = "GPU " + std::to_string(int(g.back() + 0.5f)) + " ms";
-    ImGui::PlotLines("##gpu", g.data(), int(g.size()), 0, gl.c_str(), 0.0f, top, ImVec2(-1, 50));
+    ImGui::PlotLines("##gpu", g.data(), int(g.size()), 0, gl.c_str(), 0.0f, top, plotSize);
   }
 }
 
@@ -85,7 +86,9 @@ void drawShaderPanel(LabHost& host, std::string& status) {
     }
     if (!failed) continue;
     for (auto& d : p->diagnostics()) {
-      ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", d.format().c_str());
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.4f, 1));
+      ImGui::TextWrapped("%s", d.format().c_str());
+      ImGui::PopStyleColor();
       if (!d.sourceLine.empty()) {
         ImGui::TextUnformatted(("    " + d.sourceLine).c_str());
         if (d.column > 0) ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "    %s^", std::string(size_t(d.column - 1), ' ').c_str());
@@ -97,8 +100,14 @@ void drawShaderPanel(LabHost& host, std::string& status) {
 }
 
 void drawWarnings(const LabHost& host, const std::string& lastError) {
-  if (!lastError.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", lastError.c_str());
-  for (auto& w : host.warnings()) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "! %s", w.c_str());
+  if (!lastError.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.45f, 1));
+    ImGui::TextWrapped("%s", lastError.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.8f, 0.3f, 1));
+  for (auto& w : host.warnings()) ImGui::TextWrapped("! %s", w.c_str());
+  ImGui::PopStyleColor();
 }
 
 }  // namespace shadelab

@@ -1,0 +1,96 @@
+// Benchmarks that need a GL context (OSMesa or EGL). Run: build/bench/shadelab_bench
+//
+// BM_ReloadLatency: a student saves shade.frag; how long until the first frame drawn with the new
+// program? Measured from just before the write to the end of the first frame whose program build
+// count went up, through the real path: inotify -> debounce -> preprocess -> compile -> link -> draw.
+// BM_CompileProgram: the compile + link part of that, for one program.
+// BM_Frame/<mode>: one 1280x720 frame of the shading lab's default scene, per shading mode.
+#include <benchmark/benchmark.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "context/gl_context.h"
+#include "host/lab_host.h"
+
+namespace fs = std::filesystem;
+using namespace shadelab;
+
+namespace {
+
+std::unique_ptr<GlContext> g_context;
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void BM_ReloadLatency(benchmark::State& state) {
+  const fs::path builtin = fs::path(SHADELAB_SOURCE_DIR) / "shaders";
+  const fs::path student = fs::temp_directory_path() / ("shadelab_bench_" + std::to_string(::getpid()));
+  fs::create_directories(student / "shading");
+  const fs::path frag = student / "shading" / "shade.frag";
+  const std::string original = readFile(builtin / "shading" / "shade.frag");
+  std::ofstream(frag) << original;
+  LabHost host(ShaderSearchPath({student, builtin}));
+  const glm::ivec2 size(640, 360);
+  host.renderFrame(size);
+  int edit = 0;
+  for (auto _ : state) {
+    const Program& p = *host.lab().activePrograms().front();
+    const int generation = p.generation();
+    const auto start = std::chrono::steady_clock::now();
+    std::ofstream(frag, std::ios::trunc) << original << "\n// edit " << ++edit << "\n";  // new content each time
+    while (p.generation() == generation) host.renderFrame(size);
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  fs::remove_all(student);
+}
+BENCHMARK(BM_ReloadLatency)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(15);
+
+// The compile + link share of the reload: one program of the shading lab, rebuilt from disk.
+void BM_CompileProgram(benchmark::State& state) {
+  LabHost host(ShaderSearchPath({fs::path(SHADELAB_SOURCE_DIR) / "shaders"}));
+  host.renderFrame({64, 64});
+  Program& p = *host.lab().activePrograms().front();
+  for (auto _ : state) host.shaders().rebuild(p, /*force=*/true);
+}
+BENCHMARK(BM_CompileProgram)->Unit(benchmark::kMillisecond)->Iterations(10);
+
+void BM_Frame(benchmark::State& state) {
+  static const char* modes[] = {"flat", "gouraud", "phong"};
+  LabHost host(ShaderSearchPath({fs::path(SHADELAB_SOURCE_DIR) / "shaders"}));
+  host.set(std::string("shading.mode=") + modes[state.range(0)]);
+  const glm::ivec2 size(1280, 720);
+  for (int i = 0; i < 3; ++i) host.renderFrame(size);
+  for (auto _ : state) {
+    double gpu = 0;
+    for (auto& pass : host.renderFrame(size)) gpu += pass.gpuMs;
+    state.SetIterationTime(gpu / 1000.0);
+  }
+  state.SetLabel(modes[state.range(0)]);
+}
+BENCHMARK(BM_Frame)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  const char* backend = std::getenv("SHADELAB_BACKEND");
+  std::string err;
+  g_context = createHeadlessContext(backend ? backend : "osmesa", err);
+  if (!g_context) {
+    std::fprintf(stderr, "shadelab_bench: %s\n", err.c_str());
+    return 1;
+  }
+  std::fprintf(stderr, "renderer: %s\n", g_context->describe().c_str());
+  benchmark::RunSpecifiedBenchmarks();
+  g_context.reset();
+  return 0;
+}

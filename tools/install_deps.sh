@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian packages ShadeLab needs, if any are missing. Nothing else is downloaded.
+# usage: tools/install_deps.sh [build|test]
+set -euo pipefail
+build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev
+  libtinyobjloader-dev libstb-dev nlohmann-json3-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+  libgtest-dev libbenchmark-dev)
+test_pkgs=(xvfb xauth)
+want=("${build_pkgs[@]}")
+[ "${1:-build}" = test ] && want+=("${test_pkgs[@]}")
+
+missing=()
+for p in "${want[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "installing missing Debian packages: ${missing[*]}"
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=()
+elif command -v sudo >/dev/null; then
+  sudo=(sudo)
+else
+  echo "error: missing packages (${missing[*]}) and not root, and no sudo to install them" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
