@@ -1,15 +1,21 @@
 // shadelab: the window by default, or a headless subcommand (see --help).
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include "cli/commands.h"
+#ifdef SHADELAB_HAS_WINDOW
 #include "ui/window_app.h"
+#endif
 
 int main(int argc, char** argv) {
   using namespace shadelab;
+  std::vector<char*> args;
+#ifdef SHADELAB_HAS_WINDOW
   // Window-only switches for tests and demos, taken out before the shared parser sees them.
   WindowOptions window;
-  std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--exit-after" && i + 1 < argc) window.exitAfterFrames = std::atoi(argv[++i]);
@@ -17,6 +23,9 @@ int main(int argc, char** argv) {
     else if (a == "--cycle-labs") window.cycleLabs = true;
     else args.push_back(argv[i]);
   }
+#else
+  args.assign(argv, argv + argc);
+#endif
   Options o;
   if (auto err = parseOptions(int(args.size()), args.data(), o); !err.empty()) {
     std::fprintf(stderr, "shadelab: %s\n", err.c_str());
@@ -31,12 +40,17 @@ int main(int argc, char** argv) {
   if (o.command == "stress") return runStress(o);
   if (o.command == "list") return runList(o);
   if (o.command == "check-shaders") return runCheckShaders(o);
+  if (o.command == "compare") return runCompare(o);
 
+#ifdef SHADELAB_HAS_WINDOW
   const int rc = runWindow(o, window);
   if (rc != 2) return rc;
   // No display: say so, and do the next most useful thing.
   std::fprintf(stderr, "shadelab: no display to open a window on (DISPLAY=%s); rendering headless instead\n",
                std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "unset");
+#else
+  std::fprintf(stderr, "shadelab: built without a window (SHADELAB_WINDOW=OFF); rendering headless instead\n");
+#endif
   if (o.out.empty()) {
     std::filesystem::create_directories("out");
     o.out = "out/shadelab.png";

@@ -32,7 +32,7 @@ std::string readFile(const fs::path& p) {
 }
 
 void BM_ReloadLatency(benchmark::State& state) {
-  const fs::path builtin = fs::path(SHADELAB_SOURCE_DIR) / "shaders";
+  const fs::path builtin = builtinShaderDir();
   const fs::path student = fs::temp_directory_path() / ("shadelab_bench_" + std::to_string(::getpid()));
   fs::create_directories(student / "shading");
   const fs::path frag = student / "shading" / "shade.frag";
@@ -56,7 +56,7 @@ BENCHMARK(BM_ReloadLatency)->UseManualTime()->Unit(benchmark::kMillisecond)->Ite
 
 // The compile + link share of the reload: one program of the shading lab, rebuilt from disk.
 void BM_CompileProgram(benchmark::State& state) {
-  LabHost host(ShaderSearchPath({fs::path(SHADELAB_SOURCE_DIR) / "shaders"}));
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
   host.renderFrame({64, 64});
   Program& p = *host.lab().activePrograms().front();
   for (auto _ : state) host.shaders().rebuild(p, /*force=*/true);
@@ -65,7 +65,7 @@ BENCHMARK(BM_CompileProgram)->Unit(benchmark::kMillisecond)->Iterations(10);
 
 void BM_Frame(benchmark::State& state) {
   static const char* modes[] = {"flat", "gouraud", "phong"};
-  LabHost host(ShaderSearchPath({fs::path(SHADELAB_SOURCE_DIR) / "shaders"}));
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
   host.set(std::string("shading.mode=") + modes[state.range(0)]);
   const glm::ivec2 size(1280, 720);
   for (int i = 0; i < 3; ++i) host.renderFrame(size);

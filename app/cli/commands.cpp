@@ -89,6 +89,22 @@ int runCheckShaders(const Options& o) {
   return failed ? 1 : 0;
 }
 
+int runCompare(const Options& o) {
+  if (o.positional.size() != 2) return fail("compare: expected two images, e.g. shadelab compare a.png b.png");
+  ImageF a, b;
+  if (auto err = readImage(o.positional[0], a); !err.empty()) return fail(err);
+  if (auto err = readImage(o.positional[1], b); !err.empty()) return fail(err);
+  if (a.size != b.size)
+    return fail("compare: sizes differ (" + std::to_string(a.size.x) + "x" + std::to_string(a.size.y) + " vs " +
+                std::to_string(b.size.x) + "x" + std::to_string(b.size.y) + ")");
+  const ImageError e = compareImages(a, b);
+  std::printf("rmse %.6f  max_error %.6f  mean_error %.6f  bad_pixel_pct %.4f (channel difference > 0.1)\n", e.rmse,
+              e.maxError, e.meanError, e.badPixelPct);
+  if (!o.out.empty())
+    if (auto err = writePng(o.out, diffImage(a, b)); !err.empty()) return fail(err);
+  return 0;
+}
+
 int runStress(const Options& o) {
   Session s;
   if (auto err = openSession(o, s); !err.empty()) return fail(err);

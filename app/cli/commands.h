@@ -10,5 +10,6 @@ int runList(const Options& o);
 int runCheckShaders(const Options& o);
 int runSweep(const Options& o);
 int runStress(const Options& o);
+int runCompare(const Options& o);  // two PNGs -> rmse, max error; --out writes a diff image
 
 }  // namespace shadelab

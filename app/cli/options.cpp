@@ -14,6 +14,7 @@ commands:
   stress          run the lab's extreme cases; non-zero exit if any fails
   list            labs, their parameters with ranges, and scenes
   check-shaders   compile every program and variant of every lab; non-zero exit on any error
+  compare A B     RMSE and max error between two images; --out DIFF.png writes an amplified difference
 
 options:
   --lab ID            lab to run (see `shadelab list`)
@@ -42,13 +43,13 @@ static std::string parseSize(const std::string& text, glm::ivec2& size) {
 }
 
 std::string parseOptions(int argc, char** argv, Options& o) {
-  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders"};
+  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders", "compare"};
   int i = 1;
   if (i < argc && argv[i][0] != '-') {
     o.command = argv[i++];
     bool known = false;
     for (auto c : kCommands) known |= o.command == c;
-    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders)";
+    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders, compare)";
   }
   for (; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -56,7 +57,11 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.help = true;
       continue;
     }
-    if (arg.rfind("--", 0) != 0) return "unexpected argument '" + arg + "' (see --help)";
+    if (arg.rfind("--", 0) != 0) {
+      if (o.command != "compare") return "unexpected argument '" + arg + "' (see --help)";
+      o.positional.push_back(arg);
+      continue;
+    }
     if (i + 1 >= argc) return arg + ": missing value";
     const std::string v = argv[++i];
     if (arg == "--lab") o.lab = v;
@@ -89,9 +94,5 @@ std::string parseOptions(int argc, char** argv, Options& o) {
   return {};
 }
 
-std::filesystem::path builtinShaderDir() {
-  if (const char* env = std::getenv("SHADELAB_SHADERS"); env && *env) return env;
-  return std::filesystem::path(SHADELAB_SOURCE_DIR) / "shaders";
-}
 
 }  // namespace shadelab

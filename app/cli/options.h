@@ -10,7 +10,7 @@
 namespace shadelab {
 
 struct Options {
-  std::string command;  // "" (window), render, sweep, stress, list, check-shaders
+  std::string command;  // "" (window), render, sweep, stress, list, check-shaders, compare
   std::string lab;      // "" = the default (or the preset's)
   std::string scene;    // "" = the lab's default
   std::vector<std::string> sets;                 // --set lab.key=value, in order
@@ -26,13 +26,11 @@ struct Options {
   int frames = 5;                                // timed frames per configuration (medians)
   int warmup = 2;
   bool help = false;
+  std::vector<std::string> positional;           // compare A.png B.png
 };
 
 // Returns "" or a one-line error naming the bad option and what is valid.
 std::string parseOptions(int argc, char** argv, Options& out);
 std::string usage();
-
-// The built-in shader folder: $SHADELAB_SHADERS, else shaders/ in the source tree.
-std::filesystem::path builtinShaderDir();
 
 }  // namespace shadelab

@@ -13,7 +13,14 @@ std::string GlContext::describe() const {
 }
 
 std::unique_ptr<GlContext> createHeadlessContext(std::string_view backend, std::string& error) {
-  if (backend == "osmesa") return createOsMesaContext(error);
+  if (backend == "osmesa") {
+#ifdef SHADELAB_HAS_OSMESA
+    return createOsMesaContext(error);
+#else
+    error = "osmesa: this build has no OSMesa back end (configured with SHADELAB_OSMESA=OFF); use --backend egl";
+    return nullptr;
+#endif
+  }
   if (backend == "egl") return createEglContext(error);
   error = "unknown backend '" + std::string(backend) + "' (valid: " + std::string(kHeadlessBackends) + ")";
   return nullptr;

@@ -1,11 +1,17 @@
 #include "shader/preprocessor.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
 
 namespace shadelab {
+
+fs::path builtinShaderDir() {
+  if (const char* env = std::getenv("SHADELAB_SHADERS"); env && *env) return env;
+  return fs::path(SHADELAB_SOURCE_DIR) / "shaders";
+}
 
 void ShaderSearchPath::overrideFile(std::string relPath, fs::path file) {
   for (auto& [rel, f] : overrides_)

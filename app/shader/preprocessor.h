@@ -33,6 +33,9 @@ class ShaderSearchPath {
   std::vector<std::pair<std::string, std::filesystem::path>> overrides_;
 };
 
+// The built-in shader folder: $SHADELAB_SHADERS, else shaders/ in the source tree.
+std::filesystem::path builtinShaderDir();
+
 struct PreprocessedSource {
   std::string text;
   // Source-string number k in #line directives (and so in driver logs) -> the file it names.
