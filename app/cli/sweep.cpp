@@ -66,6 +66,7 @@ int runSweep(const Options& o) {
                  std::to_string(o.size.y);
   report.renderer = s.context->describe();
   report.reference = host.lab().reference().description;
+  report.costClock = host.timerClock();
   report.errorKeys = {"rmse", "surface_rmse"};
   std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
                     std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
@@ -128,6 +129,9 @@ int runSweep(const Options& o) {
   const std::string csvPath = o.out + "/" + labId + "_sweep.csv", htmlPath = o.out + "/" + labId + "_sweep.html";
   if (auto err = writeTextFile(csvPath, sweepCsv(report)); !err.empty()) return fail(err);
   if (auto err = writeTextFile(htmlPath, sweepHtml(report)); !err.empty()) return fail(err);
+  for (auto& key : report.errorKeys)
+    if (auto err = writeTextFile(o.out + "/" + labId + "_" + key + ".svg", sweepPlotSvg(report, key)); !err.empty())
+      return fail(err);
   std::printf("%-40s %10s %12s %10s %10s\n", "configuration", "rmse", "surface_rmse", "max_error", "gpu_ms");
   for (auto& row : report.rows)
     std::printf("%-40s %10.5f %12.5f %10.5f %10.3f\n", row.label.c_str(), row.value("rmse"), row.value("surface_rmse"),

@@ -62,6 +62,8 @@ void LabHost::resetCamera() {
   const Bounds b = scene_.worldBounds();
   camera_ = OrbitCamera{};
   camera_.frame(b.center(), b.radius());
+  if (!scene_.suggestedCamera.empty() && camera_.parse(scene_.suggestedCamera).empty())
+    camera_.fitDepthRange(b.center(), b.radius());
 }
 
 std::string LabHost::set(const std::string& assignment) {

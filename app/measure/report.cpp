@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <cstdio>
 #include <map>
 
 #include <stb_image_write.h>
@@ -109,6 +110,12 @@ std::string dataUri(const ImageF& img) {
   return "data:image/png;base64," + base64(png);
 }
 
+std::string fourDigits(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
 const char* kPalette[] = {"#d62728", "#1f77b4", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
 
 // Nice axis ticks: 1, 2 or 5 times a power of ten.
@@ -182,6 +189,8 @@ std::string plot(const SweepReport& r, const std::string& errorKey) {
 
 }  // namespace
 
+std::string sweepPlotSvg(const SweepReport& r, const std::string& errorKey) { return plot(r, errorKey); }
+
 std::string sweepHtml(const SweepReport& r) {
   std::string h = "<!doctype html>\n<html><head><meta charset='utf-8'><title>" + escape(r.title) +
                   "</title>\n<style>body{font-family:sans-serif;margin:24px;max-width:1400px}"
@@ -191,7 +200,8 @@ std::string sweepHtml(const SweepReport& r) {
   h += "<h1>" + escape(r.title) + "</h1>\n";
   h += "<p>Made by <code>" + escape(r.command) + "</code></p>\n";
   h += "<p>Renderer: " + escape(r.renderer) + "<br>Reference: " + escape(r.reference) + "<br>Cost: " +
-       escape(r.costKey) + ", the median over the timed frames of the GPU time of every pass (GL_TIME_ELAPSED).</p>\n";
+       escape(r.costKey) + ", the median over the timed frames of the summed time of every pass, measured with " +
+       escape(r.costClock) + ".</p>\n";
   for (auto& key : r.errorKeys) h += "<h2>" + escape(key) + " against " + escape(r.costKey) + "</h2>\n" + plot(r, key);
   h += "<h2>Configurations</h2>\n<table><tr><th>configuration</th>";
   if (!r.rows.empty())
@@ -199,7 +209,7 @@ std::string sweepHtml(const SweepReport& r) {
   h += "</tr>\n";
   for (auto& row : r.rows) {
     h += "<tr><td style='text-align:left'>" + escape(row.label) + "</td>";
-    for (auto& [k, v] : row.values) h += "<td>" + formatNumber(v) + "</td>";
+    for (auto& [k, v] : row.values) h += "<td>" + fourDigits(v) + "</td>";  // the CSV keeps every digit
     h += "</tr>\n";
   }
   h += "</table>\n<h2>Images</h2>\n<div class='imgs'>\n";
@@ -207,8 +217,8 @@ std::string sweepHtml(const SweepReport& r) {
     h += "<figure><img src='" + dataUri(r.referenceThumbnail) + "'><figcaption>reference</figcaption></figure>\n";
   for (auto& row : r.rows)
     h += "<figure><img src='" + dataUri(row.thumbnail) + "'><figcaption>" + escape(row.label) + "<br>" +
-         (r.errorKeys.empty() ? "" : r.errorKeys.front() + " " + formatNumber(row.value(r.errorKeys.front()))) + ", " +
-         r.costKey + " " + formatNumber(row.value(r.costKey)) + "</figcaption></figure>\n";
+         (r.errorKeys.empty() ? "" : r.errorKeys.front() + " " + fourDigits(row.value(r.errorKeys.front()))) + ", " +
+         r.costKey + " " + fourDigits(row.value(r.costKey)) + "</figcaption></figure>\n";
   h += "</div>\n</body></html>\n";
   return h;
 }

@@ -23,6 +23,7 @@ struct SweepReport {
   std::string renderer;      // GL_RENDERER / GL_VERSION
   std::string reference;     // what the errors are measured against
   std::string costKey = "gpu_ms";
+  std::string costClock;     // how gpu_ms was measured (queries or glFinish wall time)
   std::vector<std::string> errorKeys;  // one plot each, against costKey
   std::vector<SweepRow> rows;
   ImageF referenceThumbnail;
@@ -30,6 +31,8 @@ struct SweepReport {
 
 std::string sweepCsv(const SweepReport& r);
 std::string sweepHtml(const SweepReport& r);
+// One plot of `errorKey` against the cost, as a standalone SVG (also embedded in the HTML).
+std::string sweepPlotSvg(const SweepReport& r, const std::string& errorKey);
 // Indices of the rows on the lower-left Pareto front of (cost, error).
 std::vector<size_t> paretoFront(const SweepReport& r, const std::string& errorKey);
 // Writes text atomically (temporary file + rename). Returns "" or an error naming the file.

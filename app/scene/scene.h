@@ -55,6 +55,7 @@ struct Scene {
   std::vector<ImageSource> images;
   std::vector<Instance> instances;
   std::vector<std::string> warnings;  // shown in the UI, printed by the CLI
+  std::string suggestedCamera;         // OrbitCamera::parse text applied after framing, or ""
 
   Bounds worldBounds() const;
   size_t triangleCount() const;

@@ -33,7 +33,7 @@ int addMaterial(Scene& s, const char* name, glm::vec3 color, int image = -1) {
 // A floor whose two big triangles make affine UV interpolation visibly wrong.
 int checkerFloor(Scene& s) {
   s.images.push_back(makeCheckerImage(512, 8));
-  return addMaterial(s, "checker", glm::vec3(1.0f), int(s.images.size()) - 1);
+  return addMaterial(s, "checker", glm::vec3(0.8f), int(s.images.size()) - 1);
 }
 
 struct Builder {
@@ -51,12 +51,16 @@ const std::vector<Builder>& builders() {
          add(s, makeUvSphere(1.0f, seg), at(-1.3f, 1.0f, 0.0f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
          add(s, makeTorus(0.75f, 0.3f, seg), glm::rotate(at(1.4f, 1.0f, 0.0f), 1.2f, {1, 0, 0}),
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
+         s.suggestedCamera = "yaw=20,pitch=24,distance=7.2,target=0;0.7;0";  // the objects, with the floor receding
        }},
       {"sphere", "one UV sphere", [](Scene& s, int seg) { add(s, makeUvSphere(1.0f, seg), glm::mat4(1.0f)); }},
       {"torus", "one torus", [](Scene& s, int seg) { add(s, makeTorus(1.0f, 0.4f, seg), glm::mat4(1.0f)); }},
       {"cube", "one unit cube", [](Scene& s, int) { add(s, makeBox(glm::vec3(0.5f)), glm::mat4(1.0f)); }},
       {"checker-plane", "a two-triangle checker floor alone (perspective-correct vs affine UVs)",
-       [](Scene& s, int) { add(s, makePlane(6.0f, 1, 1.5f), glm::mat4(1.0f), checkerFloor(s)); }},
+       [](Scene& s, int) {
+         add(s, makePlane(6.0f, 1, 1.5f), glm::mat4(1.0f), checkerFloor(s));
+         s.suggestedCamera = "yaw=30,pitch=22,distance=6.5";
+       }},
       {"shadow-test", "ground, four pillars, a torus and a sphere (grazing, acne-prone surfaces)",
        [](Scene& s, int seg) {
          add(s, makePlane(12.0f, 1, 6.0f), glm::mat4(1.0f), addMaterial(s, "ground", {0.75f, 0.75f, 0.7f}));
