@@ -5,12 +5,8 @@
 #include <vector>
 
 #include "context/gl_context.h"
+#include "context/load_gl.h"
 
-using ShlGlProc = void (*)(void);
-using ShlGetProcAddress = ShlGlProc (*)(const char*);
-namespace gl {
-bool loadFunctions(ShlGetProcAddress getProc, const char** missing);
-}
 
 namespace shadelab {
 namespace {
