@@ -7,6 +7,7 @@
 // ImGui. setup()/teardown() must leave no GL objects behind (tests count them).
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "gl/pass_timer.h"
 #include "gl/texture.h"
 #include "labs/params.h"
+#include "measure/image.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "shader/shader_library.h"
@@ -89,7 +91,17 @@ class Lab {
   // What the current configuration clamped, fell back on or cannot do well; shown in the UI.
   virtual std::vector<std::string> warnings() const { return {}; }
 
+  // The ground truth. By default the host renders reference() (overrides + supersampling).
+  // A lab whose truth is not a rasterised image (ray-traced visibility) returns it here instead,
+  // for the current settings, at frame.size(); std::nullopt means "use reference()".
   virtual ReferenceSpec reference() const { return {}; }
+  virtual std::optional<ImageF> computeReference(Frame& frame) { return std::nullopt; }
+  // Settings applied for the image that is compared with the reference (the shadows lab outputs
+  // its visibility term); the cost is always timed on the normal view.
+  virtual Settings measuredView() const { return {}; }
+  // Error numbers of `image` against `reference`; errorKeys() are the ones plotted against cost.
+  virtual Metrics metrics(const ImageF& image, const ImageF& reference) const;
+  virtual std::vector<std::string> errorKeys() const { return {"rmse", "surface_rmse"}; }
   virtual std::vector<StressCase> stressCases() const { return {}; }
   virtual std::vector<SweepAxis> standardSweep() const { return {}; }
 };

@@ -32,7 +32,8 @@ void SetFromString::floatParam(const ParamInfo& info, float& value, float min, f
   found_ = true;
   char* end = nullptr;
   const double v = std::strtod(text_.c_str(), &end);
-  if (text_.empty() || *end != '\0' || !std::isfinite(v) || v < min || v > max)
+  // Compare as float: "0.1" must pass a range whose bound is the float 0.1f.
+  if (text_.empty() || *end != '\0' || !std::isfinite(v) || float(v) < min || float(v) > max)
     fail(info, "a number in [" + formatNumber(min) + ", " + formatNumber(max) + "]" +
                    (info.units.empty() ? "" : " " + std::string(info.units)));
   else

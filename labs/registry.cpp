@@ -2,13 +2,15 @@
 // lab's object file is otherwise unreferenced.
 #include "labs/lab.h"
 #include "labs/shading/shading_lab.h"
+#include "labs/shadows/shadows_lab.h"
 
 namespace shadelab {
 
-std::vector<std::string> labIds() { return {"shading"}; }
+std::vector<std::string> labIds() { return {"shading", "shadows"}; }
 
 std::unique_ptr<Lab> makeLab(std::string_view id) {
   if (id == "shading") return std::make_unique<ShadingLab>();
+  if (id == "shadows") return std::make_unique<ShadowsLab>();
   return nullptr;
 }
 

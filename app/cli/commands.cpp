@@ -118,9 +118,9 @@ int runStress(const Options& o) {
     host.applySettings(defaults);
     std::string why;
     const std::string scene = c.scene.empty() ? defaultScene : c.scene;
-    if (scene != host.sceneId()) why = host.selectScene(scene);
-    else host.resetCamera();
-    if (why.empty()) why = host.applySettings(c.settings);
+    why = host.applySettings(c.settings);  // first: settings may change the scene's needs (its scale)
+    if (why.empty()) why = scene != host.sceneId() ? host.selectScene(scene) : host.refreshScene();
+    if (why.empty()) host.resetCamera();
     if (why.empty()) why = applyCamera(host, c.camera);
     if (why.empty()) {
       host.renderFrame(size, o.time);

@@ -22,6 +22,18 @@ static std::string parseVary(const std::string& text, SweepAxis& axis) {
   return {};
 }
 
+// "v" sets key=v; "v;k2=v2;..." also sets the linked parameters (a PCF kernel with its filter).
+static std::string applyAxisValue(LabHost& host, const std::string& key, const std::string& value) {
+  std::stringstream ss(value);
+  std::string part;
+  bool first = true;
+  while (std::getline(ss, part, ';')) {
+    if (auto err = host.set(first ? key + "=" + part : part); !err.empty()) return err;
+    first = false;
+  }
+  return {};
+}
+
 static ImageF thumbnail(const ImageF& image) {
   int f = 1;
   while (image.size.x / (f + 1) >= 200) ++f;  // about 200-400 px wide
@@ -52,7 +64,7 @@ int runSweep(const Options& o) {
   const Settings base = host.currentSettings();
   for (auto& a : axes)
     for (auto& v : a.values)
-      if (auto err = host.set(a.key + "=" + v); !err.empty()) return fail("--vary: " + err);
+      if (auto err = applyAxisValue(host, a.key, v); !err.empty()) return fail("--vary: " + err);
   host.applySettings(base);
 
   std::error_code ec;
@@ -67,7 +79,7 @@ int runSweep(const Options& o) {
   report.renderer = s.context->describe();
   report.reference = host.lab().reference().description;
   report.costClock = host.timerClock();
-  report.errorKeys = {"rmse", "surface_rmse"};
+  report.errorKeys = host.lab().errorKeys();
   std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
                     std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
   for (auto& v : o.varies) cmd += " --vary " + v;
@@ -81,17 +93,14 @@ int runSweep(const Options& o) {
     host.applySettings(base);
     std::string label;
     size_t rest = index;
-    for (auto it = axes.rbegin(); it != axes.rend(); ++it) {
-      const std::string& v = it->values[rest % it->values.size()];
-      rest /= it->values.size();
-      host.set(it->key + "=" + v);
+    std::vector<std::string> parts(axes.size());
+    for (size_t a = axes.size(); a-- > 0;) {
+      const std::string& v = axes[a].values[rest % axes[a].values.size()];
+      rest /= axes[a].values.size();
+      applyAxisValue(host, axes[a].key, v);
+      parts[a] = axes[a].key + "=" + v;
     }
-    for (auto& a : axes) {
-      CollectAsText c;
-      host.lab().visitParams(c);
-      for (auto& [k, v] : c.values)
-        if (k == a.key) label += (label.empty() ? "" : " ") + k + "=" + v;
-    }
+    for (auto& part : parts) label += (label.empty() ? "" : " ") + part;
     progress(int(index), int(total), label);
 
     const Settings settings = host.currentSettings();
@@ -103,21 +112,21 @@ int runSweep(const Options& o) {
     const ImageF& reference = references[refKey];
 
     const TimedFrames t = renderTimed(host, o.size, o.time, o.warmup, o.frames);
-    const ImageF image = host.readImage();
-    const ImageError err = compareImages(image, reference);
+    const ImageF shown = host.readImage();  // what the student sees; the metrics may use another view
+    const ImageF image = host.renderMeasured(o.size, o.time);
 
     SweepRow row;
     row.params = settings;
     row.label = label;
     row.group = label.substr(0, label.find(' '));
-    row.values = {{"rmse", err.rmse}, {"surface_rmse", err.coveredRmse}, {"max_error", err.maxError},
-                  {"mean_error", err.meanError},
-                  {"bad_pixel_pct", err.badPixelPct}, {"non_finite", double(countNonFinite(image))},
-                  {"gpu_ms", t.gpuMs}, {"cpu_ms", t.cpuMs}};
-    row.thumbnail = thumbnail(image);
+    row.values = host.lab().metrics(image, reference);
+    row.values.push_back({"non_finite", double(countNonFinite(image))});
+    row.values.push_back({"gpu_ms", t.gpuMs});
+    row.values.push_back({"cpu_ms", t.cpuMs});
+    row.thumbnail = thumbnail(shown);
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%03zu.png", index);
-    writePng(o.out + name, image);
+    writePng(o.out + name, shown);
     if (report.referenceThumbnail.rgba.empty()) {
       report.referenceThumbnail = thumbnail(reference);
       writePng(o.out + "/reference.png", reference);
@@ -132,10 +141,14 @@ int runSweep(const Options& o) {
   for (auto& key : report.errorKeys)
     if (auto err = writeTextFile(o.out + "/" + labId + "_" + key + ".svg", sweepPlotSvg(report, key)); !err.empty())
       return fail(err);
-  std::printf("%-40s %10s %12s %10s %10s\n", "configuration", "rmse", "surface_rmse", "max_error", "gpu_ms");
-  for (auto& row : report.rows)
-    std::printf("%-40s %10.5f %12.5f %10.5f %10.3f\n", row.label.c_str(), row.value("rmse"), row.value("surface_rmse"),
-                row.value("max_error"), row.value("gpu_ms"));
+  std::printf("%-44s", "configuration");
+  for (auto& key : report.errorKeys) std::printf(" %14s", key.c_str());
+  std::printf(" %10s\n", "gpu_ms");
+  for (auto& row : report.rows) {
+    std::printf("%-44s", row.label.c_str());
+    for (auto& key : report.errorKeys) std::printf(" %14.5f", row.value(key));
+    std::printf(" %10.3f\n", row.value("gpu_ms"));
+  }
   std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
   return 0;
 }

@@ -19,6 +19,7 @@ GLuint create(Kind kind, GLenum shaderType) {
     case Kind::Program: n = glCreateProgram(); break;
     case Kind::Shader: n = glCreateShader(shaderType); break;
     case Kind::Query: glGenQueries(1, &n); break;
+    case Kind::Sampler: glGenSamplers(1, &n); break;
     case Kind::Count: break;
   }
   if (n) ++g_live[static_cast<size_t>(kind)];
@@ -35,6 +36,7 @@ void destroy(Kind kind, GLuint n) {
     case Kind::Program: glDeleteProgram(n); break;
     case Kind::Shader: glDeleteShader(n); break;
     case Kind::Query: glDeleteQueries(1, &n); break;
+    case Kind::Sampler: glDeleteSamplers(1, &n); break;
     case Kind::Count: return;
   }
   --g_live[static_cast<size_t>(kind)];
@@ -50,7 +52,7 @@ int liveObjectsTotal() {
 
 const char* kindName(Kind kind) {
   static const char* names[] = {"buffer", "vertex array", "texture", "framebuffer",
-                                "renderbuffer", "program", "shader", "query"};
+                                "renderbuffer", "program", "shader", "query", "sampler"};
   return kind < Kind::Count ? names[static_cast<size_t>(kind)] : "?";
 }
 

@@ -7,7 +7,7 @@
 
 namespace gl {
 
-enum class Kind { Buffer, VertexArray, Texture, Framebuffer, Renderbuffer, Program, Shader, Query, Count };
+enum class Kind { Buffer, VertexArray, Texture, Framebuffer, Renderbuffer, Program, Shader, Query, Sampler, Count };
 
 GLuint create(Kind kind, GLenum shaderType = 0);
 void destroy(Kind kind, GLuint name);
@@ -51,5 +51,6 @@ using Renderbuffer = Handle<Kind::Renderbuffer>;
 using ProgramName = Handle<Kind::Program>;
 using ShaderName = Handle<Kind::Shader>;
 using Query = Handle<Kind::Query>;
+using Sampler = Handle<Kind::Sampler>;
 
 }  // namespace gl

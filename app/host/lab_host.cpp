@@ -43,11 +43,11 @@ std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs
   GpuScene gpu;
   gpu.upload(next, needs, warnings);
   scene_ = std::move(next);
+  scene_.revision = ++sceneBuilds_;
   gpu_ = std::move(gpu);
   sceneId_ = id;
   builtNeeds_ = needs;
   sceneWarnings_ = std::move(warnings);
-  ++sceneBuilds_;
   if (reframe) resetCamera();
   return {};
 }
@@ -55,7 +55,8 @@ std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs
 std::string LabHost::ensureScene() {
   const SceneNeeds needs = lab_->needs();
   if (needs == builtNeeds_ && !sceneId_.empty()) return {};
-  return rebuildScene(sceneId_, needs, false);
+  // A new scale moves everything: frame it again. Other needs (tessellation, UVs) keep the view.
+  return rebuildScene(sceneId_, needs, needs.scale != builtNeeds_.scale);
 }
 
 void LabHost::resetCamera() {
@@ -109,8 +110,26 @@ const std::vector<gl::PassTiming>& LabHost::renderFrame(glm::ivec2 size, float t
   return timer_.endFrame();
 }
 
+ImageF LabHost::renderMeasured(glm::ivec2 size, float time) {
+  const Settings saved = currentSettings();
+  applySettings(lab_->measuredView());
+  renderFrame(size, time);
+  ImageF image = readImage();
+  applySettings(saved);
+  return image;
+}
+
 ImageF LabHost::renderReference(glm::ivec2 size, float time) {
   const ReferenceSpec spec = lab_->reference();
+  ensureScene();
+  if (!target_ || target_->size() != size) target_ = gl::RenderTarget::create(size);
+  timer_.beginFrame();
+  Frame frame{*target_, scene_, gpu_, camera_, timer_, time};
+  std::optional<ImageF> computed = lab_->computeReference(frame);
+  timer_.endFrame();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (computed) return std::move(*computed);
+
   const Settings saved = currentSettings();
   applySettings(spec.overrides);
   const int ss = std::max(spec.supersample, 1);

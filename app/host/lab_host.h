@@ -25,6 +25,8 @@ class LabHost {
 
   std::string selectLab(std::string_view id);
   std::string selectScene(const std::string& idOrPath);
+  // Rebuilds the scene now if the lab's needs changed since it was built (else at the next frame).
+  std::string refreshScene() { return ensureScene(); }
   // "lab.key=value" or "key=value" (the current lab); errors name the valid keys.
   std::string set(const std::string& assignment);
   std::string applySettings(const Settings& settings);
@@ -35,8 +37,11 @@ class LabHost {
   // Makes the scene match the lab's needs, reloads changed shaders, renders one frame.
   const std::vector<gl::PassTiming>& renderFrame(glm::ivec2 size, float time = 0.0f, float dt = 0.0f);
   ImageF readImage() const { return {target_->size(), target_->readRgba()}; }
-  // The lab's ground truth for the current settings (see ReferenceSpec); restores the settings.
+  // The lab's ground truth for the current settings (computeReference, else ReferenceSpec);
+  // restores the settings.
   ImageF renderReference(glm::ivec2 size, float time = 0.0f);
+  // The frame the metrics compare: rendered with the lab's measuredView() settings.
+  ImageF renderMeasured(glm::ivec2 size, float time = 0.0f);
 
   // Lab, params, scene, camera: everything a headless run needs to reproduce a frame.
   nlohmann::json stateJson();

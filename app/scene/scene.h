@@ -20,6 +20,7 @@ struct SceneNeeds {
   bool baseColorTextures = false; // decode and upload base-colour images
   bool normalTextures = false;    // decode and upload normal-map images
   int tessellation = 32;          // segments of procedural primitives (ignored by files)
+  float scale = 1.0f;             // uniform world scale (stress runs: 1e-3 .. 1e4)
   bool operator==(const SceneNeeds&) const = default;
 };
 
@@ -56,6 +57,7 @@ struct Scene {
   std::vector<Instance> instances;
   std::vector<std::string> warnings;  // shown in the UI, printed by the CLI
   std::string suggestedCamera;         // OrbitCamera::parse text applied after framing, or ""
+  int revision = 0;                    // set by the host on every build: caches keyed on it go stale
 
   Bounds worldBounds() const;
   size_t triangleCount() const;

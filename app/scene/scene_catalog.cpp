@@ -53,6 +53,7 @@ const std::vector<Builder>& builders() {
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
          s.suggestedCamera = "yaw=20,pitch=24,distance=7.2,target=0;0.7;0";  // the objects, with the floor receding
        }},
+      {"empty", "nothing at all (stress runs: a lab must cope)", [](Scene&, int) {}},
       {"sphere", "one UV sphere", [](Scene& s, int seg) { add(s, makeUvSphere(1.0f, seg), glm::mat4(1.0f)); }},
       {"torus", "one torus", [](Scene& s, int seg) { add(s, makeTorus(1.0f, 0.4f, seg), glm::mat4(1.0f)); }},
       {"cube", "one unit cube", [](Scene& s, int) { add(s, makeBox(glm::vec3(0.5f)), glm::mat4(1.0f)); }},
@@ -70,6 +71,7 @@ const std::vector<Builder>& builders() {
          add(s, makeTorus(0.8f, 0.25f, seg), glm::rotate(at(1.2f, 0.9f, 0.8f), 1.0f, {1, 0, 0}),
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
          add(s, makeUvSphere(0.7f, seg), at(-1.3f, 0.7f, 0.9f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
+         s.suggestedCamera = "yaw=15,pitch=30,distance=11,target=0;0.6;0";
        }},
   };
   return list;
@@ -79,11 +81,21 @@ struct DataScene {
   const char* id;
   const char* relPath;
   const char* description;
+  bool ground;  // put a floor under it (a receiver for shadows)
 };
 const DataScene kDataScenes[] = {
-    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)"},
-    {"teapot", "meshes/teapot_pytorch3d/teapot.obj", "the Utah teapot (shared data)"},
+    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)", false},
+    {"teapot", "meshes/teapot_pytorch3d/teapot.obj", "the Utah teapot (shared data)", false},
+    {"spot-on-plane", "meshes/spot_pytorch3d/cow.obj", "Spot standing on a floor (shared data)", true},
+    {"teapot-on-plane", "meshes/teapot_pytorch3d/teapot.obj", "the teapot on a floor (shared data)", true},
 };
+
+// A floor four bounding radii wide, touching the lowest point of what is there.
+void addGround(Scene& s) {
+  const Bounds b = s.worldBounds();
+  add(s, makePlane(4.0f * b.radius(), 1, 4.0f), at(b.center().x, b.min.y, b.center().z),
+      addMaterial(s, "ground", {0.75f, 0.75f, 0.7f}));
+}
 
 }  // namespace
 
@@ -115,8 +127,12 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     }
   if (!found) {
     fs::path file = idOrPath;
+    bool ground = false;
     for (auto& d : kDataScenes)
-      if (idOrPath == d.id) file = dataDirectory() / d.relPath;
+      if (idOrPath == d.id) {
+        file = dataDirectory() / d.relPath;
+        ground = d.ground;
+      }
     const bool looksLikeFile = file.has_extension() || file.string().find('/') != std::string::npos;
     if (!looksLikeFile) {
       std::string valid;
@@ -124,7 +140,12 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
       return "unknown scene '" + idOrPath + "' (valid: " + valid + ", or a .gltf/.glb/.obj/.off file)";
     }
     if (auto err = loadSceneFile(file, out); !err.empty()) return err;
+    if (ground) addGround(out);
     out.name = idOrPath;
+  }
+  if (needs.scale != 1.0f) {
+    for (auto& inst : out.instances) inst.model = glm::scale(glm::mat4(1.0f), glm::vec3(needs.scale)) * inst.model;
+    out.suggestedCamera.clear();  // it is in unscaled units; framing the bounds still works
   }
   // Leave out what the configuration does not use.
   for (auto& mesh : out.meshes) {

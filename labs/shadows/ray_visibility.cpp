@@ -1,0 +1,140 @@
+#include "labs/shadows/ray_visibility.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <thread>
+#include <vector>
+
+#include <glm/gtc/constants.hpp>
+
+namespace shadelab {
+
+struct RayScene::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+};
+
+RayScene::RayScene(const Scene& s) : impl_(std::make_unique<Impl>()) {
+  impl_->device = rtcNewDevice("threads=1");
+  impl_->scene = rtcNewScene(impl_->device);
+  for (const Instance& inst : s.instances) {
+    const MeshData& m = s.meshes[size_t(inst.mesh)];
+    if (m.indices.empty()) continue;
+    RTCGeometry g = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), m.positions.size()));
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+      const glm::vec3 p = glm::vec3(inst.model * glm::vec4(m.positions[i], 1.0f));
+      v[3 * i] = p.x;
+      v[3 * i + 1] = p.y;
+      v[3 * i + 2] = p.z;
+    }
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(unsigned), m.triangleCount()));
+    std::copy(m.indices.begin(), m.indices.end(), idx);
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(impl_->scene, g);
+    rtcReleaseGeometry(g);
+    triangles_ += m.triangleCount();
+  }
+  rtcCommitScene(impl_->scene);
+}
+
+RayScene::~RayScene() {
+  rtcReleaseScene(impl_->scene);
+  rtcReleaseDevice(impl_->device);
+}
+
+bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float maxDistance) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray{};
+  ray.org_x = o.x;
+  ray.org_y = o.y;
+  ray.org_z = o.z;
+  ray.dir_x = d.x;
+  ray.dir_y = d.y;
+  ray.dir_z = d.z;
+  ray.tnear = 0.0f;
+  ray.tfar = maxDistance;
+  ray.mask = 0xFFFFFFFFu;
+  rtcOccluded1(impl_->scene, &context, &ray);
+  return ray.tfar == -std::numeric_limits<float>::infinity();
+}
+
+namespace {
+
+// Stratified point in the unit disk (Shirley-Chiu concentric map of cell (i, j) of n x n).
+glm::vec2 diskSample(int i, int j, int n) {
+  const float a = 2.0f * (i + 0.5f) / float(n) - 1.0f, b = 2.0f * (j + 0.5f) / float(n) - 1.0f;
+  if (a == 0.0f && b == 0.0f) return glm::vec2(0.0f);
+  float r, phi;
+  if (std::abs(a) > std::abs(b)) {
+    r = a;
+    phi = glm::quarter_pi<float>() * (b / a);
+  } else {
+    r = b;
+    phi = glm::half_pi<float>() - glm::quarter_pi<float>() * (a / b);
+  }
+  return r * glm::vec2(std::cos(phi), std::sin(phi));
+}
+
+void basis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
+  t = glm::normalize(glm::cross(std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0), n));
+  b = glm::cross(n, t);
+}
+
+}  // namespace
+
+ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const ImageF& positions,
+                           const ImageF& normals, int samplesPerAxis, float epsilon) {
+  ImageF out;
+  out.size = positions.size;
+  out.rgba.assign(positions.rgba.size(), 0.0f);
+  const int n = light.radiusWorld > 0.0f ? std::max(samplesPerAxis, 1) : 1;
+  auto shade = [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < positions.size.x; ++x) {
+        const float* p = positions.at(x, y);
+        float* o = out.at(x, y);
+        o[3] = p[3] > 0.5f ? 1.0f : 0.0f;
+        if (o[3] == 0.0f) continue;
+        const glm::vec3 P(p[0], p[1], p[2]), N(normals.at(x, y)[0], normals.at(x, y)[1], normals.at(x, y)[2]);
+        const glm::vec3 origin = P + N * epsilon;
+        int lit = 0;
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j) {
+            const glm::vec2 d = n > 1 ? diskSample(i, j, n) : glm::vec2(0.0f);
+            glm::vec3 dir;
+            float dist;
+            if (light.type == LightType::Directional) {
+              glm::vec3 t, b;
+              basis(-light.direction, t, b);
+              dir = glm::normalize(-light.direction + (t * d.x + b * d.y) * light.radiusWorld);
+              dist = std::numeric_limits<float>::infinity();
+            } else {
+              const glm::vec3 toCentre = light.position - origin;
+              glm::vec3 t, b;
+              basis(glm::normalize(toCentre), t, b);
+              const glm::vec3 target = light.position + (t * d.x + b * d.y) * light.radiusWorld;
+              dir = target - origin;
+              dist = 1.0f;  // the ray is origin + dir * t, t in [0, 1): stop at the light
+            }
+            lit += !scene.occluded(origin, dir, dist);
+          }
+        const float v = float(lit) / float(n * n);
+        o[0] = o[1] = o[2] = v;
+      }
+  };
+  const int threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+  std::vector<std::thread> pool;
+  const int rows = positions.size.y;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(shade, rows * t / threads, rows * (t + 1) / threads);
+  for (auto& th : pool) th.join();
+  return out;
+}
+
+}  // namespace shadelab

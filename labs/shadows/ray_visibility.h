@@ -1,0 +1,35 @@
+// Ground-truth visibility by ray tracing the same triangles with Embree: no depth map, no bias,
+// no resolution. A hard light gets one shadow ray per pixel; an area light (disk or cone of the
+// light's radius) gets n x n stratified rays, and visibility is the fraction that get through.
+#pragma once
+#include <memory>
+
+#include "labs/shadows/light_rig.h"
+#include "measure/image.h"
+#include "scene/scene.h"
+
+namespace shadelab {
+
+class RayScene {
+ public:
+  explicit RayScene(const Scene& scene);  // every instance, in world space
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+  // True when something lies between origin and origin + dir * maxDistance (dir need not be unit).
+  bool occluded(const glm::vec3& origin, const glm::vec3& dir, float maxDistance) const;
+  size_t triangleCount() const { return triangles_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  size_t triangles_ = 0;
+};
+
+// positions: xyz = world position, w > 0.5 where a surface was drawn that faces the light;
+// normals: xyz = its normal. Returns visibility in RGB and the same validity in A.
+// `epsilon` (world units) lifts ray origins off the surface along the normal.
+ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const ImageF& positions,
+                           const ImageF& normals, int samplesPerAxis, float epsilon);
+
+}  // namespace shadelab

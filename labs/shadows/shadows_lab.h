@@ -1,0 +1,116 @@
+// Shadows lab: the whole path from a hard shadow map to soft shadows. Acne -> bias -> peter-
+// panning -> border and far-plane artifacts -> PCF -> Poisson PCF -> PCSS, for directional,
+// spot and point lights, each step measured against ray-traced visibility (Embree).
+// Williams, "Casting curved shadows on curved surfaces", 1978; Reeves et al., "Rendering
+// antialiased shadows with depth maps", 1987 (PCF); Fernando 2005 (PCSS).
+// Read next: shaders/shadows/shadow_filters.glsl, tutorials/shadows.md.
+#pragma once
+#include <memory>
+#include <optional>
+
+#include "labs/lab.h"
+#include "labs/shadows/light_rig.h"
+#include "labs/shadows/shadow_map.h"
+
+namespace shadelab {
+
+class RayScene;
+
+enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss };
+enum class ShadowView { Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, DepthRaw, DepthLinear };
+enum class DepthFormat { D16, D24, D32F };
+
+struct ShadowsParams {
+  LightType keyType = LightType::Directional;
+  bool keyCasts = true;
+  float elevationDeg = 40.0f;   // key light above the horizon
+  float azimuthDeg = 35.0f;
+  float lightDistance = 3.0f;   // spot/point, scene radii from the centre
+  float spotAngleDeg = 70.0f;
+  float lightRadius = 0.08f;    // area-light radius, scene radii (PCSS and its reference)
+  bool fillLight = false;       // a second, spot light
+  bool fillCasts = true;
+  int mapSizeIndex = 3;         // 256 << index: 256 .. 8192
+  DepthFormat depthFormat = DepthFormat::D24;
+  bool autoFit = true;
+  float orthoExtent = 1.0f;     // scene radii (directional, auto-fit off)
+  float nearPlane = 0.5f;       // scene radii (auto-fit off)
+  float farPlane = 5.0f;        // scene radii (auto-fit off)
+  bool borderClamp = true;      // outside the map: lit (border depth 1) instead of the edge texel
+  bool farFix = true;           // beyond the far plane: lit instead of shadowed
+  bool cullFront = false;       // depth pass draws back faces only
+  float bias = 2.5f;            // texels (the constant floor of the slope-scaled bias)
+  float slopeBias = 4.0f;       // texels, k in max(k (1 - N.L), bias)
+  float normalOffset = 0.0f;    // texels along the normal
+  float offsetFactor = 0.0f;    // glPolygonOffset factor
+  float offsetUnits = 0.0f;     // glPolygonOffset units
+  bool receiverPlane = true;    // filter taps compare against the receiver plane at each tap
+  ShadowFilter filter = ShadowFilter::Pcf;
+  int pcfSize = 3;              // N in N x N (compile-time loop bound)
+  int poissonIndex = 1;         // 8 << index samples: 8, 16, 32, 64
+  float filterRadius = 2.0f;    // texels, Poisson PCF
+  bool rotateSamples = true;    // per-pixel rotation of the Poisson disk
+  int blockerIndex = 1;         // PCSS blocker search samples: 8 << index
+  int pcssIndex = 2;            // PCSS filter samples: 8 << index
+  ShadowView view = ShadowView::Shaded;
+  bool showFrustum = false;
+  int tessellation = 48;
+  float sceneScale = 1.0f;
+
+  int mapSize() const { return 256 << mapSizeIndex; }
+};
+
+class ShadowsLab final : public LabWithParams<ShadowsParams> {
+ public:
+  ShadowsLab();
+  ~ShadowsLab() override;
+
+  std::string_view id() const override { return "shadows"; }
+  std::string_view title() const override { return "Shadows: maps, bias, PCF, PCSS"; }
+  std::string_view summary() const override;
+  std::string_view defaultScene() const override { return "shadow-test"; }
+
+  void visitParams(ParamVisitor& v) override;
+  SceneNeeds needs() const override;
+  std::vector<ProgramSpec> allPrograms() const override;
+
+  std::string setup(LabContext& ctx) override;
+  void teardown() override;
+  void render(Frame& frame) override;
+  std::vector<ProgramRef> activePrograms() const override;
+  std::vector<std::string> warnings() const override;
+
+  ReferenceSpec reference() const override;
+  std::optional<ImageF> computeReference(Frame& frame) override;
+  Settings measuredView() const override { return {{"view", "visibility"}}; }
+  Metrics metrics(const ImageF& image, const ImageF& reference) const override;
+  std::vector<std::string> errorKeys() const override { return {"misclassified_pct", "visibility_rmse"}; }
+  std::vector<StressCase> stressCases() const override;
+  std::vector<SweepAxis> standardSweep() const override;
+
+ private:
+  enum class InternalView { None, Position, Normal };  // G-buffer for the ray-traced reference
+  LightSetup keySetup() const;
+  LightSetup fillSetup() const;
+  ProgramSpec litSpec(const ShadowsParams& p, InternalView internal) const;
+  ProgramSpec depthSpec(bool cube) const;
+  ProgramSpec depthViewSpec(const ShadowsParams& p) const;
+  ProgramRef fetch(size_t slot, const ProgramSpec& spec);
+  void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);
+  void drawFrustum(Frame& frame, const LightFrame& key);
+
+  ShaderLibrary* shaders_ = nullptr;
+  std::vector<std::pair<std::string, ProgramRef>> programs_;  // slot -> (spec key, program)
+  ShadowMap keyMap_, fillMap_;
+  DummyDepthTextures dummies_;
+  gl::VertexArray emptyVao_, frustumVao_;
+  gl::Buffer frustumVbo_;
+  std::vector<glm::vec2> poisson_;
+  mutable std::vector<std::string> lightWarnings_;
+  Bounds lastBounds_;
+  std::unique_ptr<RayScene> rayScene_;
+  int rayRevision_ = -1;
+  InternalView internalView_ = InternalView::None;
+};
+
+}  // namespace shadelab
