@@ -11,6 +11,7 @@ commands:
   (none)          open the window (GLFW + Dear ImGui)
   render          render one frame headless:   --out FILE.png (a FILE.json of the settings is written beside it)
   sweep           error against GPU time:      --out DIR [--vary key=a,b,c ...]  (no --vary: the lab's standard sweep)
+                  a value may set linked parameters too: --vary filter=hard,pcf:pcf_size=5,pcss
   stress          run the lab's extreme cases; non-zero exit if any fails
   list            labs, their parameters with ranges, and scenes
   check-shaders   compile every program and variant of every lab; non-zero exit on any error

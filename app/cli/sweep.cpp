@@ -22,12 +22,12 @@ static std::string parseVary(const std::string& text, SweepAxis& axis) {
   return {};
 }
 
-// "v" sets key=v; "v;k2=v2;..." also sets the linked parameters (a PCF kernel with its filter).
+// "v" sets key=v; "v:k2=v2:..." also sets the linked parameters (a PCF kernel with its filter).
 static std::string applyAxisValue(LabHost& host, const std::string& key, const std::string& value) {
   std::stringstream ss(value);
   std::string part;
   bool first = true;
-  while (std::getline(ss, part, ';')) {
+  while (std::getline(ss, part, ':')) {
     if (auto err = host.set(first ? key + "=" + part : part); !err.empty()) return err;
     first = false;
   }

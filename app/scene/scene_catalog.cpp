@@ -53,7 +53,6 @@ const std::vector<Builder>& builders() {
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
          s.suggestedCamera = "yaw=20,pitch=24,distance=7.2,target=0;0.7;0";  // the objects, with the floor receding
        }},
-      {"empty", "nothing at all (stress runs: a lab must cope)", [](Scene&, int) {}},
       {"sphere", "one UV sphere", [](Scene& s, int seg) { add(s, makeUvSphere(1.0f, seg), glm::mat4(1.0f)); }},
       {"torus", "one torus", [](Scene& s, int seg) { add(s, makeTorus(1.0f, 0.4f, seg), glm::mat4(1.0f)); }},
       {"cube", "one unit cube", [](Scene& s, int) { add(s, makeBox(glm::vec3(0.5f)), glm::mat4(1.0f)); }},
@@ -73,6 +72,7 @@ const std::vector<Builder>& builders() {
          add(s, makeUvSphere(0.7f, seg), at(-1.3f, 0.7f, 0.9f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
          s.suggestedCamera = "yaw=15,pitch=30,distance=11,target=0;0.6;0";
        }},
+      {"empty", "nothing at all (stress runs: a lab must cope)", [](Scene&, int) {}},
   };
   return list;
 }

@@ -69,7 +69,7 @@ Metrics ShadowsLab::metrics(const ImageF& image, const ImageF& reference) const 
 }
 
 std::vector<SweepAxis> ShadowsLab::standardSweep() const {
-  return {{"filter", {"hard", "hardware-pcf", "pcf;pcf_size=3", "pcf;pcf_size=5", "poisson", "pcss"}},
+  return {{"filter", {"hard", "hardware-pcf", "pcf:pcf_size=3", "pcf:pcf_size=5", "poisson", "pcss"}},
           {"map_size", {"512", "1024", "2048", "4096"}},
           {"bias", {"0.5", "2"}}};
 }

@@ -1,0 +1,138 @@
+// The shadows lab on OSMesa: passes that run, agreement with ray-traced truth, PCSS at radius 0,
+// and golden images of the main techniques.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "gl_test.h"
+
+using namespace shadelab;
+
+namespace {
+
+std::unique_ptr<LabHost> shadowsHost(const std::vector<std::string>& sets) {
+  auto host = std::make_unique<LabHost>(test::builtinShaders());
+  EXPECT_EQ(host->selectLab("shadows"), "");
+  for (auto& s : sets) EXPECT_EQ(host->set(s), "") << s;
+  return host;
+}
+
+std::vector<std::string> passNames(LabHost& host) {
+  std::vector<std::string> names;
+  for (auto& p : host.lastPasses()) names.push_back(p.name);
+  return names;
+}
+
+double metric(const Metrics& m, const char* key) {
+  for (auto& [k, v] : m)
+    if (k == key) return v;
+  ADD_FAILURE() << "no metric " << key;
+  return 0;
+}
+
+}  // namespace
+
+TEST(Shadows, OnlyCastingLightsGetADepthPass) {
+  auto host = shadowsHost({});
+  host->renderFrame({96, 54});
+  EXPECT_EQ(passNames(*host).size(), 2u);  // key map + lighting
+  host->set("shadows.key_casts=off");
+  host->renderFrame({96, 54});
+  EXPECT_EQ(passNames(*host), std::vector<std::string>{"lighting"});
+  host->set("shadows.fill_light=on");
+  host->renderFrame({96, 54});
+  ASSERT_EQ(passNames(*host).size(), 2u);
+  EXPECT_EQ(passNames(*host)[0].rfind("shadow map: fill", 0), 0u);
+  host->set("shadows.fill_casts=off");
+  host->renderFrame({96, 54});
+  EXPECT_EQ(passNames(*host), std::vector<std::string>{"lighting"});
+  EXPECT_EQ(gl::drainErrors(), "");
+}
+
+TEST(Shadows, AgreesWithRayTracedTruthWhereTheMapIsTriviallyRight) {
+  // A large map, light well above the horizon, hard shadows: only texel-sized edges can differ.
+  for (const char* type : {"directional", "spot", "point"}) {
+    auto host = shadowsHost({"shadows.filter=hard", "shadows.map_size=4096", "shadows.light_elevation=55",
+                             std::string("shadows.light_type=") + type, "shadows.light_distance=2.5"});
+    const ImageF truth = host->renderReference({192, 108});
+    const ImageF map = host->renderMeasured({192, 108});
+    ASSERT_EQ(countNonFinite(truth) + countNonFinite(map), 0u);
+    const Metrics m = host->lab().metrics(map, truth);
+    EXPECT_GT(metric(m, "valid_pct"), 20.0) << type;
+    EXPECT_LT(metric(m, "misclassified_pct"), 0.5) << type;
+  }
+}
+
+TEST(Shadows, NoBiasMeansAcneAndTheMetricSeesIt) {
+  auto host = shadowsHost({"shadows.filter=hard", "shadows.bias=0", "shadows.slope_bias=0"});
+  const ImageF truth = host->renderReference({192, 108});
+  const Metrics acne = host->lab().metrics(host->renderMeasured({192, 108}), truth);
+  host->set("shadows.bias=2.5");
+  host->set("shadows.slope_bias=4");
+  const Metrics biased = host->lab().metrics(host->renderMeasured({192, 108}), truth);
+  EXPECT_GT(metric(acne, "acne_pct"), 10.0);
+  EXPECT_LT(metric(biased, "acne_pct"), 0.5);
+  host->set("shadows.bias=40");  // far too much: shadows detach from their casters
+  const Metrics panned = host->lab().metrics(host->renderMeasured({192, 108}), truth);
+  EXPECT_GT(metric(panned, "leak_pct"), metric(biased, "leak_pct"));
+}
+
+TEST(Shadows, PcssWithRadiusZeroEqualsHard) {
+  for (const char* type : {"directional", "spot", "point"}) {
+    auto host = shadowsHost({"shadows.filter=hard", std::string("shadows.light_type=") + type});
+    host->renderFrame({160, 90});
+    const ImageF hard = host->readImage();
+    host->set("shadows.filter=pcss");
+    host->set("shadows.light_radius=0");
+    host->renderFrame({160, 90});
+    const ImageError e = compareImages(host->readImage(), hard);
+    EXPECT_EQ(e.maxError, 0.0) << type;
+  }
+}
+
+TEST(Shadows, SoftShadowsApproachTheAreaLight) {
+  auto host = shadowsHost({"shadows.filter=pcss", "shadows.light_radius=0.1"});
+  const ImageF truth = host->renderReference({160, 90});
+  const double pcss = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse");
+  host->set("shadows.filter=hard");  // the same area-light truth, judged against a hard shadow
+  const double hard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse");
+  EXPECT_LT(pcss, hard);
+}
+
+struct ShadowGolden {
+  const char* name;
+  std::vector<std::string> sets;
+};
+
+class ShadowGoldens : public ::testing::TestWithParam<ShadowGolden> {};
+
+TEST_P(ShadowGoldens, MatchWithinTolerance) {
+  auto host = shadowsHost(GetParam().sets);
+  host->renderFrame({256, 144});
+  const ImageF actual = host->readImage();
+  ASSERT_EQ(countNonFinite(actual), 0u);
+  const std::string golden = std::string(SHADELAB_GOLDEN_DIR) + "/" + GetParam().name + ".png";
+  if (std::getenv("SHADELAB_UPDATE_GOLDEN")) {
+    ASSERT_EQ(writePng(golden, actual), "");
+    GTEST_SKIP() << "updated " << golden;
+  }
+  ImageF expected;
+  ASSERT_EQ(readImage(golden, expected), "");
+  const ImageError e = compareImages(actual, expected, 0.2);
+  if (e.meanError > 0.004 || e.badPixelPct > 0.5) {
+    writePng(test::testOutput(std::string(GetParam().name) + "_actual.png"), actual);
+    writePng(test::testOutput(std::string(GetParam().name) + "_diff.png"), diffImage(actual, expected));
+  }
+  EXPECT_LE(e.meanError, 0.004);
+  EXPECT_LE(e.badPixelPct, 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Shadows, ShadowGoldens,
+    ::testing::Values(ShadowGolden{"shadows_hard", {"shadows.filter=hard"}},
+                      ShadowGolden{"shadows_pcf5", {"shadows.filter=pcf", "shadows.pcf_size=5"}},
+                      ShadowGolden{"shadows_pcss_spot", {"shadows.filter=pcss", "shadows.light_type=spot",
+                                                         "shadows.light_radius=0.1"}},
+                      ShadowGolden{"shadows_point_pcf", {"shadows.light_type=point", "shadows.light_distance=1.2"}},
+                      ShadowGolden{"shadows_bias_heat", {"shadows.view=bias-heat", "shadows.bias=0.5"}}),
+    [](const auto& info) { return std::string(info.param.name); });
