@@ -87,4 +87,14 @@ std::vector<float> RenderTarget::readRgba() const {
   return flipped;
 }
 
+std::array<float, 4> RenderTarget::readPixel(int x, int y) const {
+  std::array<float, 4> px{};
+  if (x < 0 || y < 0 || x >= size_.x || y >= size_.y) return px;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(x, size_.y - 1 - y, 1, 1, GL_RGBA, GL_FLOAT, px.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return px;
+}
+
 }  // namespace gl

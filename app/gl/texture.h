@@ -1,5 +1,6 @@
 // 2D textures and offscreen render targets.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -47,6 +48,8 @@ class RenderTarget {
   GLuint fbo() const { return fbo_.get(); }
   // Reads the colour attachment as RGBA float, rows top-down (image order).
   std::vector<float> readRgba() const;
+  // One pixel, (x, y) from the top-left as images are; all zero outside the target.
+  std::array<float, 4> readPixel(int x, int y) const;
 
  private:
   FramebufferName fbo_;

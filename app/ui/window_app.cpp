@@ -63,6 +63,13 @@ void viewportControls(AppState& app) {
   if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
     cam.pan(io.MouseDelta.x / float(app.viewport.y), io.MouseDelta.y / float(app.viewport.y));
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) cam.zoom(std::pow(0.9f, io.MouseWheel));
+  // Pixel readout: the float value under the cursor (depth maps, visibility, NaN hunting).
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+    const ImVec2 origin = ImGui::GetItemRectMin();
+    const int x = int(io.MousePos.x - origin.x), y = int(io.MousePos.y - origin.y);
+    const auto px = app.host->target()->readPixel(x, y);
+    ImGui::SetTooltip("pixel %d, %d\nR %.6g  G %.6g\nB %.6g  A %.6g", x, y, px[0], px[1], px[2], px[3]);
+  }
 }
 
 void leftPanel(AppState& app) {
