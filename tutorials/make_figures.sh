@@ -38,3 +38,42 @@ done
 "$sl" sweep --lab shading --size 640x360 --frames 9 --out build/tutorial-sweep
 cp build/tutorial-sweep/shading_rmse.svg build/tutorial-sweep/shading_surface_rmse.svg \
   build/tutorial-sweep/shading_sweep.csv $f/
+
+#
+# shadows.md: the path, step by step (each image 480x270; the errors and costs come from the sweep below)
+r="$sl render --lab shadows --size 480x270"
+$r --set shadows.filter=hard --set shadows.bias=0 --set shadows.slope_bias=0 --out $f/shadows_1_acne.png
+$r --set shadows.filter=hard --out $f/shadows_2_bias.png
+$r --set shadows.filter=hard --set shadows.bias=45 --set shadows.slope_bias=0 \
+  --camera "yaw=60,pitch=22,distance=3.2,target=-1;0.3;-2.2" --out $f/shadows_3_peter_panning.png
+$r --set shadows.filter=hard --camera "yaw=60,pitch=22,distance=3.2,target=-1;0.3;-2.2" --out $f/shadows_3_contact.png
+$r --set shadows.filter=hard --set shadows.auto_fit=off --set shadows.ortho_extent=0.45 --set shadows.near=1 \
+  --set shadows.far=3 --set shadows.border_clamp=off --out $f/shadows_4_edge_clamp.png
+$r --set shadows.filter=hard --set shadows.auto_fit=off --set shadows.ortho_extent=0.45 --set shadows.near=1 \
+  --set shadows.far=3 --out $f/shadows_4_border_clamp.png
+$r --set shadows.filter=hard --set shadows.auto_fit=off --set shadows.near=1 --set shadows.far=2.3 \
+  --set shadows.far_fix=off --out $f/shadows_5_far_plane.png
+$r --set shadows.filter=hard --set shadows.auto_fit=off --set shadows.near=1 --set shadows.far=2.3 \
+  --out $f/shadows_5_far_fix.png
+$r --set shadows.filter=pcf --set shadows.pcf_size=5 --out $f/shadows_6_pcf5.png
+$r --set shadows.filter=poisson --set shadows.filter_radius=3 --out $f/shadows_7_poisson.png
+$r --set shadows.filter=pcss --set shadows.light_radius=0.12 --out $f/shadows_8_pcss.png
+$r --set shadows.filter=pcss --set shadows.light_radius=0.12 --set shadows.view=pcss-penumbra --out $f/shadows_8_penumbra.png
+$r --set shadows.filter=hard --set shadows.bias=0.5 --set shadows.slope_bias=0 --set shadows.view=bias-heat \
+  --out $f/shadows_9_bias_heat.png
+$r --set shadows.view=texel-density --set shadows.map_size=512 --out $f/shadows_9_texel_density.png
+$r --set shadows.view=depth-linear --out $f/shadows_9_depth_map.png
+$r --set shadows.light_type=point --set shadows.light_distance=1.2 --set shadows.view=depth-linear \
+  --out $f/shadows_9_cube_map.png
+$r --set shadows.light_type=point --set shadows.light_distance=1.2 --set shadows.filter=pcss \
+  --set shadows.light_radius=0.05 --out $f/shadows_10_point_pcss.png
+$r --set shadows.light_type=spot --set shadows.fill_light=on --set shadows.filter=pcss --out $f/shadows_10_spot_fill.png
+
+# shadows.md: the same path, measured against ray-traced visibility
+"$sl" sweep --lab shadows --size 960x540 --frames 7 --out build/tutorial-shadows-path \
+  --vary filter=hard:bias=0:slope_bias=0,hard,hard:bias=45:slope_bias=0,hardware-pcf,pcf:pcf_size=3,pcf:pcf_size=5,pcf:pcf_size=5:receiver_plane=off,poisson,pcss
+cp build/tutorial-shadows-path/shadows_sweep.csv $f/shadows_path.csv
+# shadows.md: the standard sweep (filter x map size x bias)
+"$sl" sweep --lab shadows --size 960x540 --frames 5 --out build/tutorial-shadows
+cp build/tutorial-shadows/shadows_misclassified_pct.svg build/tutorial-shadows/shadows_visibility_rmse.svg \
+  build/tutorial-shadows/shadows_sweep.csv $f/

@@ -71,7 +71,7 @@ Metrics ShadowsLab::metrics(const ImageF& image, const ImageF& reference) const 
 std::vector<SweepAxis> ShadowsLab::standardSweep() const {
   return {{"filter", {"hard", "hardware-pcf", "pcf:pcf_size=3", "pcf:pcf_size=5", "poisson", "pcss"}},
           {"map_size", {"512", "1024", "2048", "4096"}},
-          {"bias", {"0.5", "2"}}};
+          {"bias", {"0:slope_bias=0", "2.5:slope_bias=4"}}};  // no bias at all, and the default
 }
 
 std::vector<StressCase> ShadowsLab::stressCases() const {
