@@ -5,6 +5,7 @@
 // count went up, through the real path: inotify -> debounce -> preprocess -> compile -> link -> draw.
 // BM_CompileProgram: the compile + link part of that, for one program.
 // BM_Frame/<mode>: one 1280x720 frame of the shading lab's default scene, per shading mode.
+// BM_ShadowFilter: the shadows lab per light type, filter and PCF kernel (below).
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
@@ -77,6 +78,32 @@ void BM_Frame(benchmark::State& state) {
   state.SetLabel(modes[state.range(0)]);
 }
 BENCHMARK(BM_Frame)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
+
+// BM_ShadowFilter/<light>/<filter>/<pcf N>: GPU ms of a shadows-lab frame (depth pass + lighting) at
+// 1280x720, per light type and filter, on the default shadow scene.
+void BM_ShadowFilter(benchmark::State& state) {
+  static const char* lights[] = {"directional", "spot", "point"};
+  static const char* filters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss"};
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
+  host.selectLab("shadows");
+  host.set(std::string("shadows.light_type=") + lights[state.range(0)]);
+  host.set("shadows.light_distance=1.2");
+  host.set(std::string("shadows.filter=") + filters[state.range(1)]);
+  host.set("shadows.pcf_size=" + std::to_string(state.range(2)));
+  const glm::ivec2 size(1280, 720);
+  for (int i = 0; i < 2; ++i) host.renderFrame(size);
+  for (auto _ : state) {
+    double gpu = 0;
+    for (auto& pass : host.renderFrame(size)) gpu += pass.gpuMs;
+    state.SetIterationTime(gpu / 1000.0);
+  }
+  state.SetLabel(std::string(lights[state.range(0)]) + " " + filters[state.range(1)] +
+                 (state.range(1) == 2 ? " " + std::to_string(state.range(2)) + "x" + std::to_string(state.range(2)) : ""));
+}
+BENCHMARK(BM_ShadowFilter)
+    ->ArgsProduct({{0, 2}, {0, 1, 3, 4}, {3}})
+    ->ArgsProduct({{0, 2}, {2}, {3, 5, 9, 15}})
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
 
 }  // namespace
 

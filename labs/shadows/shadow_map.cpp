@@ -55,16 +55,30 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
     glPolygonOffset(state.offsetFactor, state.offsetUnits);
   }
   program.use();
+  auto drawAll = [&] {
+    for (const Instance& inst : scene.instances) {
+      program.set("u_model", inst.model);
+      gpu.draw(inst);
+    }
+  };
   if (cube_) {
-    for (int f = 0; f < 6; ++f) program.set(("u_faceViewProj[" + std::to_string(f) + "]").c_str(), light.faceViewProj[f]);
     program.set("u_lightPos", light.position);
     program.set("u_far", light.farPlane);
+  }
+  if (cube_ && state.sixPasses) {
+    for (int f = 0; f < 6; ++f) {  // one face at a time: the vertices are submitted six times
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, f);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      program.set("u_lightViewProj", light.faceViewProj[f]);
+      drawAll();
+    }
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // layered again
+  } else if (cube_) {
+    for (int f = 0; f < 6; ++f) program.set(("u_faceViewProj[" + std::to_string(f) + "]").c_str(), light.faceViewProj[f]);
+    drawAll();
   } else {
     program.set("u_lightViewProj", light.viewProj);
-  }
-  for (const Instance& inst : scene.instances) {
-    program.set("u_model", inst.model);
-    gpu.draw(inst);
+    drawAll();
   }
   if (offset) glDisable(GL_POLYGON_OFFSET_FILL);
   if (state.cullFront) {

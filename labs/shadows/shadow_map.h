@@ -13,6 +13,7 @@ struct DepthPassState {
   bool cullFront = false;      // draw back faces only: the stored surface moves off lit fronts
   float offsetFactor = 0.0f;   // glPolygonOffset(factor, units); 0, 0 = off
   float offsetUnits = 0.0f;
+  bool sixPasses = false;      // cube maps: one pass per face instead of one geometry-shader pass
 };
 
 class ShadowMap {
@@ -20,7 +21,7 @@ class ShadowMap {
   // (Re)allocates only when the shape, size or format changes.
   void ensure(bool cube, int size, GLenum depthFormat);
   // Draws every instance's depth from the light. `program` is the depth program variant for
-  // this map (CUBE_MAP defined for a cube).
+  // this map (CUBE_MAP for a one-pass cube, CUBE_FACE for six passes).
   void render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light,
               const DepthPassState& state);
   // Binds the raw sampler to `rawUnit` and the comparing one to `compareUnit`; `border` picks

@@ -14,6 +14,7 @@ constexpr std::string_view kViews[] = {"shaded", "visibility", "bias-heat", "tex
 constexpr std::string_view kFormats[] = {"16", "24", "32f"};
 constexpr std::string_view kMapSizes[] = {"256", "512", "1024", "2048", "4096", "8192"};
 constexpr std::string_view kSampleCounts[] = {"8", "16", "32", "64"};
+constexpr std::string_view kDepthLights[] = {"key", "fill"};
 const GLenum kFormatEnums[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
 
 // Texture units of lit.frag's samplers, fixed so no two sampler types ever share a unit.
@@ -65,6 +66,8 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
                "shadowed."}, p.farFix);
   v.boolParam({"cull_front", "Cull front faces", "", "Depth pass draws back faces: closed meshes lose acne, thin "
                "ones leak."}, p.cullFront);
+  v.boolParam({"six_cube_passes", "Cube map in six passes", "", "Point light: draw the six faces in six passes "
+               "instead of one geometry-shader pass (compare their cost)."}, p.sixCubePasses);
   v.floatParam({"bias", "Constant bias", "texels", "Depth bias floor, in shadow-map texels at the receiver."},
                p.bias, 0.0f, 50.0f);
   v.floatParam({"slope_bias", "Slope bias k", "texels", "bias = max(k (1 - N.L), constant): more where the light "
@@ -89,6 +92,12 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - occluder - "
                "bias: red = acne, blue = leaks); texel-density; pcss-blocker; pcss-penumbra; depth-raw/-linear (the "
                "key map; a cube unrolled)."}, p.view, kViews);
+  v.choiceParam({"depth_light", "Depth view of", "", "Which light's map the depth views show."}, p.depthLight, kDepthLights);
+  v.floatParam({"depth_zoom", "Depth view zoom", "x", "Magnification of the depth views."}, p.depthZoom, 1.0f, 64.0f, true);
+  v.floatParam({"depth_centre_u", "Depth view centre u", "", "Map coordinate at the middle of the view."},
+               p.depthCentreU, 0.0f, 1.0f);
+  v.floatParam({"depth_centre_v", "Depth view centre v", "", "Map coordinate at the middle of the view."},
+               p.depthCentreV, 0.0f, 1.0f);
   v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, p.showFrustum);
   v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, p.tessellation, 3, 256);
   v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e4); lengths in "
@@ -159,13 +168,14 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) c
   return spec;
 }
 
-ProgramSpec ShadowsLab::depthSpec(bool cube) const {
+ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses) const {
   ProgramSpec spec;
-  spec.name = cube ? "shadows/depth cube" : "shadows/depth";
+  const bool oneCubePass = cube && !sixPasses;
+  spec.name = oneCubePass ? "shadows/depth cube" : cube ? "shadows/depth cube face" : "shadows/depth";
   spec.stages.push_back({GL_VERTEX_SHADER, "shadows/depth.vert"});
-  if (cube) spec.stages.push_back({GL_GEOMETRY_SHADER, "shadows/depth_cube.geom"});
+  if (oneCubePass) spec.stages.push_back({GL_GEOMETRY_SHADER, "shadows/depth_cube.geom"});
   spec.stages.push_back({GL_FRAGMENT_SHADER, "shadows/depth.frag"});
-  if (cube) spec.defines.emplace_back("CUBE_MAP", "1");
+  if (cube) spec.defines.emplace_back(oneCubePass ? "CUBE_MAP" : "CUBE_FACE", "1");
   return spec;
 }
 
@@ -173,13 +183,14 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
   ProgramSpec spec;
   spec.name = "shadows/depth view";
   spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/depth_view.frag"}};
-  spec.defines.emplace_back("KEY_TYPE", std::to_string(int(p.keyType)));
+  const LightType shown = p.depthLight == 1 ? LightType::Spot : p.keyType;  // the fill light is a spot
+  spec.defines.emplace_back("KEY_TYPE", std::to_string(int(shown)));
   if (p.view == ShadowView::DepthLinear) spec.defines.emplace_back("LINEAR_DEPTH", "1");
   return spec;
 }
 
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
-  std::vector<ProgramSpec> all = {depthSpec(false), depthSpec(true)};
+  std::vector<ProgramSpec> all = {depthSpec(false, false), depthSpec(true, false), depthSpec(true, true)};
   ProgramSpec lines;
   lines.name = "shadows/lines";
   lines.stages = {{GL_VERTEX_SHADER, "shadows/lines.vert"}, {GL_FRAGMENT_SHADER, "shadows/lines.frag"}};
@@ -191,6 +202,9 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
       p.view = ShadowView(view);
       all.push_back(depthViewSpec(p));
     }
+    p.depthLight = 1;
+    all.push_back(depthViewSpec(p));
+    p.depthLight = 0;
     for (int view = 0; view < 6; ++view)
       for (int filter = 0; filter < 5; ++filter) {
         p.view = ShadowView(view);
@@ -344,7 +358,7 @@ void ShadowsLab::render(Frame& frame) {
   std::vector<std::string> ignored;
   const LightFrame fill = buildLight(fillSetup(), bounds, ignored);
   const GLenum format = kFormatEnums[int(params.depthFormat)];
-  const DepthPassState depthState{params.cullFront, params.offsetFactor, params.offsetUnits};
+  const DepthPassState depthState{params.cullFront, params.offsetFactor, params.offsetUnits, params.sixCubePasses};
   const bool gbuffer = internalView_ != InternalView::None;
   const std::string mapName = std::to_string(params.mapSize()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
 
@@ -352,17 +366,18 @@ void ShadowsLab::render(Frame& frame) {
   if (params.keyCasts && !gbuffer) {
     const bool cube = params.keyType == LightType::Point;
     auto pass = frame.pass("shadow map: key " + std::string(kLightTypes[int(params.keyType)]) + " " + mapName +
-                           (cube ? " x6" : ""));
+                           (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : ""));
     keyMap_.ensure(cube, params.mapSize(), format);
-    keyMap_.render(frame.scene, frame.gpu, *fetch(kKeyDepthSlot, depthSpec(cube)), key, depthState);
+    keyMap_.render(frame.scene, frame.gpu, *fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses)), key, depthState);
   } else {
     keyMap_.release();
   }
-  const bool fillMapNeeded = params.fillLight && params.fillCasts && !gbuffer && !viewIsDepthMap(params.view);
+  const bool fillMapNeeded = params.fillLight && params.fillCasts && !gbuffer &&
+                             (!viewIsDepthMap(params.view) || params.depthLight == 1);
   if (fillMapNeeded) {
     auto pass = frame.pass("shadow map: fill spot " + mapName);
     fillMap_.ensure(false, params.mapSize(), format);
-    fillMap_.render(frame.scene, frame.gpu, *fetch(kFillDepthSlot, depthSpec(false)), fill, depthState);
+    fillMap_.render(frame.scene, frame.gpu, *fetch(kFillDepthSlot, depthSpec(false, false)), fill, depthState);
   } else {
     fillMap_.release();
   }
@@ -374,23 +389,7 @@ void ShadowsLab::render(Frame& frame) {
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the metrics
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (viewIsDepthMap(params.view) && !gbuffer) {
-    auto pass = frame.pass("depth map view");
-    if (!keyMap_) return;  // the key light casts no shadow: there is no map to show
-    Program& prog = *fetch(kDepthViewSlot, depthViewSpec(params));
-    prog.use();
-    setLight(prog, "u_key", key, params.mapSize());
-    prog.set("u_keyMap", int(kKeyMap));
-    prog.set("u_keyCube", int(kKeyCube));
-    dummies_.bind2D(kKeyMap);
-    dummies_.bindCube(kKeyCube);
-    if (keyMap_.cube()) keyMap_.bind(kKeyCube, kKeyCmpCube, true);
-    else keyMap_.bind(kKeyMap, kKeyCmp, true);
-    const float aspect = frame.aspect(), cells = params.keyType == LightType::Point ? 4.0f / 3.0f : 1.0f;
-    prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
-    glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(emptyVao_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    for (int unit = 0; unit <= kKeyCmpCube; ++unit) glBindSampler(unit, 0);
+    drawDepthView(frame, key, fill);
     return;
   }
   {
@@ -398,6 +397,30 @@ void ShadowsLab::render(Frame& frame) {
     drawLit(frame, *fetch(kLitSlot, litSpec(params, internalView_)), key, params.fillLight && !gbuffer ? &fill : nullptr);
   }
   if (params.showFrustum && !gbuffer) drawFrustum(frame, key);
+}
+
+void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill) {
+  auto pass = frame.pass("depth map view");
+  const bool showFill = params.depthLight == 1;
+  const ShadowMap& map = showFill ? fillMap_ : keyMap_;
+  if (!map) return;  // that light casts no shadow: there is no map to show (warnings() says so)
+  Program& prog = *fetch(kDepthViewSlot, depthViewSpec(params));
+  prog.use();
+  setLight(prog, "u_key", showFill ? fill : key, params.mapSize());
+  prog.set("u_keyMap", int(kKeyMap));
+  prog.set("u_keyCube", int(kKeyCube));
+  dummies_.bind2D(kKeyMap);
+  dummies_.bindCube(kKeyCube);
+  if (map.cube()) map.bind(kKeyCube, kKeyCmpCube, true);
+  else map.bind(kKeyMap, kKeyCmp, true);
+  const float aspect = frame.aspect(), cells = map.cube() ? 4.0f / 3.0f : 1.0f;
+  prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
+  prog.set("u_zoom", params.depthZoom);
+  prog.set("u_centre", glm::vec2(params.depthCentreU, params.depthCentreV));
+  glDisable(GL_DEPTH_TEST);
+  glBindVertexArray(emptyVao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  for (int unit = 0; unit <= kKeyCmpCube; ++unit) glBindSampler(unit, 0);
 }
 
 std::vector<std::string> ShadowsLab::warnings() const {
@@ -419,6 +442,10 @@ std::vector<std::string> ShadowsLab::warnings() const {
   if (p.keyType == LightType::Point && p.lightDistance < 0.5f)
     w.push_back("point light near the scene centre: it may sit inside geometry, which then hides everything");
   if (!p.keyCasts && !(p.fillLight && p.fillCasts)) w.push_back("no light casts shadows: no depth pass runs");
+  if (viewIsDepthMap(p.view) && p.depthLight == 1 && !(p.fillLight && p.fillCasts))
+    w.push_back("the depth view shows the fill light's map: turn on fill_light and fill_casts");
+  if (viewIsDepthMap(p.view) && p.depthLight == 0 && !p.keyCasts)
+    w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
   if ((p.view == ShadowView::PcssBlocker || p.view == ShadowView::PcssPenumbra) && p.filter != ShadowFilter::Pcss)
     w.push_back("the PCSS views show data only with filter = pcss");
   return w;

@@ -39,6 +39,7 @@ struct ShadowsParams {
   bool borderClamp = true;      // outside the map: lit (border depth 1) instead of the edge texel
   bool farFix = true;           // beyond the far plane: lit instead of shadowed
   bool cullFront = false;       // depth pass draws back faces only
+  bool sixCubePasses = false;   // point light: six passes instead of one geometry-shader pass
   float bias = 2.5f;            // texels (the constant floor of the slope-scaled bias)
   float slopeBias = 4.0f;       // texels, k in max(k (1 - N.L), bias)
   float normalOffset = 0.0f;    // texels along the normal
@@ -53,6 +54,10 @@ struct ShadowsParams {
   int blockerIndex = 1;         // PCSS blocker search samples: 8 << index
   int pcssIndex = 2;            // PCSS filter samples: 8 << index
   ShadowView view = ShadowView::Shaded;
+  int depthLight = 0;           // the map the depth views show: 0 key, 1 fill
+  float depthZoom = 1.0f;
+  float depthCentreU = 0.5f;
+  float depthCentreV = 0.5f;
   bool showFrustum = false;
   int tessellation = 48;
   float sceneScale = 1.0f;
@@ -93,8 +98,9 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   LightSetup keySetup() const;
   LightSetup fillSetup() const;
   ProgramSpec litSpec(const ShadowsParams& p, InternalView internal) const;
-  ProgramSpec depthSpec(bool cube) const;
+  ProgramSpec depthSpec(bool cube, bool sixPasses) const;
   ProgramSpec depthViewSpec(const ShadowsParams& p) const;
+  void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);
   ProgramRef fetch(size_t slot, const ProgramSpec& spec);
   void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);
   void drawFrustum(Frame& frame, const LightFrame& key);

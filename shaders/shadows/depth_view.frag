@@ -1,6 +1,6 @@
 #version 330 core
-// The key light's depth map, as stored (raw) or as distance (linear). A cube map is unrolled as
-// a cross:        +Y
+// A light's depth map, as stored (raw) or as distance (linear), zoomed about a chosen centre
+// (hover the viewport for the value of each pixel). A cube map is unrolled as a cross:        +Y
 //             -X  +Z  +X  -Z
 //                 -Y
 #include "common/output.glsl"
@@ -11,10 +11,12 @@ uniform ShadowLight u_key;
 uniform sampler2D u_keyMap;
 uniform samplerCube u_keyCube;
 uniform vec2 u_aspect;  // viewport aspect correction, so texels stay square
+uniform float u_zoom;
+uniform vec2 u_centre;  // the map point shown at the middle of the viewport
 out vec4 o_color;
 
 void main() {
-  vec2 uv = (v_uv - 0.5) * u_aspect + 0.5;
+  vec2 uv = (v_uv - 0.5) * u_aspect / u_zoom + u_centre;
   float z;
 #if KEY_TYPE == LIGHT_POINT
   vec2 cell = floor(vec2(uv.x * 4.0, uv.y * 3.0));

@@ -2,6 +2,7 @@
 // and golden images of the main techniques.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 #include "gl_test.h"
@@ -88,6 +89,35 @@ TEST(Shadows, PcssWithRadiusZeroEqualsHard) {
     const ImageError e = compareImages(host->readImage(), hard);
     EXPECT_EQ(e.maxError, 0.0) << type;
   }
+}
+
+TEST(Shadows, CubeMapInSixPassesEqualsOnePass) {
+  auto host = shadowsHost({"shadows.light_type=point", "shadows.light_distance=1.2", "shadows.filter=pcf"});
+  host->renderFrame({160, 90});
+  const ImageF onePass = host->readImage();
+  host->set("shadows.six_cube_passes=on");
+  host->renderFrame({160, 90});
+  EXPECT_EQ(compareImages(host->readImage(), onePass).maxError, 0.0);
+  EXPECT_NE(passNames(*host)[0].find("6 passes"), std::string::npos);
+  EXPECT_EQ(gl::drainErrors(), "");
+}
+
+TEST(Shadows, DepthViewShowsEitherLightsMap) {
+  auto host = shadowsHost({"shadows.view=depth-linear"});
+  host->renderFrame({96, 54});
+  EXPECT_EQ(passNames(*host).back(), "depth map view");
+  host->set("shadows.depth_light=fill");  // no fill light yet: the lab says so, nothing breaks
+  host->renderFrame({96, 54});
+  bool warned = false;
+  for (auto& w : host->warnings()) warned |= w.find("fill light's map") != std::string::npos;
+  EXPECT_TRUE(warned);
+  host->set("shadows.fill_light=on");
+  host->renderFrame({96, 54});
+  const auto names = passNames(*host);
+  EXPECT_NE(std::find_if(names.begin(), names.end(), [](auto& n) { return n.rfind("shadow map: fill", 0) == 0; }),
+            names.end());
+  EXPECT_EQ(countNonFinite(host->readImage()), 0u);
+  EXPECT_EQ(gl::drainErrors(), "");
 }
 
 TEST(Shadows, SoftShadowsApproachTheAreaLight) {
