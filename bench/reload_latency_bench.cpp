@@ -55,6 +55,16 @@ void BM_ReloadLatency(benchmark::State& state) {
 }
 BENCHMARK(BM_ReloadLatency)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(15);
 
+// Each iteration is one frame, timed by the sum of its passes' GPU time (after two warm-up frames).
+void timeFrames(benchmark::State& state, LabHost& host, glm::ivec2 size) {
+  for (int i = 0; i < 2; ++i) host.renderFrame(size);
+  for (auto _ : state) {
+    double gpu = 0;
+    for (auto& pass : host.renderFrame(size)) gpu += pass.gpuMs;
+    state.SetIterationTime(gpu / 1000.0);
+  }
+}
+
 // The compile + link share of the reload: one program of the shading lab, rebuilt from disk.
 void BM_CompileProgram(benchmark::State& state) {
   LabHost host(ShaderSearchPath({builtinShaderDir()}));
@@ -68,13 +78,7 @@ void BM_Frame(benchmark::State& state) {
   static const char* modes[] = {"flat", "gouraud", "phong"};
   LabHost host(ShaderSearchPath({builtinShaderDir()}));
   host.set(std::string("shading.mode=") + modes[state.range(0)]);
-  const glm::ivec2 size(1280, 720);
-  for (int i = 0; i < 3; ++i) host.renderFrame(size);
-  for (auto _ : state) {
-    double gpu = 0;
-    for (auto& pass : host.renderFrame(size)) gpu += pass.gpuMs;
-    state.SetIterationTime(gpu / 1000.0);
-  }
+  timeFrames(state, host, {1280, 720});
   state.SetLabel(modes[state.range(0)]);
 }
 BENCHMARK(BM_Frame)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
@@ -90,13 +94,7 @@ void BM_ShadowFilter(benchmark::State& state) {
   host.set("shadows.light_distance=1.2");
   host.set(std::string("shadows.filter=") + filters[state.range(1)]);
   host.set("shadows.pcf_size=" + std::to_string(state.range(2)));
-  const glm::ivec2 size(1280, 720);
-  for (int i = 0; i < 2; ++i) host.renderFrame(size);
-  for (auto _ : state) {
-    double gpu = 0;
-    for (auto& pass : host.renderFrame(size)) gpu += pass.gpuMs;
-    state.SetIterationTime(gpu / 1000.0);
-  }
+  timeFrames(state, host, {1280, 720});
   state.SetLabel(std::string(lights[state.range(0)]) + " " + filters[state.range(1)] +
                  (state.range(1) == 2 ? " " + std::to_string(state.range(2)) + "x" + std::to_string(state.range(2)) : ""));
 }
