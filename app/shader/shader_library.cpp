@@ -109,6 +109,12 @@ void Program::set(const char* n, const glm::vec4& v) { glUniform4fv(location(n),
 void Program::set(const char* n, const glm::mat3& v) { glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::mat4& v) { glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
 
+void Program::setArray(const char* n, const glm::vec2* v, int count) { glUniform2fv(location(n), count, glm::value_ptr(v[0])); }
+void Program::setArray(const char* n, const glm::vec3* v, int count) { glUniform3fv(location(n), count, glm::value_ptr(v[0])); }
+void Program::setArray(const char* n, const glm::mat4* v, int count) {
+  glUniformMatrix4fv(location(n), count, GL_FALSE, glm::value_ptr(v[0]));
+}
+
 ShaderLibrary::ShaderLibrary(ShaderSearchPath path) : path_(std::move(path)) {
   onDiagnostic = [](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.format().c_str()); };
   std::vector<std::string> logs;

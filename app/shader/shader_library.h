@@ -49,6 +49,10 @@ class Program {
   void set(const char* name, const glm::vec4& v);
   void set(const char* name, const glm::mat3& v);
   void set(const char* name, const glm::mat4& v);
+  // Uniform arrays in one call; `name` is the array's name ("u_poisson").
+  void setArray(const char* name, const glm::vec2* v, int count);
+  void setArray(const char* name, const glm::vec3* v, int count);
+  void setArray(const char* name, const glm::mat4* v, int count);
 
  private:
   friend class ShaderLibrary;

@@ -141,11 +141,8 @@ void ShadingLab::render(Frame& frame) {
     prog.set("u_viewProj", viewProj);
     prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(inst.model)));
     prog.set("u_eye", frame.camera.eye());
-    for (int k = 0; k < 4; ++k) {
-      const std::string i = "[" + std::to_string(k) + "]";
-      prog.set(("u_lightPos" + i).c_str(), lightPos[k]);
-      prog.set(("u_lightPower" + i).c_str(), lightPower[k]);
-    }
+    prog.setArray("u_lightPos", lightPos, 4);
+    prog.setArray("u_lightPower", lightPower, 4);
     prog.set("u_ambient", glm::vec3(1.0f));
     prog.set("u_ka", params.ka);
     prog.set("u_kd", params.kd);

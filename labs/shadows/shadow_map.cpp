@@ -74,7 +74,7 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
     }
     glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // layered again
   } else if (cube_) {
-    for (int f = 0; f < 6; ++f) program.set(("u_faceViewProj[" + std::to_string(f) + "]").c_str(), light.faceViewProj[f]);
+    program.setArray("u_faceViewProj", light.faceViewProj, 6);
     drawAll();
   } else {
     program.set("u_lightViewProj", light.viewProj);

@@ -308,7 +308,7 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   prog.set("u_slopeBias", params.slopeBias);
   prog.set("u_normalOffset", params.normalOffset);
   prog.set("u_filterRadius", params.filterRadius);
-  for (size_t k = 0; k < poisson_.size(); ++k) prog.set(("u_poisson[" + std::to_string(k) + "]").c_str(), poisson_[k]);
+  prog.setArray("u_poisson", poisson_.data(), int(poisson_.size()));
   const struct { const char* name; int unit; } units[] = {{"u_keyMap", kKeyMap}, {"u_keyCube", kKeyCube}, {"u_keyCmp", kKeyCmp},
       {"u_keyCmpCube", kKeyCmpCube}, {"u_fillMap", kFillMap}, {"u_fillCmp", kFillCmp}, {"u_noCube", kNoCube},
       {"u_noCmpCube", kNoCmpCube}};
