@@ -24,13 +24,13 @@ int runRender(const Options& o) {
   Session s;
   if (auto err = openSession(o, s); !err.empty()) return fail(err);
   LabHost& host = *s.host;
-  const TimedFrames t = renderTimed(host, o.size, o.time, o.warmup, o.frames);
+  const TimedFrames t = renderTimed(host, s.size, s.time, o.warmup, o.frames);
   ImageF image = host.readImage();
   if (auto err = writePng(o.out, image); !err.empty()) return fail(err);
 
   nlohmann::json meta = host.stateJson();
-  meta["size"] = {o.size.x, o.size.y};
-  meta["time"] = o.time;
+  meta["size"] = {s.size.x, s.size.y};
+  meta["time"] = s.time;
   meta["renderer"] = s.context->describe();
   meta["gpu_ms"] = t.gpuMs;
   meta["passes"] = nlohmann::json::array();
@@ -42,7 +42,7 @@ int runRender(const Options& o) {
   std::filesystem::rename(jsonPath + ".tmp", jsonPath);
 
   for (auto& w : host.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
-  std::printf("%s: %dx%d, lab %s, scene %s, passes: %s (median of %d frames)\n", o.out.c_str(), o.size.x, o.size.y,
+  std::printf("%s: %dx%d, lab %s, scene %s, passes: %s (median of %d frames)\n", o.out.c_str(), s.size.x, s.size.y,
               std::string(host.lab().id()).c_str(), host.sceneId().c_str(), passSummary(t.passes).c_str(), o.frames);
   return 0;
 }

@@ -30,12 +30,18 @@ std::string openSession(const Options& o, Session& s) {
   if (!s.context) return err;
   s.host = std::make_unique<LabHost>(shaderSearchPath(o));
   LabHost& host = *s.host;
+  s.size = o.size;
+  s.time = o.time;
   if (!o.preset.empty()) {
     std::ifstream in(o.preset);
     if (!in) return o.preset + ": cannot open preset";
     nlohmann::json state = nlohmann::json::parse(in, nullptr, false);
     if (state.is_discarded()) return o.preset + ": not valid JSON";
     if (auto e = host.applyStateJson(state); !e.empty()) return o.preset + ": " + e;
+    const auto& size = state.contains("size") ? state["size"] : nlohmann::json();
+    if (!o.sizeGiven && size.is_array() && size.size() == 2 && size[0].is_number_integer() && size[1].is_number_integer())
+      s.size = {std::clamp(size[0].get<int>(), 16, 16384), std::clamp(size[1].get<int>(), 16, 16384)};
+    if (o.time == 0.0f && state.contains("time") && state["time"].is_number()) s.time = state["time"].get<float>();
   }
   if (!o.lab.empty() && o.lab != host.lab().id())
     if (auto e = host.selectLab(o.lab); !e.empty()) return e;

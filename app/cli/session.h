@@ -13,6 +13,8 @@ namespace shadelab {
 struct Session {
   std::unique_ptr<GlContext> context;
   std::unique_ptr<LabHost> host;
+  glm::ivec2 size{960, 540};  // --size, else the preset's "size", else the default
+  float time = 0.0f;          // --time, else the preset's "time"
 };
 
 ShaderSearchPath shaderSearchPath(const Options& o);

@@ -23,14 +23,14 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
   }
   ImGui::Text("Passes that ran this frame: %d", int(passes.size()));
   if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg)) {
-    ImGui::TableSetupColumn("pass");
-    ImGui::TableSetupColumn("GPU ms");
-    ImGui::TableSetupColumn("CPU ms");
+    ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 4.5f);
+    ImGui::TableSetupColumn("CPU ms", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 4.5f);
     ImGui::TableHeadersRow();
     for (auto& p : passes) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(p.name.c_str());
+      ImGui::TextWrapped("%s", p.name.c_str());  // "shadow map: key point 2048^2 D24 x6 (1 pass)" is long
       ImGui::TableNextColumn();
       ImGui::Text("%.3f", p.gpuMs);
       ImGui::TableNextColumn();

@@ -37,6 +37,13 @@ void onDrop(GLFWwindow* w, int count, const char** paths) {
   for (int i = 0; i < count; ++i) app->dropped.emplace_back(paths[i]);
 }
 
+// F12 straight from GLFW: a press and release that land in one poll (a busy frame) would slip
+// past ImGui's per-frame key state. Installed before ImGui's backend, which chains to it.
+void onKey(GLFWwindow* w, int key, int, int action, int) {
+  auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
+  if (app && key == GLFW_KEY_F12 && action == GLFW_PRESS) app->screenshotRequested = true;
+}
+
 void handleDrops(AppState& app) {
   for (auto& path : app.dropped) {
     const std::filesystem::path p(path);
@@ -147,6 +154,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write nothing into the user's folder
   ImGui::StyleColorsDark();
+  glfwSetKeyCallback(window, onKey);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
@@ -181,7 +189,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       double gpu = 0;
       for (auto& p : passes) gpu += p.gpuMs;
       app.history.push(dt * 1000.0f, float(gpu));
-      if (app.screenshotRequested || ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
+      if (app.screenshotRequested) {
         app.message = saveScreenshot(host, app.viewport);
         app.screenshotRequested = false;
       }

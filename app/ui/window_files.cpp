@@ -39,7 +39,7 @@ std::string saveScreenshot(LabHost& host, glm::ivec2 size) {
   nlohmann::json state = host.stateJson();
   state["size"] = {size.x, size.y};
   const std::string cmd = "shadelab render --preset " + fs::path(png).replace_extension(".json").string() +
-                          " --size " + std::to_string(size.x) + "x" + std::to_string(size.y) + " --out again.png";
+                          " --out again.png";  // the preset carries the size
   state["reproduce"] = cmd;
   if (auto err = writeTextFile(fs::path(png).replace_extension(".json").string(), state.dump(2) + "\n"); !err.empty())
     return err;

@@ -19,3 +19,32 @@ xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --exit-after 6 \
 grep -q "shade.frag:6:[0-9]*: error:" "$out/broken.log"
 "$check" "$out/window_broken.png" --min-stddev 0.05 --min-colors 50
 echo "window test passed"
+
+# A person's session: drag in the viewport to orbit, press F12, then reproduce the screenshot
+# headless from the JSON saved beside it. Needs xdotool (./test.sh installs it).
+if command -v xdotool >/dev/null; then
+  rm -rf "$out/session"
+  cat > "$out/session.sh" <<SESSION
+export SHADELAB_OUT="$out/session"
+"$shadelab" --exit-after 100000 &
+pid=\$!
+for i in \$(seq 1 100); do wid=\$(xdotool search --name ShadeLab 2>/dev/null | head -1); [ -n "\$wid" ] && break; sleep 0.2; done
+sleep 1.5
+xdotool mousemove --window \$wid 640 400; sleep 0.3; xdotool mousedown 1; sleep 0.3
+for x in 660 680 700 720 740; do xdotool mousemove --window \$wid \$x 400; sleep 0.15; done
+xdotool mouseup 1; sleep 0.3
+xdotool key --window \$wid F12
+for i in \$(seq 1 50); do ls "$out/session/screenshots/"*.json >/dev/null 2>&1 && break; sleep 0.2; done
+sleep 0.3
+kill \$pid
+SESSION
+  xvfb-run -a -s "-screen 0 1280x800x24" bash "$out/session.sh" || true
+  json=$(ls "$out"/session/screenshots/*.json)
+  grep -q '"camera": "yaw=20,' "$json" && { echo "dragging in the viewport did not orbit the camera"; exit 1; }
+  "$shadelab" render --preset "$json" --frames 1 --out "$out/session/again.png"
+  "$shadelab" compare "${json%.json}.png" "$out/session/again.png" | tee "$out/session/compare.txt"
+  grep -q "^rmse 0.00[0-4]" "$out/session/compare.txt" || { echo "the screenshot did not reproduce headless"; exit 1; }
+  echo "screenshot reproduced headless"
+else
+  echo "xdotool not installed: skipped the drag / F12 / reproduce part"
+fi
