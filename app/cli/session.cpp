@@ -18,7 +18,7 @@ std::string applyCamera(LabHost& host, const std::string& spec) {
   if (spec.empty()) return {};
   if (auto err = host.camera().parse(spec); !err.empty()) return err;
   if (spec.find("near=") == std::string::npos && spec.find("far=") == std::string::npos) {
-    const Bounds b = host.scene().worldBounds();
+    const Bounds b = host.scene().bounds;
     host.camera().fitDepthRange(b.center(), b.radius());
   }
   return {};

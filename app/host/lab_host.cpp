@@ -60,7 +60,7 @@ std::string LabHost::ensureScene() {
 }
 
 void LabHost::resetCamera() {
-  const Bounds b = scene_.worldBounds();
+  const Bounds b = scene_.bounds;
   camera_ = OrbitCamera{};
   camera_.frame(b.center(), b.radius());
   if (!scene_.suggestedCamera.empty() && camera_.parse(scene_.suggestedCamera).empty())

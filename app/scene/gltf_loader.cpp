@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cstring>
+#include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -78,21 +79,32 @@ struct Importer {
   const tinygltf::Model& model;
   Scene& scene;
   std::vector<std::vector<int>> meshPrimitives;  // glTF mesh -> our mesh indices
-  int imageBase = 0, materialBase = 0;
+  int materialBase = 0;
+  std::map<std::pair<int, int>, int> images;  // (glTF image, glTF sampler) -> our image
 
+  // glTF puts the sampler on the texture, not the image: each (image, sampler) pair becomes one
+  // ImageSource, so two textures that share an image but not a sampler both keep their wrap modes.
   int image(int textureIndex) {
     if (textureIndex < 0 || size_t(textureIndex) >= model.textures.size()) return -1;
     const auto& tex = model.textures[size_t(textureIndex)];
-    if (tex.source < 0) return -1;
-    ImageSource& img = scene.images[size_t(imageBase + tex.source)];
-    if (tex.sampler >= 0) {
-      const auto& s = model.samplers[size_t(tex.sampler)];
+    if (tex.source < 0 || size_t(tex.source) >= model.images.size()) return -1;
+    const int sampler = tex.sampler >= 0 && size_t(tex.sampler) < model.samplers.size() ? tex.sampler : -1;
+    if (auto it = images.find({tex.source, sampler}); it != images.end()) return it->second;
+    const auto& gltfImage = model.images[size_t(tex.source)];
+    ImageSource img;
+    img.name = gltfImage.uri.empty() ? gltfImage.name : gltfImage.uri;
+    img.bytes = gltfImage.image;  // still encoded: decoded only if a lab needs it
+    if (sampler >= 0) {
+      const auto& s = model.samplers[size_t(sampler)];
       img.sampler.wrapS = wrapMode(s.wrapS);
       img.sampler.wrapT = wrapMode(s.wrapT);
       if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) img.sampler.magFilter = GL_NEAREST;
       if (s.minFilter > 0) img.sampler.minFilter = GLenum(s.minFilter);  // glTF uses the GL enums
     }
-    return imageBase + tex.source;
+    const int index = int(scene.images.size());
+    scene.images.push_back(std::move(img));
+    images[{tex.source, sampler}] = index;
+    return index;
   }
 
   std::string primitive(const tinygltf::Primitive& prim, MeshData& mesh) {
@@ -146,13 +158,7 @@ std::string loadGltf(const fs::path& file, Scene& scene) {
   }
   if (!warn.empty()) scene.warnings.push_back(file.string() + ": " + warn.substr(0, warn.find('\n')));
 
-  Importer im{model, scene, {}, int(scene.images.size()), int(scene.materials.size())};
-  for (auto& img : model.images) {
-    ImageSource src;
-    src.name = img.uri.empty() ? img.name : img.uri;
-    src.bytes = img.image;
-    scene.images.push_back(std::move(src));
-  }
+  Importer im{model, scene, {}, int(scene.materials.size()), {}};
   for (auto& m : model.materials) {
     Material mat;
     mat.name = m.name;

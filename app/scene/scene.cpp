@@ -4,7 +4,7 @@
 
 namespace shadelab {
 
-Bounds Scene::worldBounds() const {
+Bounds Scene::computeBounds() const {
   Bounds b;
   for (auto& inst : instances) {
     const Bounds mb = meshes[size_t(inst.mesh)].bounds();

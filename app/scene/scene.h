@@ -59,7 +59,8 @@ struct Scene {
   std::string suggestedCamera;         // OrbitCamera::parse text applied after framing, or ""
   int revision = 0;                    // set by the host on every build: caches keyed on it go stale
 
-  Bounds worldBounds() const;
+  Bounds bounds;  // world-space bounds of all instances, kept by the host (computeBounds) after each build
+  Bounds computeBounds() const;  // walks every vertex: call once per build, not per frame
   size_t triangleCount() const;
 };
 

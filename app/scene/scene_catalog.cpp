@@ -92,7 +92,7 @@ const DataScene kDataScenes[] = {
 
 // A floor four bounding radii wide, touching the lowest point of what is there.
 void addGround(Scene& s) {
-  const Bounds b = s.worldBounds();
+  const Bounds b = s.computeBounds();
   add(s, makePlane(4.0f * b.radius(), 1, 4.0f), at(b.center().x, b.min.y, b.center().z),
       addMaterial(s, "ground", {0.75f, 0.75f, 0.7f}));
 }
@@ -147,6 +147,7 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     for (auto& inst : out.instances) inst.model = glm::scale(glm::mat4(1.0f), glm::vec3(needs.scale)) * inst.model;
     out.suggestedCamera.clear();  // it is in unscaled units; framing the bounds still works
   }
+  out.bounds = out.computeBounds();
   // Leave out what the configuration does not use.
   for (auto& mesh : out.meshes) {
     if (!needs.uvs) mesh.uvs.clear();

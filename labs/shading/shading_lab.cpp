@@ -118,7 +118,7 @@ void ShadingLab::render(Frame& frame) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   const glm::mat4 viewProj = frame.camera.projection(frame.aspect()) * frame.camera.view();
-  const Bounds bounds = frame.scene.worldBounds();
+  const Bounds bounds = frame.scene.bounds;
   const float radius = bounds.radius();
   glm::vec3 lightPos[4], lightPower[4];
   const float elevation = glm::radians(params.lightElevationDeg);

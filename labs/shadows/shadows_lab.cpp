@@ -295,7 +295,7 @@ static void setLight(Program& prog, const char* name, const LightFrame& L, int m
 }
 
 void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill) {
-  const Bounds b = frame.scene.worldBounds();
+  const Bounds b = frame.scene.bounds;
   prog.use();
   prog.set("u_viewProj", frame.camera.projection(frame.aspect()) * frame.camera.view());
   prog.set("u_eye", frame.camera.eye());
@@ -352,7 +352,7 @@ void ShadowsLab::drawFrustum(Frame& frame, const LightFrame& key) {
 }
 
 void ShadowsLab::render(Frame& frame) {
-  const Bounds bounds = frame.scene.worldBounds();
+  const Bounds bounds = frame.scene.bounds;
   lightWarnings_.clear();
   const LightFrame key = buildLight(keySetup(), bounds, lightWarnings_);
   std::vector<std::string> ignored;

@@ -39,7 +39,7 @@ std::optional<ImageF> ShadowsLab::computeReference(Frame& frame) {
   internalView_ = InternalView::None;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
-  const Bounds bounds = frame.scene.worldBounds();
+  const Bounds bounds = frame.scene.bounds;
   std::vector<std::string> ignored;
   LightFrame key = buildLight(keySetup(), bounds, ignored);
   const bool soft = params.filter == ShadowFilter::Pcss && key.radiusWorld > 0.0f;

@@ -59,6 +59,40 @@ TEST(Loaders, GltfWithNodeTransformsAndMaterial) {
   EXPECT_FLOAT_EQ(m.baseColor.g, 0.5f);
 }
 
+TEST(Loaders, GltfTexturesSamplersAndTrsStayEncodedUntilAsked) {
+  Scene s;
+  ASSERT_EQ(loadSceneFile(kData / "textured_quad.gltf", s), "");
+  // One image, two samplers: two image sources, each with its texture's sampler.
+  ASSERT_EQ(s.images.size(), 2u);
+  for (auto& img : s.images) {
+    EXPECT_TRUE(img.rgba.empty());  // kept encoded at load
+    EXPECT_FALSE(img.bytes.empty());
+  }
+  const Material& m = s.materials[size_t(s.meshes[0].material)];
+  EXPECT_EQ(m.name, "tiles");
+  EXPECT_FLOAT_EQ(m.metallic, 0.25f);
+  EXPECT_FLOAT_EQ(m.roughness, 0.75f);
+  ASSERT_GE(m.baseColorImage, 0);
+  ASSERT_GE(m.normalImage, 0);
+  EXPECT_EQ(m.normalImage, m.metallicRoughnessImage);  // same image, same (default) sampler
+  EXPECT_NE(m.baseColorImage, m.normalImage);
+  const gl::SamplerState& base = s.images[size_t(m.baseColorImage)].sampler;
+  EXPECT_EQ(base.wrapS, GLenum(GL_CLAMP_TO_EDGE));
+  EXPECT_EQ(base.wrapT, GLenum(GL_MIRRORED_REPEAT));
+  EXPECT_EQ(base.magFilter, GLenum(GL_NEAREST));
+  EXPECT_EQ(s.images[size_t(m.normalImage)].sampler.wrapS, GLenum(GL_REPEAT));  // glTF's default
+  // TRS: 90 degrees about +Y, scale 2: local +X lands on world -Z, twice as long.
+  const glm::vec4 x = s.instances[0].model * glm::vec4(1, 0, 0, 1);
+  EXPECT_NEAR(x.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(x.z, -2.0f, 1e-5f);
+  std::vector<unsigned char> rgba;
+  glm::ivec2 size;
+  ASSERT_EQ(decodeImage(s.images[size_t(m.baseColorImage)], rgba, size), "");
+  EXPECT_EQ(size, glm::ivec2(2, 2));
+  EXPECT_EQ(rgba[0], 255);  // top-left texel is red
+  EXPECT_EQ(rgba[5], 255);  // then green
+}
+
 TEST(Loaders, SharedObjWithTexturesIsNotDecodedAtLoad) {
   const fs::path data = dataDirectory();
   if (data.empty()) GTEST_SKIP() << "shared data folder not found";
