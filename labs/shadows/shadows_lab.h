@@ -52,7 +52,7 @@ struct ShadowsParams {
   float filterRadius = 2.0f;    // texels, Poisson PCF
   bool rotateSamples = true;    // per-pixel rotation of the Poisson disk
   int blockerIndex = 1;         // PCSS blocker search samples: 8 << index
-  int pcssIndex = 2;            // PCSS filter samples: 8 << index
+  int pcssIndex = 1;            // PCSS filter samples: 8 << index (16: on the error-cost front)
   ShadowView view = ShadowView::Shaded;
   int depthLight = 0;           // the map the depth views show: 0 key, 1 fill
   float depthZoom = 1.0f;
