@@ -16,8 +16,8 @@ namespace gl {
 // first missing function in `missing`) when the context lacks a core function we rely on.
 bool loadFunctions(ShlGetProcAddress getProc, const char** missing = nullptr);
 
+const char* errorString(GLenum error);  // "GL_INVALID_ENUM", ...
 // Drains glGetError; returns "" or a comma-separated list such as "GL_INVALID_ENUM".
-const char* errorString(GLenum error);
 std::string drainErrors();
 
 }  // namespace gl
