@@ -47,9 +47,10 @@ class HotReload : public ::testing::Test {
     fs::rename(tmp, frag);
   }
   const Program& program() { return *host->lab().activePrograms().front(); }
-  // Renders until the program's build count or failure state changes (at most 3 s).
-  bool waitForRebuild(int generation, size_t diagnosticsBefore) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  // Renders until the program's build count or failure state changes (at most `limit`).
+  bool waitForRebuild(int generation, size_t diagnosticsBefore,
+                      std::chrono::milliseconds limit = std::chrono::milliseconds(3000)) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
     while (std::chrono::steady_clock::now() < deadline) {
       host->renderFrame({64, 64});
       if (program().generation() != generation || diagnostics.size() != diagnosticsBefore) return true;
@@ -100,7 +101,20 @@ TEST_F(HotReload, SavingIdenticalContentDoesNotRecompile) {
   host->renderFrame({64, 64});
   const int gen = program().generation();
   save(solidFrag("1.0, 0.0, 0.0"));  // same bytes, new mtime
-  EXPECT_FALSE(waitForRebuild(gen, diagnostics.size()) && program().generation() != gen);
+  // 0.5 s is over ten times the debounce: a rebuild would have happened by then.
+  EXPECT_FALSE(waitForRebuild(gen, diagnostics.size(), std::chrono::milliseconds(500)));
+  EXPECT_EQ(program().generation(), gen);
+}
+
+TEST_F(HotReload, ADroppedFileReplacesTheStageOfThatName) {
+  host->renderFrame({64, 64});
+  const fs::path elsewhere = student / "dropped";
+  fs::create_directories(elsewhere);
+  std::ofstream(elsewhere / "shade.frag") << solidFrag("0.0, 1.0, 1.0");
+  EXPECT_EQ(host->shaders().overrideByName(elsewhere / "shade.frag"), "shading/shade.frag");
+  host->renderFrame({64, 64});
+  EXPECT_EQ(centre(), glm::vec3(0, 1, 1));
+  EXPECT_EQ(host->shaders().overrideByName(elsewhere / "nothing.frag"), "");  // no stage of that name
 }
 
 TEST_F(HotReload, NeverCompiledProgramDrawsTheFallback) {
