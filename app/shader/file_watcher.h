@@ -26,7 +26,6 @@ class FileWatcher {
   void watch(const std::filesystem::path& file);
   // Non-blocking: the files whose last event is older than the debounce interval.
   std::vector<std::filesystem::path> poll();
-  bool active() const { return fd_ >= 0; }
 
  private:
   int fd_ = -1;

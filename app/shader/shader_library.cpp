@@ -226,6 +226,15 @@ std::string ShaderLibrary::overrideByName(const fs::path& file) {
   return replaced;
 }
 
+Program& ProgramSlot::get(ShaderLibrary& library, const ProgramSpec& spec) {
+  std::string key = spec.key();
+  if (!program_ || key != key_) {
+    program_ = library.program(spec);
+    key_ = std::move(key);
+  }
+  return *program_;
+}
+
 std::vector<ProgramRef> ShaderLibrary::livePrograms() const {
   std::vector<ProgramRef> out;
   for (auto& [key, weak] : cache_)

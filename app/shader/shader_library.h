@@ -103,6 +103,22 @@ class ShaderLibrary {
   std::map<std::string, std::weak_ptr<Program>> cache_;
 };
 
+// The program a lab uses for one role (a pass, a variant), re-fetched only when the spec changes:
+// `slot.get(library, spec)` each frame costs a key compare, not a library lookup.
+class ProgramSlot {
+ public:
+  Program& get(ShaderLibrary& library, const ProgramSpec& spec);
+  const ProgramRef& current() const { return program_; }
+  void reset() {
+    program_.reset();
+    key_.clear();
+  }
+
+ private:
+  std::string key_;
+  ProgramRef program_;
+};
+
 GLenum stageFromExtension(const std::string& path);  // .vert .geom .frag .tesc .tese .comp; 0 if unknown
 
 }  // namespace shadelab

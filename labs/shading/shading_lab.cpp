@@ -95,18 +95,7 @@ std::string ShadingLab::setup(LabContext& ctx) {
 
 void ShadingLab::teardown() {
   for (auto& p : programs_) p.reset();
-  for (auto& k : keys_) k.clear();
   shaders_ = nullptr;
-}
-
-ProgramRef& ShadingLab::program(bool textured) {
-  const ProgramSpec spec = programSpec(params, textured);
-  const std::string key = spec.key();
-  if (keys_[textured] != key) {
-    programs_[textured] = shaders_->program(spec);
-    keys_[textured] = key;
-  }
-  return programs_[textured];
 }
 
 void ShadingLab::render(Frame& frame) {
@@ -135,7 +124,7 @@ void ShadingLab::render(Frame& frame) {
   for (const Instance& inst : frame.scene.instances) {
     const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
     const gl::Texture2D* tex = params.textures ? frame.gpu.baseColorTexture(mat) : nullptr;
-    Program& prog = *program(tex != nullptr);
+    Program& prog = programs_[tex != nullptr].get(*shaders_, programSpec(params, tex != nullptr));
     prog.use();
     prog.set("u_model", inst.model);
     prog.set("u_viewProj", viewProj);
@@ -159,8 +148,8 @@ void ShadingLab::render(Frame& frame) {
 
 std::vector<ProgramRef> ShadingLab::activePrograms() const {
   std::vector<ProgramRef> out;
-  for (auto& p : programs_)
-    if (p) out.push_back(p);
+  for (auto& slot : programs_)
+    if (slot.current()) out.push_back(slot.current());
   return out;
 }
 

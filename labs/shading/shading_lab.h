@@ -52,13 +52,11 @@ class ShadingLab final : public LabWithParams<ShadingParams> {
 
  private:
   ProgramSpec programSpec(const ShadingParams& p, bool textured) const;
-  ProgramRef& program(bool textured);
 
   ShaderLibrary* shaders_ = nullptr;
-  // Built on demand, per variant actually drawn; keyed by the spec so a param change that
-  // alters the defines fetches (or compiles) the right one.
-  std::string keys_[2];
-  ProgramRef programs_[2];  // [untextured, textured]
+  // Built on demand, per variant actually drawn; a param change that alters the defines fetches
+  // (or compiles) the right one.
+  ProgramSlot programs_[2];  // [untextured, textured]
 };
 
 }  // namespace shadelab

@@ -179,6 +179,13 @@ ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses) const {
   return spec;
 }
 
+ProgramSpec ShadowsLab::linesSpec() {
+  ProgramSpec spec;
+  spec.name = "shadows/lines";
+  spec.stages = {{GL_VERTEX_SHADER, "shadows/lines.vert"}, {GL_FRAGMENT_SHADER, "shadows/lines.frag"}};
+  return spec;
+}
+
 ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
   ProgramSpec spec;
   spec.name = "shadows/depth view";
@@ -190,11 +197,7 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
 }
 
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
-  std::vector<ProgramSpec> all = {depthSpec(false, false), depthSpec(true, false), depthSpec(true, true)};
-  ProgramSpec lines;
-  lines.name = "shadows/lines";
-  lines.stages = {{GL_VERTEX_SHADER, "shadows/lines.vert"}, {GL_FRAGMENT_SHADER, "shadows/lines.frag"}};
-  all.push_back(lines);
+  std::vector<ProgramSpec> all = {depthSpec(false, false), depthSpec(true, false), depthSpec(true, true), linesSpec()};
   ShadowsParams p;
   for (int type = 0; type < 3; ++type) {
     p.keyType = LightType(type);
@@ -230,7 +233,7 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
 
 std::string ShadowsLab::setup(LabContext& ctx) {
   shaders_ = &ctx.shaders;
-  programs_.assign(kSlotCount, {});
+  programs_.assign(kSlotCount, ProgramSlot{});
   dummies_.create();
   emptyVao_ = gl::VertexArray::make();
   // The 12 edges of the NDC cube, drawn through the light's inverse view-projection.
@@ -263,20 +266,10 @@ void ShadowsLab::teardown() {
   shaders_ = nullptr;
 }
 
-ProgramRef ShadowsLab::fetch(size_t slot, const ProgramSpec& spec) {
-  auto& [key, program] = programs_[slot];
-  const std::string k = spec.key();
-  if (key != k || !program) {
-    program = shaders_->program(spec);
-    key = k;
-  }
-  return program;
-}
-
 std::vector<ProgramRef> ShadowsLab::activePrograms() const {
   std::vector<ProgramRef> out;
-  for (auto& [key, p] : programs_)
-    if (p) out.push_back(p);
+  for (auto& slot : programs_)
+    if (slot.current()) out.push_back(slot.current());
   return out;
 }
 
@@ -339,10 +332,7 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
 void ShadowsLab::drawFrustum(Frame& frame, const LightFrame& key) {
   if (key.type == LightType::Point) return;
   auto pass = frame.pass("light frustum");
-  ProgramSpec lines;
-  lines.name = "shadows/lines";
-  lines.stages = {{GL_VERTEX_SHADER, "shadows/lines.vert"}, {GL_FRAGMENT_SHADER, "shadows/lines.frag"}};
-  Program& prog = *fetch(kLinesSlot, lines);
+  Program& prog = fetch(kLinesSlot, linesSpec());
   prog.use();
   prog.set("u_viewProj", frame.camera.projection(frame.aspect()) * frame.camera.view());
   prog.set("u_lightInverse", glm::inverse(key.viewProj));
@@ -368,17 +358,17 @@ void ShadowsLab::render(Frame& frame) {
     auto pass = frame.pass("shadow map: key " + std::string(kLightTypes[int(params.keyType)]) + " " + mapName +
                            (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : ""));
     keyMap_.ensure(cube, params.mapSize(), format);
-    keyMap_.render(frame.scene, frame.gpu, *fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses)), key, depthState);
-  } else {
-    keyMap_.release();
+    keyMap_.render(frame.scene, frame.gpu, fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses)), key, depthState);
+  } else if (!params.keyCasts) {
+    keyMap_.release();  // (a g-buffer render keeps it: the next frame needs it again)
   }
   const bool fillMapNeeded = params.fillLight && params.fillCasts && !gbuffer &&
                              (!viewIsDepthMap(params.view) || params.depthLight == 1);
   if (fillMapNeeded) {
     auto pass = frame.pass("shadow map: fill spot " + mapName);
     fillMap_.ensure(false, params.mapSize(), format);
-    fillMap_.render(frame.scene, frame.gpu, *fetch(kFillDepthSlot, depthSpec(false, false)), fill, depthState);
-  } else {
+    fillMap_.render(frame.scene, frame.gpu, fetch(kFillDepthSlot, depthSpec(false, false)), fill, depthState);
+  } else if (!(params.fillLight && params.fillCasts)) {
     fillMap_.release();
   }
 
@@ -394,7 +384,7 @@ void ShadowsLab::render(Frame& frame) {
   }
   {
     auto pass = frame.pass(gbuffer ? "reference g-buffer" : "lighting");
-    drawLit(frame, *fetch(kLitSlot, litSpec(params, internalView_)), key, params.fillLight && !gbuffer ? &fill : nullptr);
+    drawLit(frame, fetch(kLitSlot, litSpec(params, internalView_)), key, params.fillLight && !gbuffer ? &fill : nullptr);
   }
   if (params.showFrustum && !gbuffer) drawFrustum(frame, key);
 }
@@ -404,7 +394,7 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   const bool showFill = params.depthLight == 1;
   const ShadowMap& map = showFill ? fillMap_ : keyMap_;
   if (!map) return;  // that light casts no shadow: there is no map to show (warnings() says so)
-  Program& prog = *fetch(kDepthViewSlot, depthViewSpec(params));
+  Program& prog = fetch(kDepthViewSlot, depthViewSpec(params));
   prog.use();
   setLight(prog, "u_key", showFill ? fill : key, params.mapSize());
   prog.set("u_keyMap", int(kKeyMap));

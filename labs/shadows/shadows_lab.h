@@ -101,19 +101,19 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   ProgramSpec depthSpec(bool cube, bool sixPasses) const;
   ProgramSpec depthViewSpec(const ShadowsParams& p) const;
   void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);
-  ProgramRef fetch(size_t slot, const ProgramSpec& spec);
+  Program& fetch(size_t slot, const ProgramSpec& spec) { return programs_[slot].get(*shaders_, spec); }
+  static ProgramSpec linesSpec();
   void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);
   void drawFrustum(Frame& frame, const LightFrame& key);
 
   ShaderLibrary* shaders_ = nullptr;
-  std::vector<std::pair<std::string, ProgramRef>> programs_;  // slot -> (spec key, program)
+  std::vector<ProgramSlot> programs_;  // one per role: lit, key depth, fill depth, depth view, lines
   ShadowMap keyMap_, fillMap_;
   DummyDepthTextures dummies_;
   gl::VertexArray emptyVao_, frustumVao_;
   gl::Buffer frustumVbo_;
   std::vector<glm::vec2> poisson_;
-  mutable std::vector<std::string> lightWarnings_;
-  Bounds lastBounds_;
+  std::vector<std::string> lightWarnings_;  // from the last render's light setup
   std::unique_ptr<RayScene> rayScene_;
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;
