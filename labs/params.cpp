@@ -2,18 +2,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 
 namespace shadelab {
-
-std::string formatNumber(double v) {
-  char buf[32];
-  for (int precision = 6; precision <= 9; ++precision) {
-    std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-    if (float(std::strtod(buf, nullptr)) == float(v)) break;
-  }
-  return buf;
-}
 
 static std::string joined(std::span<const std::string_view> names) {
   std::string s;

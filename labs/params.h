@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "util/format.h"
+
 namespace shadelab {
 
 struct ParamInfo {
@@ -77,7 +79,5 @@ class DescribeParams final : public ParamVisitor {
   void add(const ParamInfo& info, const std::string& type, const std::string& value);
   std::string labId_;
 };
-
-std::string formatNumber(double v);  // shortest text that reads back to the same float
 
 }  // namespace shadelab

@@ -9,7 +9,7 @@
 
 #include <stb_image_write.h>
 
-#include "labs/params.h"
+#include "util/format.h"
 
 namespace shadelab {
 

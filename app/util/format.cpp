@@ -1,0 +1,17 @@
+#include "util/format.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace shadelab {
+
+std::string formatNumber(double v) {
+  char buf[32];
+  for (int precision = 6; precision <= 9; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+    if (float(std::strtod(buf, nullptr)) == float(v)) break;
+  }
+  return buf;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,11 @@
+// Number-to-text for everything that writes numbers people read back: CLI values, JSON, CSV,
+// camera strings, SVG coordinates. The shortest text that parses back to the same float, so a
+// value saved and loaded again is bit-identical.
+#pragma once
+#include <string>
+
+namespace shadelab {
+
+std::string formatNumber(double v);
+
+}  // namespace shadelab
