@@ -63,6 +63,27 @@ void SetFromString::choiceParam(const ParamInfo& info, int& index, std::span<con
   fail(info, joined(names));
 }
 
+void SetFromString::action(const ParamInfo& info, const std::function<void()>&) {
+  if (info.key != key_) return;
+  found_ = true;
+  error_ = labId_ + "." + std::string(info.key) + " is an action, not a value: run it with --do " + labId_ + "." +
+           std::string(info.key);
+}
+
+void RunAction::action(const ParamInfo& info, const std::function<void()>& run) {
+  actions_.emplace_back(info.key);
+  if (info.key != key_ || ran_) return;
+  ran_ = true;
+  run();
+}
+
+std::string RunAction::result() const {
+  if (ran_) return {};
+  std::string valid;
+  for (auto& a : actions_) valid += (valid.empty() ? "" : ", ") + labId_ + "." + a;
+  return "unknown action '" + labId_ + "." + key_ + "' (valid: " + (valid.empty() ? "this lab has none" : valid) + ")";
+}
+
 std::string SetFromString::result() const {
   if (found_) return error_;
   std::string valid;
@@ -96,6 +117,11 @@ void DescribeParams::intParam(const ParamInfo& info, int& value, int min, int ma
   add(info, "int [" + std::to_string(min) + ", " + std::to_string(max) + "]", std::to_string(value));
 }
 void DescribeParams::boolParam(const ParamInfo& info, bool& value) { add(info, "on|off", value ? "on" : "off"); }
+void DescribeParams::section(std::string_view title) { lines.push_back("  [" + std::string(title) + "]"); }
+void DescribeParams::action(const ParamInfo& info, const std::function<void()>&) {
+  lines.push_back("  " + labId_ + "." + std::string(info.key) + "  action (--do " + labId_ + "." + std::string(info.key) +
+                  ")\n      " + std::string(info.help));
+}
 void DescribeParams::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
   add(info, "one of " + joined(names), std::string(names[size_t(index)]));
 }

@@ -2,6 +2,7 @@
 // (--set lab.key=value), JSON presets, `shadelab list` and the tutorial tables. A lab writes
 // each field once, with range, units and help, in its visitParams().
 #pragma once
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -25,6 +26,12 @@ class ParamVisitor {
   virtual void intParam(const ParamInfo& info, int& value, int min, int max) = 0;
   virtual void boolParam(const ParamInfo& info, bool& value) = 0;
   virtual void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) = 0;
+  // A heading over the parameters that follow ("Light", "Bias"): the panel folds the group, `list`
+  // prints it. Parameters before the first section stand on their own.
+  virtual void section(std::string_view title) {}
+  // A button ("add noise", "bake"): `run` acts on the lab at once. The CLI runs it with
+  // --do lab.key; it is no value, so presets and --set leave it alone.
+  virtual void action(const ParamInfo& info, const std::function<void()>& run) {}
 
   // Enums are stored as enum classes in Params and visited as named choices.
   template <typename E>
@@ -45,6 +52,7 @@ class SetFromString final : public ParamVisitor {
   void intParam(const ParamInfo& info, int& value, int min, int max) override;
   void boolParam(const ParamInfo& info, bool& value) override;
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  void action(const ParamInfo& info, const std::function<void()>&) override;
   // Call after visiting: the error, including "unknown key" with the valid keys.
   std::string result() const;
 
@@ -53,6 +61,23 @@ class SetFromString final : public ParamVisitor {
   std::string labId_, key_, text_, error_;
   std::vector<std::string> keys_;
   bool found_ = false;
+};
+
+// Runs one action by key. result(): "" or an error naming the valid actions.
+class RunAction final : public ParamVisitor {
+ public:
+  RunAction(std::string_view labId, std::string_view key) : labId_(labId), key_(key) {}
+  void floatParam(const ParamInfo&, float&, float, float, bool) override {}
+  void intParam(const ParamInfo&, int&, int, int) override {}
+  void boolParam(const ParamInfo&, bool&) override {}
+  void choiceParam(const ParamInfo&, int&, std::span<const std::string_view>) override {}
+  void action(const ParamInfo& info, const std::function<void()>& run) override;
+  std::string result() const;
+
+ private:
+  std::string labId_, key_;
+  std::vector<std::string> actions_;
+  bool ran_ = false;
 };
 
 // Writes every parameter as "key": value text pairs (value as SetFromString accepts it).
@@ -73,6 +98,8 @@ class DescribeParams final : public ParamVisitor {
   void intParam(const ParamInfo& info, int& value, int min, int max) override;
   void boolParam(const ParamInfo& info, bool& value) override;
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  void section(std::string_view title) override;
+  void action(const ParamInfo& info, const std::function<void()>&) override;
   std::vector<std::string> lines;
 
  private:

@@ -21,6 +21,7 @@ options:
   --lab ID            lab to run (see `shadelab list`)
   --scene NAME|FILE   procedural scene name, or a .gltf/.glb/.obj/.off file
   --set LAB.KEY=VAL   set a parameter (repeatable)
+  --do LAB.KEY        run one of the lab's actions after the --set values, e.g. --do denoise.add_noise
   --preset FILE.json  load lab, scene, params and camera saved by the app or by render
   --size WxH          image size (default 960x540)
   --camera SPEC       yaw=30,pitch=20,distance=4,target=x;y;z,fov=45,near=0.1,far=100
@@ -68,6 +69,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     if (arg == "--lab") o.lab = v;
     else if (arg == "--scene") o.scene = v;
     else if (arg == "--set") o.sets.push_back(v);
+    else if (arg == "--do") o.actions.push_back(v);
     else if (arg == "--vary") o.varies.push_back(v);
     else if (arg == "--shaders") o.shaderDirs.emplace_back(v);
     else if (arg == "--camera") o.camera = v;
@@ -86,7 +88,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       else o.frames = int(d);
     } else {
       return "unknown option '" + arg +
-             "' (valid: --lab, --scene, --set, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
+             "' (valid: --lab, --scene, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
              "--backend, --out)";
     }
   }

@@ -14,6 +14,7 @@ struct Options {
   std::string lab;      // "" = the default (or the preset's)
   std::string scene;    // "" = the lab's default
   std::vector<std::string> sets;                 // --set lab.key=value, in order
+  std::vector<std::string> actions;              // --do lab.key, in order, after every --set
   std::vector<std::string> varies;               // --vary key=a,b,c (sweep)
   std::vector<std::filesystem::path> shaderDirs; // --shaders DIR (student folders, searched first)
   std::string camera;                            // --camera yaw=..,pitch=..

@@ -49,6 +49,8 @@ std::string openSession(const Options& o, Session& s) {
     if (auto e = host.selectScene(o.scene); !e.empty()) return e;
   for (auto& s : o.sets)
     if (auto e = host.set(s); !e.empty()) return "--set: " + e;
+  for (auto& a : o.actions)
+    if (auto e = host.runAction(a); !e.empty()) return "--do: " + e;
   return applyCamera(host, o.camera);
 }
 

@@ -67,18 +67,30 @@ void LabHost::resetCamera() {
     camera_.fitDepthRange(b.center(), b.radius());
 }
 
+// "lab.key" -> "key" for the current lab; "" when it names another lab.
+std::string LabHost::ownKey(const std::string& key) const {
+  const std::string prefix = std::string(lab_->id()) + ".";
+  if (key.rfind(prefix, 0) == 0) return key.substr(prefix.size());
+  return key.find('.') == std::string::npos ? key : std::string();
+}
+
 std::string LabHost::set(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos) return "'" + assignment + "': expected key=value, e.g. " + std::string(lab_->id()) + ".mode=phong";
-  std::string key = assignment.substr(0, eq);
-  const std::string value = assignment.substr(eq + 1);
-  const std::string prefix = std::string(lab_->id()) + ".";
-  if (key.rfind(prefix, 0) == 0) key = key.substr(prefix.size());
-  else if (key.find('.') != std::string::npos)
-    return "'" + key + "' belongs to another lab (the current lab is " + std::string(lab_->id()) + ")";
-  SetFromString setter(lab_->id(), key, value);
+  const std::string key = ownKey(assignment.substr(0, eq));
+  if (key.empty())
+    return "'" + assignment.substr(0, eq) + "' belongs to another lab (the current lab is " + std::string(lab_->id()) + ")";
+  SetFromString setter(lab_->id(), key, assignment.substr(eq + 1));
   lab_->visitParams(setter);
   return setter.result();
+}
+
+std::string LabHost::runAction(const std::string& name) {
+  const std::string key = ownKey(name);
+  if (key.empty()) return "'" + name + "' belongs to another lab (the current lab is " + std::string(lab_->id()) + ")";
+  RunAction run(lab_->id(), key);
+  lab_->visitParams(run);
+  return run.result();
 }
 
 std::string LabHost::applySettings(const Settings& settings) {

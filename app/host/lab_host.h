@@ -29,6 +29,8 @@ class LabHost {
   std::string refreshScene() { return ensureScene(); }
   // "lab.key=value" or "key=value" (the current lab); errors name the valid keys.
   std::string set(const std::string& assignment);
+  // "lab.key" or "key": runs one of the lab's actions; errors name the valid ones.
+  std::string runAction(const std::string& key);
   std::string applySettings(const Settings& settings);
   Settings currentSettings();  // every param of the current lab as text
   void resetParams();
@@ -61,6 +63,7 @@ class LabHost {
   const char* timerClock() const { return timer_.clockName(); }
 
  private:
+  std::string ownKey(const std::string& key) const;
   std::string ensureScene();
   std::string rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe);
 

@@ -12,6 +12,7 @@ class ImGuiParams final : public ParamVisitor {
   bool changed = false;
 
   void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale) override {
+    if (!open_) return;
     const std::string label = withUnits(info);
     changed |= ImGui::SliderFloat(label.c_str(), &value, min, max, logScale ? "%.4g" : "%.3f",
                                   logScale ? ImGuiSliderFlags_Logarithmic : 0);
@@ -19,16 +20,19 @@ class ImGuiParams final : public ParamVisitor {
     tooltip(info);
   }
   void intParam(const ParamInfo& info, int& value, int min, int max) override {
+    if (!open_) return;
     const std::string label = withUnits(info);
     changed |= ImGui::SliderInt(label.c_str(), &value, min, max);
     value = std::clamp(value, min, max);
     tooltip(info);
   }
   void boolParam(const ParamInfo& info, bool& value) override {
+    if (!open_) return;
     changed |= ImGui::Checkbox(std::string(info.label).c_str(), &value);
     tooltip(info);
   }
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override {
+    if (!open_) return;
     const std::string label(info.label);
     if (ImGui::BeginCombo(label.c_str(), std::string(names[size_t(index)]).c_str())) {
       for (size_t i = 0; i < names.size(); ++i)
@@ -40,17 +44,30 @@ class ImGuiParams final : public ParamVisitor {
     }
     tooltip(info);
   }
+  // A folding header per section; its parameters are laid out only while it is open.
+  void section(std::string_view title) override {
+    open_ = ImGui::CollapsingHeader(std::string(title).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+  }
+  void action(const ParamInfo& info, const std::function<void()>& run) override {
+    if (!open_) return;
+    if (ImGui::Button(std::string(info.label).c_str())) {
+      run();
+      changed = true;
+    }
+    tooltip(info, "--do ");
+  }
 
  private:
+  bool open_ = true;
   static std::string withUnits(const ParamInfo& info) {
     return info.units.empty() ? std::string(info.label) : std::string(info.label) + " (" + std::string(info.units) + ")";
   }
-  static void tooltip(const ParamInfo& info) {
+  static void tooltip(const ParamInfo& info, const char* flag = "--set ") {
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
       ImGui::TextUnformatted(std::string(info.help).c_str());
-      ImGui::TextDisabled("--set %s", std::string(info.key).c_str());
+      ImGui::TextDisabled("%s%s", flag, std::string(info.key).c_str());
       ImGui::PopTextWrapPos();
       ImGui::EndTooltip();
     }

@@ -170,6 +170,8 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
     if (!options.scene.empty()) app.message = host.selectScene(options.scene);
     for (auto& s : options.sets)
       if (auto e = host.set(s); !e.empty()) app.message = e;
+    for (auto& a : options.actions)
+      if (auto e = host.runAction(a); !e.empty()) app.message = e;
     if (auto e = applyCamera(host, options.camera); !e.empty()) app.message = e;
 
     auto last = std::chrono::steady_clock::now();

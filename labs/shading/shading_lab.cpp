@@ -27,6 +27,7 @@ std::string_view ShadingLab::summary() const {
 
 void ShadingLab::visitParams(ParamVisitor& v) {
   auto& p = params;
+  v.section("Shading");
   v.enumParam({"mode", "Shading frequency", "", "flat: once per triangle (face normal); gouraud: per vertex, "
                "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, kModeNames);
   v.enumParam({"specular", "Specular model", "", "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
@@ -35,16 +36,18 @@ void ShadingLab::visitParams(ParamVisitor& v) {
                "linear in screen space (noperspective), bends the checker on large triangles."}, p.uvInterpolation, kUvNames);
   v.intParam({"tessellation", "Tessellation", "segments", "Segments around the procedural spheres and tori "
               "(rings = half). Files are drawn as loaded."}, p.tessellation, 3, kReferenceTessellation);
+  v.section("Material");
   v.floatParam({"ka", "Ambient ka", "", "Ambient reflectance: the constant term that stands in for indirect light."}, p.ka, 0.0f, 1.0f);
   v.floatParam({"kd", "Diffuse kd", "", "Diffuse (Lambertian) reflectance."}, p.kd, 0.0f, 1.0f);
   v.floatParam({"ks", "Specular ks", "", "Specular reflectance."}, p.ks, 0.0f, 1.0f);
   v.floatParam({"shininess", "Shininess p", "", "Specular exponent: larger = smaller, sharper highlight."}, p.shininess, 1.0f, 1024.0f, true);
+  v.boolParam({"textures", "Textures", "", "Use base-colour textures. Off: no image is decoded or uploaded."}, p.textures);
+  v.section("Lights");
   v.intParam({"lights", "Point lights", "", "Number of point lights (0 = ambient only). A compile-time loop bound."}, p.lights, 0, 4);
   v.floatParam({"light_power", "Light power", "", "Each light's irradiance at the scene centre; lights sit three scene "
                 "radii away and fall off as 1/r^2."}, p.lightPower, 0.0f, 1e5f, true);
   v.floatParam({"light_elevation", "Light elevation", "deg", "Height of the lights above the horizon. Near 0 the "
                 "light grazes the floor: N.L -> 0."}, p.lightElevationDeg, -10.0f, 90.0f);
-  v.boolParam({"textures", "Textures", "", "Use base-colour textures. Off: no image is decoded or uploaded."}, p.textures);
 }
 
 SceneNeeds ShadingLab::needs() const {

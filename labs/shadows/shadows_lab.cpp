@@ -37,6 +37,7 @@ std::string_view ShadowsLab::summary() const {
 
 void ShadowsLab::visitParams(ParamVisitor& v) {
   auto& p = params;
+  v.section("Key light");
   v.enumParam({"light_type", "Key light", "", "directional: orthographic map; spot: perspective map; point: a cube "
                "map drawn in one pass (geometry shader writes gl_Layer)."}, p.keyType, kLightTypes);
   v.boolParam({"key_casts", "Key casts shadows", "", "Off: no depth pass runs for the key light."}, p.keyCasts);
@@ -50,8 +51,10 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.floatParam({"light_radius", "Light radius", "radii", "Area light radius in scene radii, for PCSS and its "
                 "reference; 0 = a point light, hard shadows. Directional: seen from 3 radii away."},
                p.lightRadius, 0.0f, 10.0f);
+  v.section("Fill light");
   v.boolParam({"fill_light", "Fill light", "", "A second light (a spot) with its own shadow map."}, p.fillLight);
   v.boolParam({"fill_casts", "Fill casts shadows", "", "Off: the fill light lights, but no depth pass runs for it."}, p.fillCasts);
+  v.section("Shadow map");
   v.choiceParam({"map_size", "Map size", "texels", "Shadow map resolution (per cube face for a point light)."},
                 p.mapSizeIndex, kMapSizes);
   v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, p.depthFormat, kFormats);
@@ -68,6 +71,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
                "ones leak."}, p.cullFront);
   v.boolParam({"six_cube_passes", "Cube map in six passes", "", "Point light: draw the six faces in six passes "
                "instead of one geometry-shader pass (compare their cost)."}, p.sixCubePasses);
+  v.section("Bias");
   v.floatParam({"bias", "Constant bias", "texels", "Depth bias floor, in shadow-map texels at the receiver."},
                p.bias, 0.0f, 50.0f);
   v.floatParam({"slope_bias", "Slope bias k", "texels", "bias = max(k (1 - N.L), constant): more where the light "
@@ -80,6 +84,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
                p.offsetUnits, 0.0f, 10000.0f);
   v.boolParam({"receiver_plane", "Receiver-plane depth", "", "Each filter tap compares against the receiver's plane "
                "at that tap, not the centre depth: wide kernels on slopes need no extra bias."}, p.receiverPlane);
+  v.section("Filter");
   v.enumParam({"filter", "Filter", "", "hard: one tap; hardware-pcf: sampler2DShadow, 2x2 bilinear; pcf: N x N taps; "
                "poisson: a Poisson disk; pcss: blocker search + penumbra-sized PCF."}, p.filter, kFilters);
   v.intParam({"pcf_size", "PCF kernel N", "taps", "N x N taps; a compile-time loop bound (one program per N)."},
@@ -89,6 +94,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.boolParam({"rotate", "Rotate per pixel", "", "Rotate the Poisson disk per pixel: banding becomes noise."}, p.rotateSamples);
   v.choiceParam({"blocker_samples", "PCSS blocker samples", "", "Taps of the blocker search."}, p.blockerIndex, kSampleCounts);
   v.choiceParam({"pcss_samples", "PCSS filter samples", "", "Taps of the penumbra filter."}, p.pcssIndex, kSampleCounts);
+  v.section("View");
   v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - occluder - "
                "bias: red = acne, blue = leaks); texel-density; pcss-blocker; pcss-penumbra; depth-raw/-linear (the "
                "key map; a cube unrolled)."}, p.view, kViews);
@@ -99,6 +105,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.floatParam({"depth_centre_v", "Depth view centre v", "", "Map coordinate at the middle of the view."},
                p.depthCentreV, 0.0f, 1.0f);
   v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, p.showFrustum);
+  v.section("Scene");
   v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, p.tessellation, 3, 256);
   v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e4); lengths in "
                 "radii and texels follow it."}, p.sceneScale, 1e-3f, 1e4f, true);

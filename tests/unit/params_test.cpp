@@ -64,8 +64,11 @@ TEST(Params, DescribeListsEveryParamOnce) {
   lab.visitParams(d);
   CollectAsText c;
   lab.visitParams(c);
-  EXPECT_EQ(d.lines.size(), c.values.size());
-  EXPECT_NE(d.lines.front().find("shading.mode = phong  one of flat, gouraud, phong"), std::string::npos);
+  std::vector<std::string> params;  // the lines that are not section headings
+  for (auto& line : d.lines)
+    if (line.rfind("  [", 0) != 0) params.push_back(line);
+  EXPECT_EQ(params.size(), c.values.size());
+  EXPECT_NE(params.front().find("shading.mode = phong  one of flat, gouraud, phong"), std::string::npos);
 }
 
 TEST(Params, NeedsFollowConfiguration) {
@@ -82,4 +85,49 @@ TEST(Params, ProgramVariantsAreDistinct) {
   std::set<std::string> keys;
   for (auto& spec : lab.allPrograms()) EXPECT_TRUE(keys.insert(spec.key()).second) << spec.key();
   EXPECT_EQ(keys.size(), 48u);
+}
+
+namespace {
+
+// A lab-sized parameter list with a section and an action, visited like a real lab's.
+struct ActionParams {
+  int seed = 1;
+  float level = 0.1f;
+  void visit(ParamVisitor& v) {
+    v.floatParam({"level", "Noise level", "", "sigma in mean edge lengths"}, level, 0.0f, 1.0f);
+    v.section("Noise");
+    v.intParam({"seed", "Seed", "", "random seed"}, seed, 0, 1000000);
+    v.action({"add_noise", "Add noise", "", "draws new noise: seed + 1"}, [this] { ++seed; });
+  }
+};
+
+}  // namespace
+
+TEST(Params, ActionsRunByKeyAndAreNoValues) {
+  ActionParams p;
+  RunAction run("denoise", "add_noise");
+  p.visit(run);
+  EXPECT_EQ(run.result(), "");
+  EXPECT_EQ(p.seed, 2);
+  RunAction bad("denoise", "bake");
+  p.visit(bad);
+  EXPECT_EQ(bad.result(), "unknown action 'denoise.bake' (valid: denoise.add_noise)");
+  SetFromString set("denoise", "add_noise", "1");
+  p.visit(set);
+  EXPECT_EQ(set.result(), "denoise.add_noise is an action, not a value: run it with --do denoise.add_noise");
+  CollectAsText text;
+  p.visit(text);
+  EXPECT_EQ(text.values.size(), 2u) << "an action is no value to save in a preset";
+  SetFromString unknown("denoise", "nope", "1");
+  p.visit(unknown);
+  EXPECT_EQ(unknown.result(), "unknown parameter 'denoise.nope' (valid: denoise.level, denoise.seed)");
+}
+
+TEST(Params, ListShowsSectionsAndActions) {
+  ActionParams p;
+  DescribeParams d("denoise");
+  p.visit(d);
+  ASSERT_EQ(d.lines.size(), 4u);
+  EXPECT_EQ(d.lines[1], "  [Noise]");
+  EXPECT_EQ(d.lines[3].rfind("  denoise.add_noise  action (--do denoise.add_noise)", 0), 0u);
 }
