@@ -1,5 +1,7 @@
 #include "scene/mesh.h"
 
+#include "scene/mesh_topology.h"
+
 #include <cmath>
 
 namespace shadelab {
@@ -11,19 +13,10 @@ Bounds MeshData::bounds() const {
 }
 
 void computeNormals(MeshData& mesh) {
-  mesh.normals.assign(mesh.positions.size(), glm::vec3(0));
-  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    const uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-    // The cross product's length is twice the area: summing it weights faces by area.
-    const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
-    mesh.normals[a] += n;
-    mesh.normals[b] += n;
-    mesh.normals[c] += n;
-  }
-  for (auto& n : mesh.normals) {
-    const float len = glm::length(n);
-    n = len > 1e-20f ? n / len : glm::vec3(0, 0, 1);
-  }
+  const WeldedMesh welded = weldByPosition(mesh);
+  const std::vector<glm::vec3> n = vertexNormals(welded.positions, welded.indices, NormalWeighting::Angle);
+  mesh.normals.resize(mesh.positions.size());
+  for (size_t v = 0; v < mesh.positions.size(); ++v) mesh.normals[v] = n[welded.logicalOf[v]];
 }
 
 static glm::vec3 anyPerpendicular(const glm::vec3& n) {

@@ -32,8 +32,9 @@ struct MeshData {
   Bounds bounds() const;
 };
 
-// Area-weighted vertex normals. Degenerate triangles contribute nothing; a vertex left with a
-// zero normal gets +Z, so shading never divides by zero.
+// Angle-weighted vertex normals of the welded surface (scene/mesh_topology.h): copies of a position
+// split by UV get the same normal, so no seam shows. Degenerate triangles contribute nothing; a
+// vertex left with a zero normal gets +Z, so shading never divides by zero.
 void computeNormals(MeshData& mesh);
 
 // Per-vertex tangent frames from UV derivatives (Lengyel), Gram-Schmidt against the normal.

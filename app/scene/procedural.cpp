@@ -29,11 +29,23 @@ static MeshData grid(int cols, int rows, F at) {
   return m;
 }
 
+// sin and cos of 2 pi t, exact at the seam: t = 1 gives what t = 0 gives, so copies of a seam
+// vertex have bit-identical positions (and weld), which sin(2 pi) = -1.7e-7 in float would break.
+static glm::vec2 cosSinTurn(float t) {
+  if (t == 0.0f || t == 1.0f) return {1.0f, 0.0f};
+  const float a = t * glm::two_pi<float>();
+  return {std::cos(a), std::sin(a)};
+}
+
 MeshData makeUvSphere(float radius, int segments) {
   segments = std::max(segments, 3);
   MeshData m = grid(segments, std::max(segments / 2, 2), [&](glm::vec2 uv, glm::vec3& p, glm::vec3& n) {
-    const float phi = uv.x * glm::two_pi<float>(), theta = uv.y * glm::pi<float>();
-    n = glm::vec3(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+    const glm::vec2 phi = cosSinTurn(uv.x);
+    // The poles are single points: sin(theta) exactly 0 there.
+    const float theta = uv.y * glm::pi<float>();
+    const float st = uv.y == 0.0f || uv.y == 1.0f ? 0.0f : std::sin(theta);
+    const float ct = uv.y == 0.0f ? 1.0f : uv.y == 1.0f ? -1.0f : std::cos(theta);
+    n = glm::vec3(st * phi.y, ct, st * phi.x);
     p = n * radius;
   });
   m.name = "sphere";
@@ -43,9 +55,9 @@ MeshData makeUvSphere(float radius, int segments) {
 MeshData makeTorus(float major, float minor, int segments) {
   segments = std::max(segments, 3);
   MeshData m = grid(segments, std::max(segments / 2, 3), [&](glm::vec2 uv, glm::vec3& p, glm::vec3& n) {
-    const float u = uv.x * glm::two_pi<float>(), v = uv.y * glm::two_pi<float>();
-    const glm::vec3 ring(std::sin(u), 0.0f, std::cos(u));
-    n = ring * -std::cos(v) + glm::vec3(0, std::sin(v), 0);
+    const glm::vec2 u = cosSinTurn(uv.x), v = cosSinTurn(uv.y);
+    const glm::vec3 ring(u.y, 0.0f, u.x);
+    n = ring * -v.x + glm::vec3(0, v.y, 0);
     p = ring * major + n * minor;
   });
   m.name = "torus";
