@@ -21,6 +21,7 @@
 #include "measure/image.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
+#include "scene/scene_catalog.h"
 #include "shader/shader_library.h"
 
 namespace shadelab {
@@ -75,6 +76,8 @@ class Lab {
   virtual std::string_view title() const = 0;
   virtual std::string_view summary() const = 0;
   virtual std::string_view defaultScene() const = 0;
+  // Scenes this lab brings (listed first while it is the current lab).
+  virtual std::vector<SceneRecipe> scenes() const { return {}; }
 
   virtual void visitParams(ParamVisitor& v) = 0;
   virtual void resetParams() = 0;

@@ -56,6 +56,8 @@ int runList(const Options& o) {
     DescribeParams d(id);
     lab->visitParams(d);
     for (auto& line : d.lines) std::printf("  %s\n", line.c_str());
+    for (auto& scene : lab->scenes())
+      std::printf("  scene %-22s %s\n", scene.id.c_str(), scene.description.c_str());
     std::printf("  stress cases:");
     for (auto& c : lab->stressCases()) std::printf(" %s", c.name.c_str());
     std::printf("\n");

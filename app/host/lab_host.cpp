@@ -38,7 +38,7 @@ std::string LabHost::selectScene(const std::string& idOrPath) {
 
 std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe) {
   Scene next;
-  if (auto err = buildScene(id, needs, next); !err.empty()) return err;
+  if (auto err = buildScene(id, needs, next, lab_->scenes()); !err.empty()) return err;
   std::vector<std::string> warnings = next.warnings;
   GpuScene gpu;
   gpu.upload(next, needs, warnings);

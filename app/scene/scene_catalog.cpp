@@ -106,8 +106,9 @@ fs::path dataDirectory() {
   return fs::is_directory(beside, ec) ? beside : fs::path();
 }
 
-std::vector<SceneEntry> listScenes() {
+std::vector<SceneEntry> listScenes(std::span<const SceneRecipe> labScenes) {
   std::vector<SceneEntry> out;
+  for (auto& r : labScenes) out.push_back({r.id, r.description});
   for (auto& b : builders()) out.push_back({b.id, b.description});
   const fs::path data = dataDirectory();
   std::error_code ec;
@@ -116,12 +117,18 @@ std::vector<SceneEntry> listScenes() {
   return out;
 }
 
-std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Scene& out) {
+std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Scene& out,
+                       std::span<const SceneRecipe> labScenes) {
   out = Scene{};
   out.name = idOrPath;
   bool found = false;
+  for (auto& r : labScenes)
+    if (!found && idOrPath == r.id) {
+      if (auto err = r.build(out, needs); !err.empty()) return err;
+      found = true;
+    }
   for (auto& b : builders())
-    if (idOrPath == b.id) {
+    if (!found && idOrPath == b.id) {
       b.build(out, needs.tessellation);
       found = true;
     }
@@ -136,7 +143,7 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     const bool looksLikeFile = file.has_extension() || file.string().find('/') != std::string::npos;
     if (!looksLikeFile) {
       std::string valid;
-      for (auto& e : listScenes()) valid += (valid.empty() ? "" : ", ") + e.id;
+      for (auto& e : listScenes(labScenes)) valid += (valid.empty() ? "" : ", ") + e.id;
       return "unknown scene '" + idOrPath + "' (valid: " + valid + ", or a .gltf/.glb/.obj/.off file)";
     }
     if (auto err = loadSceneFile(file, out); !err.empty()) return err;

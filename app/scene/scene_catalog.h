@@ -2,6 +2,8 @@
 // is present, or any .gltf/.glb/.obj/.off path.
 #pragma once
 #include <filesystem>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -14,12 +16,24 @@ struct SceneEntry {
   std::string description;
 };
 
+// A scene a lab brings with it (a brick wall, a long grazing plane, a denoising benchmark pair):
+// listed and built like the project's own, while that lab is the current one.
+struct SceneRecipe {
+  std::string id;
+  std::string description;
+  // Fills `out` for `needs` (tessellation, scale and attribute pruning are applied afterwards, as
+  // for every scene). Returns "" or a one-line error naming the file or what is missing.
+  std::function<std::string(Scene& out, const SceneNeeds& needs)> build;
+};
+
 // ../shared/data beside the source tree, or $SHADELAB_DATA; empty if neither exists.
 std::filesystem::path dataDirectory();
 
-std::vector<SceneEntry> listScenes();
+// The current lab's scenes first, then the project's.
+std::vector<SceneEntry> listScenes(std::span<const SceneRecipe> labScenes = {});
 // Builds `idOrPath` with exactly what `needs` asks for. Returns "" or a one-line error that
 // lists the valid scene names.
-std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Scene& out);
+std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Scene& out,
+                       std::span<const SceneRecipe> labScenes = {});
 
 }  // namespace shadelab

@@ -104,7 +104,7 @@ void leftPanel(AppState& app) {
 
   ImGui::Separator();
   if (ImGui::BeginCombo("Scene", host.sceneId().c_str())) {
-    for (auto& s : listScenes())
+    for (auto& s : listScenes(host.lab().scenes()))
       if (ImGui::Selectable(s.id.c_str(), s.id == host.sceneId())) {
         const std::string err = host.selectScene(s.id);
         app.message = err;
