@@ -4,7 +4,8 @@
 // Life cycle (driven by app/host/lab_host.cpp):
 //   needs() -> host builds exactly that scene -> setup() -> { update(); render(); }* -> teardown()
 // render() draws into frame.target, times each pass with frame.pass("name"), and never calls
-// ImGui. setup()/teardown() must leave no GL objects behind (tests count them).
+// ImGui. setup()/teardown() must leave no GL objects behind (tests count them). Long CPU work
+// (smoothing a mesh, a bake) goes to ctx.jobs from update(); render() draws the last result.
 #pragma once
 #include <memory>
 #include <optional>
@@ -14,11 +15,15 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/pass_timer.h"
+#include "host/job_runner.h"
 #include "gl/texture.h"
 #include "labs/params.h"
+#include "measure/accumulator.h"
 #include "measure/image.h"
+#include "measure/report.h"
 #include "scene/camera.h"
 #include "scene/gpu_scene.h"
 #include "scene/scene_catalog.h"
@@ -31,6 +36,7 @@ using Metrics = std::vector<std::pair<std::string, double>>;
 
 struct LabContext {
   ShaderLibrary& shaders;
+  JobRunner& jobs;
 };
 
 struct Frame {
@@ -40,19 +46,44 @@ struct Frame {
   const OrbitCamera& camera;
   gl::PassTimer& timer;
   float time = 0.0f;  // seconds; fixed on the command line for repeatable frames
+  glm::vec2 jitter{0.0f};  // sub-pixel shift of the image, in pixels (accumulated references)
 
   glm::ivec2 size() const { return target.size(); }
   float aspect() const { return float(target.size().x) / float(std::max(target.size().y, 1)); }
   gl::PassScope pass(std::string name) { return gl::PassScope(timer, std::move(name)); }
+  // The camera's projection, shifted by `jitter`: labs use these, never the camera's own.
+  glm::mat4 projection() const {
+    const glm::vec2 shift = -2.0f * jitter / glm::vec2(size());  // sample centre + jitter: the image moves by -jitter
+    return glm::translate(glm::mat4(1.0f), glm::vec3(shift.x, -shift.y, 0.0f)) * camera.projection(aspect());
+  }
+  glm::mat4 viewProj() const { return projection() * camera.view(); }
 };
 
-// The ground truth of a configuration: the same lab with `overrides` applied (e.g. per-fragment
-// shading on a finely tessellated mesh), rendered `supersample` times larger and box-filtered.
-struct ReferenceSpec {
-  Settings overrides;
-  int supersample = 1;
-  std::string description;
+enum class TruthKind {
+  None,   // nothing to judge this configuration against
+  Image,  // an image of the same pixels: the lab under `overrides`, or traced by the lab itself
+  Mesh,   // the clean mesh: the lab compares its own geometry and reports meshMetrics()
 };
+
+// The ground truth of a configuration.
+struct ReferenceSpec {
+  TruthKind kind = TruthKind::None;
+  std::string truth = "reference";  // which truth: a sweep draws one Pareto front per truth
+  std::string description;          // one sentence for reports
+  // Image truths: the same lab with `overrides` applied, accumulated over jitterGrid x jitterGrid
+  // frames shifted by sub-pixel offsets (measure/accumulator.h) at the frame's own size ...
+  Settings overrides;
+  int jitterGrid = 1;
+  PixelFilter pixelFilter = PixelFilter::Box;
+  bool displayEncoded = true;  // the frames are sRGB colour (averaged in linear light), not data
+  // ... or traced by the lab (traceReference) when that is what the truth is.
+  bool traced = false;
+  bool cheap = false;  // quick enough to measure after every change: the app offers auto-measure
+};
+
+// The CPU part of a traced truth: runs in a job, reports progress, stops when cancelled.
+using TraceWork = std::function<ImageF(JobContext&)>;
+
 
 // A named extreme configuration. It passes when every pixel is finite and, where given,
 // `expectWarning` appears among the lab's warnings (the lab noticed and told the student).
@@ -87,24 +118,30 @@ class Lab {
 
   virtual std::string setup(LabContext& ctx) = 0;  // "" or a one-line error
   virtual void teardown() = 0;
-  virtual void update(float dt) {}
+  // Once per frame before render(), with the scene built for needs(): where a lab submits jobs
+  // for derived results whose inputs changed, and uploads results that arrived.
+  virtual void update(const Scene& scene, float dt) {}
   virtual void render(Frame& frame) = 0;
   // Programs used by the current configuration (for the Shaders panel and error display).
   virtual std::vector<ProgramRef> activePrograms() const = 0;
   // What the current configuration clamped, fell back on or cannot do well; shown in the UI.
   virtual std::vector<std::string> warnings() const { return {}; }
 
-  // The ground truth. By default the host renders reference() (overrides + supersampling).
-  // A lab whose truth is not a rasterised image (ray-traced visibility) returns it here instead,
-  // for the current settings, at frame.size(); std::nullopt means "use reference()".
+  // The ground truth of the current configuration (app/host/measurer.h measures against it).
   virtual ReferenceSpec reference() const { return {}; }
-  virtual std::optional<ImageF> computeReference(Frame& frame) { return std::nullopt; }
-  // Settings applied for the image that is compared with the reference (the shadows lab outputs
+  // Traced truths: called with the truth's settings applied; does the GL part now (a g-buffer of
+  // frame's pixels) and returns the CPU part, which must own everything it reads.
+  virtual TraceWork traceReference(Frame& frame) { return {}; }
+  // Settings applied for the image that is compared with an image truth (the shadows lab outputs
   // its visibility term); the cost is always timed on the normal view.
   virtual Settings measuredView() const { return {}; }
-  // Error numbers of `image` against `reference`; errorKeys() are the ones plotted against cost.
+  // Error numbers of `image` against an image truth.
   virtual Metrics metrics(const ImageF& image, const ImageF& reference) const;
-  virtual std::vector<std::string> errorKeys() const { return {"rmse", "surface_rmse"}; }
+  // Mesh truths: the current result against the clean mesh, with the lab's own costs (solve_ms).
+  // Asked only when no job of the lab is running, so the numbers belong to the current settings.
+  virtual Metrics meshMetrics() const { return {}; }
+  // What a sweep and the app's Measure panel plot.
+  virtual std::vector<PlotSpec> plots() const { return {{"rmse"}, {"surface_rmse"}}; }
   virtual std::vector<StressCase> stressCases() const { return {}; }
   virtual std::vector<SweepAxis> standardSweep() const { return {}; }
 };

@@ -125,6 +125,7 @@ int runStress(const Options& o) {
     if (why.empty()) host.resetCamera();
     if (why.empty()) why = applyCamera(host, c.camera);
     if (why.empty()) {
+      host.settle();
       host.renderFrame(size, o.time);
       const ImageF image = host.readImage();
       const size_t bad = countNonFinite(image);

@@ -61,6 +61,9 @@ static double median(std::vector<double> v) {
 }
 
 TimedFrames renderTimed(LabHost& host, glm::ivec2 size, float time, int warmup, int frames) {
+  // The lab's jobs for these settings first (a smoothing, a bake): frames time the result, not a
+  // stale one. Progress goes to stderr like a sweep's.
+  host.settle([](const std::vector<JobStatus>& jobs) { progress(0, 1, describeJobs(jobs)); });
   for (int i = 0; i < warmup; ++i) host.renderFrame(size, time);
   std::vector<double> gpu, cpu;
   std::vector<std::vector<double>> perPass;
@@ -92,6 +95,19 @@ void progress(int done, int total, const std::string& label) {
   std::fprintf(stderr, "%s[%s] %d/%d %s%s", tty ? "\r\033[K" : "", bar.c_str(), done, total, label.c_str(),
                tty && done < total ? "" : "\n");
   std::fflush(stderr);
+}
+
+}  // namespace shadelab
+
+namespace shadelab {
+
+std::string describeJobs(const std::vector<JobStatus>& jobs) {
+  std::string s;
+  for (auto& j : jobs) {
+    s += (s.empty() ? "" : "; ") + j.label + " " + std::to_string(int(j.progress * 100.0f + 0.5f)) + "%";
+    if (!j.stage.empty()) s += " (" + j.stage + ")";
+  }
+  return s;
 }
 
 }  // namespace shadelab

@@ -28,10 +28,12 @@ struct TimedFrames {
   double cpuMs = 0;
   std::vector<gl::PassTiming> passes;  // per pass, medians
 };
-// Renders `warmup` untimed frames, then `frames` timed ones.
+// Waits for the lab's jobs, renders `warmup` untimed frames, then `frames` timed ones.
 TimedFrames renderTimed(LabHost& host, glm::ivec2 size, float time, int warmup, int frames);
 
 // "[#######.......] 7/15 label" on stderr, redrawn in place.
 void progress(int done, int total, const std::string& label);
+// "smoothing bunny 45% (iteration 4/10)" for the jobs running now, joined by "; ".
+std::string describeJobs(const std::vector<JobStatus>& jobs);
 
 }  // namespace shadelab

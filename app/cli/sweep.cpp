@@ -1,5 +1,8 @@
-// shadelab sweep: every combination of the varied parameters, each rendered, timed and
-// compared with the lab's reference; CSV + HTML report with error-against-GPU-time plots.
+// shadelab sweep: every combination of the varied parameters, each rendered, timed and measured
+// against the lab's ground truth (host/measurer.h); CSV + HTML report with error-against-cost
+// plots, one Pareto front per truth.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -7,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/session.h"
+#include "host/measurer.h"
 #include "measure/report.h"
 
 namespace shadelab {
@@ -32,6 +36,13 @@ static std::string applyAxisValue(LabHost& host, const std::string& key, const s
     first = false;
   }
   return {};
+}
+
+// "area light" -> "area_light", for file names.
+static std::string slug(const std::string& text) {
+  std::string s;
+  for (char c : text) s += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(c)) : '_';
+  return s;
 }
 
 static ImageF thumbnail(const ImageF& image) {
@@ -77,9 +88,8 @@ int runSweep(const Options& o) {
   report.title = "ShadeLab sweep: " + labId + " on " + host.sceneId() + " at " + std::to_string(o.size.x) + "x" +
                  std::to_string(o.size.y);
   report.renderer = s.context->describe();
-  report.reference = host.lab().reference().description;
   report.costClock = host.timerClock();
-  report.errorKeys = host.lab().errorKeys();
+  report.plots = host.lab().plots();
   std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
                     std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
   for (auto& v : o.varies) cmd += " --vary " + v;
@@ -88,7 +98,7 @@ int runSweep(const Options& o) {
   cmd += " --out " + o.out;
   report.command = cmd;
 
-  std::map<std::string, ImageF> references;  // keyed by the settings the reference actually uses
+  Measurer measurer(host);  // caches each truth: rows that share one trace or render it once
   for (size_t index = 0; index < total; ++index) {
     host.applySettings(base);
     std::string label;
@@ -101,35 +111,35 @@ int runSweep(const Options& o) {
       parts[a] = axes[a].key + "=" + v;
     }
     for (auto& part : parts) label += (label.empty() ? "" : " ") + part;
+    auto jobProgress = [&](const std::vector<JobStatus>& jobs) {
+      progress(int(index), int(total), label + (jobs.empty() ? "" : ": " + describeJobs(jobs)));
+    };
     progress(int(index), int(total), label);
 
-    const Settings settings = host.currentSettings();
-    host.applySettings(host.lab().reference().overrides);
-    std::string refKey;
-    for (auto& [k, v] : host.currentSettings()) refKey += k + "=" + v + ";";
-    host.applySettings(settings);
-    if (!references.count(refKey)) references[refKey] = host.renderReference(o.size, o.time);
-    const ImageF& reference = references[refKey];
-
+    host.settle(jobProgress);  // the lab's own jobs (a smoothing, a bake) for these settings
     const TimedFrames t = renderTimed(host, o.size, o.time, o.warmup, o.frames);
     const ImageF shown = host.readImage();  // what the student sees; the metrics may use another view
-    const ImageF image = host.renderMeasured(o.size, o.time);
+    auto m = measurer.measureNow(o.size, o.time, {{"gpu_ms", t.gpuMs}, {"cpu_ms", t.cpuMs}}, jobProgress);
+    if (!m) return fail("sweep: " + label + ": " + labId + " has no ground truth for this configuration");
 
     SweepRow row;
-    row.params = settings;
+    row.params = m->settings;
     row.label = label;
     row.group = label.substr(0, label.find(' '));
-    row.values = host.lab().metrics(image, reference);
-    row.values.push_back({"non_finite", double(countNonFinite(image))});
-    row.values.push_back({"gpu_ms", t.gpuMs});
-    row.values.push_back({"cpu_ms", t.cpuMs});
+    row.truth = m->truth;
+    row.values = m->values;
+    row.values.push_back({"non_finite", double(countNonFinite(m->image.rgba.empty() ? shown : m->image))});
     row.thumbnail = thumbnail(shown);
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%03zu.png", index);
     writePng(o.out + name, shown);
-    if (report.referenceThumbnail.rgba.empty()) {
-      report.referenceThumbnail = thumbnail(reference);
-      writePng(o.out + "/reference.png", reference);
+    const bool newTruth = std::none_of(report.truths.begin(), report.truths.end(), [&](auto& t) { return t.first == m->truth; });
+    if (newTruth) {
+      report.truths.emplace_back(m->truth, host.lab().reference().description);
+      if (!m->reference.rgba.empty()) {
+        report.referenceThumbnails.emplace_back(m->truth, thumbnail(m->reference));
+        writePng(o.out + "/reference_" + slug(m->truth) + ".png", m->reference);
+      }
     }
     report.rows.push_back(std::move(row));
   }
@@ -138,16 +148,24 @@ int runSweep(const Options& o) {
   const std::string csvPath = o.out + "/" + labId + "_sweep.csv", htmlPath = o.out + "/" + labId + "_sweep.html";
   if (auto err = writeTextFile(csvPath, sweepCsv(report)); !err.empty()) return fail(err);
   if (auto err = writeTextFile(htmlPath, sweepHtml(report)); !err.empty()) return fail(err);
-  for (auto& key : report.errorKeys)
-    if (auto err = writeTextFile(o.out + "/" + labId + "_" + key + ".svg", sweepPlotSvg(report, key)); !err.empty())
-      return fail(err);
+  const auto truths = truthsOf(report);
+  for (auto& plot : report.plots)
+    for (auto& truth : truths) {
+      const std::string file = o.out + "/" + labId + "_" + plot.error + (truths.size() > 1 ? "_" + slug(truth) : "") + ".svg";
+      if (auto err = writeTextFile(file, sweepPlotSvg(report, plot, truth)); !err.empty()) return fail(err);
+    }
+  // The table on stdout: every plotted error and cost once, in plot order.
+  std::vector<std::string> columns;
+  for (auto& plot : report.plots)
+    for (auto& key : {plot.error, plot.cost})
+      if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
   std::printf("%-44s", "configuration");
-  for (auto& key : report.errorKeys) std::printf(" %14s", key.c_str());
-  std::printf(" %10s\n", "gpu_ms");
+  for (auto& key : columns) std::printf(" %14s", key.c_str());
+  std::printf("  truth\n");
   for (auto& row : report.rows) {
     std::printf("%-44s", row.label.c_str());
-    for (auto& key : report.errorKeys) std::printf(" %14.5f", row.value(key));
-    std::printf(" %10.3f\n", row.value("gpu_ms"));
+    for (auto& key : columns) std::printf(" %14.5f", row.value(key));
+    std::printf("  %s\n", row.truth.c_str());
   }
   std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
   return 0;

@@ -17,7 +17,7 @@ struct JobRunner::Job {
   std::string key, label;
   std::shared_ptr<JobContext> ctx = std::make_shared<JobContext>();
   Work work;                                // CPU work, or
-  std::function<bool(JobContext&)> glStep;  // GL slices
+  std::function<GlStep(JobContext&)> glStep;  // GL slices
   std::function<void()> finish;             // set when the work is done
   bool running = false, done = false;
   Clock::time_point submitted = Clock::now();
@@ -52,7 +52,7 @@ void JobRunner::enqueue(std::string key, std::string label, Work work) {
   add(std::move(job));
 }
 
-void JobRunner::submitGlSteps(std::string key, std::string label, std::function<bool(JobContext&)> step) {
+void JobRunner::submitGlSteps(std::string key, std::string label, std::function<GlStep(JobContext&)> step) {
   auto job = std::make_shared<Job>();
   job->key = std::move(key);
   job->label = std::move(label);
@@ -129,7 +129,7 @@ void JobRunner::workerLoop() {
   }
 }
 
-int JobRunner::deliver(double budgetMs) {
+int JobRunner::deliver(double budgetMs, bool* glWorked) {
   const auto start = Clock::now();
   std::vector<std::shared_ptr<Job>> ready, stepping;
   {
@@ -140,35 +140,41 @@ int JobRunner::deliver(double budgetMs) {
     }
     std::erase_if(jobs_, [](auto& j) { return j->done; });
   }
+  // Results first: a GL step may be waiting for them (a measurement for the lab's new result).
+  for (auto& job : ready)
+    if (job->finish && !job->ctx->cancelled()) job->finish();
+  const size_t delivered = ready.size();
+  ready.clear();
   // GL slices, outside the lock: a step may submit or cancel jobs.
+  if (glWorked) *glWorked = false;
   for (auto& job : stepping) {
-    bool done = false;
+    GlStep step = GlStep::Wait;
     do {
       if (job->ctx->cancelled()) break;
-      done = job->glStep(*job->ctx);
-    } while (!done && std::chrono::duration<double, std::milli>(Clock::now() - start).count() < budgetMs);
-    if (done) {
+      step = job->glStep(*job->ctx);
+      if (glWorked && step != GlStep::Wait) *glWorked = true;
+    } while (step == GlStep::More && std::chrono::duration<double, std::milli>(Clock::now() - start).count() < budgetMs);
+    if (step == GlStep::Done) {
       std::lock_guard lock(mutex_);
       const bool stillWanted = !job->ctx->cancelled();
       std::erase_if(jobs_, [&](auto& j) { return j == job; });
       if (stillWanted) ready.push_back(job);
     }
   }
-  for (auto& job : ready)
-    if (job->finish && !job->ctx->cancelled()) job->finish();
-  if (!ready.empty()) finished_.notify_all();
-  return int(ready.size());
+  if (delivered + ready.size() > 0) finished_.notify_all();
+  return int(delivered + ready.size());
 }
 
 void JobRunner::waitAll(const std::function<void(const std::vector<JobStatus>&)>& onProgress, int pollMs) {
   auto lastReport = Clock::now();
   for (;;) {
-    deliver(1e9);
+    bool glWorked = false;
+    deliver(1e9, &glWorked);
     std::unique_lock lock(mutex_);
     if (jobs_.empty()) return;
-    const bool cpuOnly = std::none_of(jobs_.begin(), jobs_.end(), [](auto& j) { return bool(j->glStep); });
+    // Nothing to do on this thread until a worker finishes: sleep until one does.
     const bool anyDone = std::any_of(jobs_.begin(), jobs_.end(), [](auto& j) { return j->done; });
-    if (cpuOnly && !anyDone) finished_.wait_for(lock, std::chrono::milliseconds(pollMs));
+    if (!glWorked && !anyDone) finished_.wait_for(lock, std::chrono::milliseconds(pollMs));
     lock.unlock();
     if (onProgress && Clock::now() - lastReport >= std::chrono::milliseconds(pollMs)) {
       onProgress(status());
@@ -185,6 +191,11 @@ bool JobRunner::busy() const {
 bool JobRunner::busy(std::string_view key) const {
   std::lock_guard lock(mutex_);
   return std::any_of(jobs_.begin(), jobs_.end(), [&](auto& j) { return j->key == key && !j->ctx->cancelled(); });
+}
+
+bool JobRunner::busyOtherThan(std::string_view key) const {
+  std::lock_guard lock(mutex_);
+  return std::any_of(jobs_.begin(), jobs_.end(), [&](auto& j) { return j->key != key; });
 }
 
 std::vector<JobStatus> JobRunner::status() const {

@@ -15,8 +15,9 @@
 // returns false once the job is cancelled, and the work should return at once.
 //
 // Work that needs GL (rendering the frames of a reference) runs on the GL thread in slices:
-// submitGlSteps() calls its step function from deliver() until it says it is done, so it has the
-// same progress bar, Cancel button and supersession as CPU work.
+// submitGlSteps() calls its step function from deliver() until it says Done, so it has the same
+// progress bar, Cancel button and supersession as CPU work. A step that has nothing to do yet
+// (it waits for another job's result) says Wait and is asked again at the next deliver().
 //
 // Worker threads run at a lower scheduling priority (nice +10, inherited by threads they start),
 // so a busy job takes the cores the UI thread and the rasteriser leave idle, not theirs.
@@ -51,6 +52,8 @@ class JobContext {
   std::string stage_;
 };
 
+enum class GlStep { Done, More, Wait };
+
 struct JobStatus {
   std::string key;
   std::string label;    // what the job is, for the UI: "smoothing bunny (implicit, lambda 5)"
@@ -77,18 +80,19 @@ class JobRunner {
               return [result, done]() mutable { done(std::move(*result)); };
             });
   }
-  // GL work in slices: step(ctx) runs inside deliver() on the GL thread until it returns true.
-  void submitGlSteps(std::string key, std::string label, std::function<bool(JobContext&)> step);
+  // GL work in slices: step(ctx) runs inside deliver() on the GL thread until it returns Done.
+  void submitGlSteps(std::string key, std::string label, std::function<GlStep(JobContext&)> step);
 
   // On the GL thread, once per frame: runs GL steps (for about `budgetMs`) and hands finished
   // results to their done callbacks, in submission order. Returns how many jobs completed.
-  int deliver(double budgetMs = 8.0);
+  int deliver(double budgetMs = 8.0) { return deliver(budgetMs, nullptr); }
   // Blocks until no job is left (CLI, tests), delivering as results come; calls onProgress about
   // every `pollMs` with the jobs still running. Call it on the GL thread.
   void waitAll(const std::function<void(const std::vector<JobStatus>&)>& onProgress = {}, int pollMs = 100);
 
   bool busy() const;
   bool busy(std::string_view key) const;
+  bool busyOtherThan(std::string_view key) const;
   std::vector<JobStatus> status() const;
   void cancel(std::string_view key);
   void cancelAll();
@@ -99,6 +103,7 @@ class JobRunner {
   struct Job;
   using Work = std::function<std::function<void()>(JobContext&)>;
   void enqueue(std::string key, std::string label, Work work);
+  int deliver(double budgetMs, bool* glWorked);
   void add(std::shared_ptr<Job> job);
   void cancelLocked(Job& job);
   void workerLoop();

@@ -1,5 +1,6 @@
 #include "host/lab_host.h"
 
+#include "host/truth.h"
 #include "scene/scene_catalog.h"
 
 namespace shadelab {
@@ -9,6 +10,7 @@ LabHost::LabHost(ShaderSearchPath shaderPath) : shaders_(std::make_unique<Shader
 }
 
 LabHost::~LabHost() {
+  jobs_.cancelAll();
   if (lab_ && labReady_) lab_->teardown();
 }
 
@@ -19,51 +21,58 @@ std::string LabHost::selectLab(std::string_view id) {
     for (auto& l : labIds()) valid += (valid.empty() ? "" : ", ") + l;
     return "unknown lab '" + std::string(id) + "' (valid: " + valid + ")";
   }
-  LabContext ctx{*shaders_};
+  LabContext ctx{*shaders_, jobs_};
   if (auto err = next->setup(ctx); !err.empty()) {
     next->teardown();
     return std::string(id) + ": setup failed: " + err;
   }
+  jobs_.cancelAll();  // nothing of the old lab may be delivered to the new one
   if (lab_ && labReady_) lab_->teardown();
   lab_ = std::move(next);
   labReady_ = true;
+  previous_.reset();  // built for another lab's scenes
   const std::string scene = std::string(lab_->defaultScene());
   if (auto err = rebuildScene(scene, lab_->needs(), true); !err.empty()) return err;
   return {};
 }
 
 std::string LabHost::selectScene(const std::string& idOrPath) {
-  return rebuildScene(idOrPath, lab_->needs(), true);
+  const std::string err = rebuildScene(idOrPath, lab_->needs(), true);
+  if (err.empty()) previous_.reset();  // another scene: the old builds are of no further use
+  return err;
 }
 
 std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe) {
-  Scene next;
-  if (auto err = buildScene(id, needs, next, lab_->scenes()); !err.empty()) return err;
-  std::vector<std::string> warnings = next.warnings;
-  GpuScene gpu;
-  gpu.upload(next, needs, warnings);
-  scene_ = std::move(next);
-  scene_.revision = ++sceneBuilds_;
-  gpu_ = std::move(gpu);
+  Built next;
+  if (auto err = buildScene(id, needs, next.scene, lab_->scenes()); !err.empty()) return err;
+  next.warnings = next.scene.warnings;
+  next.gpu.upload(next.scene, needs, next.warnings);
+  next.scene.revision = ++sceneBuilds_;
+  next.needs = needs;
+  if (id != sceneId_) ++sceneLoads_;
+  previous_ = std::move(built_);
+  built_ = std::move(next);
   sceneId_ = id;
-  builtNeeds_ = needs;
-  sceneWarnings_ = std::move(warnings);
   if (reframe) resetCamera();
   return {};
 }
 
 std::string LabHost::ensureScene() {
   const SceneNeeds needs = lab_->needs();
-  if (needs == builtNeeds_ && !sceneId_.empty()) return {};
+  if (needs == built_.needs && !sceneId_.empty()) return {};
+  if (previous_ && previous_->needs == needs) {
+    std::swap(built_, *previous_);
+    return {};
+  }
   // A new scale moves everything: frame it again. Other needs (tessellation, UVs) keep the view.
-  return rebuildScene(sceneId_, needs, needs.scale != builtNeeds_.scale);
+  return rebuildScene(sceneId_, needs, needs.scale != built_.needs.scale);
 }
 
 void LabHost::resetCamera() {
-  const Bounds b = scene_.bounds;
+  const Bounds b = built_.scene.bounds;
   camera_ = OrbitCamera{};
   camera_.frame(b.center(), b.radius());
-  if (!scene_.suggestedCamera.empty() && camera_.parse(scene_.suggestedCamera).empty())
+  if (!built_.scene.suggestedCamera.empty() && camera_.parse(built_.scene.suggestedCamera).empty())
     camera_.fitDepthRange(b.center(), b.radius());
 }
 
@@ -107,19 +116,56 @@ Settings LabHost::currentSettings() {
 
 void LabHost::resetParams() { lab_->resetParams(); }
 
-const std::vector<gl::PassTiming>& LabHost::renderFrame(glm::ivec2 size, float time, float dt) {
-  shaders_->reloadChanged();
+std::vector<gl::PassTiming> LabHost::draw(gl::PassTimer& timer, const gl::RenderTarget& target,
+                                          const OrbitCamera& camera, float time, glm::vec2 jitter) {
   ensureScene();  // on failure the last good scene stays; warnings() tells why
-  if (!target_ || target_->size() != size) target_ = gl::RenderTarget::create(size);
-  lab_->update(dt);
-  timer_.beginFrame();
-  target_->bind();
-  Frame frame{*target_, scene_, gpu_, camera_, timer_, time};
+  timer.beginFrame();
+  target.bind();
+  Frame frame{target, built_.scene, built_.gpu, camera, timer, time, jitter};
   lab_->render(frame);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
   glUseProgram(0);
-  return timer_.endFrame();
+  return timer.endFrame();
+}
+
+std::vector<gl::PassTiming> LabHost::drawInto(const gl::RenderTarget& target, const OrbitCamera& camera, float time,
+                                              glm::vec2 jitter) {
+  return draw(truthTimer_, target, camera, time, jitter);
+}
+
+TraceWork LabHost::trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time) {
+  ensureScene();
+  truthTimer_.beginFrame();
+  Frame frame{target, built_.scene, built_.gpu, camera, truthTimer_, time};
+  TraceWork work = lab_->traceReference(frame);
+  truthTimer_.endFrame();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  return work;
+}
+
+const std::vector<gl::PassTiming>& LabHost::renderFrame(glm::ivec2 size, float time, float dt) {
+  shaders_->reloadChanged();
+  jobs_.deliver();
+  for (auto& e : jobs_.takeErrors()) jobErrors_.push_back(std::move(e));
+  ensureScene();
+  if (!target_ || target_->size() != size) target_ = gl::RenderTarget::create(size);
+  lab_->update(built_.scene, dt);
+  draw(timer_, *target_, camera_, time, glm::vec2(0.0f));
+  return timer_.lastFrame();
+}
+
+void LabHost::settle(const std::function<void(const std::vector<JobStatus>&)>& onProgress) {
+  for (;;) {
+    jobs_.deliver(1e9);
+    ensureScene();
+    lab_->update(built_.scene, 0.0f);  // submits what the current settings need, if anything
+    if (!jobs_.busy()) break;
+    jobs_.waitAll(onProgress);
+  }
+  for (auto& e : jobs_.takeErrors()) jobErrors_.push_back(std::move(e));
 }
 
 ImageF LabHost::renderMeasured(glm::ivec2 size, float time) {
@@ -132,28 +178,13 @@ ImageF LabHost::renderMeasured(glm::ivec2 size, float time) {
 }
 
 ImageF LabHost::renderReference(glm::ivec2 size, float time) {
-  const ReferenceSpec spec = lab_->reference();
-  ensureScene();
-  if (!target_ || target_->size() != size) target_ = gl::RenderTarget::create(size);
-  timer_.beginFrame();
-  Frame frame{*target_, scene_, gpu_, camera_, timer_, time};
-  std::optional<ImageF> computed = lab_->computeReference(frame);
-  timer_.endFrame();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (computed) return std::move(*computed);
-
-  const Settings saved = currentSettings();
-  applySettings(spec.overrides);
-  const int ss = std::max(spec.supersample, 1);
-  renderFrame(size * ss, time);
-  ImageF ref = downsample(readImage(), ss);
-  applySettings(saved);
-  return ref;
+  return renderTruthNow(*this, describeTruth(*this, size, time));
 }
 
 std::vector<std::string> LabHost::warnings() const {
-  std::vector<std::string> w = sceneWarnings_;
+  std::vector<std::string> w = built_.warnings;
   for (auto& s : lab_->warnings()) w.push_back(s);
+  for (auto& e : jobErrors_) w.push_back(e);
   return w;
 }
 

@@ -1,10 +1,12 @@
 // The lab host: one current lab, one scene built for exactly what that lab needs, a camera, an
-// offscreen target and the shader library. Every front end (window, render, sweep, stress,
-// tests) drives labs through this class, so they all render the same frames.
+// offscreen target, the shader library and the job runner. Every front end (window, render,
+// sweep, stress, tests) drives labs through this class, so they all render the same frames.
+// Measuring against ground truth lives beside it (host/measurer.h, host/truth.h).
 //
 // Errors never lose state: a failed lab switch, scene load or setting leaves the last good one
 // in place and returns a one-line message.
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "host/job_runner.h"
 #include "labs/lab.h"
 #include "measure/image.h"
 
@@ -36,11 +39,21 @@ class LabHost {
   void resetParams();
   void resetCamera();
 
-  // Makes the scene match the lab's needs, reloads changed shaders, renders one frame.
+  // Delivers finished jobs, makes the scene match the lab's needs, reloads changed shaders,
+  // lets the lab update and renders one frame into the view's target.
   const std::vector<gl::PassTiming>& renderFrame(glm::ivec2 size, float time = 0.0f, float dt = 0.0f);
   ImageF readImage() const { return {target_->size(), target_->readRgba()}; }
-  // The lab's ground truth for the current settings (computeReference, else ReferenceSpec);
-  // restores the settings.
+  // One frame of the current settings into `target` as `camera` sees it, shifted by `jitter`
+  // pixels: no reload, no job delivery. For references; the view's target is left alone.
+  std::vector<gl::PassTiming> drawInto(const gl::RenderTarget& target, const OrbitCamera& camera, float time,
+                                       glm::vec2 jitter = glm::vec2(0.0f));
+  // Traced truths: the lab's GL part (a g-buffer of `target`'s pixels as `camera` sees them);
+  // returns the CPU part for a job. Settings as they are now: apply the truth's first.
+  TraceWork trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time);
+  // Headless runs and tests: lets the lab submit what the current settings need, then waits for
+  // every job and delivers it, until none is left. onProgress sees the running jobs.
+  void settle(const std::function<void(const std::vector<JobStatus>&)>& onProgress = {});
+  // The lab's ground truth for the current settings, blocking (host/truth.h); restores settings.
   ImageF renderReference(glm::ivec2 size, float time = 0.0f);
   // The frame the metrics compare: rendered with the lab's measuredView() settings.
   ImageF renderMeasured(glm::ivec2 size, float time = 0.0f);
@@ -51,33 +64,49 @@ class LabHost {
 
   Lab& lab() { return *lab_; }
   const std::string& sceneId() const { return sceneId_; }
-  const Scene& scene() const { return scene_; }
-  const GpuScene& gpuScene() const { return gpu_; }
+  // Counts scene loads (a new id or file), not rebuilds for new needs: truth caches key on it.
+  int sceneLoads() const { return sceneLoads_; }
+  const Scene& scene() const { return built_.scene; }
+  const GpuScene& gpuScene() const { return built_.gpu; }
   OrbitCamera& camera() { return camera_; }
   ShaderLibrary& shaders() { return *shaders_; }
+  JobRunner& jobs() { return jobs_; }
   const gl::RenderTarget* target() const { return target_ ? &*target_ : nullptr; }
   const std::vector<gl::PassTiming>& lastPasses() const { return timer_.lastFrame(); }
-  // Scene warnings (loader, degenerate UVs, missing textures) and the lab's own.
+  // Scene warnings (loader, degenerate UVs, missing textures), the lab's own, and failed jobs'.
   std::vector<std::string> warnings() const;
   int sceneBuilds() const { return sceneBuilds_; }
   const char* timerClock() const { return timer_.clockName(); }
 
  private:
+  // A scene built for one set of needs, uploaded.
+  struct Built {
+    Scene scene;
+    GpuScene gpu;
+    SceneNeeds needs;
+    std::vector<std::string> warnings;
+  };
   std::string ownKey(const std::string& key) const;
   std::string ensureScene();
+  std::vector<gl::PassTiming> draw(gl::PassTimer& timer, const gl::RenderTarget& target, const OrbitCamera& camera,
+                                   float time, glm::vec2 jitter);
   std::string rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe);
 
   std::unique_ptr<ShaderLibrary> shaders_;
+  JobRunner jobs_;  // before lab_: jobs are cancelled before a lab goes
   std::unique_ptr<Lab> lab_;
   bool labReady_ = false;
   std::string sceneId_;
-  SceneNeeds builtNeeds_;
-  Scene scene_;
-  GpuScene gpu_;
-  std::vector<std::string> sceneWarnings_;
+  int sceneLoads_ = 0;
+  // The scene for the current needs and the one built before it: flipping between two sets of
+  // needs (a reference's tessellation and the view's) swaps them instead of rebuilding.
+  Built built_;
+  std::optional<Built> previous_;
   OrbitCamera camera_;
   std::optional<gl::RenderTarget> target_;
-  gl::PassTimer timer_;
+  gl::PassTimer timer_;       // the view's frames: what the Cost panel shows
+  gl::PassTimer truthTimer_;  // reference frames, kept out of the view's numbers
+  std::vector<std::string> jobErrors_;
   int sceneBuilds_ = 0;
 };
 

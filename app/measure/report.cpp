@@ -37,31 +37,44 @@ static std::string csvField(const std::string& s) {
   return q + "\"";
 }
 
+std::vector<std::string> truthsOf(const SweepReport& r) {
+  std::vector<std::string> out;
+  for (auto& row : r.rows)
+    if (std::find(out.begin(), out.end(), row.truth) == out.end()) out.push_back(row.truth);
+  return out;
+}
+
 std::string sweepCsv(const SweepReport& r) {
   if (r.rows.empty()) return "";
   std::string csv;
   const auto& first = r.rows.front();
   for (auto& [k, v] : first.params) csv += csvField(k) + ",";
+  csv += "truth,";
   for (size_t i = 0; i < first.values.size(); ++i) csv += csvField(first.values[i].first) + (i + 1 < first.values.size() ? "," : "\n");
   for (auto& row : r.rows) {
     for (auto& [k, v] : row.params) csv += csvField(v) + ",";
+    csv += csvField(row.truth) + ",";
     for (size_t i = 0; i < row.values.size(); ++i)
       csv += formatNumber(row.values[i].second) + (i + 1 < row.values.size() ? "," : "\n");
   }
   return csv;
 }
 
-std::vector<size_t> paretoFront(const SweepReport& r, const std::string& errorKey) {
-  std::vector<size_t> order(r.rows.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+static bool inTruth(const SweepRow& row, const std::string& truth) { return truth.empty() || row.truth == truth; }
+
+std::vector<size_t> paretoFront(const SweepReport& r, const PlotSpec& plot, const std::string& truth) {
+  std::vector<size_t> order;
+  for (size_t i = 0; i < r.rows.size(); ++i)
+    if (inTruth(r.rows[i], truth) && std::isfinite(r.rows[i].value(plot.error)) && std::isfinite(r.rows[i].value(plot.cost)))
+      order.push_back(i);
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return r.rows[a].value(r.costKey) < r.rows[b].value(r.costKey);
+    return r.rows[a].value(plot.cost) < r.rows[b].value(plot.cost);
   });
   std::vector<size_t> front;
   double best = INFINITY;
   for (size_t i : order)
-    if (r.rows[i].value(errorKey) < best) {
-      best = r.rows[i].value(errorKey);
+    if (r.rows[i].value(plot.error) < best) {
+      best = r.rows[i].value(plot.error);
       front.push_back(i);
     }
   return front;
@@ -128,14 +141,25 @@ std::vector<double> ticks(double lo, double hi) {
   return t;
 }
 
-std::string plot(const SweepReport& r, const std::string& errorKey) {
-  const double W = 640, H = 400, L = 70, R = 170, T = 20, B = 50;
+std::string costAxisLabel(const std::string& cost) {
+  if (cost == "gpu_ms") return "gpu_ms (median of the frame's passes, lower is cheaper)";
+  if (cost == "cpu_ms") return "cpu_ms (median, lower is cheaper)";
+  return cost + " (lower is cheaper)";
+}
+
+std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& truth) {
+  const double W = 640, H = 400, L = 70, R = 170, T = 26, B = 50;
+  const std::string& errorKey = spec.error;
+  const std::string& costKey = spec.cost;
   double x0 = INFINITY, x1 = -INFINITY, y0 = 0, y1 = -INFINITY;
   for (auto& row : r.rows) {
-    x0 = std::min(x0, row.value(r.costKey));
-    x1 = std::max(x1, row.value(r.costKey));
+    if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
+    x0 = std::min(x0, row.value(costKey));
+    x1 = std::max(x1, row.value(costKey));
     y1 = std::max(y1, row.value(errorKey));
   }
+  if (!std::isfinite(x0)) x0 = x1 = 0;
+  if (!std::isfinite(y1)) y1 = 1;
   if (!(x1 > x0)) { x0 -= 0.5; x1 += 0.5; }
   if (!(y1 > y0)) y1 = y0 + 1;
   const double padX = (x1 - x0) * 0.05;
@@ -154,25 +178,30 @@ std::string plot(const SweepReport& r, const std::string& errorKey) {
     s += "<line x1='" + formatNumber(L) + "' x2='" + formatNumber(W - R) + "' y1='" + formatNumber(sy(t)) + "' y2='" +
          formatNumber(sy(t)) + "' stroke='#eee'/><text x='" + formatNumber(L - 6) + "' y='" + formatNumber(sy(t) + 4) +
          "' text-anchor='end'>" + formatNumber(t) + "</text>\n";
+  if (!truth.empty())
+    s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>judged against the " +
+         escape(truth) + "</text>\n";
   s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
        formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
   s += "<text x='" + formatNumber((L + W - R) / 2) + "' y='" + formatNumber(H - 12) + "' text-anchor='middle'>" +
-       escape(r.costKey) + " (median, lower is cheaper)</text>\n";
+       escape(costAxisLabel(costKey)) + "</text>\n";
   s += "<text transform='translate(16," + formatNumber((T + H - B) / 2) + ") rotate(-90)' text-anchor='middle'>" +
        escape(errorKey) + " (lower is closer to the reference)</text>\n";
   // Pareto front: the configurations nothing else beats on both axes.
   std::string path;
-  for (size_t i : paretoFront(r, errorKey))
-    path += (path.empty() ? "M" : " L") + formatNumber(sx(r.rows[i].value(r.costKey))) + "," +
+  for (size_t i : paretoFront(r, spec, truth))
+    path += (path.empty() ? "M" : " L") + formatNumber(sx(r.rows[i].value(costKey))) + "," +
             formatNumber(sy(r.rows[i].value(errorKey)));
   s += "<path d='" + path + "' fill='none' stroke='#999' stroke-dasharray='4 3'/>\n";
   std::map<std::string, int> groups;
-  for (auto& row : r.rows) groups.emplace(row.group, int(groups.size()));
+  for (auto& row : r.rows)
+    if (inTruth(row, truth)) groups.emplace(row.group, int(groups.size()));
   for (auto& row : r.rows) {
+    if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
     const char* color = kPalette[groups[row.group] % 8];
-    s += "<circle cx='" + formatNumber(sx(row.value(r.costKey))) + "' cy='" + formatNumber(sy(row.value(errorKey))) +
+    s += "<circle cx='" + formatNumber(sx(row.value(costKey))) + "' cy='" + formatNumber(sy(row.value(errorKey))) +
          "' r='5' fill='" + color + "' fill-opacity='0.8'><title>" + escape(row.label) + ": " + errorKey + " " +
-         formatNumber(row.value(errorKey)) + ", " + r.costKey + " " + formatNumber(row.value(r.costKey)) +
+         formatNumber(row.value(errorKey)) + ", " + costKey + " " + formatNumber(row.value(costKey)) +
          "</title></circle>\n";
   }
   int k = 0;
@@ -189,7 +218,9 @@ std::string plot(const SweepReport& r, const std::string& errorKey) {
 
 }  // namespace
 
-std::string sweepPlotSvg(const SweepReport& r, const std::string& errorKey) { return plot(r, errorKey); }
+std::string sweepPlotSvg(const SweepReport& r, const PlotSpec& spec, const std::string& truth) {
+  return plot(r, spec, truth);
+}
 
 std::string sweepHtml(const SweepReport& r) {
   std::string h = "<!doctype html>\n<html><head><meta charset='utf-8'><title>" + escape(r.title) +
@@ -199,26 +230,36 @@ std::string sweepHtml(const SweepReport& r) {
                   ".imgs figure{margin:0;font-size:12px}</style></head><body>\n";
   h += "<h1>" + escape(r.title) + "</h1>\n";
   h += "<p>Made by <code>" + escape(r.command) + "</code></p>\n";
-  h += "<p>Renderer: " + escape(r.renderer) + "<br>Reference: " + escape(r.reference) + "<br>Cost: " +
-       escape(r.costKey) + ", the median over the timed frames of the summed time of every pass, measured with " +
+  h += "<p>Renderer: " + escape(r.renderer) + "<br>";
+  for (auto& [truth, what] : r.truths) h += "Truth <b>" + escape(truth) + "</b>: " + escape(what) + "<br>";
+  h += "gpu_ms: the median over the timed frames of the summed time of every pass, measured with " +
        escape(r.costClock) + ".</p>\n";
-  for (auto& key : r.errorKeys) h += "<h2>" + escape(key) + " against " + escape(r.costKey) + "</h2>\n" + plot(r, key);
-  h += "<h2>Configurations</h2>\n<table><tr><th>configuration</th>";
+  const auto truths = truthsOf(r);
+  for (auto& spec : r.plots)
+    for (auto& truth : truths)
+      h += "<h2>" + escape(spec.error) + " against " + escape(spec.cost) +
+           (truths.size() > 1 ? " (judged against the " + escape(truth) + ")" : "") + "</h2>\n" + plot(r, spec, truth);
+  h += "<h2>Configurations</h2>\n<table><tr><th>configuration</th><th>truth</th>";
   if (!r.rows.empty())
     for (auto& [k, v] : r.rows.front().values) h += "<th>" + escape(k) + "</th>";
   h += "</tr>\n";
   for (auto& row : r.rows) {
-    h += "<tr><td style='text-align:left'>" + escape(row.label) + "</td>";
+    h += "<tr><td style='text-align:left'>" + escape(row.label) + "</td><td>" + escape(row.truth) + "</td>";
     for (auto& [k, v] : row.values) h += "<td>" + fourDigits(v) + "</td>";  // the CSV keeps every digit
     h += "</tr>\n";
   }
   h += "</table>\n<h2>Images</h2>\n<div class='imgs'>\n";
-  if (!r.referenceThumbnail.rgba.empty())
-    h += "<figure><img src='" + dataUri(r.referenceThumbnail) + "'><figcaption>reference</figcaption></figure>\n";
-  for (auto& row : r.rows)
-    h += "<figure><img src='" + dataUri(row.thumbnail) + "'><figcaption>" + escape(row.label) + "<br>" +
-         (r.errorKeys.empty() ? "" : r.errorKeys.front() + " " + fourDigits(row.value(r.errorKeys.front()))) + ", " +
-         r.costKey + " " + fourDigits(row.value(r.costKey)) + "</figcaption></figure>\n";
+  for (auto& [truth, image] : r.referenceThumbnails)
+    h += "<figure><img src='" + dataUri(image) + "'><figcaption>truth: " + escape(truth) + "</figcaption></figure>\n";
+  for (auto& row : r.rows) {
+    std::string caption = escape(row.label);
+    if (!r.plots.empty()) {
+      const PlotSpec& p = r.plots.front();
+      caption += "<br>" + escape(p.error) + " " + fourDigits(row.value(p.error)) + ", " + escape(p.cost) + " " +
+                 fourDigits(row.value(p.cost));
+    }
+    h += "<figure><img src='" + dataUri(row.thumbnail) + "'><figcaption>" + caption + "</figcaption></figure>\n";
+  }
   h += "</div>\n</body></html>\n";
   return h;
 }

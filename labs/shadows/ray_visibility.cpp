@@ -3,6 +3,7 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <thread>
@@ -90,13 +91,16 @@ void basis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
 }  // namespace
 
 ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const ImageF& positions,
-                           const ImageF& normals, int samplesPerAxis, float epsilon) {
+                           const ImageF& normals, int samplesPerAxis, float epsilon, JobContext* job) {
   ImageF out;
   out.size = positions.size;
   out.rgba.assign(positions.rgba.size(), 0.0f);
   const int n = light.radiusWorld > 0.0f ? std::max(samplesPerAxis, 1) : 1;
+  std::atomic<int> rowsDone{0};
+  std::atomic<bool> stop{false};
+  const int rows = positions.size.y;
   auto shade = [&](int y0, int y1) {
-    for (int y = y0; y < y1; ++y)
+    for (int y = y0; y < y1 && !stop; ++y) {
       for (int x = 0; x < positions.size.x; ++x) {
         const float* p = positions.at(x, y);
         float* o = out.at(x, y);
@@ -128,10 +132,16 @@ ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const
         const float v = float(lit) / float(n * n);
         o[0] = o[1] = o[2] = v;
       }
+      const int done = ++rowsDone;
+      // One thread reports (JobContext is thread-safe, but one voice is enough).
+      if (job && y0 == 0 && !job->progress(float(done) / float(rows), "shadow rays, row " + std::to_string(done) +
+                                                                        " of " + std::to_string(rows)))
+        stop = true;
+      if (job && job->cancelled()) stop = true;
+    }
   };
   const int threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
   std::vector<std::thread> pool;
-  const int rows = positions.size.y;
   for (int t = 0; t < threads; ++t) pool.emplace_back(shade, rows * t / threads, rows * (t + 1) / threads);
   for (auto& th : pool) th.join();
   return out;

@@ -4,6 +4,7 @@
 #pragma once
 #include <memory>
 
+#include "host/job_runner.h"
 #include "labs/shadows/light_rig.h"
 #include "measure/image.h"
 #include "scene/scene.h"
@@ -28,8 +29,9 @@ class RayScene {
 
 // positions: xyz = world position, w > 0.5 where a surface was drawn that faces the light;
 // normals: xyz = its normal. Returns visibility in RGB and the same validity in A.
-// `epsilon` (world units) lifts ray origins off the surface along the normal.
+// `epsilon` (world units) lifts ray origins off the surface along the normal. With a `job`, rows
+// report progress and stop early when it is cancelled (the image is then incomplete).
 ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const ImageF& positions,
-                           const ImageF& normals, int samplesPerAxis, float epsilon);
+                           const ImageF& normals, int samplesPerAxis, float epsilon, JobContext* job = nullptr);
 
 }  // namespace shadelab

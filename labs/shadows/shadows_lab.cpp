@@ -297,7 +297,7 @@ static void setLight(Program& prog, const char* name, const LightFrame& L, int m
 void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill) {
   const Bounds b = frame.scene.bounds;
   prog.use();
-  prog.set("u_viewProj", frame.camera.projection(frame.aspect()) * frame.camera.view());
+  prog.set("u_viewProj", frame.viewProj());
   prog.set("u_eye", frame.camera.eye());
   prog.set("u_ambient", 0.12f);
   setLight(prog, "u_key", key, params.mapSize());
@@ -341,7 +341,7 @@ void ShadowsLab::drawFrustum(Frame& frame, const LightFrame& key) {
   auto pass = frame.pass("light frustum");
   Program& prog = fetch(kLinesSlot, linesSpec());
   prog.use();
-  prog.set("u_viewProj", frame.camera.projection(frame.aspect()) * frame.camera.view());
+  prog.set("u_viewProj", frame.viewProj());
   prog.set("u_lightInverse", glm::inverse(key.viewProj));
   prog.set("u_color", glm::vec3(1.0f, 0.85f, 0.2f));
   glBindVertexArray(frustumVao_.get());

@@ -86,10 +86,10 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   std::vector<std::string> warnings() const override;
 
   ReferenceSpec reference() const override;
-  std::optional<ImageF> computeReference(Frame& frame) override;
+  TraceWork traceReference(Frame& frame) override;
   Settings measuredView() const override { return {{"view", "visibility"}}; }
   Metrics metrics(const ImageF& image, const ImageF& reference) const override;
-  std::vector<std::string> errorKeys() const override { return {"misclassified_pct", "visibility_rmse"}; }
+  std::vector<PlotSpec> plots() const override { return {{"misclassified_pct"}, {"visibility_rmse"}}; }
   std::vector<StressCase> stressCases() const override;
   std::vector<SweepAxis> standardSweep() const override;
 
@@ -114,7 +114,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   gl::Buffer frustumVbo_;
   std::vector<glm::vec2> poisson_;
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
-  std::unique_ptr<RayScene> rayScene_;
+  std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;
 };

@@ -11,7 +11,11 @@ ReferenceSpec ShadowsLab::reference() const {
   // The truth depends on the scene, the camera, the light and (for PCSS) its radius; never on the
   // map, bias or filter. These overrides name the truth's settings, so a sweep traces it once.
   ReferenceSpec spec;
+  spec.kind = TruthKind::Image;
+  spec.traced = true;
+  spec.displayEncoded = false;  // visibility, not colour
   const bool soft = params.filter == ShadowFilter::Pcss;
+  spec.truth = soft ? "area light" : "point light";
   spec.overrides = {{"filter", soft ? "pcss" : "hard"}, {"map_size", "2048"}, {"depth_format", "24"},
                     {"bias", "2.5"}, {"slope_bias", "4"}, {"normal_offset", "0"}, {"offset_factor", "0"},
                     {"offset_units", "0"}, {"pcf_size", "3"}, {"receiver_plane", "on"}, {"cull_front", "off"}, {"border_clamp", "on"},
@@ -22,9 +26,9 @@ ReferenceSpec ShadowsLab::reference() const {
   return spec;
 }
 
-std::optional<ImageF> ShadowsLab::computeReference(Frame& frame) {
+TraceWork ShadowsLab::traceReference(Frame& frame) {
   if (!rayScene_ || rayRevision_ != frame.scene.revision) {
-    rayScene_ = std::make_unique<RayScene>(frame.scene);
+    rayScene_ = std::make_shared<const RayScene>(frame.scene);
     rayRevision_ = frame.scene.revision;
   }
   // Positions and normals of exactly the pixels the rasteriser draws, in full float precision.
@@ -32,10 +36,10 @@ std::optional<ImageF> ShadowsLab::computeReference(Frame& frame) {
   Frame g{gbuffer, frame.scene, frame.gpu, frame.camera, frame.timer, frame.time};
   internalView_ = InternalView::Position;
   render(g);
-  const ImageF positions{gbuffer.size(), gbuffer.readRgba()};
+  ImageF positions{gbuffer.size(), gbuffer.readRgba()};
   internalView_ = InternalView::Normal;
   render(g);
-  const ImageF normals{gbuffer.size(), gbuffer.readRgba()};
+  ImageF normals{gbuffer.size(), gbuffer.readRgba()};
   internalView_ = InternalView::None;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
@@ -45,7 +49,11 @@ std::optional<ImageF> ShadowsLab::computeReference(Frame& frame) {
   const bool soft = params.filter == ShadowFilter::Pcss && key.radiusWorld > 0.0f;
   if (!soft) key.radiusWorld = 0.0f;
   const float epsilon = 2e-4f * bounds.radius();  // lifts ray origins off the surface they start on
-  return rayTracedVisibility(*rayScene_, key, positions, normals, soft ? 8 : 1, epsilon);
+  // The rays are the slow part (seconds for an area light): a job, which owns all it reads.
+  return [scene = rayScene_, key, positions = std::move(positions), normals = std::move(normals), soft,
+          epsilon](JobContext& job) {
+    return rayTracedVisibility(*scene, key, positions, normals, soft ? 8 : 1, epsilon, &job);
+  };
 }
 
 Metrics ShadowsLab::metrics(const ImageF& image, const ImageF& reference) const {

@@ -121,7 +121,7 @@ TEST(Jobs, GlStepsRunOnTheWaitingThreadUntilDone) {
   jobs.submitGlSteps("gl", "frames", [&](JobContext& job) {
     stepThread = std::this_thread::get_id();
     job.progress(float(++steps) / 10, "frame " + std::to_string(steps));
-    return steps == 10;
+    return steps == 10 ? GlStep::Done : GlStep::More;
   });
   std::vector<float> seen;
   jobs.waitAll([&](const std::vector<JobStatus>& s) {
@@ -157,4 +157,21 @@ TEST(Jobs, DestructionCancelsRunningWork) {
     ASSERT_TRUE(eventually([&] { return bool(started); }));
   }
   EXPECT_TRUE(sawCancel);
+}
+
+TEST(Jobs, AGlStepCanWaitForAWorkerResult) {
+  // A measurement waits for the lab's job: its step says Wait until the result was delivered.
+  JobRunner jobs;
+  bool resultIn = false, measuredAfterResult = false;
+  jobs.submit("denoise", "smooth", [](JobContext&) {
+    std::this_thread::sleep_for(30ms);
+    return 1;
+  }, [&](int) { resultIn = true; });
+  jobs.submitGlSteps("measure", "measure", [&](JobContext&) {
+    if (jobs.busyOtherThan("measure") && !resultIn) return GlStep::Wait;
+    measuredAfterResult = resultIn;
+    return GlStep::Done;
+  });
+  jobs.waitAll();
+  EXPECT_TRUE(measuredAfterResult);
 }

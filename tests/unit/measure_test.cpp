@@ -39,7 +39,7 @@ TEST(ImageMetrics, NonFiniteCountedAndDownsampleAverages) {
 
 TEST(Report, ParetoFrontCsvAndHtml) {
   SweepReport r;
-  r.errorKeys = {"rmse"};
+  r.plots = {{"rmse"}};
   auto row = [](const char* label, double err, double ms) {
     SweepRow s;
     s.label = label;
@@ -49,11 +49,35 @@ TEST(Report, ParetoFrontCsvAndHtml) {
     return s;
   };
   r.rows = {row("a", 0.3, 1.0), row("b", 0.1, 5.0), row("c", 0.4, 6.0), row("d", 0.05, 9.0)};
-  EXPECT_EQ(paretoFront(r, "rmse"), (std::vector<size_t>{0, 1, 3}));  // c is beaten by b on both axes
-  EXPECT_EQ(sweepCsv(r), "mode,rmse,gpu_ms\na,0.3,1\nb,0.1,5\nc,0.4,6\nd,0.05,9\n");
+  EXPECT_EQ(paretoFront(r, r.plots[0]), (std::vector<size_t>{0, 1, 3}));  // c is beaten by b on both axes
+  EXPECT_EQ(sweepCsv(r), "mode,truth,rmse,gpu_ms\na,,0.3,1\nb,,0.1,5\nc,,0.4,6\nd,,0.05,9\n");
   r.command = "shadelab sweep --lab x <&>";
   const std::string html = sweepHtml(r);
   EXPECT_NE(html.find("<svg"), std::string::npos);
   EXPECT_NE(html.find("shadelab sweep --lab x &lt;&amp;&gt;"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);  // self-contained and static
+}
+
+TEST(Report, EachTruthGetsItsOwnParetoFront) {
+  // Hard filters judged against a point light, PCSS against an area light: one front each.
+  SweepReport r;
+  r.plots = {{"visibility_rmse"}};
+  auto row = [](const char* label, const char* truth, double err, double ms) {
+    SweepRow s;
+    s.label = s.group = label;
+    s.truth = truth;
+    s.values = {{"visibility_rmse", err}, {"gpu_ms", ms}};
+    return s;
+  };
+  r.rows = {row("hard", "point light", 0.02, 1.0), row("pcf", "point light", 0.03, 2.0),
+            row("pcss", "area light", 0.01, 3.0), row("pcss-32", "area light", 0.008, 5.0)};
+  EXPECT_EQ(truthsOf(r), (std::vector<std::string>{"point light", "area light"}));
+  EXPECT_EQ(paretoFront(r, r.plots[0], "point light"), (std::vector<size_t>{0}));
+  EXPECT_EQ(paretoFront(r, r.plots[0], "area light"), (std::vector<size_t>{2, 3}));
+  // Mixed in one front, PCSS would wrongly push the hard filters off it.
+  EXPECT_EQ(paretoFront(r, r.plots[0]), (std::vector<size_t>{0, 2, 3}));
+  const std::string html = sweepHtml(r);
+  EXPECT_NE(html.find("(judged against the point light)"), std::string::npos);
+  EXPECT_NE(html.find("(judged against the area light)"), std::string::npos);
+  EXPECT_EQ(sweepPlotSvg(r, r.plots[0], "area light").find("hard"), std::string::npos);
 }

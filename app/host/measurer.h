@@ -1,0 +1,72 @@
+// Measuring a configuration against its ground truth, one way for everyone: the app's Measure
+// button and auto-measure (in the background, with a progress bar), every row of a sweep, and
+// tests. A measurement is the lab's error metrics next to the costs of the same settings.
+//
+//   Measurer m(host);
+//   m.start(size, time, {{"gpu_ms", 12.5}});      // jobs under the key "measure"
+//   ... host.renderFrame() per frame delivers it; m.history() grows by one
+//
+// Image truths are made by host/truth.h (accumulated truth frames as GL slices, or the lab's
+// trace as a CPU job) and cached by what they depend on, so moving a slider the truth ignores
+// (a bias, a kernel size) costs one frame, not a new truth. Mesh truths wait for the lab's jobs
+// and read its meshMetrics().
+#pragma once
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "host/lab_host.h"
+
+namespace shadelab {
+
+struct Measurement {
+  std::string lab;
+  Settings settings;
+  std::string label;        // the parameters that differ from the lab's defaults, "defaults" if none
+  std::string truth;        // ReferenceSpec::truth: which truth it was judged against
+  Metrics values;           // the lab's metrics, then the costs (gpu_ms, cpu_ms, the lab's own)
+  ImageF image, reference;  // image truths: the measured view and the truth (empty in history())
+  double value(const std::string& key) const;  // NaN when absent
+};
+
+class Measurer {
+ public:
+  explicit Measurer(LabHost& host) : host_(host) {}
+  ~Measurer();  // cancels a measurement in progress
+  Measurer(const Measurer&) = delete;
+  Measurer& operator=(const Measurer&) = delete;
+
+  // Measures the current settings in the background; a new start supersedes one in progress.
+  // `costs`: the caller's timing of these settings' frames. Returns "" or why there is nothing
+  // to measure (the configuration has no ground truth).
+  std::string start(glm::ivec2 size, float time, Metrics costs);
+  // start() and wait for it (CLI, sweep, tests). Empty when there is nothing to measure.
+  std::optional<Measurement> measureNow(glm::ivec2 size, float time, Metrics costs,
+                                        const std::function<void(const std::vector<JobStatus>&)>& onProgress = {});
+  bool busy() const { return host_.jobs().busy(kJobKey); }
+  // This lab's measurements this session, oldest first, without images.
+  const std::vector<Measurement>& history();
+  void clear() { history_.clear(); }
+  // Called on the GL thread for every finished measurement (the window prints a line).
+  std::function<void(const Measurement&)> onMeasured;
+
+  static constexpr const char* kJobKey = "measure";
+
+ private:
+  void finish(Measurement m, const std::shared_ptr<const ImageF>& truth);
+  std::shared_ptr<const ImageF> cachedTruth(const std::string& key) const;
+  void cacheTruth(const std::string& key, std::shared_ptr<const ImageF> image);
+  std::string labelOf(const Settings& settings);
+
+  LabHost& host_;
+  std::string labId_;
+  std::vector<Measurement> history_;
+  std::optional<Measurement> last_;  // with images, for measureNow
+  std::deque<std::pair<std::string, std::shared_ptr<const ImageF>>> truths_;  // newest first
+  static constexpr size_t kCachedTruths = 8;
+};
+
+}  // namespace shadelab

@@ -1,0 +1,54 @@
+#include "host/truth.h"
+
+namespace shadelab {
+
+TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time) {
+  TruthRequest req;
+  req.spec = host.lab().reference();
+  req.viewSettings = host.currentSettings();
+  host.applySettings(req.spec.overrides);
+  req.truthSettings = host.currentSettings();
+  host.applySettings(req.viewSettings);
+  req.camera = host.camera();
+  req.size = size;
+  req.time = time;
+  req.key = std::string(host.lab().id()) + "|" + host.sceneId() + "#" + std::to_string(host.sceneLoads()) + "|";
+  for (auto& [k, v] : req.truthSettings) req.key += k + "=" + v + ";";
+  req.key += "|" + req.camera.toString() + "|" + std::to_string(size.x) + "x" + std::to_string(size.y) + "|t" +
+             formatNumber(time) + "|j" + std::to_string(req.spec.jitterGrid) + (req.spec.traced ? "|traced" : "");
+  return req;
+}
+
+// The settings current now (a slider may have moved since the request) come back afterwards.
+ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter) {
+  const Settings now = host.currentSettings();
+  host.applySettings(req.truthSettings);
+  host.drawInto(target, req.camera, req.time, jitter);
+  ImageF frame{target.size(), target.readRgba()};
+  host.applySettings(now);
+  return frame;
+}
+
+TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target) {
+  const Settings now = host.currentSettings();
+  host.applySettings(req.truthSettings);
+  TraceWork work = host.trace(target, req.camera, req.time);
+  host.applySettings(now);
+  return work;
+}
+
+ImageF renderTruthNow(LabHost& host, const TruthRequest& req) {
+  const gl::RenderTarget target = gl::RenderTarget::create(req.size);
+  if (req.spec.traced) {
+    TraceWork work = beginTrace(host, req, target);
+    JobContext ctx;
+    return work ? work(ctx) : ImageF{};
+  }
+  const auto samples = jitterSamples(req.spec.jitterGrid, req.spec.pixelFilter);
+  if (samples.size() == 1) return drawTruthFrame(host, req, target, samples[0].offset);
+  ImageAccumulator acc(req.spec.displayEncoded);
+  for (auto& s : samples) acc.add(drawTruthFrame(host, req, target, s.offset), s.weight);
+  return acc.mean();
+}
+
+}  // namespace shadelab

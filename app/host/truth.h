@@ -1,0 +1,32 @@
+// How an image truth is made for the current settings: described once (the settings it is drawn
+// with, the camera, the size), then drawn one jittered frame at a time (accumulated references)
+// or traced (the lab's g-buffer now, its CPU part in a job). The Measurer runs these steps as
+// jobs; renderTruthNow runs them at once.
+#pragma once
+#include <string>
+
+#include "host/lab_host.h"
+
+namespace shadelab {
+
+struct TruthRequest {
+  ReferenceSpec spec;
+  Settings viewSettings;   // the settings measured (the truth's frames restore whatever is current)
+  Settings truthSettings;  // with the truth's overrides applied
+  OrbitCamera camera;      // captured: the student may orbit while a truth is being made
+  glm::ivec2 size{0};
+  float time = 0.0f;
+  // Names the image: lab, scene load, truth settings, camera, size, time, jitter grid. Two
+  // configurations that differ only in what the truth ignores (a bias, a PCF size) share it.
+  std::string key;
+};
+
+TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time);
+// One frame of the truth shifted by `jitter` pixels, drawn into `target` (of req.size) and read back.
+ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter);
+// Traced truths: the GL part now, under the truth's settings; returns the CPU part.
+TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target);
+// Everything at once (tests, LabHost::renderReference).
+ImageF renderTruthNow(LabHost& host, const TruthRequest& req);
+
+}  // namespace shadelab
