@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     if (a == "--exit-after" && i + 1 < argc) window.exitAfterFrames = std::atoi(argv[++i]);
     else if (a == "--screenshot" && i + 1 < argc) window.screenshot = argv[++i];
     else if (a == "--cycle-labs") window.cycleLabs = true;
+    else if (a == "--auto-measure") window.autoMeasure = true;
     else args.push_back(argv[i]);
   }
 #else

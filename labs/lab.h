@@ -20,6 +20,7 @@
 #include "gl/pass_timer.h"
 #include "host/job_runner.h"
 #include "gl/texture.h"
+#include "labs/lab_panel.h"
 #include "labs/params.h"
 #include "measure/accumulator.h"
 #include "measure/image.h"
@@ -126,6 +127,8 @@ class Lab {
   virtual std::vector<ProgramRef> activePrograms() const = 0;
   // What the current configuration clamped, fell back on or cannot do well; shown in the UI.
   virtual std::vector<std::string> warnings() const { return {}; }
+  // Views of the lab's own beside the parameters (labs/lab_panel.h): tables, plots, images.
+  virtual std::vector<LabPanel> panels() const { return {}; }
 
   // The ground truth of the current configuration (app/host/measurer.h measures against it).
   virtual ReferenceSpec reference() const { return {}; }

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "cli/session.h"
+#include "host/measurer.h"
 #include "scene/scene_catalog.h"
 
 namespace shadelab {
@@ -37,6 +38,24 @@ int runRender(const Options& o) {
   for (auto& p : t.passes) meta["passes"].push_back({{"name", p.name}, {"gpu_ms", p.gpuMs}, {"cpu_ms", p.cpuMs}});
   meta["non_finite_values"] = countNonFinite(image);
   meta["warnings"] = host.warnings();
+  for (auto& panel : host.lab().panels())  // the lab's tables, as the app shows them
+    for (auto& item : panel.items)
+      if (auto* table = std::get_if<PanelTable>(&item))
+        meta["panels"][panel.title].push_back({{"columns", table->columns}, {"rows", table->rows}});
+  if (o.measure) {
+    Measurer measurer(host);
+    auto m = measurer.measureNow(s.size, s.time, {{"gpu_ms", t.gpuMs}, {"cpu_ms", t.cpuMs}},
+                                 [](const std::vector<JobStatus>& jobs) { progress(0, 1, describeJobs(jobs)); });
+    if (!m) return fail(std::string(host.lab().id()) + ": this configuration has no ground truth to measure against");
+    nlohmann::json values = nlohmann::json::object();
+    std::string line;
+    for (auto& [k, v] : m->values) {
+      values[k] = v;
+      line += " " + k + "=" + formatNumber(v);
+    }
+    meta["measured"] = {{"truth", m->truth}, {"values", values}};
+    std::printf("measured against %s:%s\n", m->truth.c_str(), line.c_str());
+  }
   const std::string jsonPath = std::filesystem::path(o.out).replace_extension(".json").string();
   std::ofstream(jsonPath + ".tmp") << meta.dump(2) << "\n";
   std::filesystem::rename(jsonPath + ".tmp", jsonPath);

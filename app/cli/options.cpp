@@ -30,6 +30,8 @@ options:
   --shaders DIR       search DIR for shader files before shaders/ (repeatable; first wins)
   --backend NAME      headless context: osmesa (default) or egl
   --out PATH          output file or folder
+  --measure           measure the frame against the lab's ground truth (render: printed and in the JSON;
+                      the window: as if Measure were pressed)
   -h, --help          this text
 )";
 }
@@ -57,6 +59,10 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
       o.help = true;
+      continue;
+    }
+    if (arg == "--measure") {
+      o.measure = true;
       continue;
     }
     if (arg.rfind("--", 0) != 0) {
@@ -89,7 +95,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
-             "--backend, --out)";
+             "--backend, --out, --measure)";
     }
   }
   for (auto& dir : o.shaderDirs)

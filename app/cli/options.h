@@ -26,6 +26,7 @@ struct Options {
   float time = 0.0f;
   int frames = 5;                                // timed frames per configuration (medians)
   int warmup = 2;
+  bool measure = false;                          // render: measure against the lab's truth too
   bool help = false;
   std::vector<std::string> positional;           // compare A.png B.png
 };

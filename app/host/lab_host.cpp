@@ -171,8 +171,9 @@ void LabHost::settle(const std::function<void(const std::vector<JobStatus>&)>& o
 ImageF LabHost::renderMeasured(glm::ivec2 size, float time) {
   const Settings saved = currentSettings();
   applySettings(lab_->measuredView());
-  renderFrame(size, time);
-  ImageF image = readImage();
+  if (!sideTarget_ || sideTarget_->size() != size) sideTarget_ = gl::RenderTarget::create(size);
+  drawInto(*sideTarget_, camera_, time);  // never into the view's target: the student sees no flash
+  ImageF image{size, sideTarget_->readRgba()};
   applySettings(saved);
   return image;
 }

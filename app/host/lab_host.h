@@ -103,7 +103,8 @@ class LabHost {
   Built built_;
   std::optional<Built> previous_;
   OrbitCamera camera_;
-  std::optional<gl::RenderTarget> target_;
+  std::optional<gl::RenderTarget> target_;      // the view's frames
+  std::optional<gl::RenderTarget> sideTarget_;  // measured views, off screen
   gl::PassTimer timer_;       // the view's frames: what the Cost panel shows
   gl::PassTimer truthTimer_;  // reference frames, kept out of the view's numbers
   std::vector<std::string> jobErrors_;

@@ -179,7 +179,7 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
          formatNumber(sy(t)) + "' stroke='#eee'/><text x='" + formatNumber(L - 6) + "' y='" + formatNumber(sy(t) + 4) +
          "' text-anchor='end'>" + formatNumber(t) + "</text>\n";
   if (!truth.empty())
-    s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>judged against the " +
+    s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>truth: " +
          escape(truth) + "</text>\n";
   s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
        formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
@@ -238,7 +238,7 @@ std::string sweepHtml(const SweepReport& r) {
   for (auto& spec : r.plots)
     for (auto& truth : truths)
       h += "<h2>" + escape(spec.error) + " against " + escape(spec.cost) +
-           (truths.size() > 1 ? " (judged against the " + escape(truth) + ")" : "") + "</h2>\n" + plot(r, spec, truth);
+           (truths.size() > 1 ? " (truth: " + escape(truth) + ")" : "") + "</h2>\n" + plot(r, spec, truth);
   h += "<h2>Configurations</h2>\n<table><tr><th>configuration</th><th>truth</th>";
   if (!r.rows.empty())
     for (auto& [k, v] : r.rows.front().values) h += "<th>" + escape(k) + "</th>";

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "host/lab_host.h"
+#include "host/measurer.h"
 
 namespace shadelab {
 
@@ -23,5 +24,26 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
 void drawShaderPanel(LabHost& host, std::string& status);
 
 void drawWarnings(const LabHost& host, const std::string& lastError);
+
+// The lab's own panels (labs/lab_panel.h).
+void drawLabPanels(const Lab& lab);
+// A progress bar with Cancel per running job; returns whether any runs.
+bool drawJobs(JobRunner& jobs);
+
+// What the window knows about the configuration on screen, for measuring it.
+struct MeasureRequest {
+  std::string signature;    // settings + camera + size: a change means "not measured yet"
+  double stillSeconds = 0;  // since the signature last changed
+  Metrics costs;            // gpu_ms and cpu_ms medians of this configuration's recent frames
+  glm::ivec2 size{0};
+  float time = 0;
+};
+struct MeasureUi {
+  bool autoMeasure = false;
+  bool requested = false;         // the Measure button, or --measure on the command line
+  std::string measuredSignature;  // what the last measurement was started for
+  int plot = 0;                   // which of the lab's plots is shown
+};
+void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now, std::string& message);
 
 }  // namespace shadelab

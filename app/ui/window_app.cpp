@@ -1,8 +1,8 @@
 // The main loop, top to bottom:
 //   1. events (mouse on the viewport moves the camera; F12 takes a screenshot; dropped files)
 //   2. render the lab into its offscreen target at the viewport's size
-//   3. lay out the UI: lab/scene pickers and parameters (left), viewport (centre), stats,
-//      shaders and warnings (right)
+//   3. lay out the UI: lab/scene pickers and parameters (left), viewport with the running jobs
+//      (centre), cost, measurements, the lab's panels, warnings and shaders (right)
 //   4. draw the UI into the window and swap
 #include "ui/window_app.h"
 
@@ -11,8 +11,10 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <deque>
 #include <fstream>
 
 #include "cli/session.h"
@@ -23,12 +25,63 @@
 namespace shadelab {
 namespace {
 
+// The costs of the configuration on screen: medians of its recent frames, restarted whenever the
+// settings, the camera or the viewport change.
+struct ConfigurationCosts {
+  std::string signature;
+  std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
+  std::deque<double> gpu, cpu;
+
+  void push(const std::string& now, const std::vector<gl::PassTiming>& passes) {
+    if (now != signature) {
+      signature = now;
+      since = std::chrono::steady_clock::now();
+      gpu.clear();
+      cpu.clear();
+    }
+    double g = 0, c = 0;
+    for (auto& p : passes) {
+      g += p.gpuMs;
+      c += p.cpuMs;
+    }
+    gpu.push_back(g);
+    cpu.push_back(c);
+    if (gpu.size() > 15) {
+      gpu.pop_front();
+      cpu.pop_front();
+    }
+  }
+  static double median(std::deque<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  }
+  // Empty until three frames of this configuration ran: the first pays for shader compiles.
+  Metrics costs() const { return gpu.size() < 3 ? Metrics{} : Metrics{{"gpu_ms", median(gpu)}, {"cpu_ms", median(cpu)}}; }
+};
+
+// Frame times with and without jobs running: the UI must stay responsive while they work.
+struct Responsiveness {
+  std::vector<float> idleMs, busyMs;
+  void report() const {
+    auto median = [](std::vector<float> v) {
+      std::sort(v.begin(), v.end());
+      return v.empty() ? 0.0f : v[v.size() / 2];
+    };
+    std::printf("frames: %zu, %zu while jobs ran; median frame %.1f ms idle, %.1f ms while jobs ran\n",
+                idleMs.size() + busyMs.size(), busyMs.size(), median(idleMs), median(busyMs));
+  }
+};
+
 struct AppState {
   LabHost* host = nullptr;
+  Measurer* measurer = nullptr;
   std::string message;          // last error or confirmation, shown in the UI
   std::vector<std::string> dropped;
   glm::ivec2 viewport{960, 600};
   FrameHistory history;
+  ConfigurationCosts costs;
+  MeasureUi measure;
+  Responsiveness responsiveness;
   bool screenshotRequested = false;
 };
 
@@ -114,6 +167,7 @@ void leftPanel(AppState& app) {
   ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off file on the window.");
   ImGui::Separator();
   drawParamWidgets(host.lab());
+  for (auto& e : host.jobs().takeErrors()) app.message = e;
   if (ImGui::Button("Reset parameters")) host.resetParams();
   ImGui::SameLine();
   if (ImGui::Button("Reset view")) host.resetCamera();
@@ -162,7 +216,17 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   {
     AppState app;
     LabHost host(shaderSearchPath(options));
+    Measurer measurer(host);
+    measurer.onMeasured = [](const Measurement& m) {
+      std::printf("measured %s (%s), truth: %s:", m.lab.c_str(), m.label.c_str(), m.truth.c_str());
+      for (auto& [k, v] : m.values) std::printf(" %s=%s", k.c_str(), formatNumber(v).c_str());
+      std::printf("\n");
+      std::fflush(stdout);
+    };
     app.host = &host;
+    app.measurer = &measurer;
+    app.measure.autoMeasure = wopt.autoMeasure;
+    app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, onDrop);
     if (!options.preset.empty()) app.message = loadPreset(host, options.preset);
@@ -187,10 +251,13 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       last = now;
 
       // 2. the lab's frame (at the viewport size the last layout gave it)
-      const auto& passes = host.renderFrame(app.viewport, float(glfwGetTime()), dt);
+      const float time = float(glfwGetTime());
+      const auto& passes = host.renderFrame(app.viewport, time, dt);
       double gpu = 0;
       for (auto& p : passes) gpu += p.gpuMs;
       app.history.push(dt * 1000.0f, float(gpu));
+      app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
+      if (frame > 2) (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
       if (app.screenshotRequested) {
         app.message = saveScreenshot(host, app.viewport);
         app.screenshotRequested = false;
@@ -226,10 +293,28 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       ImGui::End();
       ImGui::PopStyleVar();
 
+      // Running jobs over the bottom of the viewport: progress, what they do, Cancel.
+      if (host.jobs().busy()) {
+        ImGui::SetNextWindowPos({leftW + 10, float(fbh) - 10}, ImGuiCond_Always, {0, 1});
+        ImGui::SetNextWindowSize({float(fbw) - leftW - rightW - 20, 0});
+        ImGui::SetNextWindowBgAlpha(0.85f);
+        ImGui::Begin("Jobs", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+        drawJobs(host.jobs());
+        ImGui::End();
+      }
+
       ImGui::SetNextWindowPos({float(fbw) - rightW, 0});
       ImGui::SetNextWindowSize({rightW, float(fbh)});
       ImGui::Begin("Inspect", nullptr, fixed);
       if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
+      if (ImGui::CollapsingHeader("Error against the truth", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const MeasureRequest now{app.costs.signature,
+                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(),
+                                 app.costs.costs(), app.viewport, time};
+        drawMeasurePanel(host, measurer, app.measure, now, app.message);
+      }
+      drawLabPanels(host.lab());
       if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
       if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
       ImGui::End();
@@ -244,6 +329,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uiStart).count();
 
       if (wopt.exitAfterFrames > 0 && frame + 1 >= wopt.exitAfterFrames) {
+        app.responsiveness.report();
         if (!wopt.screenshot.empty())
           if (auto err = saveWindowImage(wopt.screenshot, {fbw, fbh}); !err.empty()) {
             std::fprintf(stderr, "shadelab: %s\n", err.c_str());

@@ -8,6 +8,7 @@ struct WindowOptions {
   int exitAfterFrames = 0;  // 0 = run until closed (tests: run N frames, then exit 0)
   bool cycleLabs = false;   // tests: switch to every lab in turn while running
   std::string screenshot;   // tests: save the whole window (UI included) here before exiting
+  bool autoMeasure = false; // start with auto-measure on (where the truth is cheap)
 };
 
 // Returns the exit code; 2 when no window could be opened (no display), having printed why.

@@ -1,5 +1,7 @@
-// image_check FILE.png [--min-stddev S] [--min-colors N]: exits non-zero if the image is blank
-// (one flat colour) or has fewer distinct colours than expected. For window screenshots.
+// image_check FILE.png [--min-stddev S] [--min-colors N] [--color R,G,B --min-pixels P]: exits
+// non-zero if the image is blank (one flat colour), has fewer distinct colours than expected, or
+// fewer than P pixels within 12/255 of the colour R,G,B (0-255; a progress bar's fill, say).
+// For window screenshots.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,10 +16,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   double minStddev = 0.05;
-  size_t minColors = 64;
+  size_t minColors = 64, minPixels = 0;
+  int want[3] = {-1, -1, -1};
   for (int i = 2; i + 1 < argc; i += 2) {
     if (std::string(argv[i]) == "--min-stddev") minStddev = std::atof(argv[i + 1]);
     if (std::string(argv[i]) == "--min-colors") minColors = size_t(std::atoi(argv[i + 1]));
+    if (std::string(argv[i]) == "--min-pixels") minPixels = size_t(std::atoi(argv[i + 1]));
+    if (std::string(argv[i]) == "--color" && std::sscanf(argv[i + 1], "%d,%d,%d", &want[0], &want[1], &want[2]) != 3) {
+      std::fprintf(stderr, "--color: expected R,G,B in 0..255\n");
+      return 2;
+    }
   }
   shadelab::ImageF img;
   if (auto err = shadelab::readImage(argv[1], img); !err.empty()) {
@@ -26,9 +34,15 @@ int main(int argc, char** argv) {
   }
   double sum = 0, sum2 = 0;
   std::set<unsigned> colors;
+  size_t matching = 0;
   const size_t n = img.rgba.size() / 4;
   for (size_t i = 0; i < n; ++i) {
     const float* p = &img.rgba[i * 4];
+    if (want[0] >= 0) {
+      bool near = true;
+      for (int c = 0; c < 3; ++c) near &= std::abs(p[c] * 255.0f - float(want[c])) <= 12.0f;
+      matching += near;
+    }
     const double l = (p[0] + p[1] + p[2]) / 3.0;
     sum += l;
     sum2 += l * l;
@@ -41,6 +55,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s: looks blank (stddev %.3f < %.3f or colours %zu < %zu)\n", argv[1], stddev, minStddev,
                  colors.size(), minColors);
     return 1;
+  }
+  if (want[0] >= 0) {
+    std::printf("%s: %zu pixels of %d,%d,%d\n", argv[1], matching, want[0], want[1], want[2]);
+    if (matching < minPixels) {
+      std::fprintf(stderr, "%s: %zu pixels of %d,%d,%d, expected at least %zu\n", argv[1], matching, want[0], want[1],
+                   want[2], minPixels);
+      return 1;
+    }
   }
   return 0;
 }

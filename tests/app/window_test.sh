@@ -20,6 +20,22 @@ grep -q "shade.frag:6:[0-9]*: error:" "$out/broken.log"
 "$check" "$out/window_broken.png" --min-stddev 0.05 --min-colors 50
 echo "window test passed"
 
+# Measure in the window: with auto-measure on, the error against the truth appears.
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab shading --auto-measure --exit-after 40 \
+  --screenshot "$out/window_measure.png" >"$out/measure.log"
+grep -q "measured shading (defaults), truth: Phong at 256 segments: rmse=0\.0[0-9]* surface_rmse=" "$out/measure.log" ||
+  { cat "$out/measure.log"; echo "Measure showed no error number"; exit 1; }
+echo "measure in the window passed"
+
+# A long job (a PCSS truth, 64 shadow rays per pixel, traced in the background): frames keep
+# coming while it runs, and its progress bar (ImGui's 230,179,0 fill) is on screen.
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab shadows --set shadows.filter=pcss --measure \
+  --exit-after 30 --screenshot "$out/window_job.png" >"$out/job.log"
+busy=$(sed -n 's/.*, \([0-9]*\) while jobs ran;.*/\1/p' "$out/job.log")
+[ "${busy:-0}" -ge 15 ] || { cat "$out/job.log"; echo "frames stopped while the job ran"; exit 1; }
+"$check" "$out/window_job.png" --color 230,179,0 --min-pixels 200
+echo "long job in the window passed"
+
 # A person's session: drag in the viewport to orbit, press F12, then reproduce the screenshot
 # headless from the JSON saved beside it. Needs xdotool (./test.sh installs it).
 if command -v xdotool >/dev/null; then

@@ -77,7 +77,7 @@ TEST(Report, EachTruthGetsItsOwnParetoFront) {
   // Mixed in one front, PCSS would wrongly push the hard filters off it.
   EXPECT_EQ(paretoFront(r, r.plots[0]), (std::vector<size_t>{0, 2, 3}));
   const std::string html = sweepHtml(r);
-  EXPECT_NE(html.find("(judged against the point light)"), std::string::npos);
-  EXPECT_NE(html.find("(judged against the area light)"), std::string::npos);
+  EXPECT_NE(html.find("(truth: point light)"), std::string::npos);
+  EXPECT_NE(html.find("(truth: area light)"), std::string::npos);
   EXPECT_EQ(sweepPlotSvg(r, r.plots[0], "area light").find("hard"), std::string::npos);
 }
