@@ -4,7 +4,7 @@
 set -euo pipefail
 build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
-  libgtest-dev libbenchmark-dev libembree-dev)
+  libgtest-dev libbenchmark-dev libembree-dev libeigen3-dev libflann-dev liblz4-dev libopenmesh-dev)
 test_pkgs=(xvfb xauth xdotool)
 want=("${build_pkgs[@]}")
 [ "${1:-build}" = test ] && want+=("${test_pkgs[@]}")

@@ -88,7 +88,10 @@ Adjacency buildAdjacency(size_t vertexCount, std::span<const uint32_t> indices) 
     adj.ring[fill[a]++] = b;
     adj.ring[fill[b]++] = a;
   }
-  for (size_t v = 0; v < vertexCount; ++v) adj.isolatedVertices += degree[v] == 0;
+  for (size_t v = 0; v < vertexCount; ++v) {
+    adj.isolatedVertices += degree[v] == 0;
+    std::sort(adj.ring.begin() + adj.offsets[v], adj.ring.begin() + adj.offsets[v + 1]);
+  }
   return adj;
 }
 

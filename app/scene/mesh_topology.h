@@ -32,7 +32,8 @@ struct WeldedMesh {
 WeldedMesh weldByPosition(std::span<const glm::vec3> positions, std::span<const uint32_t> indices);
 inline WeldedMesh weldByPosition(const MeshData& m) { return weldByPosition(m.positions, m.indices); }
 
-// One-ring neighbours in compressed rows: neighbours of v are ring[offsets[v] .. offsets[v+1]).
+// One-ring neighbours in compressed rows: neighbours of v are ring[offsets[v] .. offsets[v+1]),
+// sorted by index (so an edge's slot is found by binary search).
 struct Adjacency {
   std::vector<uint32_t> offsets;
   std::vector<uint32_t> ring;

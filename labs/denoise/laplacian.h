@@ -1,0 +1,86 @@
+// Laplacian smoothing of a triangle mesh, three ways, and how each behaves when pushed.
+//
+// The umbrella operator of vertex i over its one-ring N(i) with weights w_ij:
+//   delta_i = p_i - sum_j w_ij p_j / sum_j w_ij
+// uniform weights w_ij = 1 (Taubin 1995), or cotangent weights w_ij = (cot a_ij + cot b_ij) / 2,
+// the angles opposite the edge ij (Pinkall and Polthier 1993; Meyer et al. 2003), which follow the
+// surface's geometry rather than its triangulation. Obtuse and sliver triangles make cotangent
+// weights negative; clamping them to zero keeps every vertex's update a convex combination.
+//
+//   explicit   p' = p - lambda <delta, n> n        (along the normal: the homework)
+//              p' = p - lambda delta               (along_normal off: shrinks and drifts)
+//              stable for lambda <= 2 / mu_max, mu_max the largest eigenvalue of the normalised
+//              Laplacian: about 1 for uniform weights; stabilityLimit() estimates it per mesh.
+//   Taubin     a lambda step, then a mu step with mu = 1 / (k_pb - 1 / lambda) < 0, which
+//              un-shrinks: a low-pass filter with pass-band k_pb (Taubin 1995).
+//   implicit   (D + lambda L) x' = D x, backward Euler on all three coordinates (Desbrun et al.
+//              1999), L = D - W symmetric. The matrix is factorised once (sparse Cholesky, Eigen's
+//              SimplicialLDLT) and reused by every iteration; stable for any lambda.
+//
+// Every method reports an energy per iteration, E = sum_i |<delta_i, n_i>|^2 (or |delta_i|^2),
+// and the first iteration where it grew: that is how divergence is detected and shown.
+// Pure CPU; tests in tests/unit/denoise_test.cpp.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "host/job_runner.h"
+#include "scene/mesh_topology.h"
+
+namespace shadelab {
+
+enum class LaplacianWeights { Uniform, Cotangent };
+
+// Symmetric edge weights in the layout of an Adjacency (weight[k] belongs to ring[k]).
+struct EdgeWeights {
+  std::vector<double> weight;
+  std::vector<double> rowSum;     // sum of a vertex's weights
+  size_t negativeClamped = 0;     // cotangent weights below zero set to zero
+  size_t degenerateCorners = 0;   // corners of zero-area triangles, which contribute nothing
+  size_t uniformFallbacks = 0;    // vertices whose weights summed to ~0: uniform for them
+};
+EdgeWeights edgeWeights(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices,
+                        const Adjacency& adjacency, LaplacianWeights kind, bool clampNegative);
+
+// delta_i for every vertex with the given weights.
+std::vector<glm::dvec3> umbrella(std::span<const glm::dvec3> positions, const Adjacency& adjacency,
+                                 const EdgeWeights& weights);
+
+enum class SmoothingMethod { Explicit, Taubin, Implicit };
+
+struct SmoothingSettings {
+  SmoothingMethod method = SmoothingMethod::Explicit;
+  LaplacianWeights weights = LaplacianWeights::Uniform;
+  double lambda = 0.5;
+  int iterations = 10;
+  bool alongNormal = true;  // explicit and Taubin: move along the vertex normal only
+  bool clampNegative = true;
+  double passBand = 0.1;  // Taubin's k_pb
+};
+
+struct SmoothingResult {
+  std::vector<glm::dvec3> positions;
+  std::vector<double> energy;  // before each iteration, and after the last: iterations + 1 values
+  int grewAt = 0;              // first iteration (1-based) after which the energy grew; 0 = never
+  int stoppedAt = 0;           // iterations done before a non-finite or exploding state; 0 = all ran
+  EdgeWeights weightsUsed;
+  double factorMs = 0, solveMs = 0;  // implicit: factorisation and all solves
+  std::string error;           // a solver failure, in one line
+};
+
+// Runs `settings` from `start`. A non-finite or exploding iteration (energy 1e12 times the first)
+// is not applied: the result keeps the last finite state and says where it stopped. With a `job`,
+// progress per iteration and early return when cancelled.
+SmoothingResult smooth(std::span<const glm::dvec3> start, std::span<const uint32_t> indices, const Adjacency& adjacency,
+                       const SmoothingSettings& settings, JobContext* job = nullptr);
+
+// The largest stable explicit lambda, 2 / mu_max, for these weights (full-3D update; the
+// along-normal update is at least as stable). Power iteration on the normalised Laplacian.
+double stabilityLimit(const Adjacency& adjacency, const EdgeWeights& weights, int iterations = 60);
+
+}  // namespace shadelab

@@ -1,0 +1,32 @@
+// Noise the way the denoising literature adds it (and the Guided Mesh Normal Filtering data was
+// made): each vertex moves along its normal by a Gaussian amount with sigma = level x the mean
+// edge length, so one level means the same roughness on any mesh at any scale. Impulsive noise
+// moves only a random fraction of the vertices, by the same distribution.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace shadelab {
+
+enum class NoiseKind { Gaussian, Impulsive };
+
+struct NoiseSettings {
+  NoiseKind kind = NoiseKind::Gaussian;
+  double level = 0.3;               // sigma in mean edge lengths
+  double impulsiveFraction = 0.1;   // of the vertices, for impulsive noise
+  uint32_t seed = 1;
+};
+
+// Deterministic for a given seed (the same noise on every machine: std::mt19937 and our own
+// Box-Muller, not std::normal_distribution, whose output the standard leaves open).
+std::vector<glm::dvec3> addNoise(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices,
+                                 const NoiseSettings& settings);
+
+// Area-weighted unit vertex normals in double (+Z where no face gives a direction).
+std::vector<glm::dvec3> vertexNormalsOf(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices);
+double meanEdgeLengthOf(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices);
+
+}  // namespace shadelab
