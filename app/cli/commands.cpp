@@ -81,7 +81,7 @@ int runList(const Options& o) {
     for (auto& c : lab->stressCases()) std::printf(" %s", c.name.c_str());
     std::printf("\n");
   }
-  std::printf("\nscenes (or any .gltf/.glb/.obj/.off file):\n");
+  std::printf("\nscenes (or any .gltf/.glb/.obj/.off/.ply file):\n");
   for (auto& s : listScenes()) std::printf("  %-14s %s\n", s.id.c_str(), s.description.c_str());
   std::printf("\nheadless backends: %s\n", std::string(kHeadlessBackends).c_str());
   return 0;

@@ -19,7 +19,7 @@ commands:
 
 options:
   --lab ID            lab to run (see `shadelab list`)
-  --scene NAME|FILE   procedural scene name, or a .gltf/.glb/.obj/.off file
+  --scene NAME|FILE   procedural scene name, or a .gltf/.glb/.obj/.off/.ply file
   --set LAB.KEY=VAL   set a parameter (repeatable)
   --do LAB.KEY        run one of the lab's actions after the --set values, e.g. --do denoise.add_noise
   --preset FILE.json  load lab, scene, params and camera saved by the app or by render

@@ -147,7 +147,8 @@ std::string loadSceneFile(const fs::path& file, Scene& scene) {
   if (ext == ".gltf" || ext == ".glb") return loadGltf(file, scene);
   if (ext == ".obj") return loadObj(file, scene);
   if (ext == ".off") return loadOff(file, scene);
-  return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off)";
+  if (ext == ".ply") return loadPly(file, scene);
+  return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off, .ply)";
 }
 
 }  // namespace shadelab

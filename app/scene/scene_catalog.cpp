@@ -144,7 +144,7 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     if (!looksLikeFile) {
       std::string valid;
       for (auto& e : listScenes(labScenes)) valid += (valid.empty() ? "" : ", ") + e.id;
-      return "unknown scene '" + idOrPath + "' (valid: " + valid + ", or a .gltf/.glb/.obj/.off file)";
+      return "unknown scene '" + idOrPath + "' (valid: " + valid + ", or a .gltf/.glb/.obj/.off/.ply file)";
     }
     if (auto err = loadSceneFile(file, out); !err.empty()) return err;
     if (ground) addGround(out);

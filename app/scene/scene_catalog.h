@@ -1,5 +1,5 @@
 // Scenes by name: the project's procedural ones, the shared real meshes when the data folder
-// is present, or any .gltf/.glb/.obj/.off path.
+// is present, or any .gltf/.glb/.obj/.off/.ply path.
 #pragma once
 #include <filesystem>
 #include <functional>

@@ -164,7 +164,7 @@ void leftPanel(AppState& app) {
       }
     ImGui::EndCombo();
   }
-  ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off file on the window.");
+  ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window.");
   ImGui::Separator();
   drawParamWidgets(host.lab());
   for (auto& e : host.jobs().takeErrors()) app.message = e;

@@ -38,7 +38,7 @@ TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
   const auto notOff = tempFile("shadelab_not.off", "PLY\n");
   EXPECT_EQ(loadSceneFile(notOff, s), notOff.string() + ": not an OFF file (first line must be OFF)");
   EXPECT_EQ(loadSceneFile("/no/such.obj", s), "/no/such.obj: no such file");
-  EXPECT_EQ(loadSceneFile("mesh.stl", s), "mesh.stl: unknown scene file type '.stl' (valid: .gltf, .glb, .obj, .off)");
+  EXPECT_EQ(loadSceneFile("mesh.stl", s), "mesh.stl: unknown scene file type '.stl' (valid: .gltf, .glb, .obj, .off, .ply)");
   const auto badGltf = tempFile("shadelab_bad.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { ");
   EXPECT_EQ(loadSceneFile(badGltf, s).rfind(badGltf.string() + ": ", 0), 0u);
   const auto emptyObj = tempFile("shadelab_empty.obj", "# nothing\n");
@@ -183,4 +183,53 @@ TEST(Camera, ProjectionFinite) {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) EXPECT_TRUE(std::isfinite(p[i][j]));
   }
+}
+
+TEST(Loaders, PlyAsciiAndBinaryReadTheSameMesh) {
+  const std::string header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                             "property float s\nproperty float t\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n";
+  const auto ascii = tempFile("shadelab_quad.ply", "ply\nformat ascii 1.0\ncomment a quad\n" + header +
+                                                       "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n4 0 1 2 3\n");
+  std::string binary = "ply\nformat binary_big_endian 1.0\n" + header;
+  auto put = [&](const void* p, size_t n) {  // big-endian on this little-endian machine: reverse
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (size_t i = n; i-- > 0;) binary += char(b[i]);
+  };
+  const float v[4][5] = {{0, 0, 0, 0, 0}, {1, 0, 0, 1, 0}, {1, 1, 0, 1, 1}, {0, 1, 0, 0, 1}};
+  for (auto& row : v)
+    for (float f : row) put(&f, 4);
+  binary += char(4);
+  for (int32_t i : {0, 1, 2, 3}) put(&i, 4);
+  const auto bin = tempFile("shadelab_quad_be.ply", binary);
+  for (auto& file : {ascii, bin}) {
+    Scene s;
+    ASSERT_EQ(loadSceneFile(file, s), "") << file;
+    ASSERT_EQ(s.meshes.size(), 1u);
+    EXPECT_EQ(s.meshes[0].triangleCount(), 2u);
+    EXPECT_EQ(s.meshes[0].uvs.size(), 4u);
+    EXPECT_EQ(s.meshes[0].positions[2], glm::vec3(1, 1, 0));
+    EXPECT_EQ(s.meshes[0].uvs[3], glm::vec2(0, 1));
+  }
+}
+
+TEST(Loaders, MalformedPlyNamesTheFileAndTheProblem) {
+  Scene s;
+  const auto truncated = tempFile("shadelab_cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                                      "property float y\nproperty float z\nelement face 1\n"
+                                                      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
+  EXPECT_EQ(loadSceneFile(truncated, s), truncated.string() + ": vertex 2 is missing or malformed");
+  const auto badIndex = tempFile("shadelab_idx.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                                     "property float y\nproperty float z\nelement face 1\n"
+                                                     "property list uchar int vertex_indices\nend_header\n"
+                                                     "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  EXPECT_EQ(loadSceneFile(badIndex, s), badIndex.string() + ": index 7 out of range (3 vertices)");
+  const auto nan = tempFile("shadelab_nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                                "property float y\nproperty float z\nelement face 1\n"
+                                                "property list uchar int vertex_indices\nend_header\n"
+                                                "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(loadSceneFile(nan, s), nan.string() + ": a vertex position is NaN or Inf");
+  EXPECT_EQ(loadSceneFile(tempFile("shadelab_fmt.ply", "ply\nformat weird 1.0\nend_header\n"), s).find("unknown format 'weird'") !=
+                std::string::npos,
+            true);
 }
