@@ -1,16 +1,18 @@
 // Every lab, listed by hand: static self-registration is silently dropped by linkers when a
 // lab's object file is otherwise unreferenced.
 #include "labs/lab.h"
+#include "labs/denoise/denoise_lab.h"
 #include "labs/shading/shading_lab.h"
 #include "labs/shadows/shadows_lab.h"
 
 namespace shadelab {
 
-std::vector<std::string> labIds() { return {"shading", "shadows"}; }
+std::vector<std::string> labIds() { return {"shading", "shadows", "denoise"}; }
 
 std::unique_ptr<Lab> makeLab(std::string_view id) {
   if (id == "shading") return std::make_unique<ShadingLab>();
   if (id == "shadows") return std::make_unique<ShadowsLab>();
+  if (id == "denoise") return std::make_unique<DenoiseLab>();
   return nullptr;
 }
 

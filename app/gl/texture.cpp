@@ -32,6 +32,17 @@ Texture2D Texture2D::fromRgba8(glm::ivec2 size, const uint8_t* pixels, const Sam
   return t;
 }
 
+Texture2D Texture2D::fromData(glm::ivec2 size, GLenum internalFormat, GLenum format, GLenum type, const void* pixels,
+                              const SamplerState& sampler) {
+  const bool mips = sampler.minFilter != GL_LINEAR && sampler.minFilter != GL_NEAREST;
+  Texture2D t = allocate(size, internalFormat, mips ? 0 : 1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, format, type, pixels);
+  if (mips) glGenerateMipmap(GL_TEXTURE_2D);
+  t.setSampler(sampler);
+  return t;
+}
+
 void Texture2D::setSampler(const SamplerState& s) const {
   glBindTexture(GL_TEXTURE_2D, id());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, s.minFilter);

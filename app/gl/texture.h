@@ -25,6 +25,9 @@ class Texture2D {
   static Texture2D allocate(glm::ivec2 size, GLenum internalFormat, int levels = 1);
   // RGBA8 pixels, rows bottom-up as GL expects; builds mipmaps when the sampler asks for them.
   static Texture2D fromRgba8(glm::ivec2 size, const uint8_t* pixels, const SamplerState& sampler, bool srgb);
+  // Any pixel layout (GL_R16 from GL_RED / GL_UNSIGNED_SHORT, ...), rows bottom-up, tightly packed.
+  static Texture2D fromData(glm::ivec2 size, GLenum internalFormat, GLenum format, GLenum type, const void* pixels,
+                            const SamplerState& sampler);
 
   void setSampler(const SamplerState& s) const;
   void bind(int unit) const;

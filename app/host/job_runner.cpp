@@ -25,7 +25,7 @@ struct JobRunner::Job {
 
 bool JobContext::progress(float fraction, std::string_view stage) {
   std::lock_guard lock(mutex_);
-  if (fraction == fraction) progress_ = std::max(progress_, std::clamp(fraction, 0.0f, 1.0f));
+  if (fraction == fraction) progress_ = std::max(progress_, lo_ + (hi_ - lo_) * std::clamp(fraction, 0.0f, 1.0f));
   if (!stage.empty()) stage_ = stage;
   return !cancelled();
 }

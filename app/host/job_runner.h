@@ -43,12 +43,19 @@ class JobContext {
   // the job has been cancelled or superseded: stop and return.
   bool progress(float fraction, std::string_view stage = {});
   bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+  // A stage of a longer job: from now on progress(f) reports lo + f (hi - lo), so a smoothing that
+  // counts its own iterations 0..1 fills its share of the bar.
+  void stage(float lo, float hi) {
+    std::lock_guard lock(mutex_);
+    lo_ = lo;
+    hi_ = hi;
+  }
 
  private:
   friend class JobRunner;
   std::atomic<bool> cancelled_{false};
   mutable std::mutex mutex_;
-  float progress_ = 0.0f;
+  float progress_ = 0.0f, lo_ = 0.0f, hi_ = 1.0f;
   std::string stage_;
 };
 

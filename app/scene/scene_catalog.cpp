@@ -81,13 +81,14 @@ struct DataScene {
   const char* id;
   const char* relPath;
   const char* description;
-  bool ground;  // put a floor under it (a receiver for shadows)
+  bool ground;         // put a floor under it (a receiver for shadows)
+  const char* camera;  // yaw and pitch of a view that shows its front, or ""
 };
 const DataScene kDataScenes[] = {
-    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)", false},
-    {"teapot", "meshes/teapot_pytorch3d/teapot.obj", "the Utah teapot (shared data)", false},
-    {"spot-on-plane", "meshes/spot_pytorch3d/cow.obj", "Spot standing on a floor (shared data)", true},
-    {"teapot-on-plane", "meshes/teapot_pytorch3d/teapot.obj", "the teapot on a floor (shared data)", true},
+    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)", false, "yaw=150,pitch=15"},
+    {"teapot", "meshes/teapot_pytorch3d/teapot.obj", "the Utah teapot (shared data)", false, ""},
+    {"spot-on-plane", "meshes/spot_pytorch3d/cow.obj", "Spot standing on a floor (shared data)", true, "yaw=150,pitch=22"},
+    {"teapot-on-plane", "meshes/teapot_pytorch3d/teapot.obj", "the teapot on a floor (shared data)", true, ""},
 };
 
 // A floor four bounding radii wide, touching the lowest point of what is there.
@@ -135,10 +136,12 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
   if (!found) {
     fs::path file = idOrPath;
     bool ground = false;
+    const char* camera = "";
     for (auto& d : kDataScenes)
       if (idOrPath == d.id) {
         file = dataDirectory() / d.relPath;
         ground = d.ground;
+        camera = d.camera;
       }
     const bool looksLikeFile = file.has_extension() || file.string().find('/') != std::string::npos;
     if (!looksLikeFile) {
@@ -149,6 +152,7 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     if (auto err = loadSceneFile(file, out); !err.empty()) return err;
     if (ground) addGround(out);
     out.name = idOrPath;
+    out.suggestedCamera = camera;
   }
   if (needs.scale != 1.0f) {
     for (auto& inst : out.instances) inst.model = glm::scale(glm::mat4(1.0f), glm::vec3(needs.scale)) * inst.model;

@@ -8,30 +8,11 @@
 
 #include "gl/gl.h"
 #include "measure/report.h"
+#include "util/output_files.h"
 
 namespace fs = std::filesystem;
 
 namespace shadelab {
-
-static fs::path outputDir(const char* sub) {
-  const char* env = std::getenv("SHADELAB_OUT");
-  fs::path dir = fs::path(env && *env ? env : "out") / sub;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  return dir;
-}
-
-// out/<sub>/<stem>-YYYYmmdd-HHMMSS[-n]<ext>, never an existing name.
-static fs::path freshName(const char* sub, const std::string& stem, const std::string& ext) {
-  char stamp[32];
-  const std::time_t t = std::time(nullptr);
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&t));
-  const fs::path dir = outputDir(sub);
-  fs::path p = dir / (stem + "-" + stamp + ext);
-  for (int n = 2; fs::exists(p) || fs::exists(fs::path(p).replace_extension(".json")); ++n)
-    p = dir / (stem + "-" + stamp + "-" + std::to_string(n) + ext);
-  return p;
-}
 
 std::string saveScreenshot(LabHost& host, glm::ivec2 size) {
   const fs::path png = freshName("screenshots", std::string(host.lab().id()), ".png");

@@ -1,0 +1,29 @@
+#include "util/output_files.h"
+
+#include <cstdlib>
+#include <ctime>
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+
+fs::path outputDir(const std::string& sub) {
+  const char* env = std::getenv("SHADELAB_OUT");
+  fs::path dir = fs::path(env && *env ? env : "out") / sub;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  return dir;
+}
+
+fs::path freshName(const std::string& sub, const std::string& stem, const std::string& ext) {
+  char stamp[32];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&t));
+  const fs::path dir = outputDir(sub);
+  fs::path p = dir / (stem + "-" + stamp + ext);
+  for (int n = 2; fs::exists(p) || fs::exists(fs::path(p).replace_extension(".json")); ++n)
+    p = dir / (stem + "-" + stamp + "-" + std::to_string(n) + ext);
+  return p;
+}
+
+}  // namespace shadelab

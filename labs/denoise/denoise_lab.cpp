@@ -1,0 +1,412 @@
+#include "labs/denoise/denoise_lab.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "labs/denoise/denoise_scenes.h"
+#include "measure/report.h"
+#include "util/output_files.h"
+
+namespace shadelab {
+namespace {
+
+constexpr std::string_view kInputs[] = {"published", "generated"};
+constexpr std::string_view kNoiseKinds[] = {"gaussian", "impulsive"};
+constexpr std::string_view kMethods[] = {"explicit", "taubin", "implicit", "bilateral"};
+constexpr std::string_view kWeights[] = {"uniform", "cotangent"};
+constexpr std::string_view kMapSizes[] = {"64", "128", "256", "512", "1024", "2048", "4096"};
+constexpr std::string_view kBakeMethods[] = {"nearest-exact", "nearest-approx", "raster"};
+constexpr std::string_view kFormats[] = {"8", "16", "float"};
+constexpr std::string_view kShows[] = {"smoothed", "noisy", "clean", "map", "attribute", "compare"};
+constexpr std::string_view kViews[] = {"shaded", "error", "offset", "seam-gap"};
+
+// One mesh of every instance, in world space: the lab denoises what the scene shows.
+MeshData mergeInstances(const Scene& scene) {
+  MeshData out;
+  out.name = scene.name;
+  bool uvs = !scene.instances.empty();
+  for (auto& inst : scene.instances) uvs &= !scene.meshes[size_t(inst.mesh)].uvs.empty();
+  for (auto& inst : scene.instances) {
+    const MeshData& m = scene.meshes[size_t(inst.mesh)];
+    const uint32_t base = uint32_t(out.positions.size());
+    for (auto& p : m.positions) out.positions.push_back(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+    if (uvs) out.uvs.insert(out.uvs.end(), m.uvs.begin(), m.uvs.end());
+    for (uint32_t i : m.indices) out.indices.push_back(base + i);
+  }
+  return out;
+}
+
+}  // namespace
+
+DenoiseLab::DenoiseLab() = default;
+DenoiseLab::~DenoiseLab() = default;
+
+std::string_view DenoiseLab::summary() const {
+  return "Noise moves vertices along their normals; Laplacian smoothing moves each one back towards the mean of its "
+         "neighbours, p' = p - lambda <delta, n> n. Drag lambda past the stable step and watch the energy plot; "
+         "switch to implicit and it never diverges; switch to bilateral and the sharp edges survive. On Spot, the "
+         "offsets are baked into a displacement map: show 'compare' and the seam-gap view to see where a map cracks "
+         "and the attribute path does not. Every number is against the clean mesh.";
+}
+
+std::string_view DenoiseLab::defaultScene() const { return denoiseDefaultScene(); }
+
+std::vector<SceneRecipe> DenoiseLab::scenes() const { return denoiseScenes(); }
+
+void DenoiseLab::visitParams(ParamVisitor& v) {
+  auto& p = params;
+  v.section("Noisy input");
+  v.enumParam({"input", "Input", "", "published: the data set's noisy twin (Guided Mesh Normal Filtering pairs); "
+               "generated: noise added here with the settings below."}, p.input, kInputs);
+  v.enumParam({"noise", "Noise", "", "gaussian: every vertex moves along its normal; impulsive: only a random "
+               "fraction does."}, p.noiseKind, kNoiseKinds);
+  v.floatParam({"noise_level", "Noise level", "edges", "Standard deviation of the move, in mean edge lengths of the "
+                "clean mesh."}, p.noiseLevel, 0.0f, 2.0f);
+  v.floatParam({"impulsive_fraction", "Impulsive fraction", "", "Share of the vertices impulsive noise moves."},
+               p.impulsiveFraction, 0.0f, 1.0f);
+  v.intParam({"seed", "Seed", "", "Random seed of the generated noise: the same seed, the same noise everywhere."},
+             p.seed, 0, 1000000);
+  v.action({"add_noise", "Add new noise", "", "Draws fresh generated noise (seed + 1) and switches the input to it."},
+           [&p] {
+             ++p.seed;
+             p.input = NoiseSource::Generated;
+           });
+  v.section("Smoothing");
+  v.enumParam({"method", "Method", "", "explicit: p' = p - lambda <delta,n> n, stable only for small steps; taubin: a "
+               "lambda step then a shrink-undoing mu step; implicit: (D + lambda L) x' = D x, stable for any lambda; "
+               "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."}, p.method, kMethods);
+  v.enumParam({"weights", "Laplacian weights", "", "uniform: every neighbour alike; cotangent: by the angles opposite "
+               "each edge, following the geometry rather than the triangulation."}, p.weights, kWeights);
+  v.floatParam({"lambda", "Lambda", "", "Step size. Explicit and Taubin: stable up to 2 / mu_max (the panel shows it, "
+                "about 1); implicit: any value, larger = smoother."}, p.lambda, 1e-3f, 1e5f, true);
+  v.intParam({"iterations", "Iterations", "", "Smoothing steps (bilateral: vertex updates)."}, p.iterations, 1, 200);
+  v.boolParam({"along_normal", "Along the normal", "", "Explicit and Taubin move each vertex along its normal only "
+               "(the homework); off: the full umbrella vector, which also slides vertices along the surface."},
+              p.alongNormal);
+  v.boolParam({"clamp_cotangent", "Clamp negative weights", "", "Obtuse triangles make cotangent weights negative; "
+               "clamped to 0, every update stays a convex combination."}, p.clampCotangent);
+  v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."}, p.passBand, 0.01f, 0.3f);
+  v.floatParam({"sigma_r", "Bilateral sigma_r", "", "How different two face normals (|n_i - n_j|) may be and still "
+                "be averaged: small keeps more edges."}, p.sigmaR, 0.02f, 2.0f, true);
+  v.intParam({"normal_iterations", "Bilateral normal passes", "", "Passes of the normal filter before the vertices "
+              "are fitted."}, p.normalIterations, 1, 100);
+  v.boolParam({"weld", "Weld seams", "", "Smooth the welded surface (one vertex per position). Off: copies of a "
+               "position split by UV seams are smoothed apart, the homework's crack."}, p.weld);
+  v.section("Displacement map");
+  v.choiceParam({"map_size", "Map size", "texels", "Resolution of the baked map (square)."}, p.mapSizeIndex, kMapSizes);
+  v.enumParam({"bake", "Bake", "", "nearest-exact: each texel takes its nearest vertex's offset (FLANN kd-tree); "
+               "nearest-approx: FLANN's randomised trees with a budget of checks; raster: interpolated inside each UV "
+               "triangle, then dilated into the gutter."}, p.bakeMethod, kBakeMethods);
+  v.intParam({"checks", "FLANN checks", "", "nearest-approx: leaves visited per query. Fewer: faster, more often "
+              "not the nearest."}, p.checks, 1, 512);
+  v.intParam({"gutter", "Gutter", "texels", "raster: texels of dilation around each UV chart, so bilinear lookups "
+              "near a seam read their own chart."}, p.gutter, 0, 16);
+  v.enumParam({"map_format", "Map format", "bits", "8 or 16-bit normalised with a bias and scale, or float."},
+              p.mapFormat, kFormats);
+  v.boolParam({"bilinear", "Bilinear lookup", "", "The vertex shader samples the map bilinearly (off: nearest "
+               "texel)."}, p.bilinear);
+  v.action({"bake_files", "Save the map", "", "Writes the map as out/bakes/<scene>-*.png (+ .raw texels, + .json with "
+            "bias, scale and format)."}, [this] { lastAction_ = saveMap(); });
+  v.section("View");
+  v.enumParam({"show", "Show", "", "smoothed: the method's mesh; noisy; clean; map: the noisy mesh displaced by the map "
+               "in the vertex shader; attribute: displaced by the same offsets as a vertex attribute; compare: map, "
+               "attribute and smoothed side by side."}, p.show, kShows);
+  v.enumParam({"view", "View", "", "shaded (flat, so noise shows); error: distance to the clean mesh; offset: the "
+               "signed offset along the normal; seam-gap: how far copies of a position moved apart."}, p.view, kViews);
+  v.floatParam({"heat_scale", "Heat scale", "edges", "Mean edge lengths at full colour in the error and seam-gap views "
+                "(offsets: +-2x this)."}, p.heatScale, 1e-3f, 10.0f, true);
+}
+
+SceneNeeds DenoiseLab::needs() const {
+  SceneNeeds n;
+  n.uvs = true;  // the bake reads them; a mesh without them uses the attribute path
+  return n;
+}
+
+DenoiseConfig DenoiseLab::config() const {
+  const auto& p = params;
+  DenoiseConfig c;
+  c.publishedInput = p.input == NoiseSource::Published;
+  c.noise = {p.noiseKind, p.noiseLevel, p.impulsiveFraction, uint32_t(p.seed)};
+  c.method = p.method;
+  c.smoothing.weights = p.weights;
+  c.smoothing.lambda = p.lambda;
+  c.smoothing.iterations = p.iterations;
+  c.smoothing.alongNormal = p.alongNormal;
+  c.smoothing.clampNegative = p.clampCotangent;
+  c.smoothing.passBand = p.passBand;
+  c.bilateral.sigmaR = p.sigmaR;
+  c.bilateral.normalIterations = p.normalIterations;
+  c.bilateral.vertexIterations = p.iterations;
+  c.weld = p.weld;
+  c.bake = {p.bakeMethod, 64 << p.mapSizeIndex, p.checks, p.gutter, p.mapFormat};
+  c.bilinear = p.bilinear;
+  return c;
+}
+
+ProgramSpec DenoiseLab::programSpec(Path path) const {
+  ProgramSpec spec;
+  spec.stages = {{GL_VERTEX_SHADER, "denoise/mesh.vert"}, {GL_FRAGMENT_SHADER, "denoise/mesh.frag"}};
+  static const char* pathNames[] = {"plain", "map", "attribute"};
+  spec.name = std::string("denoise/") + pathNames[int(path)];
+  if (path == Path::Map) spec.defines.emplace_back("DISPLACE_MAP", "1");
+  if (path == Path::Attribute) spec.defines.emplace_back("DISPLACE_ATTRIBUTE", "1");
+  if (params.view == DenoiseView::Offset) spec.defines.emplace_back("VIEW_SIGNED", "1");
+  else if (params.view != DenoiseView::Shaded) spec.defines.emplace_back("VIEW_HEAT", "1");
+  return spec;
+}
+
+std::vector<ProgramSpec> DenoiseLab::allPrograms() const {
+  std::vector<ProgramSpec> all;
+  DenoiseLab probe;
+  for (int view = 0; view < 4; ++view)
+    for (Path path : {Path::Plain, Path::Map, Path::Attribute}) {
+      probe.params.view = DenoiseView(view);
+      all.push_back(probe.programSpec(path));
+    }
+  return all;
+}
+
+std::string DenoiseLab::setup(LabContext& ctx) {
+  shaders_ = &ctx.shaders;
+  jobs_ = &ctx.jobs;
+  return {};
+}
+
+void DenoiseLab::teardown() {
+  for (auto& slot : programs_) slot.reset();
+  plainMesh_ = GpuMesh();
+  mapMesh_ = GpuMesh();
+  attributeMesh_ = GpuMesh();
+  mapTexture_ = gl::Texture2D();
+  mapPreview_ = gl::Texture2D();
+  result_.reset();
+  model_.reset();
+  modelRevision_ = -1;
+  requested_.reset();
+  shaders_ = nullptr;
+  jobs_ = nullptr;
+}
+
+void DenoiseLab::rebuildModel(const Scene& scene) {
+  modelRevision_ = scene.revision;
+  modelScene_ = scene.name;
+  modelNote_.clear();
+  result_.reset();
+  requested_.reset();
+  plainMesh_ = GpuMesh();
+  mapMesh_ = GpuMesh();
+  attributeMesh_ = GpuMesh();
+  const MeshData clean = mergeInstances(scene);
+  MeshData twin;
+  std::string twinError;
+  const bool hasTwin = loadPublishedTwin(scene.name, twin, twinError);
+  if (!twinError.empty()) modelNote_ = twinError;
+  std::string error;
+  model_ = buildDenoiseModel(clean, hasTwin ? &twin : nullptr, error);
+  if (!error.empty()) modelNote_ = error;
+  if (!model_) return;
+  // The render topology once; results replace positions, normals and scalars in place. Until
+  // the first result arrives the plain mesh shows the noisy input (noise takes milliseconds).
+  MeshData base = model_->render;
+  base.normals.assign(base.positions.size(), glm::vec3(0, 0, 1));
+  const DenoiseConfig c = config();
+  const bool published = c.publishedInput && !model_->published.empty();
+  const std::vector<glm::dvec3> noisy = published ? model_->published : addNoise(model_->clean, model_->welded.indices, c.noise);
+  MeshData input = base;
+  for (size_t v = 0; v < input.positions.size(); ++v) input.positions[v] = glm::vec3(noisy[model_->welded.logicalOf[v]]);
+  plainMesh_ = GpuMesh::upload(input);
+  attributeMesh_ = GpuMesh::upload(base);
+  if (model_->hasUvs()) mapMesh_ = GpuMesh::upload(base);
+}
+
+void DenoiseLab::update(const Scene& scene, float) {
+  if (scene.revision != modelRevision_) rebuildModel(scene);
+  if (!model_) return;
+  if (result_ && (params.show != uploadedShow_ || params.view != uploadedView_)) uploadViewData();
+  const DenoiseConfig want = config();
+  if (requested_ && *requested_ == want) return;  // computed, or being computed
+  requested_ = want;
+  const std::string label = std::string(kMethods[int(want.method)]) + " on " + modelScene_ + " (" +
+                            std::to_string(model_->statistics.logicalVertices) + " vertices)";
+  // The job owns what it reads: the model (shared, const) and the settings (a copy).
+  jobs_->submit("denoise", label,
+                [model = model_, want](JobContext& job) { return std::make_shared<DenoiseResult>(runDenoise(*model, want, &job)); },
+                [this, revision = modelRevision_](std::shared_ptr<DenoiseResult> r) {
+                  if (revision == modelRevision_ && r->complete) upload(std::move(*r));
+                });
+}
+
+void DenoiseLab::upload(DenoiseResult r) {
+  result_ = std::make_unique<DenoiseResult>(std::move(r));
+  const DenoiseResult& res = *result_;
+  attributeMesh_.updatePositions(res.noisy);
+  attributeMesh_.updateNormals(res.noisyNormals);
+  attributeMesh_.setScalars(kScalar0, res.offsets);
+  if (mapMesh_ && res.map) {
+    mapMesh_.updatePositions(res.noisy);
+    mapMesh_.updateNormals(res.noisyNormals);
+    const DisplacementMap& m = *res.map;
+    const std::vector<uint8_t> texels = encodeMap(m, false);
+    gl::SamplerState s;
+    s.minFilter = s.magFilter = GL_NEAREST;  // the lookup filter is set per draw (bilinear or not)
+    s.wrapS = s.wrapT = GL_CLAMP_TO_EDGE;
+    const GLenum internal = m.format == MapFormat::Unorm8 ? GL_R8 : m.format == MapFormat::Unorm16 ? GL_R16 : GL_R32F;
+    const GLenum type = m.format == MapFormat::Unorm8 ? GL_UNSIGNED_BYTE : m.format == MapFormat::Unorm16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
+    mapTexture_ = gl::Texture2D::fromData(m.size, internal, GL_RED, type, texels.data(), s);
+    // A small grey preview for the panel: the stored values over the map's own range.
+    float lo = INFINITY, hi = -INFINITY;
+    for (float v : m.stored) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    const int side = std::min(256, m.size.x);
+    std::vector<uint8_t> rgba(size_t(side) * side * 4);
+    for (int y = 0; y < side; ++y)
+      for (int x = 0; x < side; ++x) {
+        const float v = m.stored[size_t(y * m.size.y / side) * size_t(m.size.x) + size_t(x * m.size.x / side)];
+        const uint8_t g = uint8_t(std::clamp(hi > lo ? (v - lo) / (hi - lo) : 0.5f, 0.0f, 1.0f) * 255.0f + 0.5f);
+        uint8_t* px = &rgba[size_t(y * side + x) * 4];
+        px[0] = px[1] = px[2] = g;
+        px[3] = 255;
+      }
+    gl::SamplerState linear;
+    linear.minFilter = GL_LINEAR;
+    mapPreview_ = gl::Texture2D::fromRgba8({side, side}, rgba.data(), linear, false);
+  }
+  uploadViewData();
+}
+
+void DenoiseLab::uploadViewData() {
+  if (!result_) return;
+  const DenoiseResult& r = *result_;
+  uploadedShow_ = params.show;
+  uploadedView_ = params.view;
+  // The plain mesh draws the smoothed, noisy or clean positions.
+  const std::vector<glm::vec3>& plain = params.show == DenoiseShow::Noisy ? r.noisy
+                                        : params.show == DenoiseShow::Clean ? model_->render.positions
+                                                                            : r.smoothed;
+  plainMesh_.updatePositions(plain);
+  // Heat: the distance of what is drawn to the clean mesh, the offset, or the gap between copies.
+  std::vector<float> plainHeat(plain.size(), 0.0f);
+  if (params.view == DenoiseView::Offset) {
+    plainHeat = r.offsets;
+  } else if (params.view == DenoiseView::Error) {
+    if (params.show == DenoiseShow::Noisy)
+      for (size_t v = 0; v < plain.size(); ++v)
+        plainHeat[v] = glm::length(plain[v] - model_->render.positions[v]) / float(model_->meanEdge);
+    else if (params.show != DenoiseShow::Clean)
+      plainHeat = r.errorSmoothed;
+  }
+  plainMesh_.setScalars(kScalar1, plainHeat);
+  auto heat = [&](const std::vector<float>& offsets, const std::vector<float>& error, const std::vector<float>& gap) {
+    return params.view == DenoiseView::Offset ? offsets : params.view == DenoiseView::SeamGap ? gap : error;
+  };
+  attributeMesh_.setScalars(kScalar1, heat(r.offsets, r.errorAttribute, r.attributeGap));
+  if (mapMesh_ && r.map) mapMesh_.setScalars(kScalar1, heat(r.readBack, r.errorMapped, r.seamGap));
+}
+
+void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 vp) {
+  glViewport(vp.x, vp.y, vp.z, vp.w);
+  Program& prog = programs_[int(path)].get(*shaders_, programSpec(path));
+  prog.use();
+  const float aspect = float(vp.z) / float(std::max(vp.w, 1));
+  const glm::vec2 shift = -2.0f * frame.jitter / glm::vec2(vp.z, vp.w);
+  const glm::mat4 proj = glm::translate(glm::mat4(1.0f), glm::vec3(shift.x, -shift.y, 0.0f)) * frame.camera.projection(aspect);
+  prog.set("u_viewProj", proj * frame.camera.view());
+  prog.set("u_eye", frame.camera.eye());
+  const glm::mat4 view = frame.camera.view();
+  const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
+  const glm::vec3 back = glm::normalize(frame.camera.eye() - frame.camera.target);
+  prog.set("u_keyDir", glm::normalize(-0.55f * right + 0.75f * up + 0.45f * back));
+  prog.set("u_heatScale", params.heatScale);
+  if (path == Path::Map && mapTexture_) {
+    mapTexture_.bind(0);
+    const GLint filter = params.bilinear ? GL_LINEAR : GL_NEAREST;
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    prog.set("u_displacement", 0);
+    prog.set("u_bias", result_->map->bias);
+    prog.set("u_scale", result_->map->scale);
+  }
+  mesh.draw();
+}
+
+void DenoiseLab::render(Frame& frame) {
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glClearColor(0.02f, 0.02f, 0.025f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (!model_) return;
+  if (!result_) {  // the first result is on its way (the jobs bar shows it): the input meanwhile
+    auto pass = frame.pass("draw: noisy input (smoothing in progress)");
+    drawPanel(frame, Path::Plain, plainMesh_, {0, 0, frame.size().x, frame.size().y});
+    return;
+  }
+  const glm::ivec2 size = frame.size();
+  const bool uvs = model_->hasUvs() && mapMesh_;
+  DenoiseShow show = params.show;
+  if ((show == DenoiseShow::Map) && !uvs) show = DenoiseShow::Attribute;  // warnings() says why
+  if (show == DenoiseShow::Compare) {
+    auto pass = frame.pass(uvs ? "draw: map | attribute | smoothed" : "draw: attribute | smoothed");
+    // Side by side, 4 px apart: map | attribute | smoothed (the panel text names them).
+    const int panels = uvs ? 3 : 2, gap = 4, width = (size.x - gap * (panels - 1)) / panels;
+    int k = 0;
+    if (uvs) drawPanel(frame, Path::Map, mapMesh_, {0, 0, width, size.y}), ++k;
+    drawPanel(frame, Path::Attribute, attributeMesh_, {k * (width + gap), 0, width, size.y});
+    ++k;
+    drawPanel(frame, Path::Plain, plainMesh_, {k * (width + gap), 0, width, size.y});
+    glViewport(0, 0, size.x, size.y);
+    return;
+  }
+  static const char* names[] = {"draw: smoothed", "draw: noisy", "draw: clean", "draw: map path", "draw: attribute path"};
+  auto pass = frame.pass(names[int(show)]);
+  if (show == DenoiseShow::Map) {
+    drawPanel(frame, Path::Map, mapMesh_, {0, 0, size.x, size.y});
+  } else if (show == DenoiseShow::Attribute) {
+    drawPanel(frame, Path::Attribute, attributeMesh_, {0, 0, size.x, size.y});
+  } else {
+    drawPanel(frame, Path::Plain, plainMesh_, {0, 0, size.x, size.y});  // holds what `show` asks (update())
+  }
+}
+
+std::vector<ProgramRef> DenoiseLab::activePrograms() const {
+  std::vector<ProgramRef> out;
+  for (auto& slot : programs_)
+    if (slot.current()) out.push_back(slot.current());
+  return out;
+}
+
+std::string DenoiseLab::saveMap() {
+  if (!result_ || !result_->map) return "no map to save: the mesh has no UVs, or no result yet";
+  const DisplacementMap& m = *result_->map;
+  const std::string stem = modelScene_ + "-" + std::to_string(m.size.x) + "-" + std::string(kBakeMethods[int(params.bakeMethod)]);
+  const auto png = freshName("bakes", stem, ".png");
+  ImageF preview;
+  preview.size = m.size;
+  preview.rgba.resize(size_t(m.size.x) * size_t(m.size.y) * 4);
+  for (int y = 0; y < m.size.y; ++y)
+    for (int x = 0; x < m.size.x; ++x) {
+      const float v = m.stored[size_t(y) * size_t(m.size.x) + size_t(x)];
+      float* px = preview.at(x, m.size.y - 1 - y);  // images are top-down, the map bottom-up
+      px[0] = px[1] = px[2] = m.format == MapFormat::Float32 ? (v - result_->map->bias) : v;
+      px[3] = 1.0f;
+    }
+  if (auto err = writePng(png.string(), preview); !err.empty()) return err;
+  const std::vector<uint8_t> raw = encodeMap(m, true);
+  auto rawPath = png;
+  rawPath.replace_extension(".raw");
+  if (auto err = writeTextFile(rawPath.string(), std::string(raw.begin(), raw.end())); !err.empty()) return err;
+  nlohmann::json meta = {{"width", m.size.x}, {"height", m.size.y}, {"format", std::string(kFormats[int(m.format)])},
+                         {"bias", m.bias}, {"scale", m.scale}, {"offset", "stored * scale + bias, along the vertex normal"},
+                         {"rows", "top-down in .png and .raw"}, {"bake", std::string(kBakeMethods[int(params.bakeMethod)])},
+                         {"raw", m.format == MapFormat::Unorm8 ? "uint8" : m.format == MapFormat::Unorm16 ? "uint16 little-endian" : "float32 little-endian"}};
+  auto jsonPath = png;
+  jsonPath.replace_extension(".json");
+  if (auto err = writeTextFile(jsonPath.string(), meta.dump(2) + "\n"); !err.empty()) return err;
+  return "saved " + png.string() + " (+ .raw, .json)";
+}
+
+}  // namespace shadelab

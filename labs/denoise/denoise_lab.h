@@ -1,0 +1,104 @@
+// Denoising lab: Laplacian smoothing along normals with a live lambda, the stiff and the stable
+// ways to step it, a feature-preserving filter beside it, and the homework's bake of the result
+// into a displacement map (nearest vertex by FLANN, or rasterised in UV space) rendered back with
+// a vertex shader: where it cracks along UV seams and why, and the crack-free path beside it.
+// Every result is judged against the clean mesh (the Guided Mesh Normal Filtering metric).
+// Taubin 1995; Desbrun et al. 1999; Zheng et al. 2011; Zhang et al. 2015.
+// Read next: labs/denoise/laplacian.h, shaders/denoise/mesh.vert, tutorials/denoise.md.
+#pragma once
+#include <memory>
+#include <optional>
+
+#include "labs/denoise/denoise_pipeline.h"
+#include "labs/lab.h"
+
+namespace shadelab {
+
+enum class NoiseSource { Published, Generated };
+enum class DenoiseShow { Smoothed, Noisy, Clean, Map, Attribute, Compare };
+enum class DenoiseView { Shaded, Error, Offset, SeamGap };
+
+struct DenoiseParams {
+  NoiseSource input = NoiseSource::Published;  // the data set's noisy twin, where there is one
+  NoiseKind noiseKind = NoiseKind::Gaussian;
+  float noiseLevel = 0.3f;         // sigma in mean edge lengths
+  float impulsiveFraction = 0.1f;
+  int seed = 1;
+  DenoiseMethod method = DenoiseMethod::Explicit;
+  LaplacianWeights weights = LaplacianWeights::Uniform;
+  float lambda = 0.5f;             // step size; explicit is stable up to about 1 (uniform)
+  int iterations = 10;
+  bool alongNormal = true;         // the homework: move along the normal only
+  bool clampCotangent = true;
+  float passBand = 0.1f;           // Taubin's k_pb
+  float sigmaR = 0.35f;            // bilateral: normal difference that still counts
+  int normalIterations = 20;       // bilateral: normal filtering passes
+  bool weld = true;                // smoothing on the welded surface (off: the seam bug)
+  int mapSizeIndex = 4;            // 64 << index: 64 .. 4096
+  BakeMethod bakeMethod = BakeMethod::Raster;
+  int checks = 32;
+  int gutter = 4;
+  MapFormat mapFormat = MapFormat::Unorm16;
+  bool bilinear = true;            // how the vertex shader samples the map
+  DenoiseShow show = DenoiseShow::Smoothed;
+  DenoiseView view = DenoiseView::Shaded;
+  float heatScale = 0.5f;          // mean edge lengths at full colour (error, seam gap); offsets: twice that
+};
+
+class DenoiseLab final : public LabWithParams<DenoiseParams> {
+ public:
+  DenoiseLab();
+  ~DenoiseLab() override;
+
+  std::string_view id() const override { return "denoise"; }
+  std::string_view title() const override { return "Denoising: Laplacian, bilateral, displacement bake"; }
+  std::string_view summary() const override;
+  std::string_view defaultScene() const override;
+  std::vector<SceneRecipe> scenes() const override;
+
+  void visitParams(ParamVisitor& v) override;
+  SceneNeeds needs() const override;
+  std::vector<ProgramSpec> allPrograms() const override;
+
+  std::string setup(LabContext& ctx) override;
+  void teardown() override;
+  void update(const Scene& scene, float dt) override;
+  void render(Frame& frame) override;
+  std::vector<ProgramRef> activePrograms() const override;
+  std::vector<std::string> warnings() const override;
+  std::vector<LabPanel> panels() const override;
+
+  ReferenceSpec reference() const override;
+  Metrics meshMetrics() const override;
+  std::vector<PlotSpec> plots() const override;
+  std::vector<StressCase> stressCases() const override;
+  std::vector<SweepAxis> standardSweep() const override;
+
+ private:
+  enum class Path { Plain, Map, Attribute };
+  DenoiseConfig config() const;
+  ProgramSpec programSpec(Path path) const;
+  void rebuildModel(const Scene& scene);
+  void upload(DenoiseResult result);
+  void uploadViewData();  // the positions and heat scalars the current show and view draw
+  void drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 viewport);
+  std::string saveMap();  // the bake action
+
+  ShaderLibrary* shaders_ = nullptr;
+  JobRunner* jobs_ = nullptr;
+  ProgramSlot programs_[3];  // by Path
+  int modelRevision_ = -1;   // scene revision the model was built from
+  std::string modelScene_;
+  std::shared_ptr<const DenoiseModel> model_;
+  std::string modelNote_;
+  std::optional<DenoiseConfig> requested_;  // what the job in flight (or the last one) computes
+  std::unique_ptr<DenoiseResult> result_;   // the last result delivered: drawn until the next arrives
+  GpuMesh plainMesh_, mapMesh_, attributeMesh_;
+  gl::Texture2D mapTexture_, mapPreview_;
+  std::string lastAction_;
+  // What the GPU meshes hold now: re-uploaded when the show or view changes, not per frame.
+  DenoiseShow uploadedShow_ = DenoiseShow::Smoothed;
+  DenoiseView uploadedView_ = DenoiseView::Shaded;
+};
+
+}  // namespace shadelab

@@ -1,0 +1,206 @@
+// The denoising lab against its truth, the clean mesh: metrics, what the panels show, what the
+// student is warned about, the standard sweep and the stress cases.
+#include <cmath>
+#include <cstdio>
+
+#include "labs/denoise/denoise_lab.h"
+
+namespace shadelab {
+namespace {
+
+std::string fixed(double v, int digits = 3) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::vector<std::string> errorRow(const char* what, const MeshError& e) {
+  return {what, fixed(e.angleDeg, 2), fixed(e.rmsDistance), fixed(e.maxDistance), fixed(e.volumeChangePct, 2)};
+}
+
+}  // namespace
+
+ReferenceSpec DenoiseLab::reference() const {
+  ReferenceSpec spec;
+  spec.kind = TruthKind::Mesh;
+  spec.truth = "clean mesh";
+  spec.description = "the clean mesh the noise was added to (or the published original), vertex for vertex and face "
+                     "for face; distances in mean edge lengths of the clean mesh";
+  spec.cheap = true;  // the metrics come with every result
+  return spec;
+}
+
+Metrics DenoiseLab::meshMetrics() const {
+  if (!result_) return {};
+  const DenoiseResult& r = *result_;
+  Metrics m = {{"angle_error_deg", r.smoothedError.angleDeg},
+               {"rms_distance", r.smoothedError.rmsDistance},
+               {"max_distance", r.smoothedError.maxDistance},
+               {"volume_change_pct", r.smoothedError.volumeChangePct},
+               {"noisy_angle_deg", r.noisyError.angleDeg},
+               {"attribute_angle_deg", r.attributeError.angleDeg},
+               {"solve_ms", r.solveMs}};
+  if (r.config.method == DenoiseMethod::Implicit) m.push_back({"factor_ms", r.factorMs});
+  if (r.config.method != DenoiseMethod::Bilateral) {
+    m.push_back({"grew_at", double(r.grewAt)});
+    m.push_back({"stability_limit", r.stabilityLimit});
+  }
+  if (r.map) {
+    m.push_back({"map_angle_deg", r.mappedError.angleDeg});
+    m.push_back({"bake_rms", r.bakeRms});
+    m.push_back({"bake_max", r.bakeMax});
+    m.push_back({"seam_gap_max", r.seamGapMax});
+    m.push_back({"bake_ms", r.bakeMs});
+  }
+  m.push_back({"attribute_gap_max", r.attributeGapMax});
+  return m;
+}
+
+std::vector<PlotSpec> DenoiseLab::plots() const {
+  return {{"angle_error_deg", "solve_ms"}, {"rms_distance", "solve_ms"}, {"bake_rms", "bake_ms"}};
+}
+
+std::vector<std::string> DenoiseLab::warnings() const {
+  std::vector<std::string> w;
+  if (!modelNote_.empty()) w.push_back(modelNote_);
+  if (!model_) {
+    w.push_back("nothing to denoise: the scene has no triangles");
+    return w;
+  }
+  const auto& p = params;
+  const bool laplacian = p.method != DenoiseMethod::Bilateral && p.method != DenoiseMethod::Implicit;
+  if (result_) {
+    for (auto& n : result_->notes) w.push_back(n);
+    if (laplacian && result_->stabilityLimit > 0 && p.lambda > result_->stabilityLimit && result_->grewAt == 0)
+      w.push_back("lambda is above the stable explicit step (about " + fixed(result_->stabilityLimit, 2) +
+                  "): expect the energy to grow with more iterations");
+  }
+  if ((p.show == DenoiseShow::Map || p.show == DenoiseShow::Compare) && !model_->hasUvs())
+    w.push_back("this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
+                "attribute path) instead");
+  if (p.input == NoiseSource::Published && model_->published.empty())
+    w.push_back("no published noisy twin for this mesh: the noise is generated (seed " + std::to_string(p.seed) + ")");
+  if (p.method == DenoiseMethod::Implicit && !p.alongNormal)
+    w.push_back("implicit smoothing moves all three coordinates; along_normal applies to explicit and Taubin only");
+  if (p.weights == LaplacianWeights::Cotangent && !p.clampCotangent)
+    w.push_back("negative cotangent weights are not clamped: updates are no longer convex combinations and may diverge");
+  if (!lastAction_.empty()) w.push_back(lastAction_);
+  return w;
+}
+
+std::vector<LabPanel> DenoiseLab::panels() const {
+  std::vector<LabPanel> out;
+  if (!model_) return out;
+  const MeshStatistics& s = model_->statistics;
+  LabPanel mesh{"Mesh", {}};
+  mesh.items.push_back(PanelTable{
+      {"", "count"},
+      {{"render vertices", std::to_string(s.renderVertices)},
+       {"positions (welded)", std::to_string(s.logicalVertices)},
+       {"seam positions (split by UV)", std::to_string(s.seamVertices)},
+       {"triangles", std::to_string(s.triangles)},
+       {"boundary edges", std::to_string(s.boundaryEdges)},
+       {"non-manifold edges", std::to_string(s.nonManifoldEdges)},
+       {"zero-area faces", std::to_string(s.zeroAreaFaces)},
+       {"isolated vertices", std::to_string(s.isolatedVertices)},
+       {"mean edge length", fixed(s.meanEdgeLength, 5)}}});
+  out.push_back(std::move(mesh));
+  if (!result_) return out;
+  const DenoiseResult& r = *result_;
+  LabPanel result{"Against the clean mesh", {}};
+  PanelTable errors{{"", "angle deg", "RMS (edges)", "max (edges)", "volume %"}, {}};
+  errors.rows.push_back(errorRow("noisy input", r.noisyError));
+  errors.rows.push_back(errorRow("smoothed", r.smoothedError));
+  errors.rows.push_back(errorRow("attribute path", r.attributeError));
+  if (r.map) errors.rows.push_back(errorRow("map path", r.mappedError));
+  result.items.push_back(std::move(errors));
+  PanelTable cost{{"", "value"}, {{"smoothing ms", fixed(r.solveMs, 1)}}};
+  if (r.config.method == DenoiseMethod::Implicit) cost.rows.push_back({"  of which factorisation ms", fixed(r.factorMs, 1)});
+  if (r.config.method != DenoiseMethod::Bilateral)
+    cost.rows.push_back({"stable explicit lambda (about)", fixed(r.stabilityLimit, 3)});
+  if (r.map) {
+    cost.rows.push_back({"bake ms", fixed(r.bakeMs, 1)});
+    cost.rows.push_back({"bake RMS / max (edges)", fixed(r.bakeRms, 4) + " / " + fixed(r.bakeMax, 4)});
+    cost.rows.push_back({"seam gap, map path (edges)", fixed(r.seamGapMax, 4)});
+  }
+  cost.rows.push_back({"seam gap, attribute path (edges)", fixed(r.attributeGapMax, 4)});
+  result.items.push_back(std::move(cost));
+  out.push_back(std::move(result));
+
+  LabPanel trace{"Convergence", {}};
+  if (!r.energy.empty()) {
+    PanelPlot plot{"smoothing energy per iteration", "iteration", "sum <delta, n>^2", true, {}, {}};
+    PanelSeries e{"energy", {}, {}};
+    for (size_t i = 0; i < r.energy.size(); ++i) {
+      e.x.push_back(float(i));
+      e.y.push_back(float(r.energy[i]));
+    }
+    plot.series.push_back(std::move(e));
+    if (r.grewAt > 0) plot.markX.push_back(float(r.grewAt));
+    trace.items.push_back(std::move(plot));
+    if (r.grewAt > 0) trace.items.push_back(PanelText{"The dashed line: the iteration where the energy grew."});
+  } else if (!r.normalChangeDeg.empty()) {
+    PanelPlot plot{"mean face-normal change per filtering pass", "pass", "degrees", true, {}, {}};
+    PanelSeries c{"change", {}, {}};
+    for (size_t i = 0; i < r.normalChangeDeg.size(); ++i) {
+      c.x.push_back(float(i + 1));
+      c.y.push_back(float(r.normalChangeDeg[i]));
+    }
+    plot.series.push_back(std::move(c));
+    trace.items.push_back(std::move(plot));
+  }
+  out.push_back(std::move(trace));
+
+  if (r.map && mapPreview_) {
+    LabPanel map{"Displacement map", {}};
+    map.items.push_back(PanelImage{&mapPreview_, {256, 256}, std::to_string(r.map->size.x) + "^2, offset = stored x " +
+                                                                 fixed(r.map->scale, 5) + " + " + fixed(r.map->bias, 5) +
+                                                                 "; grey = its own range"});
+    if (params.show == DenoiseShow::Compare)
+      map.items.push_back(PanelText{"Compare: left, the map path; middle, the attribute path; right, the smoothed mesh."});
+    out.push_back(std::move(map));
+  }
+  return out;
+}
+
+std::vector<SweepAxis> DenoiseLab::standardSweep() const {
+  // Each method over its main knob; lambda for the Laplacian ones (iterations fixed at 10).
+  return {{"method", {"explicit:lambda=0.1", "explicit:lambda=0.3", "explicit:lambda=0.6", "explicit:lambda=0.9",
+                      "taubin:lambda=0.3", "taubin:lambda=0.6", "implicit:lambda=0.3", "implicit:lambda=1",
+                      "implicit:lambda=3", "bilateral:sigma_r=0.2", "bilateral:sigma_r=0.35", "bilateral:sigma_r=0.6"}},
+          {"iterations", {"3", "10", "30"}}};
+}
+
+std::vector<StressCase> DenoiseLab::stressCases() const {
+  return {
+      {"explicit-lambda-2", {{"lambda", "2"}, {"iterations", "30"}, {"along_normal", "off"}}, "", "", "diverging"},
+      {"explicit-lambda-2-along-normal", {{"lambda", "2"}, {"iterations", "30"}}, "", "", "diverging"},
+      {"cotangent-beyond-its-limit", {{"weights", "cotangent"}, {"lambda", "1.25"}, {"iterations", "60"},
+                                      {"along_normal", "off"}}, "", "", "diverging"},
+      {"explicit-lambda-huge", {{"lambda", "100000"}, {"iterations", "50"}}, "", "", "stopped at iteration"},
+      {"implicit-1000x-limit", {{"method", "implicit"}, {"lambda", "1000"}, {"iterations", "20"}}, "", "", ""},
+      {"implicit-lambda-1e5-cotangent", {{"method", "implicit"}, {"weights", "cotangent"}, {"lambda", "100000"}}, "", "", ""},
+      {"taubin-unclamped-cotangent", {{"method", "taubin"}, {"weights", "cotangent"}, {"clamp_cotangent", "off"}}, "", "",
+       "not clamped"},
+      {"slivers-cotangent", {{"weights", "cotangent"}, {"input", "generated"}}, "denoise-degenerate", "", "were negative"},
+      {"slivers-unclamped", {{"weights", "cotangent"}, {"clamp_cotangent", "off"}, {"input", "generated"}},
+       "denoise-degenerate", "", "not clamped"},
+      {"slivers-implicit", {{"method", "implicit"}, {"weights", "cotangent"}, {"input", "generated"}}, "denoise-degenerate",
+       "", ""},
+      {"slivers-bilateral", {{"method", "bilateral"}, {"input", "generated"}}, "denoise-degenerate", "", ""},
+      {"noise-level-2", {{"input", "generated"}, {"noise_level", "2"}}, "", "", ""},
+      {"impulsive-everything", {{"input", "generated"}, {"noise", "impulsive"}, {"impulsive_fraction", "1"}}, "", "", ""},
+      {"no-noise", {{"input", "generated"}, {"noise_level", "0"}}, "", "", ""},
+      {"bilateral-sigma-tiny", {{"method", "bilateral"}, {"sigma_r", "0.02"}}, "", "", ""},
+      {"weld-off-cracks", {{"weld", "off"}, {"input", "generated"}, {"show", "attribute"}, {"view", "seam-gap"}},
+       "denoise-cube", "", "welding is off"},
+      {"map-4096-nearest", {{"input", "generated"}, {"map_size", "4096"}, {"bake", "nearest-exact"}, {"show", "map"}},
+       "denoise-cube", "", ""},
+      {"approx-one-check", {{"input", "generated"}, {"bake", "nearest-approx"}, {"checks", "1"}, {"show", "compare"}},
+       "denoise-cube", "", "not the nearest"},
+      {"map-without-uvs", {{"show", "map"}}, "denoise-sphere-no-uvs", "", "no UVs"},
+      {"empty-scene", {}, "empty", "", "nothing to denoise"},
+  };
+}
+
+}  // namespace shadelab

@@ -1,0 +1,230 @@
+#include "labs/denoise/denoise_pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace shadelab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+std::vector<glm::dvec3> toDouble(std::span<const glm::vec3> p) { return {p.begin(), p.end()}; }
+
+// For every render vertex, the widest distance between any two copies of its position (copies
+// share a logical vertex), in `unit`s. Zero where a position has one copy, or all agree.
+std::vector<float> copyGaps(const WeldedMesh& w, std::span<const glm::dvec3> positions, double unit, double& widest) {
+  std::vector<std::vector<uint32_t>> copies(w.vertexCount());
+  for (uint32_t v = 0; v < w.logicalOf.size(); ++v) copies[w.logicalOf[v]].push_back(v);
+  std::vector<float> gap(positions.size(), 0.0f);
+  widest = 0.0;
+  for (auto& c : copies) {
+    if (c.size() < 2) continue;
+    double g = 0.0;
+    for (size_t a = 0; a < c.size(); ++a)
+      for (size_t b = a + 1; b < c.size(); ++b) g = std::max(g, glm::length(positions[c[a]] - positions[c[b]]));
+    g /= unit;
+    widest = std::max(widest, g);
+    for (uint32_t v : c) gap[v] = float(g);
+  }
+  return gap;
+}
+
+std::vector<float> distances(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, double unit) {
+  std::vector<float> d(a.size());
+  for (size_t i = 0; i < a.size(); ++i) d[i] = float(glm::length(a[i] - b[i]) / unit);
+  return d;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
+}  // namespace
+
+bool DenoiseConfig::operator==(const DenoiseConfig& o) const {
+  auto smoothingEq = [](const SmoothingSettings& a, const SmoothingSettings& b) {
+    return a.method == b.method && a.weights == b.weights && a.lambda == b.lambda && a.iterations == b.iterations &&
+           a.alongNormal == b.alongNormal && a.clampNegative == b.clampNegative && a.passBand == b.passBand;
+  };
+  return publishedInput == o.publishedInput && noise.kind == o.noise.kind && noise.level == o.noise.level &&
+         noise.impulsiveFraction == o.noise.impulsiveFraction && noise.seed == o.noise.seed && method == o.method &&
+         smoothingEq(smoothing, o.smoothing) && bilateral.normalIterations == o.bilateral.normalIterations &&
+         bilateral.vertexIterations == o.bilateral.vertexIterations && bilateral.sigmaR == o.bilateral.sigmaR &&
+         bilateral.sigmaSScale == o.bilateral.sigmaSScale && weld == o.weld && bake.method == o.bake.method &&
+         bake.resolution == o.bake.resolution && bake.checks == o.bake.checks && bake.gutter == o.bake.gutter &&
+         bake.format == o.bake.format && bilinear == o.bilinear;
+}
+
+std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, const MeshData* published, std::string& error) {
+  if (clean.indices.size() < 3) {
+    error = "the scene has no triangles to denoise";
+    return nullptr;
+  }
+  auto m = std::make_shared<DenoiseModel>();
+  m->render.name = clean.name;
+  m->render.positions = clean.positions;
+  m->render.uvs = clean.uvs;
+  m->render.indices = clean.indices;
+  m->welded = weldByPosition(m->render);
+  m->weldedAdjacency = buildAdjacency(m->welded.vertexCount(), m->welded.indices);
+  m->renderAdjacency = buildAdjacency(m->render.positions.size(), m->render.indices);
+  m->clean = toDouble(m->welded.positions);
+  m->statistics = meshStatistics(m->render, m->welded, m->weldedAdjacency);
+  m->meanEdge = meanEdgeLengthOf(m->clean, m->welded.indices);
+  if (!(m->meanEdge > 0.0)) m->meanEdge = 1.0;
+  if (published) {
+    const WeldedMesh twin = weldByPosition(*published);
+    if (twin.indices != m->welded.indices) {
+      error = "the published noisy mesh does not share the clean mesh's faces; generated noise is used instead";
+    } else {
+      m->published = toDouble(twin.positions);
+    }
+  }
+  return m;
+}
+
+DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobContext* job) {
+  DenoiseResult r;
+  r.config = c;
+  const WeldedMesh& w = m.welded;
+  const size_t renderCount = m.render.positions.size();
+
+  // 1. The noisy input, per logical vertex: copies of a position always get the same noise.
+  if (job) job->stage(0.0f, 0.05f);
+  if (job) job->progress(0.0f, "adding noise");
+  auto t0 = Clock::now();
+  const bool published = c.publishedInput && !m.published.empty();
+  const std::vector<glm::dvec3> noisyLogical = published ? m.published : addNoise(m.clean, w.indices, c.noise);
+  r.noiseMs = msSince(t0);
+  if (c.publishedInput && m.published.empty()) r.notes.push_back("this mesh has no published noisy twin: generated noise is used");
+
+  // 2. The vertices smoothing works on: welded, or each render vertex on its own (the homework's bug).
+  std::vector<glm::dvec3> start;
+  std::span<const uint32_t> indices = c.weld ? std::span<const uint32_t>(w.indices) : std::span<const uint32_t>(m.render.indices);
+  const Adjacency& adjacency = c.weld ? m.weldedAdjacency : m.renderAdjacency;
+  if (c.weld) {
+    start = noisyLogical;
+  } else {
+    start.resize(renderCount);
+    for (size_t v = 0; v < renderCount; ++v) start[v] = noisyLogical[w.logicalOf[v]];
+  }
+  auto smoothVertex = [&](size_t renderVertex) { return c.weld ? w.logicalOf[renderVertex] : uint32_t(renderVertex); };
+
+  // 3. Smoothing.
+  if (job) job->stage(0.05f, 0.8f);
+  t0 = Clock::now();
+  std::vector<glm::dvec3> result;
+  if (c.method == DenoiseMethod::Bilateral) {
+    BilateralResult b = bilateralNormalFilter(start, indices, c.bilateral, job);
+    result = std::move(b.positions);
+    r.normalChangeDeg = std::move(b.normalChangeDeg);
+  } else {
+    SmoothingSettings s = c.smoothing;
+    s.method = c.method == DenoiseMethod::Explicit ? SmoothingMethod::Explicit
+               : c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin
+                                                   : SmoothingMethod::Implicit;
+    SmoothingResult sr = smooth(start, indices, adjacency, s, job);
+    if (!sr.error.empty()) r.notes.push_back(sr.error);
+    result = std::move(sr.positions);
+    r.energy = std::move(sr.energy);
+    r.grewAt = sr.grewAt;
+    r.stoppedAt = sr.stoppedAt;
+    r.factorMs = sr.factorMs;
+    r.weights = std::move(sr.weightsUsed);
+  }
+  r.solveMs = msSince(t0);
+  if (job && job->cancelled()) return r;
+  if (c.method != DenoiseMethod::Bilateral)
+    r.stabilityLimit = stabilityLimit(adjacency, edgeWeights(start, indices, adjacency, c.smoothing.weights, c.smoothing.clampNegative), 200);
+
+  // 4. Offsets along the noisy surface's normals, per render vertex.
+  if (job) job->stage(0.8f, 0.82f);
+  if (job) job->progress(0.0f, "offsets along the normals");
+  const std::vector<glm::dvec3> normals = vertexNormalsOf(start, indices);
+  std::vector<glm::dvec3> noisyR(renderCount), smoothedR(renderCount), attributeR(renderCount), cleanR(renderCount);
+  r.noisy.resize(renderCount);
+  r.smoothed.resize(renderCount);
+  r.noisyNormals.resize(renderCount);
+  r.offsets.resize(renderCount);
+  for (size_t v = 0; v < renderCount; ++v) {
+    const uint32_t s = smoothVertex(v);
+    const glm::dvec3 n = normals[s];
+    const double offset = glm::dot(result[s] - start[s], n);
+    noisyR[v] = start[s];
+    smoothedR[v] = result[s];
+    attributeR[v] = start[s] + n * offset;
+    cleanR[v] = m.clean[w.logicalOf[v]];
+    r.noisy[v] = glm::vec3(start[s]);
+    r.smoothed[v] = glm::vec3(result[s]);
+    r.noisyNormals[v] = glm::vec3(n);
+    r.offsets[v] = float(offset);
+  }
+  const std::span<const uint32_t> faces = m.render.indices;
+  r.noisyError = meshError(noisyR, cleanR, faces, m.meanEdge);
+  r.smoothedError = meshError(smoothedR, cleanR, faces, m.meanEdge);
+  r.attributeError = meshError(attributeR, cleanR, faces, m.meanEdge);
+  r.errorSmoothed = distances(smoothedR, cleanR, m.meanEdge);
+  r.errorAttribute = distances(attributeR, cleanR, m.meanEdge);
+  r.attributeGap = copyGaps(w, attributeR, m.meanEdge, r.attributeGapMax);
+
+  // 5. The map, and the offsets it gives back at every vertex's UV.
+  if (m.hasUvs()) {
+    if (job) job->stage(0.82f, 0.98f);
+    BakeResult b = bakeDisplacement(m.render.uvs, faces, r.offsets, c.bake, job);
+    if (job && job->cancelled()) return r;
+    if (!b.error.empty()) {
+      r.notes.push_back(b.error);
+    } else {
+      r.bakeMs = b.ms;
+      r.wrongNeighbours = b.wrongNeighbours;
+      r.readBack.resize(renderCount);
+      std::vector<glm::dvec3> mappedR(renderCount);
+      double sq = 0.0;
+      for (size_t v = 0; v < renderCount; ++v) {
+        r.readBack[v] = sampleDisplacement(b.map, m.render.uvs[v], c.bilinear);
+        mappedR[v] = noisyR[v] + glm::dvec3(r.noisyNormals[v]) * double(r.readBack[v]);
+        const double e = double(r.readBack[v] - r.offsets[v]) / m.meanEdge;
+        sq += e * e;
+        r.bakeMax = std::max(r.bakeMax, std::abs(e));
+      }
+      r.bakeRms = std::sqrt(sq / double(renderCount));
+      r.mappedError = meshError(mappedR, cleanR, faces, m.meanEdge);
+      r.errorMapped = distances(mappedR, cleanR, m.meanEdge);
+      r.seamGap = copyGaps(w, mappedR, m.meanEdge, r.seamGapMax);
+      r.map = std::move(b.map);
+    }
+  }
+
+  // 6. What the student should know.
+  if (r.grewAt > 0)
+    r.notes.push_back("diverging: the smoothing energy grew at iteration " + std::to_string(r.grewAt) + " (lambda " +
+                      number(c.smoothing.lambda) + " is beyond the stable explicit step, about " + number(r.stabilityLimit) +
+                      " for these weights)");
+  if (r.stoppedAt > 0)
+    r.notes.push_back("stopped at iteration " + std::to_string(r.stoppedAt) + " of " + std::to_string(c.smoothing.iterations) +
+                      ": the next step would have exploded; the last finite mesh is shown");
+  if (r.weights.negativeClamped > 0)
+    r.notes.push_back(std::to_string(r.weights.negativeClamped) + " cotangent weights were negative (obtuse angles) and " +
+                      "were clamped to 0");
+  if (r.weights.uniformFallbacks > 0)
+    r.notes.push_back(std::to_string(r.weights.uniformFallbacks) + " vertices had only zero-area neighbours: uniform weights for them");
+  if (!c.weld && m.statistics.seamVertices > 0)
+    r.notes.push_back("welding is off: the " + std::to_string(m.statistics.seamVertices) + " seam positions were smoothed as " +
+                      "separate boundary vertices, and their copies moved apart (cracks, widest " + number(r.attributeGapMax) +
+                      " mean edges)");
+  if (r.wrongNeighbours > 0)
+    r.notes.push_back("the approximate nearest-neighbour search gave " + std::to_string(r.wrongNeighbours) +
+                      " texels a vertex that is not the nearest (raise checks)");
+  if (job) {
+    job->stage(0.0f, 1.0f);
+    job->progress(1.0f, "done");
+  }
+  r.complete = true;
+  return r;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,39 @@
+#version 330 core
+// Denoising lab, vertex stage: the three ways a result reaches the screen.
+//   plain             the positions as they are (smoothed, noisy or clean, uploaded by the lab)
+//   DISPLACE_MAP      the noisy mesh, each vertex moved along its normal by the offset the
+//                     displacement map holds at its UV: p' = p + n (texel * scale + bias).
+//                     Copies of a position on a UV seam read different texels; if those differ,
+//                     the copies part and the mesh cracks.
+//   DISPLACE_ATTRIBUTE the same offsets per vertex, as an attribute: copies that share a
+//                     position share the offset (computed on the welded mesh), so nothing parts.
+// Read next: mesh.frag (flat shading and the heat views), labs/denoise/displacement_bake.h.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;    // the noisy surface's normal: the direction offsets move along
+layout(location = 2) in vec2 a_uv;
+layout(location = 4) in float a_offset;   // DISPLACE_ATTRIBUTE
+layout(location = 5) in float a_heat;     // the view's scalar: error, offset or seam gap
+
+uniform mat4 u_viewProj;
+#ifdef DISPLACE_MAP
+uniform sampler2D u_displacement;  // one channel; nearest or bilinear as the lab sets it
+uniform float u_bias;              // offset = stored * u_scale + u_bias
+uniform float u_scale;
+#endif
+
+out vec3 v_world;
+out float v_heat;
+
+void main() {
+  vec3 p = a_position;
+#if defined(DISPLACE_MAP)
+  // No derivatives in a vertex shader: level 0, explicitly.
+  float stored = textureLod(u_displacement, a_uv, 0.0).r;
+  p += a_normal * (stored * u_scale + u_bias);
+#elif defined(DISPLACE_ATTRIBUTE)
+  p += a_normal * a_offset;
+#endif
+  v_world = p;
+  v_heat = a_heat;
+  gl_Position = u_viewProj * vec4(p, 1.0);
+}
