@@ -351,13 +351,19 @@ void DenoiseLab::render(Frame& frame) {
   if ((show == DenoiseShow::Map) && !uvs) show = DenoiseShow::Attribute;  // warnings() says why
   if (show == DenoiseShow::Compare) {
     auto pass = frame.pass(uvs ? "draw: map | attribute | smoothed" : "draw: attribute | smoothed");
-    // Side by side, 4 px apart: map | attribute | smoothed (the panel text names them).
-    const int panels = uvs ? 3 : 2, gap = 4, width = (size.x - gap * (panels - 1)) / panels;
+    // Side by side in a wide frame, stacked in a tall one, 4 px apart: map, attribute, smoothed
+    // (left to right, or top to bottom; the panel text names them).
+    const int panels = uvs ? 3 : 2, gap = 4;
+    const bool columns = size.x >= size.y;
+    const int along = columns ? size.x : size.y, cell = (along - gap * (panels - 1)) / panels;
+    auto viewport = [&](int k) {
+      const int start = k * (cell + gap);
+      return columns ? glm::ivec4(start, 0, cell, size.y) : glm::ivec4(0, size.y - start - cell, size.x, cell);
+    };
     int k = 0;
-    if (uvs) drawPanel(frame, Path::Map, mapMesh_, {0, 0, width, size.y}), ++k;
-    drawPanel(frame, Path::Attribute, attributeMesh_, {k * (width + gap), 0, width, size.y});
-    ++k;
-    drawPanel(frame, Path::Plain, plainMesh_, {k * (width + gap), 0, width, size.y});
+    if (uvs) drawPanel(frame, Path::Map, mapMesh_, viewport(k++));
+    drawPanel(frame, Path::Attribute, attributeMesh_, viewport(k++));
+    drawPanel(frame, Path::Plain, plainMesh_, viewport(k));
     glViewport(0, 0, size.x, size.y);
     return;
   }

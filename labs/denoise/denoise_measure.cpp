@@ -78,8 +78,6 @@ std::vector<std::string> DenoiseLab::warnings() const {
   if ((p.show == DenoiseShow::Map || p.show == DenoiseShow::Compare) && !model_->hasUvs())
     w.push_back("this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
                 "attribute path) instead");
-  if (p.input == NoiseSource::Published && model_->published.empty())
-    w.push_back("no published noisy twin for this mesh: the noise is generated (seed " + std::to_string(p.seed) + ")");
   if (p.method == DenoiseMethod::Implicit && !p.alongNormal)
     w.push_back("implicit smoothing moves all three coordinates; along_normal applies to explicit and Taubin only");
   if (p.weights == LaplacianWeights::Cotangent && !p.clampCotangent)
@@ -97,7 +95,7 @@ std::vector<LabPanel> DenoiseLab::panels() const {
       {"", "count"},
       {{"render vertices", std::to_string(s.renderVertices)},
        {"positions (welded)", std::to_string(s.logicalVertices)},
-       {"seam positions (split by UV)", std::to_string(s.seamVertices)},
+       {"seam positions", std::to_string(s.seamVertices)},
        {"triangles", std::to_string(s.triangles)},
        {"boundary edges", std::to_string(s.boundaryEdges)},
        {"non-manifold edges", std::to_string(s.nonManifoldEdges)},
@@ -108,7 +106,14 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   if (!result_) return out;
   const DenoiseResult& r = *result_;
   LabPanel result{"Against the clean mesh", {}};
-  PanelTable errors{{"", "angle deg", "RMS (edges)", "max (edges)", "volume %"}, {}};
+  const bool published = r.config.publishedInput && !model_->published.empty();
+  result.items.push_back(PanelText{
+      (published ? std::string("Input: the published noisy twin. ")
+                 : "Input: generated " + std::string(r.config.noise.kind == NoiseKind::Gaussian ? "Gaussian" : "impulsive") +
+                       " noise, level " + fixed(r.config.noise.level, 2) + ", seed " + std::to_string(r.config.noise.seed) +
+                       (r.config.publishedInput ? " (this mesh has no published twin). " : ". ")) +
+      "Angles in degrees; distances in mean edge lengths of the clean mesh."});
+  PanelTable errors{{"", "angle", "RMS", "max", "volume %"}, {}};
   errors.rows.push_back(errorRow("noisy input", r.noisyError));
   errors.rows.push_back(errorRow("smoothed", r.smoothedError));
   errors.rows.push_back(errorRow("attribute path", r.attributeError));
@@ -157,7 +162,8 @@ std::vector<LabPanel> DenoiseLab::panels() const {
                                                                  fixed(r.map->scale, 5) + " + " + fixed(r.map->bias, 5) +
                                                                  "; grey = its own range"});
     if (params.show == DenoiseShow::Compare)
-      map.items.push_back(PanelText{"Compare: left, the map path; middle, the attribute path; right, the smoothed mesh."});
+      map.items.push_back(PanelText{"Compare: the map path, the attribute path, the smoothed mesh (left to right in a wide "
+                                    "view, top to bottom in a tall one)."});
     out.push_back(std::move(map));
   }
   return out;
@@ -178,6 +184,8 @@ std::vector<StressCase> DenoiseLab::stressCases() const {
       {"cotangent-beyond-its-limit", {{"weights", "cotangent"}, {"lambda", "1.25"}, {"iterations", "60"},
                                       {"along_normal", "off"}}, "", "", "diverging"},
       {"explicit-lambda-huge", {{"lambda", "100000"}, {"iterations", "50"}}, "", "", "stopped at iteration"},
+      {"explicit-lambda-1.5-runs-away", {{"lambda", "1.5"}, {"iterations", "200"}, {"along_normal", "off"}}, "", "",
+       "stopped at iteration"},
       {"implicit-1000x-limit", {{"method", "implicit"}, {"lambda", "1000"}, {"iterations", "20"}}, "", "", ""},
       {"implicit-lambda-1e5-cotangent", {{"method", "implicit"}, {"weights", "cotangent"}, {"lambda", "100000"}}, "", "", ""},
       {"taubin-unclamped-cotangent", {{"method", "taubin"}, {"weights", "cotangent"}, {"clamp_cotangent", "off"}}, "", "",

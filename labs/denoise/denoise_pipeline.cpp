@@ -100,7 +100,6 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   const bool published = c.publishedInput && !m.published.empty();
   const std::vector<glm::dvec3> noisyLogical = published ? m.published : addNoise(m.clean, w.indices, c.noise);
   r.noiseMs = msSince(t0);
-  if (c.publishedInput && m.published.empty()) r.notes.push_back("this mesh has no published noisy twin: generated noise is used");
 
   // 2. The vertices smoothing works on: welded, or each render vertex on its own (the homework's bug).
   std::vector<glm::dvec3> start;
@@ -206,7 +205,7 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
                       " for these weights)");
   if (r.stoppedAt > 0)
     r.notes.push_back("stopped at iteration " + std::to_string(r.stoppedAt) + " of " + std::to_string(c.smoothing.iterations) +
-                      ": the next step would have exploded; the last finite mesh is shown");
+                      ": the energy had grown to 100 times its start (or the next step was not finite); that mesh is shown");
   if (r.weights.negativeClamped > 0)
     r.notes.push_back(std::to_string(r.weights.negativeClamped) + " cotangent weights were negative (obtuse angles) and " +
                       "were clamped to 0");

@@ -12,6 +12,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
+constexpr double kDivergedEnergy = 100.0;
+
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Where j sits in i's sorted ring, or -1.
@@ -141,7 +143,9 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
     const double e = measure(w, delta, normals);
     r.energy.push_back(e);
     if (it > 0 && r.grewAt == 0 && e > r.energy[size_t(it) - 1] * (1.0 + 1e-9)) r.grewAt = it;
-    if (!(e <= 1e12 * std::max(r.energy.front(), 1e-300))) {  // exploding (or NaN): stop here
+    // Diverged for good (or NaN): stop with this mesh, spiky but bounded, rather than draw an
+    // explosion. 100x the starting energy is about 10x the noise's amplitude.
+    if (!(e <= kDivergedEnergy * std::max(r.energy.front(), 1e-300))) {
       r.stoppedAt = it;
       return;
     }

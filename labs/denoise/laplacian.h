@@ -73,8 +73,8 @@ struct SmoothingResult {
   std::string error;           // a solver failure, in one line
 };
 
-// Runs `settings` from `start`. A non-finite or exploding iteration (energy 1e12 times the first)
-// is not applied: the result keeps the last finite state and says where it stopped. With a `job`,
+// Runs `settings` from `start`. Once the energy reaches 100 times its start (divergence beyond
+// doubt: spikes about 10x the noise) or a step would not be finite, it stops there and says where. With a `job`,
 // progress per iteration and early return when cancelled.
 SmoothingResult smooth(std::span<const glm::dvec3> start, std::span<const uint32_t> indices, const Adjacency& adjacency,
                        const SmoothingSettings& settings, JobContext* job = nullptr);
