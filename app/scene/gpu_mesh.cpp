@@ -63,7 +63,9 @@ bool GpuMesh::setScalars(GLuint location, std::span<const float> values) {
 
 void GpuMesh::draw(Primitive primitive) const {
   glBindVertexArray(vao_.get());
-  if (primitive == Primitive::Patches) {
+  if (primitive == Primitive::Points) {
+    glDrawArrays(GL_POINTS, 0, GLsizei(vertexCount_));
+  } else if (primitive == Primitive::Patches) {
     glPatchParameteri(GL_PATCH_VERTICES, 3);
     glDrawElements(GL_PATCHES, indexCount_, GL_UNSIGNED_INT, nullptr);
   } else {

@@ -20,6 +20,7 @@ enum AttributeLocation : GLuint { kPosition = 0, kNormal = 1, kUv = 2, kTangent 
 enum class Primitive {
   Triangles,
   Patches,  // three-vertex patches for a tessellation control stage
+  Points,   // every vertex once, no indices (point views, transform-feedback read-backs)
 };
 
 class GpuMesh {

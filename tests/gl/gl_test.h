@@ -1,6 +1,9 @@
 #pragma once
 #include <filesystem>
 
+#include <functional>
+#include <vector>
+
 #include "context/gl_context.h"
 #include "host/lab_host.h"
 
@@ -17,5 +20,12 @@ inline std::filesystem::path testOutput(const std::string& name) {
   std::filesystem::create_directories(dir);
   return dir / name;
 }
+
+// Runs the vertex stage `relPath` (built-in shaders, with `defines`) over every vertex of `mesh`
+// as points and returns the vec3 varying `varying` it wrote, per vertex, by transform feedback:
+// what a displacement shader really did, to compare with the CPU's account of it.
+// `uniforms` sets the program's uniforms (the program is bound when it runs).
+std::vector<glm::vec3> captureVertexOutput(const std::string& relPath, const Defines& defines, const char* varying,
+                                           const GpuMesh& mesh, const std::function<void(GLuint)>& uniforms);
 
 }  // namespace shadelab::test
