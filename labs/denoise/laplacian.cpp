@@ -99,30 +99,46 @@ EdgeWeights edgeWeights(std::span<const glm::dvec3> p, std::span<const uint32_t>
   return w;
 }
 
-std::vector<glm::dvec3> umbrella(std::span<const glm::dvec3> p, const Adjacency& a, const EdgeWeights& w) {
-  std::vector<glm::dvec3> delta(p.size(), glm::dvec3(0.0));
+namespace {
+
+// delta into `delta` (resized, reused across iterations). Uniform weights skip the multiplies.
+void umbrellaInto(std::span<const glm::dvec3> p, const Adjacency& a, const EdgeWeights& w, bool uniform,
+                  std::vector<glm::dvec3>& delta) {
+  delta.resize(p.size());
   for (size_t v = 0; v < p.size(); ++v) {
-    if (a.offsets[v] == a.offsets[v + 1]) continue;  // isolated: stays where it is
-    glm::dvec3 mean(0.0);
-    for (uint32_t k = a.offsets[v]; k < a.offsets[v + 1]; ++k) mean += w.weight[k] * p[a.ring[k]];
-    delta[v] = p[v] - mean / w.rowSum[v];
+    const uint32_t begin = a.offsets[v], end = a.offsets[v + 1];
+    if (begin == end) {  // isolated: stays where it is
+      delta[v] = glm::dvec3(0.0);
+      continue;
+    }
+    glm::dvec3 sum(0.0);
+    if (uniform)
+      for (uint32_t k = begin; k < end; ++k) sum += p[a.ring[k]];
+    else
+      for (uint32_t k = begin; k < end; ++k) sum += w.weight[k] * p[a.ring[k]];
+    delta[v] = p[v] - sum / w.rowSum[v];
   }
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> umbrella(std::span<const glm::dvec3> p, const Adjacency& a, const EdgeWeights& w) {
+  std::vector<glm::dvec3> delta;
+  umbrellaInto(p, a, w, false, delta);
   return delta;
 }
 
 namespace {
 
-// One explicit step of size `step` (negative for Taubin's mu). Returns false, changing nothing,
-// when the step would leave a non-finite position.
+// One explicit (Jacobi) step of size `step` (negative for Taubin's mu), in place: every delta was
+// computed from the old positions already. Returns false, changing nothing, when the step would
+// leave a non-finite position.
 bool explicitStep(std::vector<glm::dvec3>& p, std::span<const glm::dvec3> delta, const std::vector<glm::dvec3>* normals,
                   double step) {
-  std::vector<glm::dvec3> next(p.size());
-  for (size_t i = 0; i < p.size(); ++i) {
-    const glm::dvec3 move = normals ? glm::dot(delta[i], (*normals)[i]) * (*normals)[i] : delta[i];
-    next[i] = p[i] - step * move;
-    if (!finite(next[i])) return false;
-  }
-  p = std::move(next);
+  auto move = [&](size_t i) { return normals ? glm::dot(delta[i], (*normals)[i]) * (*normals)[i] : delta[i]; };
+  for (size_t i = 0; i < p.size(); ++i)
+    if (!finite(p[i] - step * move(i))) return false;
+  for (size_t i = 0; i < p.size(); ++i) p[i] -= step * move(i);
   return true;
 }
 
@@ -131,16 +147,19 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
   std::vector<glm::dvec3>& p = r.positions;
   const bool cot = s.weights == LaplacianWeights::Cotangent;
   const double mu = s.method == SmoothingMethod::Taubin ? 1.0 / (s.passBand - 1.0 / s.lambda) : 0.0;
-  auto measure = [&](EdgeWeights& w, std::vector<glm::dvec3>& delta, std::vector<glm::dvec3>& normals) {
-    if (cot) w = edgeWeights(p, idx, a, s.weights, s.clampNegative);  // cotangents follow the geometry
-    delta = umbrella(p, a, w);
+  // Cotangent weights follow the geometry, so they are recomputed every step; uniform ones are
+  // the ones smooth() made, used in place.
+  EdgeWeights cotWeights;
+  auto measure = [&](std::vector<glm::dvec3>& delta, std::vector<glm::dvec3>& normals) {
+    if (cot) cotWeights = edgeWeights(p, idx, a, s.weights, s.clampNegative);
+    const EdgeWeights& w = cot ? cotWeights : r.weightsUsed;
+    umbrellaInto(p, a, w, !cot && w.uniformFallbacks == 0, delta);
     if (s.alongNormal) normals = normalsOf(p, idx);
     return energyOf(delta, s.alongNormal ? &normals : nullptr);
   };
-  EdgeWeights w = r.weightsUsed;
   std::vector<glm::dvec3> delta, normals;
   for (int it = 0; it < s.iterations; ++it) {
-    const double e = measure(w, delta, normals);
+    const double e = measure(delta, normals);
     r.energy.push_back(e);
     if (it > 0 && r.grewAt == 0 && e > r.energy[size_t(it) - 1] * (1.0 + 1e-9)) r.grewAt = it;
     // Diverged for good (or NaN): stop with this mesh, spiky but bounded, rather than draw an
@@ -154,7 +173,7 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
       return;
     bool ok = explicitStep(p, delta, s.alongNormal ? &normals : nullptr, s.lambda);
     if (ok && s.method == SmoothingMethod::Taubin) {
-      measure(w, delta, normals);
+      measure(delta, normals);
       ok = explicitStep(p, delta, s.alongNormal ? &normals : nullptr, mu);
     }
     if (!ok) {
@@ -162,7 +181,7 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
       return;
     }
   }
-  const double last = measure(w, delta, normals);
+  const double last = measure(delta, normals);
   r.energy.push_back(last);
   if (r.grewAt == 0 && r.energy.size() >= 2 && last > r.energy[r.energy.size() - 2] * (1.0 + 1e-9))
     r.grewAt = int(r.energy.size()) - 1;
