@@ -6,6 +6,7 @@
 // BM_CompileProgram: the compile + link part of that, for one program.
 // BM_Frame/<mode>: one 1280x720 frame of the shading lab's default scene, per shading mode.
 // BM_ShadowFilter: the shadows lab per light type, filter and PCF kernel (below).
+// BM_DenoiseFrame: the denoising lab's frame, idle and while a job runs (below).
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
@@ -102,6 +103,37 @@ BENCHMARK(BM_ShadowFilter)
     ->ArgsProduct({{0, 2}, {0, 1, 3, 4}, {3}})
     ->ArgsProduct({{0, 2}, {2}, {3, 5, 9, 15}})
     ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+
+// BM_DenoiseFrame/<busy>: the wall time of one window-sized frame of the denoising lab on the Bunny
+// (69,451 triangles), idle (0) and while a smoothing job runs on the worker (1). The frame is what
+// the UI thread pays: deliveries, uploads and the draw. The bound: busy within 2x idle.
+void BM_DenoiseFrame(benchmark::State& state) {
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
+  host.selectLab("denoise");
+  if (!host.selectScene("bunny-0.2").empty()) {
+    state.SkipWithError("bunny-0.2 needs ../shared/data");
+    return;
+  }
+  host.set("denoise.method=bilateral");  // about 0.5 s per job on the Bunny: long enough to overlap frames
+  host.settle();
+  const glm::ivec2 size(900, 780);
+  for (int i = 0; i < 3; ++i) host.renderFrame(size);
+  const bool busy = state.range(0) == 1;
+  int jobs = 0;
+  for (auto _ : state) {
+    if (busy && !host.jobs().busy()) {
+      host.runAction("denoise.add_noise");  // new noise, a new job
+      host.renderFrame(size);               // submits it (untimed)
+      ++jobs;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    host.renderFrame(size);
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  host.jobs().cancelAll();
+  state.SetLabel(busy ? "while a job runs (" + std::to_string(jobs) + " jobs)" : "idle");
+}
+BENCHMARK(BM_DenoiseFrame)->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(40);
 
 }  // namespace
 
