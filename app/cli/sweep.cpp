@@ -125,7 +125,9 @@ int runSweep(const Options& o) {
     SweepRow row;
     row.params = m->settings;
     row.label = label;
-    row.group = label.substr(0, label.find(' '));
+    // Colour by the first axis's value without its linked settings: "method=explicit", not
+    // "method=explicit:lambda=0.1" (the point's tooltip names everything).
+    row.group = label.substr(0, std::min(label.find(' '), label.find(':')));
     row.truth = m->truth;
     row.values = m->values;
     row.values.push_back({"non_finite", double(countNonFinite(m->image.rgba.empty() ? shown : m->image))});
