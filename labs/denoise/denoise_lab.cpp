@@ -96,9 +96,11 @@ void DenoiseLab::visitParams(ParamVisitor& v) {
                "position split by UV seams are smoothed apart, the homework's crack."}, p.weld);
   v.section("Displacement map");
   v.choiceParam({"map_size", "Map size", "texels", "Resolution of the baked map (square)."}, p.mapSizeIndex, kMapSizes);
-  v.enumParam({"bake", "Bake", "", "nearest-exact: each texel takes its nearest vertex's offset (FLANN kd-tree); "
-               "nearest-approx: FLANN's randomised trees with a budget of checks; raster: interpolated inside each UV "
-               "triangle, then dilated into the gutter."}, p.bakeMethod, kBakeMethods);
+  v.enumParam({"bake", "Bake", "", "nearest-exact: each texel takes its nearest vertex's offset (FLANN kd-tree): exact "
+               "at the vertices, where a vertex shader reads it; nearest-approx: FLANN's randomised trees with a budget "
+               "of checks; raster: interpolated inside each UV triangle and dilated into the gutter: smooth between "
+               "vertices (what tessellation or a per-fragment read wants), but a bilinear read at a vertex blends it "
+               "with its neighbours."}, p.bakeMethod, kBakeMethods);
   v.intParam({"checks", "FLANN checks", "", "nearest-approx: leaves visited per query. Fewer: faster, more often "
               "not the nearest."}, p.checks, 1, 512);
   v.intParam({"gutter", "Gutter", "texels", "raster: texels of dilation around each UV chart, so bilinear lookups "
@@ -252,7 +254,7 @@ void DenoiseLab::upload(DenoiseResult r) {
     const std::vector<uint8_t> texels = encodeMap(m, false);
     gl::SamplerState s;
     s.minFilter = s.magFilter = GL_NEAREST;  // the lookup filter is set per draw (bilinear or not)
-    s.wrapS = s.wrapT = GL_CLAMP_TO_EDGE;
+    s.wrapS = s.wrapT = m.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;  // as the bake and the read-back
     const GLenum internal = m.format == MapFormat::Unorm8 ? GL_R8 : m.format == MapFormat::Unorm16 ? GL_R16 : GL_R32F;
     const GLenum type = m.format == MapFormat::Unorm8 ? GL_UNSIGNED_BYTE : m.format == MapFormat::Unorm16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
     mapTexture_ = gl::Texture2D::fromData(m.size, internal, GL_RED, type, texels.data(), s);

@@ -160,7 +160,9 @@ std::vector<LabPanel> DenoiseLab::panels() const {
     LabPanel map{"Displacement map", {}};
     map.items.push_back(PanelImage{&mapPreview_, {256, 256}, std::to_string(r.map->size.x) + "^2, offset = stored x " +
                                                                  fixed(r.map->scale, 5) + " + " + fixed(r.map->bias, 5) +
-                                                                 "; grey = its own range"});
+                                                                 "; grey = its own range; " +
+                                                                 (r.map->repeat ? "repeats (the UVs leave [0, 1])"
+                                                                                : "clamps (the UVs stay in [0, 1])")});
     if (params.show == DenoiseShow::Compare)
       map.items.push_back(PanelText{"Compare: the map path, the attribute path, the smoothed mesh (left to right in a wide "
                                     "view, top to bottom in a tall one)."});

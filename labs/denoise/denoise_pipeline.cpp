@@ -173,13 +173,16 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   // 5. The map, and the offsets it gives back at every vertex's UV.
   if (m.hasUvs()) {
     if (job) job->stage(0.82f, 0.98f);
-    BakeResult b = bakeDisplacement(m.render.uvs, faces, r.offsets, c.bake, job);
+    BakeSettings bake = c.bake;
+    bake.repeat = uvsLeaveUnitSquare(m.render.uvs);
+    BakeResult b = bakeDisplacement(m.render.uvs, faces, r.offsets, bake, job);
     if (job && job->cancelled()) return r;
     if (!b.error.empty()) {
       r.notes.push_back(b.error);
     } else {
       r.bakeMs = b.ms;
       r.wrongNeighbours = b.wrongNeighbours;
+      r.overlappingTexels = b.overlapping;
       r.readBack.resize(renderCount);
       std::vector<glm::dvec3> mappedR(renderCount);
       double sq = 0.0;
@@ -215,6 +218,10 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
     r.notes.push_back("welding is off: the " + std::to_string(m.statistics.seamVertices) + " seam positions were smoothed as " +
                       "separate boundary vertices, and their copies moved apart (cracks, widest " + number(r.attributeGapMax) +
                       " mean edges)");
+  if (r.overlappingTexels > 0 && r.map)
+    r.notes.push_back("the UV layout overlaps: " + std::to_string(r.overlappingTexels) + " texels (" +
+                      number(100.0 * double(r.overlappingTexels) / double(std::max<size_t>(r.map->covered, 1))) +
+                      "% of the covered ones) lie in two triangles, and one map cannot hold both offsets there");
   if (r.wrongNeighbours > 0)
     r.notes.push_back("the approximate nearest-neighbour search gave " + std::to_string(r.wrongNeighbours) +
                       " texels a vertex that is not the nearest (raise checks)");

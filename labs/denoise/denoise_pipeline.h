@@ -70,6 +70,7 @@ struct DenoiseResult {
   // The map against the offsets it stores, in mean edges: what the bake itself loses.
   double bakeRms = 0, bakeMax = 0, seamGapMax = 0, attributeGapMax = 0;
   size_t wrongNeighbours = 0;
+  size_t overlappingTexels = 0;
   // Smoothing's story: energy per iteration, where it grew or stopped, the explicit limit.
   std::vector<double> energy;
   std::vector<double> normalChangeDeg;  // bilateral: per normal iteration

@@ -66,9 +66,17 @@ bool nearestTexels(const Index& index, int res, std::vector<int>& nearest, const
 
 }  // namespace
 
+bool uvsLeaveUnitSquare(std::span<const glm::vec2> uvs) {
+  const float eps = 1e-6f;
+  return std::any_of(uvs.begin(), uvs.end(), [&](const glm::vec2& uv) {
+    return uv.x < -eps || uv.y < -eps || uv.x > 1.0f + eps || uv.y > 1.0f + eps;
+  });
+}
+
 BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint32_t> idx, std::span<const float> offsets,
                             const BakeSettings& s, JobContext* job) {
   BakeResult r;
+  r.map.repeat = s.repeat;
   const auto start = Clock::now();
   const int res = std::clamp(s.resolution, 1, 16384);
   r.map.size = {res, res};
@@ -81,25 +89,38 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
   if (s.method == BakeMethod::Raster) {
     std::vector<uint8_t> filled(values.size(), 0);
     for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-      // Texel centres sit at integers in this space: x = u * res - 0.5.
-      glm::vec2 q[3];
-      for (int k = 0; k < 3; ++k) q[k] = uvs[idx[t + size_t(k)]] * float(res) - 0.5f;
-      const float area = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
-      if (!(std::abs(area) > 1e-12f)) continue;  // zero area in UV space: covers no texel centre
-      const int x0 = std::max(0, int(std::ceil(std::min({q[0].x, q[1].x, q[2].x}))));
-      const int x1 = std::min(res - 1, int(std::floor(std::max({q[0].x, q[1].x, q[2].x}))));
-      const int y0 = std::max(0, int(std::ceil(std::min({q[0].y, q[1].y, q[2].y}))));
-      const int y1 = std::min(res - 1, int(std::floor(std::max({q[0].y, q[1].y, q[2].y}))));
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          const glm::vec2 p{float(x), float(y)};
-          const float b1 = ((p.x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (p.y - q[0].y)) / area;
-          const float b2 = ((q[1].x - q[0].x) * (p.y - q[0].y) - (p.x - q[0].x) * (q[1].y - q[0].y)) / area;
-          const float b0 = 1.0f - b1 - b2;
-          if (b0 < -1e-5f || b1 < -1e-5f || b2 < -1e-5f) continue;
-          const size_t i = size_t(y) * size_t(res) + size_t(x);
-          values[i] = b0 * offsets[idx[t]] + b1 * offsets[idx[t + 1]] + b2 * offsets[idx[t + 2]];
-          filled[i] = 1;
+      glm::vec2 uv[3];
+      for (int k = 0; k < 3; ++k) uv[k] = uvs[idx[t + size_t(k)]];
+      const glm::vec2 lo = glm::min(uv[0], glm::min(uv[1], uv[2])), hi = glm::max(uv[0], glm::max(uv[1], uv[2]));
+      if (!std::isfinite(lo.x + lo.y + hi.x + hi.y)) continue;
+      // A repeating map: draw the triangle at every whole-number shift that lands in [0, 1)^2.
+      const int sy0 = s.repeat ? -int(std::floor(hi.y)) : 0, sy1 = s.repeat ? -int(std::floor(lo.y)) : 0;
+      const int sx0 = s.repeat ? -int(std::floor(hi.x)) : 0, sx1 = s.repeat ? -int(std::floor(lo.x)) : 0;
+      for (int sy = sy0; sy <= sy1; ++sy)
+        for (int sx = sx0; sx <= sx1; ++sx) {
+          // Texel centres sit at integers in this space: x = u * res - 0.5.
+          glm::vec2 q[3];
+          for (int k = 0; k < 3; ++k) q[k] = (uv[k] + glm::vec2(float(sx), float(sy))) * float(res) - 0.5f;
+          const float area = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (q[1].y - q[0].y);
+          if (!(std::abs(area) > 1e-12f)) continue;  // zero area in UV space: covers no texel centre
+          const int x0 = std::max(0, int(std::ceil(std::min({q[0].x, q[1].x, q[2].x}))));
+          const int x1 = std::min(res - 1, int(std::floor(std::max({q[0].x, q[1].x, q[2].x}))));
+          const int y0 = std::max(0, int(std::ceil(std::min({q[0].y, q[1].y, q[2].y}))));
+          const int y1 = std::min(res - 1, int(std::floor(std::max({q[0].y, q[1].y, q[2].y}))));
+          for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+              const glm::vec2 p{float(x), float(y)};
+              const float b1 = ((p.x - q[0].x) * (q[2].y - q[0].y) - (q[2].x - q[0].x) * (p.y - q[0].y)) / area;
+              const float b2 = ((q[1].x - q[0].x) * (p.y - q[0].y) - (p.x - q[0].x) * (q[1].y - q[0].y)) / area;
+              const float b0 = 1.0f - b1 - b2;
+              if (b0 < -1e-5f || b1 < -1e-5f || b2 < -1e-5f) continue;
+              const size_t i = size_t(y) * size_t(res) + size_t(x);
+              // A texel already claimed by another triangle (well inside this one, not on a shared
+              // edge): the layout overlaps here, and the last triangle drawn wins.
+              if (filled[i] && b0 > 1e-3f && b1 > 1e-3f && b2 > 1e-3f) ++r.overlapping;
+              values[i] = b0 * offsets[idx[t]] + b1 * offsets[idx[t + 1]] + b2 * offsets[idx[t + 2]];
+              filled[i] = 1;
+            }
         }
       if (job && t % 3000 == 0 && !job->progress(0.7f * float(t) / float(idx.size()), "rasterising UV triangles"))
         return r;
@@ -117,8 +138,13 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
           int count = 0;
           for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-              const int nx = x + dx, ny = y + dy;
-              if (nx < 0 || ny < 0 || nx >= res || ny >= res) continue;
+              int nx = x + dx, ny = y + dy;
+              if (s.repeat) {
+                nx = (nx + res) % res;
+                ny = (ny + res) % res;
+              } else if (nx < 0 || ny < 0 || nx >= res || ny >= res) {
+                continue;
+              }
               const size_t j = size_t(ny) * size_t(res) + size_t(nx);
               if (filled[j]) {
                 sum += values[j];
@@ -135,12 +161,29 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
       if (job && !job->progress(0.7f + 0.2f * float(pass + 1) / float(std::max(s.gutter, 1)), "gutter dilation")) return r;
     }
   } else {
-    std::vector<float> points(uvs.size() * 2);
+    // Every vertex at its UV; for a repeating map wrapped into [0, 1)^2, with ghost copies of those
+    // near a border on the far side of it, so a texel finds its nearest vertex across the wrap too.
+    std::vector<float> points;
+    std::vector<uint32_t> owner;
+    const float margin = 0.25f;
+    const int ghosts = s.repeat ? 1 : 0;
     for (size_t v = 0; v < uvs.size(); ++v) {
-      points[2 * v] = uvs[v].x;
-      points[2 * v + 1] = uvs[v].y;
+      const glm::vec2 w = s.repeat ? uvs[v] - glm::floor(uvs[v]) : uvs[v];
+      if (!std::isfinite(w.x + w.y)) continue;
+      for (int dy = -ghosts; dy <= ghosts; ++dy)
+        for (int dx = -ghosts; dx <= ghosts; ++dx) {
+          const glm::vec2 g = w + glm::vec2(float(dx), float(dy));
+          if (s.repeat && (g.x < -margin || g.y < -margin || g.x > 1.0f + margin || g.y > 1.0f + margin)) continue;
+          points.push_back(g.x);
+          points.push_back(g.y);
+          owner.push_back(uint32_t(v));
+        }
     }
-    const flann::Matrix<float> data(points.data(), uvs.size(), 2);
+    if (owner.empty()) {
+      r.error = "no finite UVs to bake from";
+      return r;
+    }
+    const flann::Matrix<float> data(points.data(), owner.size(), 2);
     std::vector<int> nearest;
     if (s.method == BakeMethod::NearestExact) {
       flann::Index<flann::L2_Simple<float>> index(data, flann::KDTreeSingleIndexParams(10));
@@ -151,6 +194,7 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
       index.buildIndex();
       if (!nearestTexels(index, res, nearest, flann::SearchParams(std::max(s.checks, 1)), job)) return r;
     }
+    for (auto& n : nearest) n = int(owner[size_t(n)]);  // a ghost stands for its vertex
     for (size_t i = 0; i < values.size(); ++i) values[i] = offsets[size_t(nearest[i])];
     r.map.covered = values.size();
     if (s.method == BakeMethod::NearestApprox) {
@@ -161,6 +205,7 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
       exact.buildIndex();
       std::vector<int> truth;
       if (!nearestTexels(exact, res, truth, flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED), job)) return r;
+      for (auto& n : truth) n = int(owner[size_t(n)]);
       for (size_t i = 0; i < truth.size(); ++i)
         r.wrongNeighbours += truth[i] != nearest[i] && uvs[size_t(truth[i])] != uvs[size_t(nearest[i])];
       return r;
@@ -174,7 +219,8 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
 float sampleDisplacement(const DisplacementMap& m, glm::vec2 uv, bool bilinear) {
   const int w = m.size.x, h = m.size.y;
   if (w <= 0 || h <= 0) return 0.0f;
-  auto texel = [&](int x, int y) { return m.stored[size_t(std::clamp(y, 0, h - 1)) * size_t(w) + size_t(std::clamp(x, 0, w - 1))]; };
+  auto wrap = [&](int i, int n) { return m.repeat ? ((i % n) + n) % n : std::clamp(i, 0, n - 1); };
+  auto texel = [&](int x, int y) { return m.stored[size_t(wrap(y, h)) * size_t(w) + size_t(wrap(x, w))]; };
   if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
   if (!bilinear) return m.decode(texel(int(std::floor(uv.x * float(w))), int(std::floor(uv.y * float(h)))));
   const float sx = uv.x * float(w) - 0.5f, sy = uv.y * float(h) - 0.5f;

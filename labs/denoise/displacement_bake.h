@@ -8,7 +8,10 @@
 // The rasterising bake interpolates inside every UV triangle and dilates into the gutter, so a
 // bilinear lookup near a chart's border still reads that chart's values.
 //
-// Maps are stored with row 0 at v = 0 (OpenGL's order); writing a PNG flips them.
+// Maps are stored with row 0 at v = 0 (OpenGL's order); writing a PNG flips them. A map repeats
+// when the mesh's UVs leave [0, 1] (Spot has a few just outside: its layout wraps), in the bake and
+// in every lookup; otherwise it clamps, so a chart that touches the border (a sphere's seam at
+// u = 1) reads its own edge, not a blend with the opposite one.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -34,7 +37,11 @@ struct BakeSettings {
   int checks = 32;        // NearestApprox: leaves visited per query (more: slower, more often right)
   int gutter = 4;         // Raster: texels of dilation around every chart
   MapFormat format = MapFormat::Unorm16;
+  bool repeat = false;    // GL_REPEAT (UVs leave [0, 1]) or GL_CLAMP_TO_EDGE
 };
+
+// Whether a mesh's UVs ask for a repeating map: any of them outside [0, 1].
+bool uvsLeaveUnitSquare(std::span<const glm::vec2> uvs);
 
 struct DisplacementMap {
   glm::ivec2 size{0};
@@ -42,6 +49,7 @@ struct DisplacementMap {
   std::vector<float> stored;  // what the texture holds: [0,1] (quantised) for unorm, offsets for float
   float bias = 0.0f, scale = 1.0f;  // offset = stored * scale + bias
   size_t covered = 0;         // texels inside some UV triangle (Raster), or all (Nearest)
+  bool repeat = false;        // how it is sampled: GL_REPEAT or GL_CLAMP_TO_EDGE
   float decode(float s) const { return s * scale + bias; }
 };
 
@@ -49,14 +57,15 @@ struct BakeResult {
   DisplacementMap map;
   double ms = 0;
   size_t wrongNeighbours = 0;  // NearestApprox: texels whose vertex differs from the exact one
+  size_t overlapping = 0;      // Raster: texels inside two or more UV triangles (an overlapping layout)
   std::string error;
 };
 
 BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint32_t> indices,
                             std::span<const float> offsets, const BakeSettings& settings, JobContext* job = nullptr);
 
-// Reads the map at `uv` as OpenGL does with CLAMP_TO_EDGE: nearest texel, or bilinear between the
-// four around it (texel centres at (i + 0.5) / size). Returns the decoded offset.
+// Reads the map at `uv` as OpenGL does with the map's wrap mode: nearest texel, or bilinear between
+// the four around it (texel centres at (i + 0.5) / size). Returns the decoded offset.
 float sampleDisplacement(const DisplacementMap& map, glm::vec2 uv, bool bilinear);
 
 // Encoded texels for upload or a PNG: one byte or one little-endian uint16 per texel (unorm), or

@@ -67,7 +67,7 @@ TEST(Denoise, VertexShaderDisplacesWhereTheCpuSaysItDoes) {
     const GpuMesh mesh = GpuMesh::upload(base);
     gl::SamplerState s;
     s.minFilter = s.magFilter = bilinear ? GL_LINEAR : GL_NEAREST;
-    s.wrapS = s.wrapT = GL_CLAMP_TO_EDGE;
+    s.wrapS = s.wrapT = r.map->repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;  // as the bake and the read-back
     const std::vector<uint8_t> texels = encodeMap(*r.map, false);
     const gl::Texture2D map = gl::Texture2D::fromData(r.map->size, GL_R16, GL_RED, GL_UNSIGNED_SHORT, texels.data(), s);
     const auto gpu = test::captureVertexOutput("denoise/mesh.vert", {{"DISPLACE_MAP", "1"}}, "v_world", mesh, [&](GLuint p) {

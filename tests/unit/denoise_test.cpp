@@ -231,3 +231,29 @@ TEST(Bake, AMeshWithoutUvsIsRefusedWithAReason) {
   const BakeResult r = bakeDisplacement(none, std::vector<uint32_t>{0, 1, 2}, offsets, {});
   EXPECT_NE(r.error.find("no UVs"), std::string::npos);
 }
+
+TEST(Bake, OverlappingUvLayoutsAreDetected) {
+  // Two quads in different places with the same UVs (a mirrored model's layout): one map cannot
+  // hold both; the raster bake counts the texels claimed twice.
+  const std::vector<glm::vec2> uvs = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}, {0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}};
+  const std::vector<uint32_t> idx = {0, 1, 2, 3, 4, 5};
+  const std::vector<float> offsets = {0, 0, 0, 1, 1, 1};
+  const BakeResult r = bakeDisplacement(uvs, idx, offsets, {BakeMethod::Raster, 64, 32, 0, MapFormat::Float32});
+  EXPECT_GT(r.overlapping, 64u * 64u / 4);
+  const std::vector<glm::vec2> apart = {{0.1f, 0.1f}, {0.4f, 0.1f}, {0.1f, 0.4f}, {0.6f, 0.6f}, {0.9f, 0.6f}, {0.6f, 0.9f}};
+  EXPECT_EQ(bakeDisplacement(apart, idx, offsets, {BakeMethod::Raster, 64, 32, 0, MapFormat::Float32}).overlapping, 0u);
+}
+
+TEST(Bake, UvsOutsideTheUnitSquareWrapLikeTheTexture) {
+  // A triangle from u = -0.2 to 0.2: with a repeating map its left part lands at u = 0.8 .. 1.
+  const std::vector<glm::vec2> uvs = {{-0.2f, 0.2f}, {0.2f, 0.2f}, {0.0f, 0.6f}};
+  const std::vector<uint32_t> idx = {0, 1, 2};
+  const std::vector<float> offsets = {1.0f, 1.0f, 1.0f};
+  EXPECT_TRUE(uvsLeaveUnitSquare(uvs));
+  EXPECT_FALSE(uvsLeaveUnitSquare(std::vector<glm::vec2>{{0, 0}, {1, 1}}));
+  for (auto method : {BakeMethod::Raster, BakeMethod::NearestExact}) {
+    const BakeResult r = bakeDisplacement(uvs, idx, offsets, {method, 64, 32, 4, MapFormat::Float32, true});
+    for (auto& uv : uvs) EXPECT_NEAR(sampleDisplacement(r.map, uv, true), 1.0f, 1e-5f) << int(method);
+    EXPECT_NEAR(sampleDisplacement(r.map, {0.9f, 0.25f}, false), 1.0f, 1e-5f) << "the wrapped part was not drawn";
+  }
+}
