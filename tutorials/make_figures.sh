@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Regenerates every figure of the tutorials from the headless renderer. Each command here is the
-# one printed beside its figure. usage: tutorials/make_figures.sh [path/to/shadelab]
+# Regenerates the figures of the tutorials from the headless renderer. Each command here is the
+# one printed beside its figure.
+# usage: tutorials/make_figures.sh [path/to/shadelab] [shading] [shadows] [denoise] (none named: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sl=${1:-build/shadelab}
+sl=build/shadelab
+if [ $# -gt 0 ] && [ -x "$1" ]; then sl=$1; shift; fi
+labs=${*:-shading shadows denoise}
 f=tutorials/figures
 mkdir -p "$f"
 
+shading_figures() {
 # shading.md: one coarse sphere, three frequencies, and the reference
 for mode in flat gouraud phong; do
   "$sl" render --scene sphere --set shading.tessellation=8 --set shading.mode=$mode --size 320x320 \
@@ -39,7 +43,9 @@ done
 cp build/tutorial-sweep/shading_rmse.svg build/tutorial-sweep/shading_surface_rmse.svg \
   build/tutorial-sweep/shading_sweep.csv $f/
 
-#
+}
+
+shadows_figures() {
 # shadows.md: the path, step by step (each image 480x270; the errors and costs come from the sweep below)
 r="$sl render --lab shadows --size 480x270"
 $r --set shadows.filter=hard --set shadows.bias=0 --set shadows.slope_bias=0 --out $f/shadows_1_acne.png
@@ -77,3 +83,48 @@ cp build/tutorial-shadows-path/shadows_sweep.csv $f/shadows_path.csv
 "$sl" sweep --lab shadows --size 960x540 --frames 5 --out build/tutorial-shadows
 cp build/tutorial-shadows/shadows_misclassified_pct.svg build/tutorial-shadows/shadows_visibility_rmse.svg \
   build/tutorial-shadows/shadows_sweep.csv $f/
+}
+
+denoise_figures() {
+# denoise.md: Fandisk with its published noise, then each method (each image 480x360)
+local d="$sl render --lab denoise --size 480x360 --measure"
+$d --set denoise.show=noisy --out $f/denoise_1_noisy.png
+$d --out $f/denoise_2_explicit.png
+$d --set denoise.view=error --out $f/denoise_3_explicit_error.png
+$d --set denoise.iterations=60 --out $f/denoise_3_oversmoothed.png
+$d --set denoise.along_normal=off --set denoise.lambda=1.5 --set denoise.iterations=40 --out $f/denoise_4_diverging.png
+$d --set denoise.method=implicit --set denoise.lambda=1000 --set denoise.iterations=1 --out $f/denoise_5_implicit_1000.png
+$d --set denoise.method=taubin --set denoise.lambda=0.6 --out $f/denoise_5_taubin.png
+$d --set denoise.method=bilateral --out $f/denoise_6_bilateral.png
+$d --set denoise.method=bilateral --set denoise.view=error --out $f/denoise_6_bilateral_error.png
+# denoise.md: the seam crack and its fix, on the seamed cube (generated noise) and on Spot
+local c="$sl render --lab denoise --scene denoise-cube --size 720x300 --measure --set denoise.input=generated"
+$c --set denoise.show=compare --set denoise.weld=off --set denoise.view=seam-gap --set denoise.heat_scale=0.3 \
+  --camera "yaw=135,pitch=32,distance=2.6" --out $f/denoise_7_weld_off.png
+$c --set denoise.show=compare --set denoise.view=seam-gap --set denoise.heat_scale=0.3 \
+  --camera "yaw=135,pitch=32,distance=2.6" --out $f/denoise_7_weld_on.png
+local s="$sl render --lab denoise --scene spot --size 720x300 --measure --set denoise.show=compare --set denoise.view=seam-gap --camera yaw=150,pitch=15,distance=2.05"
+$s --set denoise.heat_scale=0.1 --set denoise.bake=nearest-exact --set denoise.map_size=256 --out $f/denoise_8_nearest_256.png
+$s --set denoise.heat_scale=0.1 --set denoise.bake=raster --set denoise.map_size=256 --out $f/denoise_8_raster_256.png
+# denoise.md: error against time, the standard sweep (methods x their knob x iterations) on Fandisk
+"$sl" sweep --lab denoise --size 480x360 --frames 3 --out build/tutorial-denoise
+cp build/tutorial-denoise/denoise_angle_error_deg.svg build/tutorial-denoise/denoise_rms_distance.svg \
+  build/tutorial-denoise/denoise_sweep.csv $f/
+# denoise.md: bake error against bake time on Spot, by method and resolution; FLANN's checks
+"$sl" sweep --lab denoise --scene spot --size 480x360 --frames 1 --out build/tutorial-denoise-bake \
+  --vary bake=nearest-exact,raster --vary map_size=64,256,1024,4096
+cp build/tutorial-denoise-bake/denoise_bake_rms.svg $f/denoise_bake_rms.svg
+cp build/tutorial-denoise-bake/denoise_sweep.csv $f/denoise_bake_sweep.csv
+"$sl" sweep --lab denoise --scene spot --size 480x360 --frames 1 --out build/tutorial-denoise-checks \
+  --set denoise.bake=nearest-approx --set denoise.map_size=1024 --vary checks=1,2,4,8,32,128
+cp build/tutorial-denoise-checks/denoise_sweep.csv $f/denoise_checks_sweep.csv
+}
+
+for lab in $labs; do
+  case $lab in
+    shading) shading_figures ;;
+    shadows) shadows_figures ;;
+    denoise) denoise_figures ;;
+    *) echo "make_figures.sh: unknown lab '$lab' (valid: shading, shadows, denoise)" >&2; exit 1 ;;
+  esac
+done

@@ -93,8 +93,8 @@ void JobRunner::cancelAll() {
 }
 
 void JobRunner::workerLoop() {
-  // Lower priority for this thread and every thread it starts (Linux: nice is per thread).
-  setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+  const id_t self = id_t(syscall(SYS_gettid));
+  const int normal = getpriority(PRIO_PROCESS, self);
   for (;;) {
     std::shared_ptr<Job> job;
     {
@@ -105,6 +105,8 @@ void JobRunner::workerLoop() {
       queue_.pop_front();
       job->running = true;
     }
+    // For this thread and every thread the job starts (Linux: nice is per thread, inherited).
+    setpriority(PRIO_PROCESS, self, lowPriority_ ? normal + 10 : normal);
     std::function<void()> finish;
     std::string error;
     try {

@@ -19,8 +19,9 @@
 // progress bar, Cancel button and supersession as CPU work. A step that has nothing to do yet
 // (it waits for another job's result) says Wait and is asked again at the next deliver().
 //
-// Worker threads run at a lower scheduling priority (nice +10, inherited by threads they start),
-// so a busy job takes the cores the UI thread and the rasteriser leave idle, not theirs.
+// In the window, workers run at a lower scheduling priority (nice +10, inherited by threads they
+// start; setLowPriority), so a busy job takes the cores the UI thread and the rasteriser leave
+// idle, not theirs. Headless runs keep normal priority: there the job's time is the measurement.
 #pragma once
 #include <atomic>
 #include <condition_variable>
@@ -105,6 +106,8 @@ class JobRunner {
   void cancelAll();
   // Messages of jobs whose work threw (each once), e.g. "denoise: Eigen: matrix is not positive definite".
   std::vector<std::string> takeErrors();
+  // Jobs started from now on run at nice +10 (true) or the process's own priority (false).
+  void setLowPriority(bool low) { lowPriority_ = low; }
 
  private:
   struct Job;
@@ -123,6 +126,7 @@ class JobRunner {
   std::vector<std::string> errors_;
   std::vector<std::thread> workers_;
   bool stopping_ = false;
+  std::atomic<bool> lowPriority_{false};
 };
 
 }  // namespace shadelab

@@ -216,6 +216,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   {
     AppState app;
     LabHost host(shaderSearchPath(options));
+    host.jobs().setLowPriority(true);  // the window's frames come first
     Measurer measurer(host);
     measurer.onMeasured = [](const Measurement& m) {
       std::printf("measured %s (%s), truth: %s:", m.lab.c_str(), m.label.c_str(), m.truth.c_str());

@@ -139,11 +139,10 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
           for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
               int nx = x + dx, ny = y + dy;
-              if (s.repeat) {
-                nx = (nx + res) % res;
-                ny = (ny + res) % res;
-              } else if (nx < 0 || ny < 0 || nx >= res || ny >= res) {
-                continue;
+              if (nx < 0 || ny < 0 || nx >= res || ny >= res) {  // off the edge: wrap, or no neighbour
+                if (!s.repeat) continue;
+                nx = nx < 0 ? nx + res : nx >= res ? nx - res : nx;
+                ny = ny < 0 ? ny + res : ny >= res ? ny - res : ny;
               }
               const size_t j = size_t(ny) * size_t(res) + size_t(nx);
               if (filled[j]) {
