@@ -28,6 +28,7 @@ std::string LabHost::selectLab(std::string_view id) {
   }
   jobs_.cancelAll();  // nothing of the old lab may be delivered to the new one
   if (lab_ && labReady_) lab_->teardown();
+  shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
   labReady_ = true;
   previous_.reset();  // built for another lab's scenes

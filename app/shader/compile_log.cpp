@@ -1,5 +1,6 @@
 #include "shader/compile_log.h"
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -10,7 +11,9 @@ std::string Diagnostic::format() const {
   std::string s = file.empty() ? std::string("<shader>") : file;
   if (line > 0) s += ":" + std::to_string(line);
   if (column > 0) s += ":" + std::to_string(column);
-  s += isError ? ": error: " : ": warning: ";
+  // Unparsed driver lines keep their own "error: " (a linker's); do not say it twice.
+  const bool worded = message.rfind("error: ", 0) == 0 || message.rfind("warning: ", 0) == 0;
+  s += worded ? ": " : isError ? ": error: " : ": warning: ";
   s += message;
   return s;
 }
@@ -80,6 +83,58 @@ void attachSourceLines(std::vector<Diagnostic>& diags) {
         d.sourceLine = text;
         break;
       }
+  }
+}
+
+void locateLinkErrors(std::vector<Diagnostic>& diags, const std::vector<StageFiles>& stages) {
+  static const std::regex quoted(R"([`'"]([A-Za-z_][A-Za-z0-9_]*)['"])");
+  static const std::regex declaration(R"(\b(in|out|uniform|varying|attribute|buffer)\b)");
+  for (auto& d : diags) {
+    if (d.line > 0) continue;
+    std::smatch m;
+    if (!std::regex_search(d.message, m, quoted)) continue;
+    const std::string name = m[1];
+    const std::regex word("\\b" + name + "\\b");
+    std::string lower = d.message;
+    for (auto& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    // The stage the message names first, then the others.
+    std::vector<const StageFiles*> order;
+    for (auto& st : stages)
+      if (lower.find(st.stage + " shader") != std::string::npos) order.push_back(&st);
+    for (auto& st : stages)
+      if (std::find(order.begin(), order.end(), &st) == order.end()) order.push_back(&st);
+    bool found = false;
+    for (const StageFiles* st : order) {
+      for (auto& file : st->files) {
+        std::ifstream in(file);
+        std::string line;
+        int n = 0, firstUse = 0, firstUseColumn = 0;
+        while (std::getline(in, line)) {
+          ++n;
+          std::smatch w;
+          if (!std::regex_search(line, w, word)) continue;
+          if (std::regex_search(line, declaration)) {
+            d.file = file.string();
+            d.line = n;
+            d.column = int(w.position(0)) + 1;
+            found = true;
+            break;
+          }
+          if (!firstUse) {
+            firstUse = n;
+            firstUseColumn = int(w.position(0)) + 1;
+          }
+        }
+        if (!found && firstUse) {
+          d.file = file.string();
+          d.line = firstUse;
+          d.column = firstUseColumn;
+          found = true;
+        }
+        if (found) break;
+      }
+      if (found) break;
+    }
   }
 }
 

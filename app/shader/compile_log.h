@@ -30,4 +30,13 @@ std::vector<Diagnostic> parseCompileLog(std::string_view log, const std::vector<
 // Reads the offending source line into each diagnostic (for the panel's caret view).
 void attachSourceLines(std::vector<Diagnostic>& diags);
 
+// Link errors carry no line ("fragment shader input `v_normal' has no matching output"). Where one
+// names an identifier, find where a stage's files declare it, the stage the message names first,
+// and point the diagnostic there.
+struct StageFiles {
+  std::string stage;  // "vertex", "fragment", "geometry", "tessellation control", ...
+  std::vector<std::filesystem::path> files;
+};
+void locateLinkErrors(std::vector<Diagnostic>& diags, const std::vector<StageFiles>& stages);
+
 }  // namespace shadelab

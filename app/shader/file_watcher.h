@@ -2,9 +2,12 @@
 //
 // Directories, not files: editors that save by writing a temp file and renaming it replace the
 // inode, and a watch on the old inode would go quiet. IN_CLOSE_WRITE catches in-place saves,
-// IN_MOVED_TO catches rename saves. Events are debounced (an editor may write twice in a row);
-// whether the content really changed is decided later, by hash, by whoever reloads.
-// This class never touches GL.
+// IN_MOVED_TO catches rename saves, IN_DELETE and IN_MOVED_FROM a file taken away (a student's
+// override deleted: the built-in file serves again). A folder that does not exist yet (the
+// student makes shading/ after starting the app) is looked for at every poll, a stat each, and
+// watched from the moment it appears; the watched files already in it count as changed.
+// Events are debounced (an editor may write twice in a row); whether the content really changed
+// is decided later, by hash, by whoever reloads. This class never touches GL.
 #pragma once
 #include <chrono>
 #include <filesystem>
@@ -30,7 +33,9 @@ class FileWatcher {
  private:
   int fd_ = -1;
   std::chrono::milliseconds debounce_;
+  bool addWatch(const std::filesystem::path& dir);
   std::map<int, std::filesystem::path> dirs_;           // inotify wd -> directory
+  std::set<std::filesystem::path> missing_;             // directories of watched files, not there yet
   std::set<std::filesystem::path> files_;               // what we report on
   std::map<std::filesystem::path, std::chrono::steady_clock::time_point> pending_;
 };

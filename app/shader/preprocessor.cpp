@@ -55,6 +55,15 @@ bool isVersionLine(const std::string& line) {
   return i != std::string::npos && line.compare(i, 8, "#version") == 0;
 }
 
+void fail(PreprocessedSource& out, std::string file, int line, int column, std::string message) {
+  out.errorFile = std::move(file);
+  out.errorLine = line;
+  out.errorColumn = column;
+  out.errorMessage = std::move(message);
+  out.error = out.errorFile + (line > 0 ? ":" + std::to_string(line) : "") + (column > 0 ? ":" + std::to_string(column) : "") +
+              ": error: " + out.errorMessage;
+}
+
 struct Expander {
   const ShaderSearchPath& path;
   PreprocessedSource& out;
@@ -86,15 +95,17 @@ struct Expander {
         out.text += '\n';
         continue;
       }
-      const std::string where = out.files[fileIndex].string() + ":" + std::to_string(lineNo);
+      const std::string file = out.files[fileIndex].string();
+      const size_t quote = line.find('"');
+      const int nameColumn = quote == std::string::npos ? 1 : int(quote) + 2;  // the name, 1-based
       if (target == "\x01") {
-        out.error = where + ": error: #include expects \"file\"";
+        fail(out, file, lineNo, int(line.find('#')) + 1, "#include expects \"file\"");
         return false;
       }
       const std::string incRel = resolveInclude(rel, target);
       for (auto& s : stack)
         if (s == incRel) {
-          out.error = where + ": error: #include \"" + target + "\" is circular";
+          fail(out, file, lineNo, nameColumn, "#include \"" + target + "\" is circular");
           return false;
         }
       bool already = false;
@@ -103,7 +114,7 @@ struct Expander {
         const fs::path file = path.resolve(incRel);
         std::string incText;
         if (file.empty() || !readFile(file, incText)) {
-          out.error = where + ": error: cannot find include \"" + target + "\"";
+          fail(out, out.files[fileIndex].string(), lineNo, nameColumn, "cannot find include \"" + target + "\"");
           return false;
         }
         const int k = int(out.files.size());
@@ -128,7 +139,7 @@ PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::str
   const fs::path file = path.resolve(relPath);
   std::string text;
   if (file.empty() || !readFile(file, text)) {
-    out.error = relPath + ": error: shader file not found in the search path";
+    fail(out, relPath, 0, 0, "shader file not found in the search path");
     return out;
   }
   out.files.push_back(file);

@@ -41,7 +41,11 @@ struct PreprocessedSource {
   // Source-string number k in #line directives (and so in driver logs) -> the file it names.
   std::vector<std::filesystem::path> files;
   std::vector<std::string> relPaths;  // the same files, as asked for (for the watcher and overrides)
-  std::string error;                  // "file:line: error: ..." when a file or include is missing
+  // When a file or include is missing: where ("file", line, column of the name) and what, and the
+  // whole as "file:line:col: error: message".
+  std::string error;
+  std::string errorFile, errorMessage;
+  int errorLine = 0, errorColumn = 0;
   bool ok() const { return error.empty(); }
 };
 

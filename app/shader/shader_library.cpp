@@ -68,6 +68,18 @@ gl::ProgramName buildProgram(const std::vector<std::pair<GLenum, std::string>>& 
 
 }  // namespace
 
+const char* stageName(GLenum type) {
+  switch (type) {
+    case GL_VERTEX_SHADER: return "vertex";
+    case GL_FRAGMENT_SHADER: return "fragment";
+    case GL_GEOMETRY_SHADER: return "geometry";
+    case GL_TESS_CONTROL_SHADER: return "tessellation control";
+    case GL_TESS_EVALUATION_SHADER: return "tessellation evaluation";
+    case GL_COMPUTE_SHADER: return "compute";
+    default: return "unknown";
+  }
+}
+
 GLenum stageFromExtension(const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
   if (ext == ".vert") return GL_VERTEX_SHADER;
@@ -126,14 +138,24 @@ ShaderLibrary::~ShaderLibrary() = default;
 
 ProgramRef ShaderLibrary::program(const ProgramSpec& spec) {
   const std::string key = spec.key();
-  if (auto it = cache_.find(key); it != cache_.end())
-    if (auto live = it->second.lock()) return live;
-  auto p = std::make_shared<Program>();
-  p->spec_ = spec;
-  p->fallback_ = fallback_.get();
-  rebuild(*p, true);
-  cache_[key] = p;
+  ProgramRef p;
+  if (auto it = cache_.find(key); it != cache_.end()) p = it->second.lock();
+  if (!p) {
+    p = std::make_shared<Program>();
+    p->spec_ = spec;
+    p->fallback_ = fallback_.get();
+    rebuild(*p, true);
+    cache_[key] = p;
+  }
+  std::erase(recent_, p);
+  recent_.push_front(p);
+  if (recent_.size() > kRecent) recent_.pop_back();
   return p;
+}
+
+void ShaderLibrary::report(const std::vector<Diagnostic>& diagnostics) {
+  for (auto& d : diagnostics)
+    if (reported_.insert(d.format()).second) onDiagnostic(d);
 }
 
 bool ShaderLibrary::rebuild(Program& p, bool force) {
@@ -153,7 +175,10 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
     }
     if (!src.ok()) {
       Diagnostic d;
-      d.message = src.error;
+      d.file = src.errorFile;
+      d.line = src.errorLine;
+      d.column = src.errorColumn;
+      d.message = src.errorMessage;
       d.raw = src.error;
       p.diagnostics_.push_back(d);
       continue;
@@ -164,7 +189,8 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
   watchFiles(p);
   if (!p.diagnostics_.empty()) {
     p.hasErrors_ = true;
-    for (auto& d : p.diagnostics_) onDiagnostic(d);
+    attachSourceLines(p.diagnostics_);  // the caret under a missing include's name
+    report(p.diagnostics_);
     return false;
   }
   if (!force && p.good_ && hash == p.sourceHash_) return true;  // saved, but nothing changed
@@ -175,11 +201,21 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
   const auto& files = failedStage >= 0 ? pre[size_t(failedStage)].files : pre.front().files;
   for (auto& log : logs)
     for (auto& d : parseCompileLog(log, files)) p.diagnostics_.push_back(std::move(d));
+  if (!built && failedStage < 0) {
+    // A link error: its log's source-string numbers are not any one stage's. Drop them, and point
+    // each message at the declaration of the identifier it names, in the stage it names.
+    for (auto& d : p.diagnostics_)
+      if (d.line > 0 && d.file.find("source-string") == std::string::npos) d = {"", 0, 0, d.isError, d.message, d.raw, ""};
+    std::vector<StageFiles> stages;
+    for (size_t i = 0; i < p.spec_.stages.size() && i < pre.size(); ++i)
+      stages.push_back({stageName(p.spec_.stages[i].type), pre[i].files});
+    locateLinkErrors(p.diagnostics_, stages);
+  }
   attachSourceLines(p.diagnostics_);
   if (!built) {
     p.hasErrors_ = true;
     if (p.diagnostics_.empty()) p.diagnostics_.push_back({"", 0, 0, true, p.spec_.name + ": link failed", "", ""});
-    for (auto& d : p.diagnostics_) onDiagnostic(d);
+    report(p.diagnostics_);
     return false;
   }
   p.good_ = std::move(built);
@@ -201,6 +237,7 @@ void ShaderLibrary::watchFiles(const Program& p) {
 int ShaderLibrary::reloadChanged() {
   const auto changed = watcher_.poll();
   if (changed.empty()) return 0;
+  reported_.clear();  // the student saved: every message is news again
   int rebuilt = 0;
   for (auto& p : livePrograms()) {
     bool affected = false;
@@ -215,15 +252,39 @@ int ShaderLibrary::reloadChanged() {
   return rebuilt;
 }
 
-std::string ShaderLibrary::overrideByName(const fs::path& file) {
-  std::string replaced;
+ShaderLibrary::OverrideResult ShaderLibrary::overrideByName(const fs::path& file) {
+  std::set<std::string> candidates;
   for (auto& p : livePrograms())
     for (auto& rel : p->relPaths_)
-      if (fs::path(rel).filename() == file.filename()) replaced = rel;
-  if (replaced.empty()) return {};
+      if (fs::path(rel).filename() == file.filename()) candidates.insert(rel);
+  if (candidates.empty())
+    return {"", file.filename().string() + ": no shader of the current lab is named so"};
+  std::string replaced;
+  if (candidates.size() == 1) {
+    replaced = *candidates.begin();
+  } else {
+    // Two files of one name (shading/lit.frag, shadows/lit.frag): the one the dropped file's own
+    // path ends with, if exactly one does.
+    const std::string dropped = fs::absolute(file).lexically_normal().generic_string();
+    std::string list;
+    int matches = 0;
+    for (auto& rel : candidates) {
+      list += (list.empty() ? "" : ", ") + rel;
+      if (dropped.size() > rel.size() && dropped.compare(dropped.size() - rel.size(), rel.size(), rel) == 0 &&
+          dropped[dropped.size() - rel.size() - 1] == '/') {
+        replaced = rel;
+        ++matches;
+      }
+    }
+    if (matches != 1)
+      return {"", file.filename().string() + " is ambiguous: it could replace " + list +
+                      "; drop it from a folder named like the one it replaces (e.g. .../" + *candidates.begin() +
+                      "), or use --shaders DIR"};
+  }
   path_.overrideFile(replaced, fs::absolute(file));
+  reported_.clear();
   for (auto& p : livePrograms()) rebuild(*p, true);
-  return replaced;
+  return {replaced, ""};
 }
 
 Program& ProgramSlot::get(ShaderLibrary& library, const ProgramSpec& spec) {

@@ -1,9 +1,15 @@
 // Programs built from files on the shader search path, cached by (stages, defines), rebuilt
 // when any file they read changes on disk. A failed rebuild keeps the last good program; a
 // program that never compiled draws the library's loud fallback instead of nothing.
+//
+// The library keeps the most recently used programs alive after their last user lets go, so
+// switching a variant and back is instant and, while a student's file is broken, shows that
+// variant's last good program rather than a fallback compiled from the broken file.
 #pragma once
+#include <deque>
 #include <functional>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -87,8 +93,16 @@ class ShaderLibrary {
   // Recompiles now; false when it failed (the last good program stays).
   bool rebuild(Program& p, bool force = false);
   // Serves `file` wherever a shader asks for a file of the same name (a file dropped on the
-  // window). Returns the relative path it replaced, or "" when no live program uses that name.
-  std::string overrideByName(const std::filesystem::path& file);
+  // window). Where several programs' files share the name (two labs' lit.frag), the dropped
+  // file's own path decides (".../shadows/lit.frag"); if it cannot, nothing changes and
+  // `error` says which files it could mean.
+  struct OverrideResult {
+    std::string replaced;  // the relative path now served by the file, or ""
+    std::string error;     // no live program uses that name, or it is ambiguous
+  };
+  OverrideResult overrideByName(const std::filesystem::path& file);
+  // Lets the recently used programs go (a lab switch: the old lab's variants are of no use).
+  void forgetRecent() { recent_.clear(); }
 
   std::vector<ProgramRef> livePrograms() const;
   const ShaderSearchPath& searchPath() const { return path_; }
@@ -97,10 +111,16 @@ class ShaderLibrary {
 
  private:
   void watchFiles(const Program& p);
+  // Every diagnostic goes to onDiagnostic once until a file changes: one broken include is one
+  // message, not one per variant that includes it.
+  void report(const std::vector<Diagnostic>& diagnostics);
   ShaderSearchPath path_;
   FileWatcher watcher_;
   gl::ProgramName fallback_;
   std::map<std::string, std::weak_ptr<Program>> cache_;
+  std::deque<ProgramRef> recent_;  // most recently requested first, at most kRecent
+  static constexpr size_t kRecent = 16;
+  std::set<std::string> reported_;
 };
 
 // The program a lab uses for one role (a pass, a variant), re-fetched only when the spec changes:
@@ -120,5 +140,6 @@ class ProgramSlot {
 };
 
 GLenum stageFromExtension(const std::string& path);  // .vert .geom .frag .tesc .tese .comp; 0 if unknown
+const char* stageName(GLenum type);                  // "vertex", "fragment", ... as drivers' logs say
 
 }  // namespace shadelab

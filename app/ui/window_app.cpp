@@ -102,9 +102,8 @@ void handleDrops(AppState& app) {
     const std::filesystem::path p(path);
     const std::string ext = p.extension().string();
     if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl" || ext == ".tesc" || ext == ".tese") {
-      const std::string replaced = app.host->shaders().overrideByName(p);
-      app.message = replaced.empty() ? path + ": no shader of the current lab is named " + p.filename().string()
-                                     : "now using " + path + " for " + replaced;
+      const auto result = app.host->shaders().overrideByName(p);
+      app.message = !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;
     } else if (ext == ".json") {
       app.message = loadPreset(*app.host, path);
     } else {

@@ -61,7 +61,9 @@ TEST_F(ShaderText, SiblingIncludeAndStudentOverride) {
 TEST_F(ShaderText, MissingAndCircularIncludesAreErrorsAtFileLine) {
   write("lab/d.frag", "#version 330 core\n\n#include \"nope.glsl\"\n");
   auto out = preprocessShader(ShaderSearchPath({root}), "lab/d.frag", {});
-  EXPECT_EQ(out.error, (root / "lab/d.frag").string() + ":3: error: cannot find include \"nope.glsl\"");
+  EXPECT_EQ(out.error, (root / "lab/d.frag").string() + ":3:11: error: cannot find include \"nope.glsl\"");
+  EXPECT_EQ(out.errorLine, 3);
+  EXPECT_EQ(out.errorColumn, 11) << "the caret points at the name";
   write("lab/x.glsl", "#include \"y.glsl\"\n");
   write("lab/y.glsl", "#include \"x.glsl\"\n");
   write("lab/e.frag", "#version 330 core\n#include \"x.glsl\"\n");
