@@ -14,6 +14,17 @@ static int fail(const std::string& message) {
   return 1;
 }
 
+// Programs the frame used that did not build, with their first error: the frame shows the last
+// good program or the fallback, and a headless run must say so and fail.
+static std::vector<std::string> shaderFailures(LabHost& host) {
+  std::vector<std::string> out;
+  for (auto& p : host.lab().activePrograms())
+    if (p->lastBuildFailed() || !p->hasGoodProgram())
+      out.push_back(p->spec().name + (p->hasGoodProgram() ? " (showing its last good build)" : " (drawing the fallback)") +
+                    (p->diagnostics().empty() ? "" : ": " + p->diagnostics().front().format()));
+  return out;
+}
+
 static std::string passSummary(const std::vector<gl::PassTiming>& passes) {
   std::string s;
   for (auto& p : passes) s += (s.empty() ? "" : ", ") + p.name + " " + formatNumber(p.gpuMs) + " ms";
@@ -38,6 +49,8 @@ int runRender(const Options& o) {
   for (auto& p : t.passes) meta["passes"].push_back({{"name", p.name}, {"gpu_ms", p.gpuMs}, {"cpu_ms", p.cpuMs}});
   meta["non_finite_values"] = countNonFinite(image);
   meta["warnings"] = host.warnings();
+  const std::vector<std::string> failed = shaderFailures(host);
+  meta["shader_errors"] = failed;
   for (auto& panel : host.lab().panels())  // the lab's tables, as the app shows them
     for (auto& item : panel.items)
       if (auto* table = std::get_if<PanelTable>(&item))
@@ -63,6 +76,9 @@ int runRender(const Options& o) {
   for (auto& w : host.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   std::printf("%s: %dx%d, lab %s, scene %s, passes: %s (median of %d frames)\n", o.out.c_str(), s.size.x, s.size.y,
               std::string(host.lab().id()).c_str(), host.sceneId().c_str(), passSummary(t.passes).c_str(), o.frames);
+  for (auto& f : failed) std::fprintf(stderr, "shadelab: render: %s\n", f.c_str());
+  if (!failed.empty())
+    return fail("render: " + std::to_string(failed.size()) + " program(s) of this frame did not build (the image was written)");
   return 0;
 }
 

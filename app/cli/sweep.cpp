@@ -99,6 +99,7 @@ int runSweep(const Options& o) {
   report.command = cmd;
 
   Measurer measurer(host);  // caches each truth: rows that share one trace or render it once
+  std::vector<std::string> shaderErrorRows;
   for (size_t index = 0; index < total; ++index) {
     host.applySettings(base);
     std::string label;
@@ -131,6 +132,10 @@ int runSweep(const Options& o) {
     row.truth = m->truth;
     row.values = m->values;
     row.values.push_back({"non_finite", double(countNonFinite(m->image.rgba.empty() ? shown : m->image))});
+    int failedPrograms = 0;  // a student's broken shader: the row shows a fallback, and says so
+    for (auto& p : host.lab().activePrograms()) failedPrograms += p->lastBuildFailed() || !p->hasGoodProgram();
+    row.values.push_back({"shader_errors", double(failedPrograms)});
+    if (failedPrograms) shaderErrorRows.push_back(label);
     row.thumbnail = thumbnail(shown);
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%03zu.png", index);
@@ -170,6 +175,9 @@ int runSweep(const Options& o) {
     std::printf("  %s\n", row.truth.c_str());
   }
   std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
+  for (auto& label : shaderErrorRows)
+    std::fprintf(stderr, "warning: %s: a program did not build; that row shows a fallback (shader_errors > 0)\n",
+                 label.c_str());
   return 0;
 }
 

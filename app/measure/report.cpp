@@ -244,7 +244,9 @@ std::string sweepHtml(const SweepReport& r) {
     for (auto& [k, v] : r.rows.front().values) h += "<th>" + escape(k) + "</th>";
   h += "</tr>\n";
   for (auto& row : r.rows) {
-    h += "<tr><td style='text-align:left'>" + escape(row.label) + "</td><td>" + escape(row.truth) + "</td>";
+    const bool broken = row.value("shader_errors") > 0;  // a fallback was drawn: mark the row
+    h += std::string(broken ? "<tr style='background:#fdd' title='a program did not build'>" : "<tr>") +
+         "<td style='text-align:left'>" + escape(row.label) + "</td><td>" + escape(row.truth) + "</td>";
     for (auto& [k, v] : row.values) h += "<td>" + fourDigits(v) + "</td>";  // the CSV keeps every digit
     h += "</tr>\n";
   }

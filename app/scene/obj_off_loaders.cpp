@@ -54,6 +54,7 @@ std::string loadObj(const fs::path& file, Scene& scene) {
 
   // OBJ indexes positions, normals and UVs separately; GL wants one index per vertex, so each
   // distinct (v, vt, vn) triple becomes one vertex. UV seams split vertices, as they must.
+  size_t skipped = 0;
   for (auto& shape : shapes) {
     MeshData mesh;
     mesh.name = shape.name.empty() ? file.stem().string() : shape.name;
@@ -61,34 +62,52 @@ std::string loadObj(const fs::path& file, Scene& scene) {
     mesh.material = mid >= 0 ? materialBase + mid : 0;
     std::map<std::tuple<int, int, int>, uint32_t> remap;
     const bool hasNormals = !attrib.normals.empty(), hasUvs = !attrib.texcoords.empty();
-    for (auto& idx : shape.mesh.indices) {
-      const auto key = std::make_tuple(idx.vertex_index, hasNormals ? idx.normal_index : -1,
-                                       hasUvs ? idx.texcoord_index : -1);
-      auto [it, added] = remap.emplace(key, uint32_t(mesh.positions.size()));
-      if (added) {
-        const float* p = &attrib.vertices[size_t(3 * idx.vertex_index)];
-        mesh.positions.emplace_back(p[0], p[1], p[2]);
-        if (hasNormals && idx.normal_index >= 0) {
-          const float* n = &attrib.normals[size_t(3 * idx.normal_index)];
-          mesh.normals.emplace_back(n[0], n[1], n[2]);
-        } else if (hasNormals) {
-          mesh.normals.emplace_back(0, 0, 0);
-        }
-        if (hasUvs && idx.texcoord_index >= 0) {
-          const float* t = &attrib.texcoords[size_t(2 * idx.texcoord_index)];
-          mesh.uvs.emplace_back(t[0], t[1]);
-        } else if (hasUvs) {
-          mesh.uvs.emplace_back(0, 0);
-        }
+    const int vertices = int(attrib.vertices.size() / 3), normals = int(attrib.normals.size() / 3),
+              texcoords = int(attrib.texcoords.size() / 2);
+    // tinyobjloader warns about indices past the data but hands them over: check every one, and
+    // skip the triangles that have any (they would read past the arrays).
+    auto valid = [&](const tinyobj::index_t& i) {
+      return i.vertex_index >= 0 && i.vertex_index < vertices && i.normal_index < normals && i.texcoord_index < texcoords;
+    };
+    const auto& indices = shape.mesh.indices;
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+      if (!valid(indices[t]) || !valid(indices[t + 1]) || !valid(indices[t + 2])) {
+        ++skipped;
+        continue;
       }
-      mesh.indices.push_back(it->second);
+      for (size_t k = t; k < t + 3; ++k) {
+        const tinyobj::index_t& idx = indices[k];
+        const auto key = std::make_tuple(idx.vertex_index, hasNormals ? idx.normal_index : -1,
+                                         hasUvs ? idx.texcoord_index : -1);
+        auto [it, added] = remap.emplace(key, uint32_t(mesh.positions.size()));
+        if (added) {
+          const float* p = &attrib.vertices[size_t(3 * idx.vertex_index)];
+          mesh.positions.emplace_back(p[0], p[1], p[2]);
+          if (hasNormals && idx.normal_index >= 0) {
+            const float* n = &attrib.normals[size_t(3 * idx.normal_index)];
+            mesh.normals.emplace_back(n[0], n[1], n[2]);
+          } else if (hasNormals) {
+            mesh.normals.emplace_back(0, 0, 0);
+          }
+          if (hasUvs && idx.texcoord_index >= 0) {
+            const float* uv = &attrib.texcoords[size_t(2 * idx.texcoord_index)];
+            mesh.uvs.emplace_back(uv[0], uv[1]);
+          } else if (hasUvs) {
+            mesh.uvs.emplace_back(0, 0);
+          }
+        }
+        mesh.indices.push_back(it->second);
+      }
     }
+    if (mesh.indices.empty()) continue;
     if (mesh.normals.empty()) computeNormals(mesh);
     if (auto err = validateMesh(mesh); !err.empty()) return file.string() + ": " + err;
     scene.instances.push_back({int(scene.meshes.size()), glm::mat4(1.0f)});
     scene.meshes.push_back(std::move(mesh));
   }
-  if (scene.meshes.empty()) return file.string() + ": no faces in OBJ file";
+  const std::string dropped = std::to_string(skipped) + " triangle(s) index past the vertex data";
+  if (scene.meshes.empty()) return file.string() + ": no valid triangle (" + (skipped ? dropped : "no faces") + ")";
+  if (skipped) scene.warnings.push_back(file.string() + ": " + dropped + " and were left out");
   return {};
 }
 
@@ -144,11 +163,18 @@ std::string loadSceneFile(const fs::path& file, Scene& scene) {
   std::string ext = file.extension().string();
   for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   scene.name = file.filename().string();
-  if (ext == ".gltf" || ext == ".glb") return loadGltf(file, scene);
-  if (ext == ".obj") return loadObj(file, scene);
-  if (ext == ".off") return loadOff(file, scene);
-  if (ext == ".ply") return loadPly(file, scene);
-  return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off, .ply)";
+  std::string err;
+  if (ext == ".gltf" || ext == ".glb") err = loadGltf(file, scene);
+  else if (ext == ".obj") err = loadObj(file, scene);
+  else if (ext == ".off") err = loadOff(file, scene);
+  else if (ext == ".ply") err = loadPly(file, scene);
+  else return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off, .ply)";
+  if (!err.empty()) return err;
+  // A loader may skip what it cannot use (faces indexing past the vertices): nothing left is an
+  // error, not an empty frame.
+  if (scene.triangleCount() == 0)
+    return file.string() + ": no valid triangle" + (scene.warnings.empty() ? "" : " (" + scene.warnings.back() + ")");
+  return {};
 }
 
 }  // namespace shadelab

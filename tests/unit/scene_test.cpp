@@ -42,7 +42,7 @@ TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
   const auto badGltf = tempFile("shadelab_bad.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { ");
   EXPECT_EQ(loadSceneFile(badGltf, s).rfind(badGltf.string() + ": ", 0), 0u);
   const auto emptyObj = tempFile("shadelab_empty.obj", "# nothing\n");
-  EXPECT_EQ(loadSceneFile(emptyObj, s), emptyObj.string() + ": no faces in OBJ file");
+  EXPECT_EQ(loadSceneFile(emptyObj, s), emptyObj.string() + ": no valid triangle (no faces)");
 }
 
 TEST(Loaders, GltfWithNodeTransformsAndMaterial) {
