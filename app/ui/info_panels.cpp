@@ -73,6 +73,7 @@ void drawShaderPanel(LabHost& host, std::string& status) {
   }
   ImGui::SameLine();
   ImGui::TextDisabled("Edit a file and save: it reloads. Drop a .vert/.frag/.geom/.glsl on the window to override it.");
+  std::vector<std::string> shown;  // an error in a shared include is listed once, under its first program
   for (auto& p : host.lab().activePrograms()) {
     const bool failed = p->lastBuildFailed();
     ImGui::PushStyleColor(ImGuiCol_Text, failed ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.5f, 1, 0.5f, 1));
@@ -86,6 +87,12 @@ void drawShaderPanel(LabHost& host, std::string& status) {
     }
     if (!failed) continue;
     for (auto& d : p->diagnostics()) {
+      const std::string text = d.format();
+      if (std::find(shown.begin(), shown.end(), text) != shown.end()) {
+        ImGui::TextDisabled("    the same error as above (%s)", d.file.empty() ? "link" : d.file.c_str());
+        continue;
+      }
+      shown.push_back(text);
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.4f, 1));
       ImGui::TextWrapped("%s", d.format().c_str());
       ImGui::PopStyleColor();
