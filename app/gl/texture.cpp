@@ -2,11 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace gl {
 
 static int fullMipChain(glm::ivec2 s) { return 1 + int(std::floor(std::log2(std::max(1, std::max(s.x, s.y))))); }
+
+float maxAnisotropy() {
+  static const float limit = [] {
+    GLint n = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &n);
+    bool present = false;
+    for (GLint i = 0; i < n; ++i) {
+      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)));
+      present |= e && (std::strcmp(e, "GL_EXT_texture_filter_anisotropic") == 0 ||
+                       std::strcmp(e, "GL_ARB_texture_filter_anisotropic") == 0);
+    }
+    float value = 1.0f;
+    if (present) glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &value);
+    return value;
+  }();
+  return limit;
+}
 
 Texture2D Texture2D::allocate(glm::ivec2 size, GLenum internalFormat, int levels) {
   Texture2D t;
@@ -49,11 +67,9 @@ void Texture2D::setSampler(const SamplerState& s) const {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, s.magFilter);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, s.wrapS);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, s.wrapT);
-  if (s.maxAnisotropy > 1.0f) {
-    float limit = 1.0f;
-    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &limit);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, std::min(s.maxAnisotropy, limit));
-  }
+  // Always set (1 turns it off again), where the driver has anisotropic filtering at all.
+  if (maxAnisotropy() > 1.0f)
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, std::clamp(s.maxAnisotropy, 1.0f, maxAnisotropy()));
 }
 
 void Texture2D::bind(int unit) const {

@@ -18,6 +18,9 @@ struct SamplerState {
   float maxAnisotropy = 1.0f;  // 1 = isotropic; clamped to the driver's limit
 };
 
+// The driver's anisotropy limit (16 on llvmpipe), or 1 when it has no anisotropic filtering.
+float maxAnisotropy();
+
 class Texture2D {
  public:
   Texture2D() = default;

@@ -61,6 +61,11 @@ std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs
 std::string LabHost::ensureScene() {
   const SceneNeeds needs = lab_->needs();
   if (needs == built_.needs && !sceneId_.empty()) return {};
+  if (needs.sameButSampling(built_.needs) && !sceneId_.empty()) {  // filters, wrap, anisotropy: re-sample
+    built_.gpu.applySampling(built_.scene, needs);
+    built_.needs.sampling = needs.sampling;
+    return {};
+  }
   if (previous_ && previous_->needs == needs) {
     std::swap(built_, *previous_);
     return {};

@@ -13,15 +13,35 @@
 
 namespace shadelab {
 
+// How the textures a configuration uses are sampled: a lab's override of what the files ask for.
+// Changing only this re-samples the uploaded textures; nothing is decoded or uploaded again.
+struct TextureSampling {
+  GLenum minFilter = 0;     // 0: as the file asks (usually trilinear); else GL_NEAREST, GL_LINEAR_MIPMAP_LINEAR, ...
+  GLenum magFilter = 0;     // 0: as the file asks
+  GLenum wrap = 0;          // 0: as the file asks; else GL_REPEAT, GL_CLAMP_TO_EDGE, ...
+  float anisotropy = 1.0f;  // 1..16, clamped to the driver's limit
+  bool operator==(const TextureSampling&) const = default;
+};
+
 // What a configuration requires. The host builds exactly this, and nothing else.
 struct SceneNeeds {
   bool uvs = false;               // texture coordinates (else dropped before upload)
   bool tangents = false;          // only a normal map needs them
-  bool baseColorTextures = false; // decode and upload base-colour images
-  bool normalTextures = false;    // decode and upload normal-map images
+  bool baseColorTextures = false; // decode and upload base-colour images (sRGB)
+  bool normalTextures = false;    // decode and upload normal-map images (linear)
+  bool heightTextures = false;    // decode and upload height maps (one channel, linear; depth maps inverted)
+  bool normalMapsAsSrgb = false;  // decode normal maps as sRGB instead: a mistake a lab can show
+  bool mipmaps = true;            // build a mip chain for every texture uploaded
+  TextureSampling sampling;
   int tessellation = 32;          // segments of procedural primitives (ignored by files)
   float scale = 1.0f;             // uniform world scale (stress runs: 1e-3 .. 1e4)
   bool operator==(const SceneNeeds&) const = default;
+  // Equal but for sampling: the uploaded textures serve, re-sampled.
+  bool sameButSampling(const SceneNeeds& o) const {
+    SceneNeeds a = *this;
+    a.sampling = o.sampling;
+    return a == o;
+  }
 };
 
 // An image referenced by a material; decoded only on demand.
@@ -40,8 +60,10 @@ struct Material {
   float metallic = 0.0f;
   float roughness = 0.5f;
   int baseColorImage = -1;  // index into Scene::images
-  int normalImage = -1;
+  int normalImage = -1;      // tangent space, +Y up (OpenGL convention)
   int metallicRoughnessImage = -1;
+  int heightImage = -1;      // a height field (white = high); its red channel is used
+  bool heightIsDepth = false;  // the image stores depth (white = deep): height = 1 - value
 };
 
 struct Instance {
