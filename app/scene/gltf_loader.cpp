@@ -121,6 +121,12 @@ struct Importer {
       if (auto e = readAccessor(model, it->second, 2, f); !e.empty()) return e;
       for (size_t i = 0; i + 1 < f.size(); i += 2) mesh.uvs.emplace_back(f[i], 1.0f - f[i + 1]);  // glTF: v down
     }
+    if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+      // The file's own frames. Its bitangent, cross(N, T) w, points along its +v; we flip v
+      // above, so the handedness flips with it.
+      if (auto e = readAccessor(model, it->second, 4, f); !e.empty()) return e;
+      for (size_t i = 0; i + 3 < f.size(); i += 4) mesh.sourceTangents.emplace_back(f[i], f[i + 1], f[i + 2], -f[i + 3]);
+    }
     if (prim.indices >= 0) {
       if (auto e = readAccessor(model, prim.indices, 1, f); !e.empty()) return e;
       for (float v : f) mesh.indices.push_back(uint32_t(v));

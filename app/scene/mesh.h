@@ -25,6 +25,7 @@ struct MeshData {
   std::vector<glm::vec3> normals;   // empty until present or computed
   std::vector<glm::vec2> uvs;       // empty when the source has none
   std::vector<glm::vec4> tangents;  // xyz tangent, w = handedness; built only on request
+  std::vector<glm::vec4> sourceTangents;  // the file's own (glTF TANGENT), in our UV convention, or empty
   std::vector<uint32_t> indices;    // triangles
   int material = 0;
 
@@ -37,10 +38,19 @@ struct MeshData {
 // vertex left with a zero normal gets +Z, so shading never divides by zero.
 void computeNormals(MeshData& mesh);
 
-// Per-vertex tangent frames from UV derivatives (Lengyel), Gram-Schmidt against the normal.
-// Zero-area UV triangles are skipped; vertices they leave without a tangent get any unit
-// vector perpendicular to the normal. Returns how many vertices needed that fallback.
-int computeTangents(MeshData& mesh);
+// Per-vertex tangent frames in the manner of MikkTSpace (Mikkelsen 2008): each triangle's tangent
+// and bitangent from its UV derivatives (Lengyel), summed per vertex weighted by the triangle's
+// angle there (so the frame does not depend on how a region happens to be triangulated), made
+// orthogonal to the normal (Gram-Schmidt), w = +-1 the handedness of the UV map. A vertex shared
+// by triangles of opposite UV handedness (mirrored UVs meeting at a line) is split, so each side
+// keeps its own frame. Zero-area UV triangles give no direction; a vertex left with none gets any
+// unit vector perpendicular to its normal. Vertices are assumed split at UV seams already.
+struct TangentReport {
+  int fallbacks = 0;         // vertices given an arbitrary perpendicular (degenerate UVs)
+  int mirrorSplits = 0;      // vertices duplicated where mirrored UVs meet
+  int degenerateUvTriangles = 0;
+};
+TangentReport computeTangents(MeshData& mesh);
 
 // Rejects what would crash or poison the renderer: out-of-range indices, NaN/Inf positions,
 // attribute arrays of the wrong length. Returns "" or a one-line reason.

@@ -163,7 +163,7 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
   for (auto& mesh : out.meshes) {
     if (!needs.uvs) mesh.uvs.clear();
     if (needs.tangents && !mesh.uvs.empty()) {
-      if (int n = computeTangents(mesh); n > 0)
+      if (int n = computeTangents(mesh).fallbacks; n > 0)
         out.warnings.push_back("mesh '" + mesh.name + "': " + std::to_string(n) +
                                " vertices have degenerate UVs; their tangent is an arbitrary perpendicular");
     }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <fstream>
 
+#include <glm/gtc/constants.hpp>
+
 #include "scene/camera.h"
 #include "scene/loaders.h"
 #include "scene/procedural.h"
@@ -142,7 +144,7 @@ TEST(Mesh, DegenerateGeometryNeverYieldsNaN) {
   m.uvs = {{0, 0}, {0, 0}, {0, 0}};  // zero-area in UV space too
   m.indices = {0, 1, 2};
   computeNormals(m);
-  EXPECT_EQ(computeTangents(m), 3);
+  EXPECT_EQ(computeTangents(m).fallbacks, 3);
   for (auto& t : m.tangents) {
     EXPECT_TRUE(std::isfinite(t.x) && std::isfinite(t.y) && std::isfinite(t.z));
     EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-5f);
@@ -232,4 +234,88 @@ TEST(Loaders, MalformedPlyNamesTheFileAndTheProblem) {
   EXPECT_EQ(loadSceneFile(tempFile("shadelab_fmt.ply", "ply\nformat weird 1.0\nend_header\n"), s).find("unknown format 'weird'") !=
                 std::string::npos,
             true);
+}
+
+TEST(Tangents, GeneratedMatchAnalyticOnASphereAndAPlane) {
+  // Sphere: p = (sin t sin f, cos t, sin t cos f), f = 2 pi u, t = pi v: dp/du points along
+  // (cos f, 0, -sin f), dp/dv along (cos t sin f, -sin t, cos t cos f).
+  MeshData sphere = makeUvSphere(1.0f, 64);
+  ASSERT_EQ(computeTangents(sphere).mirrorSplits, 0);
+  float worstInterior = 0.0f, worstSeam = 0.0f;
+  for (size_t v = 0; v < sphere.positions.size(); ++v) {
+    const glm::vec2 uv = sphere.uvs[v];
+    if (uv.y < 0.1f || uv.y > 0.9f) continue;  // the poles: every direction is a tangent
+    const float f = uv.x * 2.0f * glm::pi<float>(), t = uv.y * glm::pi<float>();
+    const glm::vec3 T(std::cos(f), 0.0f, -std::sin(f)), B(std::cos(t) * std::sin(f), -std::sin(t), std::cos(t) * std::cos(f));
+    const float off = glm::degrees(std::acos(std::clamp(glm::dot(glm::vec3(sphere.tangents[v]), T), -1.0f, 1.0f)));
+    (uv.x == 0.0f || uv.x == 1.0f ? worstSeam : worstInterior) = std::max(uv.x == 0.0f || uv.x == 1.0f ? worstSeam : worstInterior, off);
+    const glm::vec3 bitangent = glm::cross(sphere.normals[v], glm::vec3(sphere.tangents[v])) * sphere.tangents[v].w;
+    EXPECT_GT(glm::dot(bitangent, B), 0.99f) << "handedness at vertex " << v;
+  }
+  // Inside, the triangles on either side of a vertex cancel each other's chord error; a vertex on
+  // the UV seam (split, as MikkTSpace splits it) has one side only: half a segment, 360/64/2 deg.
+  EXPECT_LT(worstInterior, 0.5f) << "degrees off the analytic tangent";
+  EXPECT_LT(worstSeam, 360.0f / 64.0f / 2.0f + 0.1f);
+  EXPECT_GT(worstSeam, worstInterior);
+  MeshData plane = makePlane(2.0f, 4, 1.0f);  // u along +x, v along +z, normal +y
+  computeTangents(plane);
+  for (size_t v = 0; v < plane.positions.size(); ++v) {
+    EXPECT_NEAR(glm::length(glm::vec3(plane.tangents[v]) - glm::vec3(1, 0, 0)), 0.0f, 1e-5f);
+    const glm::vec3 bitangent = glm::cross(plane.normals[v], glm::vec3(plane.tangents[v])) * plane.tangents[v].w;
+    EXPECT_NEAR(glm::length(bitangent - glm::vec3(0, 0, 1)), 0.0f, 1e-5f);
+  }
+}
+
+TEST(Tangents, MirroredHalvesAreSplitAndKeepTheirHandedness) {
+  // A strip of two quads sharing the middle column, whose right quad's u runs backwards: the UV
+  // layout mirrors at the shared edge (as a symmetric character's two halves share one texture).
+  MeshData m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1}, {1, 0, 1}, {2, 0, 1}};
+  m.uvs = {{0, 0}, {1, 0}, {0, 0}, {0, 1}, {1, 1}, {0, 1}};
+  m.normals.assign(6, glm::vec3(0, 1, 0));
+  m.indices = {0, 3, 1, 1, 3, 4, 1, 4, 2, 2, 4, 5};
+  const TangentReport r = computeTangents(m);
+  EXPECT_EQ(r.mirrorSplits, 2) << "the two vertices of the mirror line are split";
+  EXPECT_EQ(m.positions.size(), 8u);
+  for (size_t t = 0; t < 4; ++t) {
+    const uint32_t v = m.indices[3 * t];
+    const glm::vec3 expected = t < 2 ? glm::vec3(1, 0, 0) : glm::vec3(-1, 0, 0);
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec4 tangent = m.tangents[m.indices[3 * t + size_t(k)]];
+      EXPECT_NEAR(glm::length(glm::vec3(tangent) - expected), 0.0f, 1e-5f) << "triangle " << t << " vertex " << v;
+      const glm::vec3 bitangent = glm::cross(glm::vec3(0, 1, 0), glm::vec3(tangent)) * tangent.w;
+      EXPECT_NEAR(glm::length(bitangent - glm::vec3(0, 0, 1)), 0.0f, 1e-5f) << "v runs along +z on both halves";
+    }
+  }
+}
+
+TEST(Tangents, DegenerateUvsGiveFiniteOrthonormalFrames) {
+  MeshData m = makePlane(2.0f, 2, 1.0f);
+  for (size_t v = 0; v < 4; ++v) m.uvs[v] = glm::vec2(0.5f);  // one row collapsed to a point in UV
+  m.uvs[7] = glm::vec2(NAN);
+  const TangentReport r = computeTangents(m);
+  EXPECT_GT(r.degenerateUvTriangles, 0);
+  for (size_t v = 0; v < m.tangents.size(); ++v) {
+    const glm::vec3 t(m.tangents[v]);
+    ASSERT_TRUE(std::isfinite(t.x + t.y + t.z)) << v;
+    EXPECT_NEAR(glm::length(t), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(t, m.normals[v]), 0.0f, 1e-5f);
+    EXPECT_EQ(std::abs(m.tangents[v].w), 1.0f);
+  }
+}
+
+TEST(Tangents, AGltfTangentAttributeIsKeptAsTheFilesOwn) {
+  Scene s;
+  ASSERT_EQ(loadSceneFile(kData / "tangent_quad.gltf", s), "");
+  MeshData& m = s.meshes.at(0);
+  ASSERT_EQ(m.sourceTangents.size(), 4u);
+  // The file says +Z (deliberately not the UVs' u direction), w = +1, which is -1 once v is flipped.
+  EXPECT_EQ(glm::vec3(m.sourceTangents[0]), glm::vec3(0, 0, 1));
+  EXPECT_EQ(m.sourceTangents[0].w, -1.0f);
+  computeTangents(m);
+  EXPECT_GT(glm::length(glm::vec3(m.tangents[0]) - glm::vec3(m.sourceTangents[0])), 0.5f)
+      << "generated tangents follow the UVs, the file's do not: the two must stay apart";
+  Scene plain;
+  ASSERT_EQ(loadSceneFile(kData / "triangle.gltf", plain), "");
+  EXPECT_TRUE(plain.meshes.at(0).sourceTangents.empty());
 }
