@@ -138,8 +138,15 @@ class Lab {
   // Settings applied for the image that is compared with an image truth (the shadows lab outputs
   // its visibility term); the cost is always timed on the normal view.
   virtual Settings measuredView() const { return {}; }
+  // Several views, each compared with the truth drawn in the same view (a shaded image and its
+  // normals, say). One by default: measuredView().
+  virtual std::vector<Settings> measuredViews() const { return {measuredView()}; }
   // Error numbers of `image` against an image truth.
   virtual Metrics metrics(const ImageF& image, const ImageF& reference) const;
+  // Error numbers over every measured view: images[i] against references[i]. By default the first.
+  virtual Metrics viewMetrics(const std::vector<ImageF>& images, const std::vector<ImageF>& references) const {
+    return metrics(images.at(0), references.at(0));
+  }
   // Mesh truths: the current result against the clean mesh, with the lab's own costs (solve_ms).
   // Asked only when no job of the lab is running, so the numbers belong to the current settings.
   virtual Metrics meshMetrics() const { return {}; }

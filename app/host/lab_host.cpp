@@ -174,9 +174,11 @@ void LabHost::settle(const std::function<void(const std::vector<JobStatus>&)>& o
   for (auto& e : jobs_.takeErrors()) jobErrors_.push_back(std::move(e));
 }
 
-ImageF LabHost::renderMeasured(glm::ivec2 size, float time) {
+ImageF LabHost::renderMeasured(glm::ivec2 size, float time) { return renderView(size, time, lab_->measuredView()); }
+
+ImageF LabHost::renderView(glm::ivec2 size, float time, const Settings& view) {
   const Settings saved = currentSettings();
-  applySettings(lab_->measuredView());
+  applySettings(view);
   if (!sideTarget_ || sideTarget_->size() != size) sideTarget_ = gl::RenderTarget::create(size);
   drawInto(*sideTarget_, camera_, time);  // never into the view's target: the student sees no flash
   ImageF image{size, sideTarget_->readRgba()};

@@ -55,8 +55,9 @@ class LabHost {
   void settle(const std::function<void(const std::vector<JobStatus>&)>& onProgress = {});
   // The lab's ground truth for the current settings, blocking (host/truth.h); restores settings.
   ImageF renderReference(glm::ivec2 size, float time = 0.0f);
-  // The frame the metrics compare: rendered with the lab's measuredView() settings.
+  // The frame the metrics compare: rendered with the lab's measuredView() settings, or `view`.
   ImageF renderMeasured(glm::ivec2 size, float time = 0.0f);
+  ImageF renderView(glm::ivec2 size, float time, const Settings& view);
 
   // Lab, params, scene, camera: everything a headless run needs to reproduce a frame.
   nlohmann::json stateJson();

@@ -1,5 +1,6 @@
 #include "host/measurer.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "host/truth.h"
@@ -43,11 +44,12 @@ void Measurer::cacheTruth(const std::string& key, std::shared_ptr<const ImageF> 
   if (truths_.size() > kCachedTruths) truths_.pop_back();
 }
 
-void Measurer::finish(Measurement m, const std::shared_ptr<const ImageF>& truth) {
+void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const ImageF>>& truths) {
   Metrics costs = std::move(m.values);
-  if (truth) {
-    m.values = host_.lab().metrics(m.image, *truth);
-    m.reference = *truth;
+  if (!truths.empty()) {
+    for (auto& t : truths) m.references.push_back(*t);
+    m.values = host_.lab().viewMetrics(m.images, m.references);
+    m.reference = m.references.front();
   } else {
     m.values = host_.lab().meshMetrics();
   }
@@ -56,6 +58,8 @@ void Measurer::finish(Measurement m, const std::shared_ptr<const ImageF>& truth)
   history();  // drops another lab's history first
   Measurement kept = m;
   kept.image = kept.reference = ImageF{};
+  kept.images.clear();
+  kept.references.clear();
   history_.push_back(std::move(kept));
   last_ = std::move(m);
 }
@@ -79,55 +83,78 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
         job.progress(0.0f, "waiting for the result");
         return GlStep::Wait;
       }
-      finish(std::move(m), nullptr);
+      finish(std::move(m), {});
       return GlStep::Done;
     });
     return {};
   }
 
-  m.image = host_.renderMeasured(size, time);
-  const TruthRequest req = describeTruth(host_, size, time);
-  if (auto truth = cachedTruth(req.key)) {
+  // Every measured view of this configuration now (the GL thread), and the truth in each view:
+  // from the cache, traced in a CPU job, or accumulated from jittered frames in GL slices.
+  const std::vector<Settings> views = lab.measuredViews();
+  for (auto& view : views) m.images.push_back(host_.renderView(size, time, view));
+  m.image = m.images.front();
+  std::vector<TruthRequest> requests;
+  std::vector<std::shared_ptr<const ImageF>> cached;
+  for (auto& view : views) {
+    requests.push_back(describeTruth(host_, size, time, view));
+    cached.push_back(cachedTruth(requests.back().key));
+  }
+  if (std::all_of(cached.begin(), cached.end(), [](auto& c) { return bool(c); })) {
     jobs.cancel(kJobKey);  // an older measurement would land after this one
-    finish(std::move(m), truth);
+    finish(std::move(m), cached);
     return {};
   }
   const std::string label = "truth for " + m.label;
-  if (spec.traced) {
+  if (spec.traced) {  // traced truths have one view: the lab's trace is that view
     const gl::RenderTarget target = gl::RenderTarget::create(size);
-    TraceWork work = beginTrace(host_, req, target);
+    TraceWork work = beginTrace(host_, requests.front(), target);
     if (!work) return std::string(lab.id()) + ": the lab traced no reference";
-    jobs.submit(kJobKey, label, std::move(work), [this, m, key = req.key](ImageF truth) mutable {
+    jobs.submit(kJobKey, label, std::move(work), [this, m, key = requests.front().key](ImageF truth) mutable {
       auto image = std::make_shared<const ImageF>(std::move(truth));
       cacheTruth(key, image);
-      finish(std::move(m), image);
+      finish(std::move(m), {image});
     });
     return {};
   }
-  // Rasterised truth: one jittered frame per slice, accumulated; the target lives with the job.
+  // Rasterised truth: one jittered frame per slice, view after view; the target lives with the job.
   struct Accumulation {
     std::vector<JitterSample> samples;
-    size_t next = 0;
-    ImageAccumulator sum;
+    size_t view = 0, next = 0;
+    std::optional<ImageAccumulator> sum;
     std::optional<gl::RenderTarget> target;
-    ImageF single;
+    std::vector<std::shared_ptr<const ImageF>> truths;
   };
-  auto acc = std::make_shared<Accumulation>(
-      Accumulation{jitterSamples(spec.jitterGrid, spec.pixelFilter), 0, ImageAccumulator(spec.displayEncoded), {}, {}});
-  jobs.submitGlSteps(kJobKey, label, [this, m, req, acc](JobContext& job) mutable {
+  auto acc = std::make_shared<Accumulation>();
+  acc->samples = jitterSamples(spec.jitterGrid, spec.pixelFilter);
+  acc->truths = cached;
+  jobs.submitGlSteps(kJobKey, label, [this, m, requests, acc, displayEncoded = spec.displayEncoded](JobContext& job) mutable {
+    while (acc->view < requests.size() && acc->truths[acc->view]) ++acc->view;  // cached views
+    if (acc->view == requests.size()) {
+      acc->target.reset();
+      finish(std::move(m), acc->truths);
+      return GlStep::Done;
+    }
+    const TruthRequest& req = requests[acc->view];
     if (!acc->target) acc->target = gl::RenderTarget::create(req.size);
+    if (!acc->sum) acc->sum.emplace(displayEncoded);
+    const size_t n = acc->samples.size();
     const JitterSample s = acc->samples[acc->next++];
     ImageF frame = drawTruthFrame(host_, req, *acc->target, s.offset);
-    const size_t n = acc->samples.size();
-    job.progress(float(acc->next) / float(n), "truth frame " + std::to_string(acc->next) + " of " + std::to_string(n));
-    if (n == 1) acc->single = std::move(frame);
-    else acc->sum.add(frame, s.weight);
-    if (acc->next < n) return GlStep::More;
-    auto image = std::make_shared<const ImageF>(n == 1 ? std::move(acc->single) : acc->sum.mean());
-    acc->target.reset();
-    cacheTruth(req.key, image);
-    finish(std::move(m), image);
-    return GlStep::Done;
+    const size_t done = acc->view * n + acc->next, total = requests.size() * n;
+    job.progress(float(done) / float(total), "truth frame " + std::to_string(done) + " of " + std::to_string(total));
+    if (n == 1) {
+      acc->truths[acc->view] = std::make_shared<const ImageF>(std::move(frame));
+    } else {
+      acc->sum->add(frame, s.weight);
+      if (acc->next == n) acc->truths[acc->view] = std::make_shared<const ImageF>(acc->sum->mean());
+    }
+    if (acc->truths[acc->view]) {
+      cacheTruth(req.key, acc->truths[acc->view]);
+      acc->next = 0;
+      acc->sum.reset();
+    }
+    return GlStep::More;
   });
   return {};
 }

@@ -28,7 +28,8 @@ struct Measurement {
   std::string label;        // the parameters that differ from the lab's defaults, "defaults" if none
   std::string truth;        // ReferenceSpec::truth: which truth it was judged against
   Metrics values;           // the lab's metrics, then the costs (gpu_ms, cpu_ms, the lab's own)
-  ImageF image, reference;  // image truths: the measured view and the truth (empty in history())
+  ImageF image, reference;  // image truths: the first view and its truth (empty in history())
+  std::vector<ImageF> images, references;  // every measured view, and the truth in it
   double value(const std::string& key) const;  // NaN when absent
 };
 
@@ -56,7 +57,7 @@ class Measurer {
   static constexpr const char* kJobKey = "measure";
 
  private:
-  void finish(Measurement m, const std::shared_ptr<const ImageF>& truth);
+  void finish(Measurement m, const std::vector<std::shared_ptr<const ImageF>>& truths);
   std::shared_ptr<const ImageF> cachedTruth(const std::string& key) const;
   void cacheTruth(const std::string& key, std::shared_ptr<const ImageF> image);
   std::string labelOf(const Settings& settings);

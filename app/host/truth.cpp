@@ -2,11 +2,12 @@
 
 namespace shadelab {
 
-TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time) {
+TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Settings& view) {
   TruthRequest req;
   req.spec = host.lab().reference();
   req.viewSettings = host.currentSettings();
   host.applySettings(req.spec.overrides);
+  host.applySettings(view);
   req.truthSettings = host.currentSettings();
   host.applySettings(req.viewSettings);
   req.camera = host.camera();

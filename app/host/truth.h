@@ -21,7 +21,8 @@ struct TruthRequest {
   std::string key;
 };
 
-TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time);
+// `view`: settings applied over the truth's overrides (one of the lab's measured views).
+TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Settings& view = {});
 // One frame of the truth shifted by `jitter` pixels, drawn into `target` (of req.size) and read back.
 ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter);
 // Traced truths: the GL part now, under the truth's settings; returns the CPU part.
