@@ -85,6 +85,12 @@ struct ReferenceSpec {
 // The CPU part of a traced truth: runs in a job, reports progress, stops when cancelled.
 using TraceWork = std::function<ImageF(JobContext&)>;
 
+// One view a lab's metrics compare: the lab under `settings`, against the truth drawn in it.
+struct MeasuredView {
+  Settings settings;
+  bool displayEncoded = true;  // sRGB colour (averaged in linear light), or data (normals) as stored
+};
+
 
 // A named extreme configuration. It passes when every pixel is finite and, where given,
 // `expectWarning` appears among the lab's warnings (the lab noticed and told the student).
@@ -139,8 +145,8 @@ class Lab {
   // its visibility term); the cost is always timed on the normal view.
   virtual Settings measuredView() const { return {}; }
   // Several views, each compared with the truth drawn in the same view (a shaded image and its
-  // normals, say). One by default: measuredView().
-  virtual std::vector<Settings> measuredViews() const { return {measuredView()}; }
+  // normals, say). One by default: measuredView(), encoded as the reference says.
+  virtual std::vector<MeasuredView> measuredViews() const { return {{measuredView(), reference().displayEncoded}}; }
   // Error numbers of `image` against an image truth.
   virtual Metrics metrics(const ImageF& image, const ImageF& reference) const;
   // Error numbers over every measured view: images[i] against references[i]. By default the first.

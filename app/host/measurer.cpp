@@ -91,13 +91,13 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
 
   // Every measured view of this configuration now (the GL thread), and the truth in each view:
   // from the cache, traced in a CPU job, or accumulated from jittered frames in GL slices.
-  const std::vector<Settings> views = lab.measuredViews();
-  for (auto& view : views) m.images.push_back(host_.renderView(size, time, view));
+  const std::vector<MeasuredView> views = lab.measuredViews();
+  for (auto& view : views) m.images.push_back(host_.renderView(size, time, view.settings));
   m.image = m.images.front();
   std::vector<TruthRequest> requests;
   std::vector<std::shared_ptr<const ImageF>> cached;
   for (auto& view : views) {
-    requests.push_back(describeTruth(host_, size, time, view));
+    requests.push_back(describeTruth(host_, size, time, view.settings));
     cached.push_back(cachedTruth(requests.back().key));
   }
   if (std::all_of(cached.begin(), cached.end(), [](auto& c) { return bool(c); })) {
@@ -128,7 +128,7 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
   auto acc = std::make_shared<Accumulation>();
   acc->samples = jitterSamples(spec.jitterGrid, spec.pixelFilter);
   acc->truths = cached;
-  jobs.submitGlSteps(kJobKey, label, [this, m, requests, acc, displayEncoded = spec.displayEncoded](JobContext& job) mutable {
+  jobs.submitGlSteps(kJobKey, label, [this, m, requests, acc, views](JobContext& job) mutable {
     while (acc->view < requests.size() && acc->truths[acc->view]) ++acc->view;  // cached views
     if (acc->view == requests.size()) {
       acc->target.reset();
@@ -137,7 +137,7 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
     }
     const TruthRequest& req = requests[acc->view];
     if (!acc->target) acc->target = gl::RenderTarget::create(req.size);
-    if (!acc->sum) acc->sum.emplace(displayEncoded);
+    if (!acc->sum) acc->sum.emplace(views[acc->view].displayEncoded);
     const size_t n = acc->samples.size();
     const JitterSample s = acc->samples[acc->next++];
     ImageF frame = drawTruthFrame(host_, req, *acc->target, s.offset);

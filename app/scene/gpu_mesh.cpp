@@ -42,16 +42,18 @@ bool GpuMesh::replace(GLuint attribute, const void* data, size_t bytes, size_t c
 bool GpuMesh::updatePositions(std::span<const glm::vec3> p) { return replace(kPosition, p.data(), p.size_bytes(), p.size()); }
 bool GpuMesh::updateNormals(std::span<const glm::vec3> n) { return replace(kNormal, n.data(), n.size_bytes(), n.size()); }
 
-bool GpuMesh::setScalars(GLuint location, std::span<const float> values) {
-  if (!vao_ || values.size() != vertexCount_ || (location != kScalar0 && location != kScalar1)) return false;
-  gl::Buffer& buffer = scalars_[location - kScalar0];
+bool GpuMesh::setAttribute(GLuint location, int components, std::span<const float> values) {
+  if (!vao_ || location < kScalar0 || location > kVector0 || components < 1 || components > 4 ||
+      values.size() != vertexCount_ * size_t(components))
+    return false;
+  gl::Buffer& buffer = extras_[location - kScalar0];
   if (!buffer) {
     buffer = gl::Buffer::make();
     glBindVertexArray(vao_.get());
     glBindBuffer(GL_ARRAY_BUFFER, buffer.get());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(values.size_bytes()), values.data(), GL_DYNAMIC_DRAW);
     glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
     glBindVertexArray(0);
   } else {
     glBindBuffer(GL_ARRAY_BUFFER, buffer.get());

@@ -15,7 +15,11 @@
 namespace shadelab {
 
 // Attribute locations every lab's vertex shaders use.
-enum AttributeLocation : GLuint { kPosition = 0, kNormal = 1, kUv = 2, kTangent = 3, kScalar0 = 4, kScalar1 = 5 };
+enum AttributeLocation : GLuint {
+  kPosition = 0, kNormal = 1, kUv = 2, kTangent = 3,
+  kScalar0 = 4, kScalar1 = 5,  // lab-defined floats (an offset, a seam gap, a UV scale)
+  kVector0 = 6,                // a lab-defined vec4 (a second tangent frame)
+};
 
 enum class Primitive {
   Triangles,
@@ -32,9 +36,10 @@ class GpuMesh {
   // nothing, when the length differs from the uploaded vertex count or the array was not uploaded.
   bool updatePositions(std::span<const glm::vec3> positions);
   bool updateNormals(std::span<const glm::vec3> normals);
-  // One float per vertex at `location` (kScalar0, kScalar1), in its own buffer: made on first use,
-  // then replaced in place.
-  bool setScalars(GLuint location, std::span<const float> values);
+  // `components` floats per vertex at `location` (kScalar0, kScalar1: 1; kVector0: 4), in a buffer
+  // of its own: made on first use, then replaced in place.
+  bool setAttribute(GLuint location, int components, std::span<const float> values);
+  bool setScalars(GLuint location, std::span<const float> values) { return setAttribute(location, 1, values); }
 
   void draw(Primitive primitive = Primitive::Triangles) const;
   explicit operator bool() const { return bool(vao_); }
@@ -49,7 +54,7 @@ class GpuMesh {
 
   gl::VertexArray vao_;
   gl::Buffer vertices_, indices_;
-  gl::Buffer scalars_[2];  // kScalar0, kScalar1
+  gl::Buffer extras_[3];  // kScalar0, kScalar1, kVector0
   size_t offsets_[4] = {kAbsent, kAbsent, kAbsent, kAbsent};  // byte offset of each array
   size_t vertexCount_ = 0;
   GLsizei indexCount_ = 0;

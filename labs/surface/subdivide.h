@@ -1,0 +1,24 @@
+// Finer versions of a mesh for displacement, and how big a unit of UV is on it.
+//
+// Midpoint subdivision splits every triangle into four at its edge midpoints, `levels` times;
+// neighbours share midpoints, so nothing cracks. Positions, UVs, normals (renormalised) and
+// tangents are interpolated: the surface stays the base mesh, only finer, and a displacement
+// p + n s h(uv) on it converges to the displaced base mesh as levels grow.
+#pragma once
+#include <vector>
+
+#include "scene/mesh.h"
+
+namespace shadelab {
+
+MeshData subdivide(const MeshData& mesh, int levels);
+
+// Per vertex, the world length of one unit of u and of v (|dp/du|, |dp/dv|), weighted over its
+// triangles by angle. A height of s world units is s / scale in UV units: what bump mapping and
+// parallax need to mean the same depth as displacement does.
+std::vector<glm::vec2> uvScale(const MeshData& mesh);
+
+// Subdivision levels that bring the mesh's edges down to about one texel of a `texels`-wide map.
+int levelsForTexelSize(const MeshData& mesh, int texels, int maxLevels);
+
+}  // namespace shadelab

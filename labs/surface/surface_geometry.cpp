@@ -1,0 +1,73 @@
+#include "labs/surface/surface_geometry.h"
+
+#include "labs/surface/subdivide.h"
+
+namespace shadelab {
+namespace {
+
+std::vector<float> flatten(const std::vector<glm::vec4>& v) {
+  std::vector<float> out;
+  out.reserve(v.size() * 4);
+  for (auto& x : v) out.insert(out.end(), {x.x, x.y, x.z, x.w});
+  return out;
+}
+
+}  // namespace
+
+const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const SurfaceGeometryKey& key,
+                                                     std::vector<std::string>& notes) {
+  for (auto it = kept_.begin(); it != kept_.end(); ++it)
+    if (it->key == key) {
+      if (it != kept_.begin()) {
+        Entry e = std::move(*it);
+        kept_.erase(it);
+        kept_.push_front(std::move(e));
+      }
+      notes.insert(notes.end(), kept_.front().notes.begin(), kept_.front().notes.end());
+      return kept_.front().draws;
+    }
+  Entry e;
+  e.key = key;
+  for (const Instance& inst : scene.instances) {
+    MeshData m = scene.meshes[size_t(inst.mesh)];
+    const bool uvs = !m.uvs.empty();
+    if (key.tangents && uvs) {
+      const TangentReport r = computeTangents(m);  // may split vertices where mirrored UVs meet
+      if (r.fallbacks)
+        e.notes.push_back("mesh '" + m.name + "': " + std::to_string(r.fallbacks) +
+                          " vertices have degenerate UVs; their tangent frame is an arbitrary orthonormal one");
+      const bool wantsOwn = key.source == TangentSource::Mesh || key.compare == TangentSource::Mesh;
+      if (wantsOwn && m.sourceTangents.size() != m.positions.size())
+        e.notes.push_back("mesh '" + m.name + "' has no tangents of its own (glTF TANGENT): generated ones stand in");
+    }
+    m = subdivide(m, key.level);
+    const std::vector<glm::vec4> own = m.sourceTangents.size() == m.positions.size() ? m.sourceTangents : m.tangents;
+    const std::vector<glm::vec4>& generated = m.tangents;
+    auto frames = [&](TangentSource s) -> const std::vector<glm::vec4>& { return s == TangentSource::Mesh ? own : generated; };
+    std::vector<glm::vec4> compare = key.tangents && uvs ? frames(key.compare) : std::vector<glm::vec4>();
+    if (key.tangents && uvs) m.tangents = frames(key.source);
+    if (m.tangents.empty()) m.tangents.assign(m.positions.size(), glm::vec4(1, 0, 0, 1));  // unused, but bound
+    if (compare.empty()) compare = m.tangents;
+    SurfaceDraw d;
+    d.model = inst.model;
+    d.material = m.material;
+    d.hasUvs = uvs;
+    d.triangles = m.triangleCount();
+    d.mesh = GpuMesh::upload(m);
+    std::vector<float> su, sv;
+    for (auto& s : uvScale(m)) {
+      su.push_back(s.x);
+      sv.push_back(s.y);
+    }
+    d.mesh.setScalars(kScalar0, su);
+    d.mesh.setScalars(kScalar1, sv);
+    d.mesh.setAttribute(kVector0, 4, flatten(compare));
+    e.draws.push_back(std::move(d));
+  }
+  notes.insert(notes.end(), e.notes.begin(), e.notes.end());
+  kept_.push_front(std::move(e));
+  while (kept_.size() > 3) kept_.pop_back();
+  return kept_.front().draws;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,346 @@
+#include "labs/surface/surface_lab.h"
+
+#include <cmath>
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "labs/surface/subdivide.h"
+#include "labs/surface/surface_scenes.h"
+
+namespace shadelab {
+namespace {
+
+constexpr std::string_view kTechniques[] = {"none",         "normal-map",     "bump", "displacement", "tessellation",
+                                            "parallax",     "steep-parallax", "pom",  "truth"};
+constexpr std::string_view kSurfaceAt[] = {"top", "bottom"};
+constexpr std::string_view kGreen[] = {"opengl", "directx"};
+constexpr std::string_view kDecoding[] = {"linear", "srgb"};
+constexpr std::string_view kFilters[] = {"nearest", "bilinear", "trilinear", "anisotropic"};
+constexpr std::string_view kBumpForms[] = {"consistent", "games101"};
+constexpr std::string_view kDisplacedNormals[] = {"from-height", "unchanged"};
+constexpr std::string_view kSources[] = {"generated", "mesh", "screen"};
+constexpr std::string_view kViews[] = {"shaded", "normals", "tangent-angle", "height", "uv"};
+
+// Texture units of surface.frag's samplers.
+enum Unit { kColorUnit = 0, kNormalUnit = 1, kHeightUnit = 2 };
+
+bool usesHeight(SurfaceTechnique t) {
+  return t == SurfaceTechnique::Bump || t == SurfaceTechnique::Displacement || t == SurfaceTechnique::Tessellation ||
+         t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom ||
+         t == SurfaceTechnique::Truth;
+}
+
+gl::Texture2D onePixel(const uint8_t rgba[4]) {
+  gl::SamplerState s;
+  s.minFilter = s.magFilter = GL_NEAREST;
+  return gl::Texture2D::fromRgba8({1, 1}, rgba, s, false);
+}
+
+}  // namespace
+
+std::string_view SurfaceLab::summary() const {
+  return "A flat wall made to look like bricks, five ways. Normal and bump mapping change only the normal; "
+         "displacement moves the geometry (a subdivided mesh, or tessellation); parallax mapping moves the texture "
+         "lookup as if the wall had depth. Each is measured against the truth: the height field on a very fine "
+         "mesh, supersampled. Tick a wrong step to see the mistake a student makes, and look at the tangent-angle "
+         "view to see where two tangent frames disagree.";
+}
+
+std::vector<SceneRecipe> SurfaceLab::scenes() const { return surfaceScenes(); }
+
+void SurfaceLab::visitParams(ParamVisitor& v) {
+  auto& p = params;
+  v.section("Technique");
+  v.enumParam({"technique", "Technique", "", "none: the mesh's own normal; normal-map; bump: a normal from the height "
+               "field's slope; displacement: vertices moved on a subdivided mesh; tessellation: the same on the GPU; "
+               "parallax, steep-parallax, pom: texture lookups moved as if the surface had depth; truth: the field on "
+               "a very fine mesh, what the others are judged against."}, p.technique, kTechniques);
+  v.floatParam({"height_scale", "Height scale", "world", "World units of relief for a height of 1 (negative: dents "
+                "for bumps). The procedural maps are baked for 0.04."}, p.heightScale, -2.0f, 2.0f);
+  v.enumParam({"surface_at", "Surface at", "", "top: the polygon is the top of the height field and mortar is recessed "
+               "(parallax mapping's convention); bottom: p' = p + n s h, bricks stand out (the GAMES101 form)."},
+              p.surfaceAt, kSurfaceAt);
+  v.section("Normal map");
+  v.floatParam({"normal_strength", "Strength", "", "Scales the map's x and y: 1 as baked."}, p.normalStrength, 0.0f, 4.0f);
+  v.enumParam({"green", "Green channel", "", "opengl: +Y along +v (how these maps are made); directx: +Y along -v. The "
+               "wrong one lights every brick from the other side vertically."}, p.green, kGreen);
+  v.enumParam({"decoding", "Decoding", "", "linear: the map's numbers as they are; srgb: decoded as a colour (a "
+               "wrong step: vectors bend towards the tangent plane)."}, p.decoding, kDecoding);
+  v.enumParam({"filter", "Texture filter", "", "nearest, bilinear, trilinear (mipmapped) or 16x anisotropic, for every "
+               "map of the lab."}, p.filter, kFilters);
+  v.section("Bump");
+  v.enumParam({"bump_form", "Bump form", "", "consistent: the slope in world units from the height scale and the mesh's "
+               "UV scale, agreeing with displacement; games101: dU = kh kn (h(u + 1/w, v) - h(u, v)), as in the "
+               "assignment."}, p.bumpForm, kBumpForms);
+  v.floatParam({"kh", "kh", "", "GAMES101 height scale."}, p.kh, 0.0f, 50.0f);
+  v.floatParam({"kn", "kn", "", "GAMES101 normal scale."}, p.kn, 0.0f, 50.0f);
+  v.section("Displacement");
+  v.intParam({"subdivision", "Subdivision", "levels", "Midpoint subdivisions of the mesh for vertex displacement (each "
+              "quadruples the triangles; capped at 2.5 M)."}, p.subdivision, 0, 10);
+  v.intParam({"tess_level", "Tessellation level", "", "Parts per patch edge and inside, 1..64."}, p.tessLevel, 1, 64);
+  v.enumParam({"displaced_normals", "Displaced normals", "", "from-height: the normal from the height field's slope; "
+               "unchanged: the base mesh's, so the displaced bricks are lit like a flat wall."},
+              p.displacedNormals, kDisplacedNormals);
+  v.section("Parallax");
+  v.intParam({"layers", "Layers", "", "Depth slices the steep parallax and POM march through (the loop's bound)."},
+             p.layers, 1, 128);
+  v.boolParam({"self_shadow", "Self-shadowing", "", "March from the point found towards the light: bricks shadow the "
+               "mortar."}, p.selfShadow);
+  v.section("Tangent frame");
+  v.enumParam({"tangents", "Tangent source", "", "generated: per vertex, angle-weighted, split where mirrored UVs meet "
+               "(MikkTSpace's way); mesh: the file's own (glTF TANGENT); screen: per pixel, from screen-space "
+               "derivatives."}, p.tangents, kSources);
+  v.enumParam({"compare_with", "Compare with", "", "The other source for the tangent-angle view."}, p.compareWith, kSources);
+  v.boolParam({"overlay", "Show T, B, N", "", "Draw each vertex's frame: tangent red, bitangent green, normal blue."},
+              p.overlay);
+  v.floatParam({"overlay_length", "Frame length", "", "Length of the drawn frames, x 4 % of the scene's size."},
+               p.overlayLength, 0.1f, 10.0f, true);
+  v.section("Wrong steps");
+  v.boolParam({"add_to_old_normal", "Add to the old normal", "", "n = n_old + TBN (2c - 1) instead of TBN (2c - 1): "
+               "the map's perturbation is halved and everything leans towards the flat normal."}, p.addToOldNormal);
+  v.boolParam({"no_renormalize", "Skip normalising", "", "Interpolated normals and tangents are shorter than 1 between "
+               "vertices; unnormalised, the lighting dims and bands."}, p.noRenormalize);
+  v.boolParam({"no_orthogonalize", "Skip re-orthogonalising", "", "The interpolated tangent is no longer perpendicular "
+               "to the interpolated normal; without Gram-Schmidt the frame is skewed."}, p.noOrthogonalize);
+  v.section("Light and view");
+  v.floatParam({"light_elevation", "Light elevation", "deg", "Above the surface's plane (the wall's, or the horizon); "
+                "low angles show relief best."}, p.lightElevationDeg, -10.0f, 90.0f);
+  v.floatParam({"light_azimuth", "Light azimuth", "deg", "Around the view axis of the wall."}, p.lightAzimuthDeg, -180.0f, 180.0f);
+  v.enumParam({"view", "View", "", "shaded; normals (world, 0.5 +- 0.5); tangent-angle (tangent vs compare_with, 0..45 "
+               "deg); height; uv."}, p.view, kViews);
+  v.intParam({"tessellation", "Sphere segments", "", "Segments of the brick sphere."}, p.tessellation, 8, 256);
+}
+
+// Per-vertex tangent frames are built only when something reads them: a technique that works in
+// tangent space with a per-vertex source, the tangent-angle view, or the overlay.
+bool SurfaceLab::needsTangents() const {
+  const auto t = params.technique;
+  const bool tangentSpace = t == SurfaceTechnique::NormalMap || t == SurfaceTechnique::Bump ||
+                            t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax ||
+                            t == SurfaceTechnique::Pom ||
+                            ((t == SurfaceTechnique::Displacement || t == SurfaceTechnique::Tessellation ||
+                              t == SurfaceTechnique::Truth) &&
+                             params.displacedNormals == DisplacedNormals::FromHeight);
+  const bool compared = params.view == SurfaceView::TangentAngle &&
+                        (params.tangents != TangentSource::Screen || params.compareWith != TangentSource::Screen);
+  return (tangentSpace && params.tangents != TangentSource::Screen) || compared || params.overlay;
+}
+
+SceneNeeds SurfaceLab::needs() const {
+  SceneNeeds n;
+  n.uvs = true;
+  n.baseColorTextures = true;
+  n.normalTextures = params.technique == SurfaceTechnique::NormalMap;
+  n.heightTextures = usesHeight(params.technique) || params.view == SurfaceView::Height;
+  n.normalMapsAsSrgb = params.decoding == MapDecoding::Srgb;
+  static const GLenum minFilter[] = {GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+  n.sampling.minFilter = minFilter[int(params.filter)];
+  n.sampling.magFilter = params.filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;
+  n.sampling.anisotropy = params.filter == TextureFilter::Anisotropic ? 16.0f : 1.0f;
+  n.tessellation = params.tessellation;
+  return n;
+}
+
+ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
+  ProgramSpec spec;
+  const SurfaceTechnique t = hasUvs ? p.technique : SurfaceTechnique::None;  // no UVs: nothing to map
+  spec.name = "surface/" + std::string(kTechniques[int(t)]);
+  const bool tess = t == SurfaceTechnique::Tessellation;
+  spec.stages.push_back({GL_VERTEX_SHADER, "surface/surface.vert"});
+  if (tess) {
+    spec.stages.push_back({GL_TESS_CONTROL_SHADER, "surface/surface.tesc"});
+    spec.stages.push_back({GL_TESS_EVALUATION_SHADER, "surface/surface.tese"});
+    spec.defines.emplace_back("TESSELLATED", "1");
+  }
+  spec.stages.push_back({GL_FRAGMENT_SHADER, "surface/surface.frag"});
+  auto define = [&](const char* name) { spec.defines.emplace_back(name, "1"); };
+  switch (t) {
+    case SurfaceTechnique::NormalMap: define("NORMAL_MAP"); break;
+    case SurfaceTechnique::Bump:
+      define("BUMP");
+      if (p.bumpForm == BumpForm::Games101) define("BUMP_GAMES101");
+      break;
+    case SurfaceTechnique::Displacement:
+    case SurfaceTechnique::Truth:
+      define("DISPLACE_VERTEX");
+      if (p.displacedNormals == DisplacedNormals::FromHeight) define("HEIGHT_NORMALS");
+      break;
+    case SurfaceTechnique::Tessellation:
+      if (p.displacedNormals == DisplacedNormals::FromHeight) define("HEIGHT_NORMALS");
+      break;
+    case SurfaceTechnique::Parallax: define("PARALLAX"); break;
+    case SurfaceTechnique::SteepParallax: define("STEEP"); break;
+    case SurfaceTechnique::Pom: define("POM"); break;
+    case SurfaceTechnique::None: break;
+  }
+  const bool parallax = t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
+  if (parallax && p.selfShadow) define("SELF_SHADOW");
+  if (p.tangents == TangentSource::Screen) define("TANGENTS_SCREEN");
+  if (p.compareWith == TangentSource::Screen) define("COMPARE_SCREEN");
+  if (p.addToOldNormal) define("WRONG_ADD_TO_NORMAL");
+  if (p.noRenormalize) define("WRONG_NO_RENORMALIZE");
+  if (p.noOrthogonalize) define("WRONG_NO_ORTHOGONALIZE");
+  static const char* views[] = {"VIEW_SHADED", "VIEW_NORMALS", "VIEW_TANGENT_ANGLE", "VIEW_HEIGHT", "VIEW_UV"};
+  define(views[int(p.view)]);
+  return spec;
+}
+
+ProgramSpec SurfaceLab::overlaySpec() {
+  return {"surface/tbn overlay",
+          {{GL_VERTEX_SHADER, "surface/tbn.vert"}, {GL_GEOMETRY_SHADER, "surface/tbn.geom"},
+           {GL_FRAGMENT_SHADER, "surface/tbn.frag"}},
+          {}};
+}
+
+std::vector<ProgramSpec> SurfaceLab::allPrograms() const {
+  std::vector<ProgramSpec> all = {overlaySpec()};
+  SurfaceParams p;
+  for (int t = 0; t < 9; ++t)
+    for (int view = 0; view < 5; ++view) {
+      p = SurfaceParams{};
+      p.technique = SurfaceTechnique(t);
+      p.view = SurfaceView(view);
+      p.selfShadow = view == 0;
+      p.tangents = TangentSource((t + view) % 3);
+      p.compareWith = TangentSource((t + view + 1) % 3);
+      p.bumpForm = BumpForm(view % 2);
+      p.displacedNormals = DisplacedNormals(view % 2);
+      all.push_back(programSpec(p, true));
+    }
+  for (int wrong = 1; wrong < 8; ++wrong) {  // every combination of the three wrong steps
+    p = SurfaceParams{};
+    p.technique = SurfaceTechnique::NormalMap;
+    p.addToOldNormal = wrong & 1;
+    p.noRenormalize = wrong & 2;
+    p.noOrthogonalize = wrong & 4;
+    all.push_back(programSpec(p, true));
+  }
+  return all;
+}
+
+std::string SurfaceLab::setup(LabContext& ctx) {
+  shaders_ = &ctx.shaders;
+  const uint8_t white[4] = {255, 255, 255, 255}, flat[4] = {128, 128, 255, 255}, top[4] = {255, 255, 255, 255};
+  whiteMap_ = onePixel(white);
+  flatNormalMap_ = onePixel(flat);
+  topHeightMap_ = onePixel(top);
+  return {};
+}
+
+void SurfaceLab::teardown() {
+  program_.reset();
+  overlay_.reset();
+  geometry_.clear();
+  whiteMap_ = gl::Texture2D();
+  flatNormalMap_ = gl::Texture2D();
+  topHeightMap_ = gl::Texture2D();
+  shaders_ = nullptr;
+}
+
+int SurfaceLab::levelFor(const Scene& scene) const {
+  int level = 0;
+  if (params.technique == SurfaceTechnique::Displacement) level = params.subdivision;
+  if (params.technique == SurfaceTechnique::Truth) {
+    // About one vertex per texel of the height map, wherever the scene has one.
+    int texels = 256;
+    for (auto& mat : scene.materials)
+      if (mat.heightImage >= 0) texels = std::max(texels, scene.images[size_t(mat.heightImage)].size.x);
+    for (auto& inst : scene.instances) level = std::max(level, levelsForTexelSize(scene.meshes[size_t(inst.mesh)], texels, 10));
+  }
+  size_t triangles = scene.triangleCount();
+  int allowed = 0;
+  while (allowed < level && triangles * 4 <= size_t(kMaxTriangles)) {
+    triangles *= 4;
+    ++allowed;
+  }
+  return allowed;
+}
+
+void SurfaceLab::render(Frame& frame) {
+  frameNotes_.clear();
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the silhouette metric
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  SurfaceGeometryKey key;
+  key.revision = frame.scene.revision;
+  key.level = levelFor(frame.scene);
+  key.tangents = needsTangents();
+  if (key.tangents) {  // otherwise the sources do not matter: one key, one build
+    key.source = params.tangents;
+    key.compare = params.compareWith;
+  }
+  const auto& draws = geometry_.get(frame.scene, key, frameNotes_);
+  drawnLevel_ = key.level;
+  drawnTriangles_ = 0;
+  const Bounds b = frame.scene.bounds;
+  // The light: elevation above the wall's plane (its normal is +z) or the ground's (+y).
+  const float el = glm::radians(params.lightElevationDeg), az = glm::radians(params.lightAzimuthDeg);
+  const bool wall = frame.scene.name == "bricks" || frame.scene.name == "bricks-learnopengl";
+  const glm::vec3 lightDir = wall ? glm::vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el))
+                                  : glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+  const bool tess = params.technique == SurfaceTechnique::Tessellation;
+  std::string what = std::string(kTechniques[int(params.technique)]);
+  if (params.technique == SurfaceTechnique::Displacement || params.technique == SurfaceTechnique::Truth)
+    what += ", subdivision " + std::to_string(key.level);
+  if (tess) what += ", level " + std::to_string(params.tessLevel);
+  {
+    auto pass = frame.pass("surface: " + what);
+    for (const SurfaceDraw& d : draws) {
+      const Material& mat = frame.scene.materials[size_t(d.material)];
+      Program& prog = program_.get(*shaders_, programSpec(params, d.hasUvs));
+      prog.use();
+      prog.set("u_model", d.model);
+      prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(d.model)));
+      prog.set("u_viewProj", frame.viewProj());
+      prog.set("u_eye", frame.camera.eye());
+      prog.set("u_lightDir", glm::normalize(lightDir));
+      prog.set("u_baseColor", mat.baseColor);
+      const gl::Texture2D* color = frame.gpu.baseColorTexture(mat);
+      const gl::Texture2D* normal = frame.gpu.normalTexture(mat);
+      const gl::Texture2D* height = frame.gpu.heightTexture(mat);
+      (color ? *color : whiteMap_).bind(kColorUnit);
+      (normal ? *normal : flatNormalMap_).bind(kNormalUnit);
+      (height ? *height : topHeightMap_).bind(kHeightUnit);
+      prog.set("u_baseColorMap", int(kColorUnit));
+      prog.set("u_normalMap", int(kNormalUnit));
+      prog.set("u_heightMap", int(kHeightUnit));
+      const glm::ivec2 hs = height ? height->size() : glm::ivec2(1);
+      prog.set("u_heightTexel", 1.0f / glm::vec2(hs));
+      prog.set("u_heightScale", params.heightScale);
+      prog.set("u_heightBase", params.surfaceAt == SurfaceAt::Top ? 1.0f : 0.0f);
+      prog.set("u_normalStrength", params.normalStrength);
+      prog.set("u_greenSign", params.green == GreenConvention::OpenGl ? 1.0f : -1.0f);
+      prog.set("u_kh", params.kh);
+      prog.set("u_kn", params.kn);
+      prog.set("u_layers", params.layers);
+      prog.set("u_tessLevel", float(params.tessLevel));
+      d.mesh.draw(tess ? Primitive::Patches : Primitive::Triangles);
+      drawnTriangles_ += tess ? d.triangles * size_t(params.tessLevel) * size_t(params.tessLevel) : d.triangles;
+    }
+  }
+  if (params.overlay) {
+    auto pass = frame.pass("tangent frames");
+    Program& prog = overlay_.get(*shaders_, overlaySpec());
+    prog.use();
+    prog.set("u_viewProj", frame.viewProj());
+    prog.set("u_length", 0.04f * b.radius() * params.overlayLength);
+    SurfaceGeometryKey base = key;
+    base.level = 0;
+    base.tangents = true;
+    for (const SurfaceDraw& d : geometry_.get(frame.scene, base, frameNotes_)) {
+      prog.set("u_model", d.model);
+      prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(d.model)));
+      d.mesh.draw(Primitive::Points);
+    }
+  }
+}
+
+std::vector<ProgramRef> SurfaceLab::activePrograms() const {
+  std::vector<ProgramRef> out;
+  if (program_.current()) out.push_back(program_.current());
+  if (params.overlay && overlay_.current()) out.push_back(overlay_.current());
+  return out;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,97 @@
+// Surface-detail lab: normal mapping, bump mapping, displacement (on a subdivided mesh, and by
+// tessellation) and the parallax family, all judged against one truth: the height field applied
+// to a very finely subdivided mesh, normals from the field, supersampled. The wrong steps a student
+// takes on the way (adding the perturbation to the old normal, skipping a normalisation, an sRGB
+// or DirectX-green decode, a frame not made orthogonal again) are toggles with a one-line reason,
+// and the tangent frame has three sources to compare: the mesh's own, generated, per pixel.
+// Blinn 1978 (bump); Cohen et al. 1998 (normal maps); Kaneko et al. 2001 (parallax);
+// Tatarchuk 2006 (parallax occlusion mapping); Mikkelsen 2008 (tangent frames).
+// Read next: shaders/surface/surface.frag, shaders/surface/height.glsl, tutorials/surface.md.
+#pragma once
+#include "labs/lab.h"
+#include "labs/surface/surface_geometry.h"
+
+namespace shadelab {
+
+enum class SurfaceTechnique { None, NormalMap, Bump, Displacement, Tessellation, Parallax, SteepParallax, Pom, Truth };
+enum class SurfaceAt { Top, Bottom };
+enum class GreenConvention { OpenGl, DirectX };
+enum class MapDecoding { Linear, Srgb };
+enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+enum class BumpForm { Consistent, Games101 };
+enum class DisplacedNormals { FromHeight, Unchanged };
+enum class SurfaceView { Shaded, Normals, TangentAngle, Height, Uv };
+
+struct SurfaceParams {
+  SurfaceTechnique technique = SurfaceTechnique::Pom;
+  float heightScale = 0.04f;  // world units for a height of 1 (the procedural maps are baked for 0.04)
+  SurfaceAt surfaceAt = SurfaceAt::Top;
+  float normalStrength = 1.0f;
+  GreenConvention green = GreenConvention::OpenGl;
+  MapDecoding decoding = MapDecoding::Linear;
+  TextureFilter filter = TextureFilter::Trilinear;
+  BumpForm bumpForm = BumpForm::Consistent;
+  float kh = 0.2f, kn = 0.1f;  // GAMES101 assignment 3's values
+  int subdivision = 6;         // midpoint levels for vertex displacement
+  int tessLevel = 16;
+  DisplacedNormals displacedNormals = DisplacedNormals::FromHeight;
+  int layers = 16;             // steep parallax / POM depth slices
+  bool selfShadow = false;
+  TangentSource tangents = TangentSource::Generated;
+  TangentSource compareWith = TangentSource::Screen;
+  bool overlay = false;
+  float overlayLength = 1.0f;
+  bool addToOldNormal = false;
+  bool noRenormalize = false;
+  bool noOrthogonalize = false;
+  float lightElevationDeg = 20.0f;  // low: relief casts visible shade
+  float lightAzimuthDeg = -40.0f;
+  SurfaceView view = SurfaceView::Shaded;
+  int tessellation = 64;       // segments of the brick sphere
+};
+
+class SurfaceLab final : public LabWithParams<SurfaceParams> {
+ public:
+  static constexpr int kMaxTriangles = 2'500'000;  // subdivision stops before this (memory, llvmpipe)
+
+  std::string_view id() const override { return "surface"; }
+  std::string_view title() const override { return "Surface detail: normal, bump, displacement, parallax"; }
+  std::string_view summary() const override;
+  std::string_view defaultScene() const override { return "bricks"; }
+  std::vector<SceneRecipe> scenes() const override;
+
+  void visitParams(ParamVisitor& v) override;
+  SceneNeeds needs() const override;
+  std::vector<ProgramSpec> allPrograms() const override;
+
+  std::string setup(LabContext& ctx) override;
+  void teardown() override;
+  void render(Frame& frame) override;
+  std::vector<ProgramRef> activePrograms() const override;
+  std::vector<std::string> warnings() const override;
+  std::vector<LabPanel> panels() const override;
+
+  ReferenceSpec reference() const override;
+  std::vector<MeasuredView> measuredViews() const override;
+  Metrics viewMetrics(const std::vector<ImageF>& images, const std::vector<ImageF>& references) const override;
+  std::vector<PlotSpec> plots() const override;
+  std::vector<StressCase> stressCases() const override;
+  std::vector<SweepAxis> standardSweep() const override;
+
+ private:
+  ProgramSpec programSpec(const SurfaceParams& p, bool hasUvs) const;
+  static ProgramSpec overlaySpec();
+  bool needsTangents() const;
+  int levelFor(const Scene& scene) const;  // subdivision level the current technique draws at
+
+  ShaderLibrary* shaders_ = nullptr;
+  ProgramSlot program_, overlay_;
+  SurfaceGeometry geometry_;
+  gl::Texture2D whiteMap_, flatNormalMap_, topHeightMap_;  // stand-ins where a material has none
+  // From the last frame: what was drawn and what the student should know about it.
+  std::vector<std::string> frameNotes_;
+  size_t drawnTriangles_ = 0;
+  int drawnLevel_ = 0;
+};
+
+}  // namespace shadelab
