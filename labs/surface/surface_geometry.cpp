@@ -33,9 +33,10 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
     const bool uvs = !m.uvs.empty();
     if (key.tangents && uvs) {
       const TangentReport r = computeTangents(m);  // may split vertices where mirrored UVs meet
-      if (r.fallbacks)
-        e.notes.push_back("mesh '" + m.name + "': " + std::to_string(r.fallbacks) +
-                          " vertices have degenerate UVs; their tangent frame is an arbitrary orthonormal one");
+      if (r.degenerateUvTriangles)
+        e.notes.push_back("mesh '" + m.name + "': " + std::to_string(r.degenerateUvTriangles) +
+                          " triangles have degenerate UVs (zero area in texture space) and add nothing to the tangents; " +
+                          std::to_string(r.fallbacks) + " vertices touch only such triangles and get an arbitrary frame");
       const bool wantsOwn = key.source == TangentSource::Mesh || key.compare == TangentSource::Mesh;
       if (wantsOwn && m.sourceTangents.size() != m.positions.size())
         e.notes.push_back("mesh '" + m.name + "' has no tangents of its own (glTF TANGENT): generated ones stand in");

@@ -66,8 +66,8 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                "wrong one lights every brick from the other side vertically."}, p.green, kGreen);
   v.enumParam({"decoding", "Decoding", "", "linear: the map's numbers as they are; srgb: decoded as a colour (a "
                "wrong step: vectors bend towards the tangent plane)."}, p.decoding, kDecoding);
-  v.enumParam({"filter", "Texture filter", "", "nearest, bilinear, trilinear (mipmapped) or 16x anisotropic, for every "
-               "map of the lab."}, p.filter, kFilters);
+  v.enumParam({"filter", "Texture filter", "", "nearest, bilinear, trilinear (mipmapped) or 16x anisotropic, for the "
+               "colour and normal maps (the height field, being geometry, is always trilinear)."}, p.filter, kFilters);
   v.section("Bump");
   v.enumParam({"bump_form", "Bump form", "", "consistent: the slope in world units from the height scale and the mesh's "
                "UV scale, agreeing with displacement; games101: dU = kh kn (h(u + 1/w, v) - h(u, v)), as in the "
@@ -91,6 +91,8 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                "(MikkTSpace's way); mesh: the file's own (glTF TANGENT); screen: per pixel, from screen-space "
                "derivatives."}, p.tangents, kSources);
   v.enumParam({"compare_with", "Compare with", "", "The other source for the tangent-angle view."}, p.compareWith, kSources);
+  v.floatParam({"angle_scale", "Angle scale", "deg", "Tangent-angle view: the angle drawn at full colour (yellow)."},
+               p.angleScale, 0.1f, 90.0f, true);
   v.boolParam({"overlay", "Show T, B, N", "", "Draw each vertex's frame: tangent red, bitangent green, normal blue."},
               p.overlay);
   v.floatParam({"overlay_length", "Frame length", "", "Length of the drawn frames, x 4 % of the scene's size."},
@@ -106,8 +108,8 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.floatParam({"light_elevation", "Light elevation", "deg", "Above the surface's plane (the wall's, or the horizon); "
                 "low angles show relief best."}, p.lightElevationDeg, -10.0f, 90.0f);
   v.floatParam({"light_azimuth", "Light azimuth", "deg", "Around the view axis of the wall."}, p.lightAzimuthDeg, -180.0f, 180.0f);
-  v.enumParam({"view", "View", "", "shaded; normals (world, 0.5 +- 0.5); tangent-angle (tangent vs compare_with, 0..45 "
-               "deg); height; uv."}, p.view, kViews);
+  v.enumParam({"view", "View", "", "shaded; normals (world, 0.5 +- 0.5); tangent-angle (the tangent against "
+               "compare_with's, 0 slate .. angle_scale yellow); height; uv."}, p.view, kViews);
   v.intParam({"tessellation", "Sphere segments", "", "Segments of the brick sphere."}, p.tessellation, 8, 256);
 }
 
@@ -224,6 +226,11 @@ std::string SurfaceLab::setup(LabContext& ctx) {
   whiteMap_ = onePixel(white);
   flatNormalMap_ = onePixel(flat);
   topHeightMap_ = onePixel(top);
+  heightSampler_ = gl::Sampler::make();
+  glSamplerParameteri(heightSampler_.get(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glSamplerParameteri(heightSampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(heightSampler_.get(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glSamplerParameteri(heightSampler_.get(), GL_TEXTURE_WRAP_T, GL_REPEAT);
   return {};
 }
 
@@ -234,6 +241,7 @@ void SurfaceLab::teardown() {
   whiteMap_ = gl::Texture2D();
   flatNormalMap_ = gl::Texture2D();
   topHeightMap_ = gl::Texture2D();
+  heightSampler_.reset();
   shaders_ = nullptr;
 }
 
@@ -287,6 +295,9 @@ void SurfaceLab::render(Frame& frame) {
   {
     auto pass = frame.pass("surface: " + what);
     for (const SurfaceDraw& d : draws) {
+      if (!d.hasUvs && params.technique != SurfaceTechnique::None)
+        frameNotes_.push_back("a mesh has no UVs: there is nothing to look the maps up with, so it is drawn with its "
+                              "own normals and no surface detail");
       const Material& mat = frame.scene.materials[size_t(d.material)];
       Program& prog = program_.get(*shaders_, programSpec(params, d.hasUvs));
       prog.use();
@@ -302,6 +313,7 @@ void SurfaceLab::render(Frame& frame) {
       (color ? *color : whiteMap_).bind(kColorUnit);
       (normal ? *normal : flatNormalMap_).bind(kNormalUnit);
       (height ? *height : topHeightMap_).bind(kHeightUnit);
+      glBindSampler(kHeightUnit, heightSampler_.get());
       prog.set("u_baseColorMap", int(kColorUnit));
       prog.set("u_normalMap", int(kNormalUnit));
       prog.set("u_heightMap", int(kHeightUnit));
@@ -315,7 +327,9 @@ void SurfaceLab::render(Frame& frame) {
       prog.set("u_kn", params.kn);
       prog.set("u_layers", params.layers);
       prog.set("u_tessLevel", float(params.tessLevel));
+      prog.set("u_angleScale", params.angleScale);
       d.mesh.draw(tess ? Primitive::Patches : Primitive::Triangles);
+      glBindSampler(kHeightUnit, 0);
       drawnTriangles_ += tess ? d.triangles * size_t(params.tessLevel) * size_t(params.tessLevel) : d.triangles;
     }
   }

@@ -39,8 +39,9 @@ struct SurfaceParams {
   bool selfShadow = false;
   TangentSource tangents = TangentSource::Generated;
   TangentSource compareWith = TangentSource::Screen;
+  float angleScale = 10.0f;    // degrees at full colour in the tangent-angle view
   bool overlay = false;
-  float overlayLength = 1.0f;
+  float overlayLength = 2.0f;
   bool addToOldNormal = false;
   bool noRenormalize = false;
   bool noOrthogonalize = false;
@@ -88,6 +89,9 @@ class SurfaceLab final : public LabWithParams<SurfaceParams> {
   ProgramSlot program_, overlay_;
   SurfaceGeometry geometry_;
   gl::Texture2D whiteMap_, flatNormalMap_, topHeightMap_;  // stand-ins where a material has none
+  // The height field is geometry, not a picture: always trilinear, never anisotropic (16 taps per
+  // lookup of a 64-step parallax march is what turned one llvmpipe frame into 18 seconds).
+  gl::Sampler heightSampler_;
   // From the last frame: what was drawn and what the student should know about it.
   std::vector<std::string> frameNotes_;
   size_t drawnTriangles_ = 0;

@@ -119,7 +119,7 @@ std::vector<StressCase> SurfaceLab::stressCases() const {
       {"huge-tessellated", {{"technique", "tessellation"}, {"height_scale", "-2"}, {"tess_level", "64"}}, "", "", "dents"},
       {"negative-pom", {{"technique", "pom"}, {"height_scale", "-0.3"}}, "", "", "dents"},
       {"spike-displacement", {{"technique", "displacement"}, {"height_scale", "0.5"}}, "spike", "", ""},
-      {"spike-pom", {{"technique", "pom"}, {"layers", "128"}, {"height_scale", "0.5"}}, "spike", "", "folds"},
+      {"spike-pom", {{"technique", "pom"}, {"layers", "128"}, {"height_scale", "0.8"}}, "spike", "", "folds"},
       {"spike-bump", {{"technique", "bump"}, {"height_scale", "0.5"}}, "spike", "", ""},
       {"zero-length-normals", {{"technique", "normal-map"}}, "broken-maps", "", ""},
       {"zero-length-normals-no-renormalize", {{"technique", "normal-map"}, {"no_renormalize", "on"}}, "broken-maps", "",

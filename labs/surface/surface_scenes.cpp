@@ -98,7 +98,10 @@ std::vector<SceneRecipe> surfaceScenes() {
                    [](Scene& s, const SceneNeeds&) {
                      if (auto err = loadObj(dataDirectory() / "meshes/spot_pytorch3d/cow.obj", s); !err.empty()) return err;
                      const int material = brickMaterial(s, makeBrickTextures(512, kBrickDepth));
-                     for (auto& m : s.meshes) m.material = material;
+                     for (auto& m : s.meshes) {
+                       m.material = material;
+                       for (auto& uv : m.uvs) uv *= 6.0f;  // Spot's charts are small: bricks of a readable size
+                     }
                      s.suggestedCamera = "yaw=150,pitch=15";
                      return std::string();
                    }});

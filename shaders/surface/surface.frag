@@ -37,6 +37,9 @@ uniform float u_greenSign;       // +1 OpenGL (+Y along +v), -1 DirectX
 #ifdef BUMP
 uniform float u_kh, u_kn;
 #endif
+#ifdef VIEW_TANGENT_ANGLE
+uniform float u_angleScale;  // degrees at full colour
+#endif
 #if defined(PARALLAX) || defined(STEEP) || defined(POM)
 uniform int u_layers;  // depth slices to march (steep, POM) and the self-shadow ray's steps
 #endif
@@ -76,6 +79,9 @@ vec3 toWorld(mat3 tbn, vec3 nTs) {
 }
 
 void main() {
+#ifdef USES_HEIGHT
+  initHeightGradients(fin.uv);
+#endif
 #ifdef TANGENTS_SCREEN
   mat3 tbn = frame(fin.tangent, true);
 #else
@@ -118,14 +124,14 @@ void main() {
 #if defined(VIEW_NORMALS)
   o_color = vec4(N * 0.5 + 0.5, 1.0);  // world normal, 0.5 +- 0.5 per axis (the metrics decode it)
 #elif defined(VIEW_TANGENT_ANGLE)
-  // The angle between this fragment's tangent and the other source's, 0 (slate) .. 45 deg (yellow).
+  // The angle between this fragment's tangent and the other source's, 0 (slate) .. u_angleScale (yellow).
 #ifdef COMPARE_SCREEN
   vec3 other = frame(fin.compareTangent, true)[0];
 #else
   vec3 other = frame(fin.compareTangent, false)[0];
 #endif
   float angle = degrees(acos(clamp(dot(tbn[0], other), -1.0, 1.0)));
-  float t = clamp(angle / 45.0, 0.0, 1.0);
+  float t = clamp(angle / u_angleScale, 0.0, 1.0);
   vec3 heat = mix(mix(vec3(0.33, 0.36, 0.45), vec3(0.85, 0.25, 0.35), smoothstep(0.0, 0.5, t)), vec3(1.0, 0.95, 0.5),
                   smoothstep(0.5, 1.0, t));
   o_color = vec4(linearToSrgb(heat), 1.0);

@@ -1,11 +1,31 @@
-// Transform-feedback capture of a vertex stage's output (gl_test.h).
+// Test helpers of gl_test.h: golden images, transform-feedback capture of a vertex stage's output.
 #include <gtest/gtest.h>
+
+#include <cstdlib>
 
 #include "gl_test.h"
 #include "scene/gpu_mesh.h"
 #include "shader/preprocessor.h"
 
 namespace shadelab::test {
+
+void expectGolden(const std::string& name, const ImageF& actual) {
+  ASSERT_EQ(countNonFinite(actual), 0u) << name;
+  const std::string golden = std::string(SHADELAB_GOLDEN_DIR) + "/" + name + ".png";
+  if (std::getenv("SHADELAB_UPDATE_GOLDEN")) {
+    ASSERT_EQ(writePng(golden, actual), "");
+    GTEST_SKIP() << "updated " << golden;
+  }
+  ImageF expected;
+  ASSERT_EQ(readImage(golden, expected), "") << "run with SHADELAB_UPDATE_GOLDEN=1 to create " << golden;
+  const ImageError e = compareImages(actual, expected, 0.2);
+  if (e.meanError > 0.004 || e.badPixelPct > 0.5) {
+    writePng(testOutput(name + "_actual.png"), actual);
+    writePng(testOutput(name + "_diff.png"), diffImage(actual, expected));
+  }
+  EXPECT_LE(e.meanError, 0.004) << name;
+  EXPECT_LE(e.badPixelPct, 0.5) << name;
+}
 
 std::vector<glm::vec3> captureVertexOutput(const std::string& relPath, const Defines& defines, const char* varying,
                                            const GpuMesh& mesh, const std::function<void(GLuint)>& uniforms) {

@@ -139,22 +139,7 @@ class ShadowGoldens : public ::testing::TestWithParam<ShadowGolden> {};
 TEST_P(ShadowGoldens, MatchWithinTolerance) {
   auto host = shadowsHost(GetParam().sets);
   host->renderFrame({256, 144});
-  const ImageF actual = host->readImage();
-  ASSERT_EQ(countNonFinite(actual), 0u);
-  const std::string golden = std::string(SHADELAB_GOLDEN_DIR) + "/" + GetParam().name + ".png";
-  if (std::getenv("SHADELAB_UPDATE_GOLDEN")) {
-    ASSERT_EQ(writePng(golden, actual), "");
-    GTEST_SKIP() << "updated " << golden;
-  }
-  ImageF expected;
-  ASSERT_EQ(readImage(golden, expected), "");
-  const ImageError e = compareImages(actual, expected, 0.2);
-  if (e.meanError > 0.004 || e.badPixelPct > 0.5) {
-    writePng(test::testOutput(std::string(GetParam().name) + "_actual.png"), actual);
-    writePng(test::testOutput(std::string(GetParam().name) + "_diff.png"), diffImage(actual, expected));
-  }
-  EXPECT_LE(e.meanError, 0.004);
-  EXPECT_LE(e.badPixelPct, 0.5);
+  test::expectGolden(GetParam().name, host->readImage());
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -1,0 +1,160 @@
+// The surface-detail lab on OSMesa: only the maps a technique reads are decoded, a filter change
+// re-samples without a rebuild, vertex displacement moves every vertex by exactly s (h - base)
+// along its normal (transform feedback), the file's own tangents are used when it has them,
+// displacement approaches the truth as the mesh is subdivided, and a golden image per technique.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gl_test.h"
+#include "host/measurer.h"
+
+using namespace shadelab;
+
+namespace {
+
+std::unique_ptr<LabHost> surfaceHost(const std::vector<std::string>& sets, const char* scene = "bricks") {
+  auto host = std::make_unique<LabHost>(test::builtinShaders());
+  EXPECT_EQ(host->selectLab("surface"), "");
+  EXPECT_EQ(host->selectScene(scene), "");
+  for (auto& s : sets) EXPECT_EQ(host->set(s), "") << s;
+  return host;
+}
+
+double metric(const Metrics& m, const char* key) {
+  for (auto& [k, v] : m)
+    if (k == key) return v;
+  ADD_FAILURE() << "no metric " << key;
+  return NAN;
+}
+
+}  // namespace
+
+TEST(Surface, OnlyTheMapsATechniqueReadsAreDecoded) {
+  auto host = surfaceHost({"surface.technique=none"});
+  host->renderFrame({64, 48});
+  EXPECT_EQ(host->gpuScene().texturesUploaded(), 1) << "colour only";
+  host->set("surface.technique=normal-map");
+  host->renderFrame({64, 48});
+  EXPECT_EQ(host->gpuScene().texturesUploaded(), 2) << "colour + normal map";
+  host->set("surface.technique=pom");
+  host->renderFrame({64, 48});
+  EXPECT_EQ(host->gpuScene().texturesUploaded(), 2) << "colour + height map";
+  const int builds = host->sceneBuilds();
+  host->set("surface.filter=anisotropic");  // sampling only: the uploaded maps are re-sampled
+  host->renderFrame({64, 48});
+  host->set("surface.filter=nearest");
+  host->renderFrame({64, 48});
+  EXPECT_EQ(host->sceneBuilds(), builds);
+  EXPECT_EQ(gl::drainErrors(), "");
+}
+
+TEST(Surface, VertexDisplacementMovesExactlySTimesHAlongTheNormal) {
+  // A 4 x 4 height map read at its texel centres (nearest): the value is known exactly there.
+  const uint8_t heights[16] = {0, 16, 32, 48, 64, 80, 96, 112, 128, 144, 160, 176, 192, 208, 224, 255};
+  gl::SamplerState nearest;
+  nearest.minFilter = nearest.magFilter = GL_NEAREST;
+  const gl::Texture2D map = gl::Texture2D::fromData({4, 4}, GL_R8, GL_RED, GL_UNSIGNED_BYTE, heights, nearest);
+  MeshData grid;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      grid.positions.emplace_back(float(i), float(j), 0.0f);
+      grid.normals.push_back(glm::normalize(glm::vec3(0.3f * float(i - 1), 0.2f, 1.0f)));  // not all alike
+      grid.uvs.emplace_back((float(i) + 0.5f) / 4.0f, (float(j) + 0.5f) / 4.0f);
+    }
+  for (uint32_t j = 0; j < 3; ++j)
+    for (uint32_t i = 0; i < 3; ++i) grid.indices.insert(grid.indices.end(), {j * 4 + i, j * 4 + i + 1, j * 4 + i + 4});
+  grid.tangents.assign(16, glm::vec4(1, 0, 0, 1));
+  const GpuMesh mesh = GpuMesh::upload(grid);
+  for (float base : {1.0f, 0.0f})
+    for (float s : {0.25f, -0.7f}) {
+      const auto out = test::captureVertexOutput("surface/surface.vert", {{"DISPLACE_VERTEX", "1"}}, "Surface.world", mesh,
+                                                 [&](GLuint p) {
+                                                   const glm::mat4 id(1.0f);
+                                                   const glm::mat3 id3(1.0f);
+                                                   glUniformMatrix4fv(glGetUniformLocation(p, "u_model"), 1, GL_FALSE, &id[0][0]);
+                                                   glUniformMatrix3fv(glGetUniformLocation(p, "u_normalMatrix"), 1, GL_FALSE, &id3[0][0]);
+                                                   map.bind(0);
+                                                   glUniform1i(glGetUniformLocation(p, "u_heightMap"), 0);
+                                                   glUniform1f(glGetUniformLocation(p, "u_heightScale"), s);
+                                                   glUniform1f(glGetUniformLocation(p, "u_heightBase"), base);
+                                                 });
+      for (size_t v = 0; v < 16; ++v) {
+        const glm::vec3 expected = grid.positions[v] + grid.normals[v] * s * (float(heights[v]) / 255.0f - base);
+        EXPECT_LT(glm::length(out[v] - expected), 1e-5f) << "vertex " << v << " base " << base << " s " << s;
+      }
+    }
+  EXPECT_EQ(gl::drainErrors(), "");
+}
+
+TEST(Surface, TheFilesOwnTangentsAreUsedWhenItHasThem) {
+  // tangent_quad.gltf's TANGENT points along +z while its u runs along +x: 90 degrees apart, which
+  // the tangent-angle view at a 90-degree scale shows in full yellow.
+  const std::string quad = std::string(SHADELAB_SOURCE_DIR) + "/tests/data/tangent_quad.gltf";
+  auto host = surfaceHost({"surface.technique=normal-map", "surface.view=tangent-angle", "surface.angle_scale=90",
+                           "surface.tangents=mesh", "surface.compare_with=generated"}, quad.c_str());
+  host->set("surface.technique=normal-map");
+  host->camera().parse("yaw=0,pitch=89");
+  host->renderFrame({64, 64});
+  auto px = host->target()->readPixel(32, 32);
+  EXPECT_GT(px[0], 0.9f) << "the file's tangents, not generated ones";
+  EXPECT_GT(px[1], 0.9f);
+  host->set("surface.tangents=generated");
+  host->renderFrame({64, 64});
+  px = host->target()->readPixel(32, 32);
+  EXPECT_LT(px[1], 0.75f) << "generated against generated: no angle";
+  // A file without tangents: generated ones stand in, and the lab says so.
+  auto plain = surfaceHost({"surface.technique=normal-map", "surface.tangents=mesh"},
+                           (std::string(SHADELAB_SOURCE_DIR) + "/tests/data/textured_quad.gltf").c_str());
+  plain->renderFrame({32, 32});
+  bool said = false;
+  for (auto& w : plain->warnings()) said |= w.find("has no tangents of its own") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
+TEST(Surface, DisplacementApproachesTheTruthAsTheMeshIsSubdivided) {
+  auto host = surfaceHost({"surface.technique=displacement", "surface.light_elevation=25"});
+  Measurer measurer(*host);
+  double angle[3], silhouette[3];
+  const int levels[3] = {3, 5, 7};
+  for (int i = 0; i < 3; ++i) {
+    host->set("surface.subdivision=" + std::to_string(levels[i]));
+    auto m = measurer.measureNow({160, 120}, 0.0f, {{"gpu_ms", 1.0}});
+    ASSERT_TRUE(m);
+    angle[i] = metric(m->values, "normal_angle_deg");
+    silhouette[i] = metric(m->values, "silhouette_pct");
+  }
+  EXPECT_GT(angle[0], angle[1]);
+  EXPECT_GT(angle[1], angle[2]);
+  EXPECT_GE(silhouette[0], silhouette[2]);
+  host->set("surface.technique=truth");  // the truth against itself, through the same path
+  auto self = measurer.measureNow({160, 120}, 0.0f, {{"gpu_ms", 1.0}});
+  ASSERT_TRUE(self);
+  EXPECT_LT(metric(self->values, "normal_angle_deg"), angle[2]);
+  EXPECT_LT(metric(self->values, "silhouette_pct"), 0.5);
+}
+
+struct SurfaceGolden {
+  const char* name;
+  std::vector<std::string> sets;
+};
+
+class SurfaceGoldens : public ::testing::TestWithParam<SurfaceGolden> {};
+
+TEST_P(SurfaceGoldens, MatchWithinTolerance) {
+  auto host = surfaceHost(GetParam().sets);
+  host->renderFrame({256, 144});
+  test::expectGolden(GetParam().name, host->readImage());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Surface, SurfaceGoldens,
+    ::testing::Values(SurfaceGolden{"surface_none", {"surface.technique=none"}},
+                      SurfaceGolden{"surface_normal_map", {"surface.technique=normal-map"}},
+                      SurfaceGolden{"surface_bump", {"surface.technique=bump"}},
+                      SurfaceGolden{"surface_displacement", {"surface.technique=displacement", "surface.subdivision=5"}},
+                      SurfaceGolden{"surface_tessellation", {"surface.technique=tessellation"}},
+                      SurfaceGolden{"surface_parallax", {"surface.technique=parallax"}},
+                      SurfaceGolden{"surface_steep_parallax", {"surface.technique=steep-parallax"}},
+                      SurfaceGolden{"surface_pom_shadowed", {"surface.technique=pom", "surface.self_shadow=on"}}),
+    [](const auto& info) { return std::string(info.param.name); });
