@@ -1,6 +1,7 @@
 #include "labs/surface/surface_geometry.h"
 
 #include "labs/surface/subdivide.h"
+#include "scene/mesh_topology.h"
 
 namespace shadelab {
 namespace {
@@ -54,6 +55,7 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
     d.material = m.material;
     d.hasUvs = uvs;
     d.triangles = m.triangleCount();
+    d.meanEdge = float(meanEdgeLength(m.positions, m.indices));
     d.mesh = GpuMesh::upload(m);
     std::vector<float> su, sv;
     for (auto& s : uvScale(m)) {

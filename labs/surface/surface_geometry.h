@@ -20,6 +20,7 @@ struct SurfaceDraw {
   int material = 0;
   bool hasUvs = false;
   size_t triangles = 0;
+  float meanEdge = 0.0f;  // model space, for sizing the frame overlay
 };
 
 struct SurfaceGeometryKey {

@@ -95,7 +95,8 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                p.angleScale, 0.1f, 90.0f, true);
   v.boolParam({"overlay", "Show T, B, N", "", "Draw each vertex's frame: tangent red, bitangent green, normal blue."},
               p.overlay);
-  v.floatParam({"overlay_length", "Frame length", "", "Length of the drawn frames, x 4 % of the scene's size."},
+  v.floatParam({"overlay_length", "Frame length", "", "Length of the drawn frames, in units of the smaller of 4 % of the "
+                                                  "scene's size and half a mean edge."},
                p.overlayLength, 0.1f, 10.0f, true);
   v.section("Wrong steps");
   v.boolParam({"add_to_old_normal", "Add to the old normal", "", "n = n_old + TBN (2c - 1) instead of TBN (2c - 1): "
@@ -109,7 +110,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                 "low angles show relief best."}, p.lightElevationDeg, -10.0f, 90.0f);
   v.floatParam({"light_azimuth", "Light azimuth", "deg", "Around the view axis of the wall."}, p.lightAzimuthDeg, -180.0f, 180.0f);
   v.enumParam({"view", "View", "", "shaded; normals (world, 0.5 +- 0.5); tangent-angle (the tangent against "
-               "compare_with's, 0 slate .. angle_scale yellow); height; uv."}, p.view, kViews);
+               "compare_with's, 0 slate .. angle_scale yellow, dimmed by the light); height; uv."}, p.view, kViews);
   v.intParam({"tessellation", "Sphere segments", "", "Segments of the brick sphere."}, p.tessellation, 8, 256);
 }
 
@@ -338,11 +339,13 @@ void SurfaceLab::render(Frame& frame) {
     Program& prog = overlay_.get(*shaders_, overlaySpec());
     prog.use();
     prog.set("u_viewProj", frame.viewProj());
-    prog.set("u_length", 0.04f * b.radius() * params.overlayLength);
     SurfaceGeometryKey base = key;
     base.level = 0;
     base.tangents = true;
     for (const SurfaceDraw& d : geometry_.get(frame.scene, base, frameNotes_)) {
+      // Half an edge keeps neighbouring frames apart on a dense mesh; a few percent of the scene on a coarse one.
+      const float scale = glm::length(glm::vec3(d.model[0]));
+      prog.set("u_length", params.overlayLength * std::min(0.04f * b.radius(), 0.5f * d.meanEdge * scale));
       prog.set("u_model", d.model);
       prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(d.model)));
       d.mesh.draw(Primitive::Points);

@@ -102,7 +102,7 @@ std::vector<SceneRecipe> surfaceScenes() {
                        m.material = material;
                        for (auto& uv : m.uvs) uv *= 6.0f;  // Spot's charts are small: bricks of a readable size
                      }
-                     s.suggestedCamera = "yaw=150,pitch=15";
+                     s.suggestedCamera = "yaw=210,pitch=15,distance=2.8";  // the lit side of the face
                      return std::string();
                    }});
   // Stress scenes: maps and meshes that break what is not written with care.

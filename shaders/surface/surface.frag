@@ -134,6 +134,7 @@ void main() {
   float t = clamp(angle / u_angleScale, 0.0, 1.0);
   vec3 heat = mix(mix(vec3(0.33, 0.36, 0.45), vec3(0.85, 0.25, 0.35), smoothstep(0.0, 0.5, t)), vec3(1.0, 0.95, 0.5),
                   smoothstep(0.5, 1.0, t));
+  heat *= 0.6 + 0.4 * max(dot(N, u_lightDir), 0.0);  // dimmed by the light so the shape still reads
   o_color = vec4(linearToSrgb(heat), 1.0);
 #elif defined(VIEW_HEIGHT)
   o_color = vec4(vec3(heightAt(uv)), 1.0);

@@ -97,12 +97,12 @@ TEST(Surface, TheFilesOwnTangentsAreUsedWhenItHasThem) {
   host->camera().parse("yaw=0,pitch=89");
   host->renderFrame({64, 64});
   auto px = host->target()->readPixel(32, 32);
-  EXPECT_GT(px[0], 0.9f) << "the file's tangents, not generated ones";
-  EXPECT_GT(px[1], 0.9f);
+  // Yellow (the full angle) has far more green than blue; slate (none) has less. The light dims both alike.
+  EXPECT_GT(px[1], px[2] + 0.2f) << "the file's tangents, not generated ones";
   host->set("surface.tangents=generated");
   host->renderFrame({64, 64});
   px = host->target()->readPixel(32, 32);
-  EXPECT_LT(px[1], 0.75f) << "generated against generated: no angle";
+  EXPECT_LT(px[1], px[2]) << "generated against generated: no angle";
   // A file without tangents: generated ones stand in, and the lab says so.
   auto plain = surfaceHost({"surface.technique=normal-map", "surface.tangents=mesh"},
                            (std::string(SHADELAB_SOURCE_DIR) + "/tests/data/textured_quad.gltf").c_str());
