@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Regenerates the figures of the tutorials from the headless renderer. Each command here is the
 # one printed beside its figure.
-# usage: tutorials/make_figures.sh [path/to/shadelab] [shading] [shadows] [denoise] (none named: all)
+# usage: tutorials/make_figures.sh [path/to/shadelab] [shading] [shadows] [surface] [denoise] (none named: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sl=build/shadelab
 if [ $# -gt 0 ] && [ -x "$1" ]; then sl=$1; shift; fi
-labs=${*:-shading shadows denoise}
+labs=${*:-shading shadows surface denoise}
 f=tutorials/figures
 mkdir -p "$f"
 
@@ -85,6 +85,51 @@ cp build/tutorial-shadows/shadows_misclassified_pct.svg build/tutorial-shadows/s
   build/tutorial-shadows/shadows_sweep.csv $f/
 }
 
+surface_figures() {
+# surface.md: the wall, step by step (each 480x270 with --measure; the numbers quoted are printed by these)
+local r="$sl render --lab surface --size 480x270 --measure"
+$r --set surface.technique=none --out $f/surface_1_none.png
+$r --set surface.technique=normal-map --out $f/surface_2_normal_map.png
+$r --set surface.technique=normal-map --set surface.decoding=srgb --out $f/surface_3_srgb.png
+$r --set surface.technique=normal-map --set surface.green=directx --out $f/surface_3_directx.png
+$r --set surface.technique=normal-map --set surface.add_to_old_normal=on --out $f/surface_3_added.png
+$r --set surface.technique=normal-map --set surface.view=normals --out $f/surface_4_normal_map_normals.png
+$r --set surface.technique=truth --set surface.view=normals --out $f/surface_4_truth_normals.png
+$r --set surface.technique=bump --out $f/surface_5_bump.png
+$r --set surface.technique=bump --set surface.bump_form=games101 --out $f/surface_5_bump_games101.png
+$r --set surface.technique=displacement --set surface.subdivision=3 --out $f/surface_6_displacement_3.png
+$r --set surface.technique=displacement --set surface.subdivision=7 --out $f/surface_6_displacement_7.png
+$r --set surface.technique=displacement --set surface.subdivision=7 --set surface.displaced_normals=unchanged \
+  --out $f/surface_6_displacement_unchanged.png
+$r --set surface.technique=tessellation --set surface.tess_level=64 --out $f/surface_6_tessellation_64.png
+$r --set surface.technique=parallax --out $f/surface_7_parallax.png
+$r --set surface.technique=steep-parallax --set surface.layers=8 --out $f/surface_7_steep_8.png
+$r --set surface.technique=pom --out $f/surface_7_pom.png
+$r --set surface.technique=pom --set surface.self_shadow=on --out $f/surface_7_pom_shadow.png
+$r --set surface.technique=truth --out $f/surface_7_truth.png
+$r --set surface.technique=truth --set surface.self_shadow=on --out $f/surface_7_truth_shadow.png
+# surface.md: a brick floor at a grazing angle, where parallax is hardest
+local g="$sl render --lab surface --scene bricks-grazing --size 480x270 --measure"
+$g --set surface.technique=parallax --out $f/surface_8_grazing_parallax.png
+$g --set surface.technique=steep-parallax --set surface.layers=8 --out $f/surface_8_grazing_steep_8.png
+$g --set surface.technique=pom --set surface.layers=32 --out $f/surface_8_grazing_pom_32.png
+$g --set surface.technique=truth --out $f/surface_8_grazing_truth.png
+# surface.md: tangent frames (no measure: these are diagnostic views)
+local t="$sl render --lab surface --size 480x270"
+$t --scene bricks-sphere --set surface.overlay=on --set surface.technique=normal-map --out $f/surface_9_sphere_frames.png
+$t --scene spot-bricks --set surface.view=tangent-angle --out $f/surface_9_spot_tangent_angle.png
+$t --scene uv-trouble --set surface.overlay=on --set surface.technique=normal-map --out $f/surface_9_uv_trouble.png
+# surface.md: error against cost, the standard sweep (every technique and its knob) at 960x540
+"$sl" sweep --lab surface --frames 5 --out build/tutorial-surface
+cp build/tutorial-surface/surface_rmse.svg build/tutorial-surface/surface_normal_angle_deg.svg \
+  build/tutorial-surface/surface_silhouette_pct.svg build/tutorial-surface/surface_sweep.csv $f/
+# surface.md: how deep can relief be before a normal map is not enough? (the map's strength follows the depth)
+"$sl" sweep --lab surface --frames 3 --out build/tutorial-surface-depth \
+  --vary technique=normal-map,pom \
+  --vary height_scale=0.005:normal_strength=0.125,0.01:normal_strength=0.25,0.02:normal_strength=0.5,0.04:normal_strength=1
+cp build/tutorial-surface-depth/surface_sweep.csv $f/surface_depth_sweep.csv
+}
+
 denoise_figures() {
 # denoise.md: Fandisk with its published noise, then each method (each image 480x360)
 local d="$sl render --lab denoise --size 480x360 --measure"
@@ -124,7 +169,8 @@ for lab in $labs; do
   case $lab in
     shading) shading_figures ;;
     shadows) shadows_figures ;;
+    surface) surface_figures ;;
     denoise) denoise_figures ;;
-    *) echo "make_figures.sh: unknown lab '$lab' (valid: shading, shadows, denoise)" >&2; exit 1 ;;
+    *) echo "make_figures.sh: unknown lab '$lab' (valid: shading, shadows, surface, denoise)" >&2; exit 1 ;;
   esac
 done

@@ -84,8 +84,9 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.section("Parallax");
   v.intParam({"layers", "Layers", "", "Depth slices the steep parallax and POM march through (the loop's bound)."},
              p.layers, 1, 128);
-  v.boolParam({"self_shadow", "Self-shadowing", "", "March from the point found towards the light: bricks shadow the "
-               "mortar."}, p.selfShadow);
+  v.boolParam({"self_shadow", "Self-shadowing", "", "The parallax family marches from the point found towards the "
+               "light: bricks shadow the mortar. The truth is then shadowed too (the height field marched half a "
+               "texel at a time); the other techniques cannot shadow themselves and are judged against it."}, p.selfShadow);
   v.section("Tangent frame");
   v.enumParam({"tangents", "Tangent source", "", "generated: per vertex, angle-weighted, split where mirrored UVs meet "
                "(MikkTSpace's way); mesh: the file's own (glTF TANGENT); screen: per pixel, from screen-space "
@@ -178,6 +179,7 @@ ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
   }
   const bool parallax = t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
   if (parallax && p.selfShadow) define("SELF_SHADOW");
+  if (t == SurfaceTechnique::Truth && p.selfShadow) define("TRUE_SHADOW");
   if (p.tangents == TangentSource::Screen) define("TANGENTS_SCREEN");
   if (p.compareWith == TangentSource::Screen) define("COMPARE_SCREEN");
   if (p.addToOldNormal) define("WRONG_ADD_TO_NORMAL");

@@ -94,3 +94,19 @@ float parallaxShadow(vec2 uv, float depth, vec3 lightTs, vec2 scale, int layers)
   }
   return 1.0 - clamp(worst * 8.0, 0.0, 1.0);
 }
+
+// The truth's shadow: the exact visibility of the height field from the point at (uv, depth),
+// marched towards the light in steps of half a texel (at most 1024), hard; the truth's jittered
+// frames antialias its edge. The light direction is not clamped as the view's is above: it is a
+// reference, and a grazing light only costs it more steps.
+float heightFieldVisibility(vec2 uv, float depth, vec3 lightTs, vec2 scale) {
+  if (lightTs.z <= 0.0) return 0.0;
+  if (depth <= 0.0) return 1.0;
+  vec2 shift = lightTs.xy / max(lightTs.z, 1e-4) * (u_heightScale / max(scale, vec2(1e-8))) * depth;
+  int steps = int(clamp(ceil(2.0 * length(shift / u_heightTexel)), 1.0, 1024.0));
+  for (int i = 1; i <= steps; ++i) {
+    float t = float(i) / float(steps);
+    if (1.0 - heightAt(uv + shift * t) < depth * (1.0 - t) - 1e-3) return 0.0;
+  }
+  return 1.0;
+}

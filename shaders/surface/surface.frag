@@ -105,6 +105,9 @@ void main() {
   shadow = parallaxShadow(uv, depth, normalize(transpose(tbn) * u_lightDir), fin.uvScale, max(u_layers, 8));
 #endif
 #endif
+#ifdef TRUE_SHADOW
+  shadow = heightFieldVisibility(uv, 1.0 - heightAt(uv), normalize(transpose(tbn) * u_lightDir), fin.uvScale);
+#endif
 
   vec3 N = tbn[2];
 #if defined(NORMAL_MAP)

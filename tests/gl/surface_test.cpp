@@ -1,7 +1,8 @@
 // The surface-detail lab on OSMesa: only the maps a technique reads are decoded, a filter change
 // re-samples without a rebuild, vertex displacement moves every vertex by exactly s (h - base)
 // along its normal (transform feedback), the file's own tangents are used when it has them,
-// displacement approaches the truth as the mesh is subdivided, and a golden image per technique.
+// displacement approaches the truth as the mesh is subdivided, self-shadowing is judged against a
+// shadowed truth, and a golden image per technique.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -132,6 +133,28 @@ TEST(Surface, DisplacementApproachesTheTruthAsTheMeshIsSubdivided) {
   ASSERT_TRUE(self);
   EXPECT_LT(metric(self->values, "normal_angle_deg"), angle[2]);
   EXPECT_LT(metric(self->values, "silhouette_pct"), 0.5);
+}
+
+TEST(Surface, SelfShadowingIsJudgedAgainstAShadowedTruth) {
+  // With self_shadow on, the truth is shadowed (the height field marched half a texel at a time)...
+  auto host = surfaceHost({"surface.technique=truth"});
+  host->renderFrame({192, 108});
+  const ImageF plain = host->readImage();
+  host->set("surface.self_shadow=on");
+  host->renderFrame({192, 108});
+  EXPECT_GT(compareImages(host->readImage(), plain).rmse, 0.03) << "the truth casts no shadow";
+  // ... and POM's own shadow march comes far closer to it than a normal map, which cannot shadow.
+  host->set("surface.technique=pom");
+  host->set("surface.layers=32");
+  Measurer measurer(*host);
+  auto rmse = [&] {
+    auto m = measurer.measureNow({192, 108}, 0.0f, {{"gpu_ms", 1.0}});
+    EXPECT_TRUE(m);
+    return m ? metric(m->values, "rmse") : NAN;
+  };
+  const double pom = rmse();
+  host->set("surface.technique=normal-map");
+  EXPECT_LT(pom, 0.6 * rmse());
 }
 
 struct SurfaceGolden {
