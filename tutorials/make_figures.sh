@@ -118,7 +118,8 @@ $g --set surface.technique=truth --out $f/surface_8_grazing_truth.png
 local t="$sl render --lab surface --size 480x270"
 $t --scene bricks-sphere --set surface.overlay=on --set surface.technique=normal-map --out $f/surface_9_sphere_frames.png
 $t --scene spot-bricks --set surface.view=tangent-angle --out $f/surface_9_spot_tangent_angle.png
-$t --scene uv-trouble --set surface.overlay=on --set surface.technique=normal-map --out $f/surface_9_uv_trouble.png
+$t --scene uv-trouble --set surface.overlay=on --set surface.technique=normal-map --camera "yaw=0,pitch=55,distance=1.5" \
+  --out $f/surface_9_uv_trouble.png
 # surface.md: error against cost, the standard sweep (every technique and its knob) at 960x540
 "$sl" sweep --lab surface --frames 5 --out build/tutorial-surface
 cp build/tutorial-surface/surface_rmse.svg build/tutorial-surface/surface_normal_angle_deg.svg \

@@ -148,9 +148,15 @@ std::string costAxisLabel(const std::string& cost) {
 }
 
 std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& truth) {
-  const double W = 640, H = 400, L = 70, R = 170, T = 26, B = 50;
   const std::string& errorKey = spec.error;
   const std::string& costKey = spec.cost;
+  std::map<std::string, int> groups;  // legend entries, coloured in order of first appearance
+  size_t longest = 16;
+  for (auto& row : r.rows)
+    if (inTruth(row, truth) && groups.emplace(row.group, int(groups.size())).second)
+      longest = std::max(longest, row.group.size());
+  // The legend column is as wide as its longest name (about 7 px a character at 12 px).
+  const double L = 70, R = 40 + 7.0 * double(longest), T = 26, B = 50, W = 470 + R, H = 400;
   double x0 = INFINITY, x1 = -INFINITY, y0 = 0, y1 = -INFINITY;
   for (auto& row : r.rows) {
     if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
@@ -193,9 +199,6 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
     path += (path.empty() ? "M" : " L") + formatNumber(sx(r.rows[i].value(costKey))) + "," +
             formatNumber(sy(r.rows[i].value(errorKey)));
   s += "<path d='" + path + "' fill='none' stroke='#999' stroke-dasharray='4 3'/>\n";
-  std::map<std::string, int> groups;
-  for (auto& row : r.rows)
-    if (inTruth(row, truth)) groups.emplace(row.group, int(groups.size()));
   for (auto& row : r.rows) {
     if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
     const char* color = kPalette[groups[row.group] % 8];

@@ -1,5 +1,7 @@
 #include "labs/surface/surface_geometry.h"
 
+#include <algorithm>
+
 #include "labs/surface/subdivide.h"
 #include "scene/mesh_topology.h"
 
@@ -13,6 +15,12 @@ std::vector<float> flatten(const std::vector<glm::vec4>& v) {
   return out;
 }
 
+// Two draws of one frame (the surface and the overlay) may share an entry: say each thing once.
+void addNotes(std::vector<std::string>& to, const std::vector<std::string>& from) {
+  for (const std::string& n : from)
+    if (std::find(to.begin(), to.end(), n) == to.end()) to.push_back(n);
+}
+
 }  // namespace
 
 const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const SurfaceGeometryKey& key,
@@ -24,7 +32,7 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
         kept_.erase(it);
         kept_.push_front(std::move(e));
       }
-      notes.insert(notes.end(), kept_.front().notes.begin(), kept_.front().notes.end());
+      addNotes(notes, kept_.front().notes);
       return kept_.front().draws;
     }
   Entry e;
@@ -67,7 +75,7 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
     d.mesh.setAttribute(kVector0, 4, flatten(compare));
     e.draws.push_back(std::move(d));
   }
-  notes.insert(notes.end(), e.notes.begin(), e.notes.end());
+  addNotes(notes, e.notes);
   kept_.push_front(std::move(e));
   while (kept_.size() > 3) kept_.pop_back();
   return kept_.front().draws;

@@ -1,5 +1,6 @@
 #include "labs/surface/surface_lab.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -298,9 +299,11 @@ void SurfaceLab::render(Frame& frame) {
   {
     auto pass = frame.pass("surface: " + what);
     for (const SurfaceDraw& d : draws) {
-      if (!d.hasUvs && params.technique != SurfaceTechnique::None)
-        frameNotes_.push_back("a mesh has no UVs: there is nothing to look the maps up with, so it is drawn with its "
-                              "own normals and no surface detail");
+      static const std::string noUvs = "a mesh has no UVs: there is nothing to look the maps up with, so it is "
+                                       "drawn with its own normals and no surface detail";
+      if (!d.hasUvs && params.technique != SurfaceTechnique::None &&
+          std::find(frameNotes_.begin(), frameNotes_.end(), noUvs) == frameNotes_.end())
+        frameNotes_.push_back(noUvs);
       const Material& mat = frame.scene.materials[size_t(d.material)];
       Program& prog = program_.get(*shaders_, programSpec(params, d.hasUvs));
       prog.use();
