@@ -6,6 +6,7 @@
 // BM_CompileProgram: the compile + link part of that, for one program.
 // BM_Frame/<mode>: one 1280x720 frame of the shading lab's default scene, per shading mode.
 // BM_ShadowFilter: the shadows lab per light type, filter and PCF kernel (below).
+// BM_SurfaceTechnique: the surface lab per technique and its knob (below).
 // BM_DenoiseFrame: the denoising lab's frame, idle and while a job runs (below).
 #include <benchmark/benchmark.h>
 
@@ -102,6 +103,44 @@ void BM_ShadowFilter(benchmark::State& state) {
 BENCHMARK(BM_ShadowFilter)
     ->ArgsProduct({{0, 2}, {0, 1, 3, 4}, {3}})
     ->ArgsProduct({{0, 2}, {2}, {3, 5, 9, 15}})
+    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+
+// BM_SurfaceTechnique/<i>: GPU ms of a 1280x720 frame of the surface lab's brick wall, per technique
+// and its cost knob (layers, subdivision, tessellation level), the sweep's configurations.
+const std::vector<std::vector<std::string>> kSurfaceConfigs = {
+    {"technique=none"},
+    {"technique=normal-map"},
+    {"technique=bump"},
+    {"technique=displacement", "subdivision=3"},
+    {"technique=displacement", "subdivision=5"},
+    {"technique=displacement", "subdivision=7"},
+    {"technique=tessellation", "tess_level=4"},
+    {"technique=tessellation", "tess_level=16"},
+    {"technique=tessellation", "tess_level=64"},
+    {"technique=parallax"},
+    {"technique=steep-parallax", "layers=8"},
+    {"technique=steep-parallax", "layers=32"},
+    {"technique=pom", "layers=4"},
+    {"technique=pom", "layers=8"},
+    {"technique=pom", "layers=16"},
+    {"technique=pom", "layers=32"},
+    {"technique=pom", "layers=64"},
+    {"technique=pom", "layers=16", "self_shadow=on"},
+};
+
+void BM_SurfaceTechnique(benchmark::State& state) {
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
+  host.selectLab("surface");
+  std::string label;
+  for (const std::string& kv : kSurfaceConfigs[size_t(state.range(0))]) {
+    host.set("surface." + kv);
+    label += (label.empty() ? "" : " ") + kv;
+  }
+  timeFrames(state, host, {1280, 720});
+  state.SetLabel(label);
+}
+BENCHMARK(BM_SurfaceTechnique)
+    ->DenseRange(0, int(kSurfaceConfigs.size()) - 1)
     ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
 
 // BM_DenoiseFrame/<busy>: the wall time of one window-sized frame of the denoising lab on the Bunny

@@ -105,6 +105,9 @@ $r --set surface.technique=tessellation --set surface.tess_level=64 --out $f/sur
 $r --set surface.technique=parallax --out $f/surface_7_parallax.png
 $r --set surface.technique=steep-parallax --set surface.layers=8 --out $f/surface_7_steep_8.png
 $r --set surface.technique=pom --out $f/surface_7_pom.png
+local close="yaw=60,pitch=8,distance=0.45,target=0.4;0.1;0"
+$r --set surface.technique=steep-parallax --set surface.layers=8 --camera "$close" --out $f/surface_7_steep_8_close.png
+$r --set surface.technique=pom --camera "$close" --out $f/surface_7_pom_close.png
 $r --set surface.technique=pom --set surface.self_shadow=on --out $f/surface_7_pom_shadow.png
 $r --set surface.technique=truth --out $f/surface_7_truth.png
 $r --set surface.technique=truth --set surface.self_shadow=on --out $f/surface_7_truth_shadow.png

@@ -67,6 +67,26 @@ std::vector<glm::vec2> uvScale(const MeshData& m) {
   return sum;
 }
 
+std::vector<float> uvShearDegrees(const MeshData& m) {
+  std::vector<float> out;
+  if (m.uvs.size() != m.positions.size()) return out;
+  for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+    const uint32_t i[3] = {m.indices[t], m.indices[t + 1], m.indices[t + 2]};
+    const glm::vec3 e1 = m.positions[i[1]] - m.positions[i[0]], e2 = m.positions[i[2]] - m.positions[i[0]];
+    const glm::vec2 d1 = m.uvs[i[1]] - m.uvs[i[0]], d2 = m.uvs[i[2]] - m.uvs[i[0]];
+    const float det = d1.x * d2.y - d2.x * d1.y;
+    const glm::vec3 n = glm::cross(e1, e2);
+    if (!(std::abs(det) > 1e-12f) || !(glm::length(n) > 0.0f)) continue;
+    const glm::vec3 dpdu = (e1 * d2.y - e2 * d1.y) / det;
+    // grad u: the vector g in the plane with g.e1 = d1.u and g.e2 = d2.u (up to a positive factor).
+    const glm::vec3 grad = glm::cross(e2, n) * d1.x + glm::cross(n, e1) * d2.x;
+    const float la = glm::length(dpdu), lb = glm::length(grad);
+    if (!(la > 0.0f && lb > 0.0f) || !std::isfinite(la + lb)) continue;
+    out.push_back(glm::degrees(std::acos(std::clamp(std::abs(glm::dot(dpdu, grad)) / (la * lb), 0.0f, 1.0f))));
+  }
+  return out;
+}
+
 int levelsForTexelSize(const MeshData& m, int texels, int maxLevels) {
   const std::vector<glm::vec2> scale = uvScale(m);
   double edgeUv = 0.0;

@@ -1,4 +1,4 @@
-// Finer versions of a mesh for displacement, and how big a unit of UV is on it.
+// Finer versions of a mesh for displacement, and how big a unit of UV is on it and how sheared.
 //
 // Midpoint subdivision splits every triangle into four at its edge midpoints, `levels` times;
 // neighbours share midpoints, so nothing cracks. Positions, UVs, normals (renormalised) and
@@ -17,6 +17,11 @@ MeshData subdivide(const MeshData& mesh, int levels);
 // triangles by angle. A height of s world units is s / scale in UV units: what bump mapping and
 // parallax need to mean the same depth as displacement does.
 std::vector<glm::vec2> uvScale(const MeshData& mesh);
+
+// Per triangle with UVs of non-zero area, the angle in degrees between dp/du (a generated
+// tangent's direction) and the gradient of u in the triangle's plane (a screen-space "cotangent"
+// frame's): the shear of the UV mapping. Zero where the mapping is orthogonal.
+std::vector<float> uvShearDegrees(const MeshData& mesh);
 
 // Subdivision levels that bring the mesh's edges down to about one texel of a `texels`-wide map.
 int levelsForTexelSize(const MeshData& mesh, int texels, int maxLevels);

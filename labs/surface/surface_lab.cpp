@@ -283,6 +283,17 @@ void SurfaceLab::render(Frame& frame) {
     key.compare = params.compareWith;
   }
   const auto& draws = geometry_.get(frame.scene, key, frameNotes_);
+  if (shearRevision_ != frame.scene.revision) {
+    std::vector<float> shear;
+    for (const MeshData& m : frame.scene.meshes) {
+      const std::vector<float> s = uvShearDegrees(m);
+      shear.insert(shear.end(), s.begin(), s.end());
+    }
+    std::sort(shear.begin(), shear.end());
+    shearMedian_ = shear.empty() ? 0.0f : shear[shear.size() / 2];
+    shearP90_ = shear.empty() ? 0.0f : shear[shear.size() * 9 / 10];
+    shearRevision_ = frame.scene.revision;
+  }
   drawnLevel_ = key.level;
   drawnTriangles_ = 0;
   const Bounds b = frame.scene.bounds;

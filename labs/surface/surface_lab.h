@@ -96,6 +96,9 @@ class SurfaceLab final : public LabWithParams<SurfaceParams> {
   std::vector<std::string> frameNotes_;
   size_t drawnTriangles_ = 0;
   int drawnLevel_ = 0;
+  // The scene's UV shear (where generated and screen-space tangents part), per scene build.
+  int shearRevision_ = -1;
+  float shearMedian_ = 0.0f, shearP90_ = 0.0f;
 };
 
 }  // namespace shadelab

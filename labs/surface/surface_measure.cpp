@@ -98,10 +98,13 @@ std::vector<LabPanel> SurfaceLab::panels() const {
       {"", "value"},
       {{"triangles drawn", std::to_string(drawnTriangles_)},
        {"subdivision level", std::to_string(drawnLevel_)},
-       {"height scale (world)", fixed(params.heightScale, 4)}}});
+       {"height scale (world)", fixed(params.heightScale, 4)},
+       {"UV shear, median (deg)", fixed(shearMedian_, 1)},
+       {"UV shear, 90th percentile (deg)", fixed(shearP90_, 1)}}});
   drawn.items.push_back(PanelText{"Every technique is measured against the true surface (Measure): shaded RMSE, the "
                                   "mean angle between its normals and the truth's, and the share of pixels covered by "
-                                  "one but not the other (silhouette)."});
+                                  "one but not the other (silhouette). UV shear is the angle between dp/du and the gradient of u per "
+                                  "triangle: where generated and screen-space tangents part (the tangent-angle view)."});
   return {drawn};
 }
 

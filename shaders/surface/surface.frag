@@ -74,7 +74,8 @@ vec3 toWorld(mat3 tbn, vec3 nTs) {
 #ifdef WRONG_NO_RENORMALIZE
   return n;
 #else
-  return normalize(n);
+  float len = length(n);
+  return len > 1e-6 ? n / len : tbn[2];  // an all-zero texel (a float map can hold one) has no direction
 #endif
 }
 
