@@ -14,4 +14,10 @@ std::string formatNumber(double v) {
   return buf;
 }
 
+std::string formatFixed(double v, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
 }  // namespace shadelab

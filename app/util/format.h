@@ -8,4 +8,7 @@ namespace shadelab {
 
 std::string formatNumber(double v);
 
+// A fixed number of decimals, for tables people compare by eye (panel rows, notes).
+std::string formatFixed(double v, int decimals = 3);
+
 }  // namespace shadelab

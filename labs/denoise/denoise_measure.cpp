@@ -4,18 +4,14 @@
 #include <cstdio>
 
 #include "labs/denoise/denoise_lab.h"
+#include "util/format.h"
 
 namespace shadelab {
 namespace {
 
-std::string fixed(double v, int digits = 3) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
 std::vector<std::string> errorRow(const char* what, const MeshError& e) {
-  return {what, fixed(e.angleDeg, 2), fixed(e.rmsDistance), fixed(e.maxDistance), fixed(e.volumeChangePct, 2)};
+  return {what, formatFixed(e.angleDeg, 2), formatFixed(e.rmsDistance), formatFixed(e.maxDistance),
+          formatFixed(e.volumeChangePct, 2)};
 }
 
 }  // namespace
@@ -72,7 +68,7 @@ std::vector<std::string> DenoiseLab::warnings() const {
   if (result_) {
     for (auto& n : result_->notes) w.push_back(n);
     if (laplacian && result_->stabilityLimit > 0 && p.lambda > result_->stabilityLimit && result_->grewAt == 0)
-      w.push_back("lambda is above the stable explicit step (about " + fixed(result_->stabilityLimit, 2) +
+      w.push_back("lambda is above the stable explicit step (about " + formatFixed(result_->stabilityLimit, 2) +
                   "): expect the energy to grow with more iterations");
   }
   if ((p.show == DenoiseShow::Map || p.show == DenoiseShow::Compare) && !model_->hasUvs())
@@ -101,7 +97,7 @@ std::vector<LabPanel> DenoiseLab::panels() const {
        {"non-manifold edges", std::to_string(s.nonManifoldEdges)},
        {"zero-area faces", std::to_string(s.zeroAreaFaces)},
        {"isolated vertices", std::to_string(s.isolatedVertices)},
-       {"mean edge length", fixed(s.meanEdgeLength, 5)}}});
+       {"mean edge length", formatFixed(s.meanEdgeLength, 5)}}});
   out.push_back(std::move(mesh));
   if (!result_) return out;
   const DenoiseResult& r = *result_;
@@ -110,7 +106,8 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   result.items.push_back(PanelText{
       (published ? std::string("Input: the published noisy twin. ")
                  : "Input: generated " + std::string(r.config.noise.kind == NoiseKind::Gaussian ? "Gaussian" : "impulsive") +
-                       " noise, level " + fixed(r.config.noise.level, 2) + ", seed " + std::to_string(r.config.noise.seed) +
+                       " noise, level " + formatFixed(r.config.noise.level, 2) +
+                       ", seed " + std::to_string(r.config.noise.seed) +
                        (r.config.publishedInput ? " (this mesh has no published twin). " : ". ")) +
       "Angles in degrees; distances in mean edge lengths of the clean mesh."});
   PanelTable errors{{"", "angle", "RMS", "max", "volume %"}, {}};
@@ -119,16 +116,17 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   errors.rows.push_back(errorRow("attribute path", r.attributeError));
   if (r.map) errors.rows.push_back(errorRow("map path", r.mappedError));
   result.items.push_back(std::move(errors));
-  PanelTable cost{{"", "value"}, {{"smoothing ms", fixed(r.solveMs, 1)}}};
-  if (r.config.method == DenoiseMethod::Implicit) cost.rows.push_back({"  of which factorisation ms", fixed(r.factorMs, 1)});
+  PanelTable cost{{"", "value"}, {{"smoothing ms", formatFixed(r.solveMs, 1)}}};
+  if (r.config.method == DenoiseMethod::Implicit)
+    cost.rows.push_back({"  of which factorisation ms", formatFixed(r.factorMs, 1)});
   if (r.config.method != DenoiseMethod::Bilateral)
-    cost.rows.push_back({"stable explicit lambda (about)", fixed(r.stabilityLimit, 3)});
+    cost.rows.push_back({"stable explicit lambda (about)", formatFixed(r.stabilityLimit, 3)});
   if (r.map) {
-    cost.rows.push_back({"bake ms", fixed(r.bakeMs, 1)});
-    cost.rows.push_back({"bake RMS / max (edges)", fixed(r.bakeRms, 4) + " / " + fixed(r.bakeMax, 4)});
-    cost.rows.push_back({"seam gap, map path (edges)", fixed(r.seamGapMax, 4)});
+    cost.rows.push_back({"bake ms", formatFixed(r.bakeMs, 1)});
+    cost.rows.push_back({"bake RMS / max (edges)", formatFixed(r.bakeRms, 4) + " / " + formatFixed(r.bakeMax, 4)});
+    cost.rows.push_back({"seam gap, map path (edges)", formatFixed(r.seamGapMax, 4)});
   }
-  cost.rows.push_back({"seam gap, attribute path (edges)", fixed(r.attributeGapMax, 4)});
+  cost.rows.push_back({"seam gap, attribute path (edges)", formatFixed(r.attributeGapMax, 4)});
   result.items.push_back(std::move(cost));
   out.push_back(std::move(result));
 
@@ -158,11 +156,11 @@ std::vector<LabPanel> DenoiseLab::panels() const {
 
   if (r.map && mapPreview_) {
     LabPanel map{"Displacement map", {}};
-    map.items.push_back(PanelImage{&mapPreview_, {256, 256}, std::to_string(r.map->size.x) + "^2, offset = stored x " +
-                                                                 fixed(r.map->scale, 5) + " + " + fixed(r.map->bias, 5) +
-                                                                 "; grey = its own range; " +
-                                                                 (r.map->repeat ? "repeats (the UVs leave [0, 1])"
-                                                                                : "clamps (the UVs stay in [0, 1])")});
+    const std::string caption = std::to_string(r.map->size.x) + "^2, offset = stored x " +
+                                formatFixed(r.map->scale, 5) + " + " + formatFixed(r.map->bias, 5) +
+                                "; grey = its own range; " +
+                                (r.map->repeat ? "repeats (the UVs leave [0, 1])" : "clamps (the UVs stay in [0, 1])");
+    map.items.push_back(PanelImage{&mapPreview_, {256, 256}, caption});
     if (params.show == DenoiseShow::Compare)
       map.items.push_back(PanelText{"Compare: the map path, the attribute path, the smoothed mesh (left to right in a wide "
                                     "view, top to bottom in a tall one)."});

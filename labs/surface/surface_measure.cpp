@@ -5,15 +5,10 @@
 #include <cstdio>
 
 #include "labs/surface/surface_lab.h"
+#include "util/format.h"
 
 namespace shadelab {
 namespace {
-
-std::string fixed(double v, int digits = 3) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
 
 bool parallaxFamily(SurfaceTechnique t) {
   return t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
@@ -79,8 +74,9 @@ std::vector<std::string> SurfaceLab::warnings() const {
     w.push_back("wrong step: DirectX green on an OpenGL map: the vertical slopes point the other way");
   if (p.heightScale < 0.0f) w.push_back("a negative height scale turns bumps into dents and dents into bumps");
   if (std::abs(p.heightScale) > 0.5f)
-    w.push_back("height scale " + fixed(p.heightScale, 2) + ": relief this deep folds displaced geometry over itself "
-                "and stretches parallax far beyond what one layer of texels can show");
+    w.push_back("height scale " + formatFixed(p.heightScale, 2) +
+                ": relief this deep folds displaced geometry over itself and stretches parallax far beyond what one "
+                "layer of texels can show");
   if (parallaxFamily(p.technique) && p.surfaceAt == SurfaceAt::Bottom)
     w.push_back("parallax mapping reads depth below the polygon (the surface at the top of the field); with "
                 "surface_at = bottom the truth stands out by the height scale instead");
@@ -98,13 +94,14 @@ std::vector<LabPanel> SurfaceLab::panels() const {
       {"", "value"},
       {{"triangles drawn", std::to_string(drawnTriangles_)},
        {"subdivision level", std::to_string(drawnLevel_)},
-       {"height scale (world)", fixed(params.heightScale, 4)},
-       {"UV shear, median (deg)", fixed(shearMedian_, 1)},
-       {"UV shear, 90th percentile (deg)", fixed(shearP90_, 1)}}});
+       {"height scale (world)", formatFixed(params.heightScale, 4)},
+       {"UV shear, median (deg)", formatFixed(shearMedian_, 1)},
+       {"UV shear, 90th percentile (deg)", formatFixed(shearP90_, 1)}}});
   drawn.items.push_back(PanelText{"Every technique is measured against the true surface (Measure): shaded RMSE, the "
                                   "mean angle between its normals and the truth's, and the share of pixels covered by "
-                                  "one but not the other (silhouette). UV shear is the angle between dp/du and the gradient of u per "
-                                  "triangle: where generated and screen-space tangents part (the tangent-angle view)."});
+                                  "one but not the other (silhouette). UV shear is the angle between dp/du and the "
+                                  "gradient of u per triangle: where generated and screen-space tangents part (the "
+                                  "tangent-angle view)."});
   return {drawn};
 }
 
