@@ -9,15 +9,14 @@ uniform sampler2D u_heightMap;
 uniform vec2 u_heightTexel;     // 1 / size of the height map
 uniform float u_heightScale;    // world units for a height of 1
 
-// The pixel's UV footprint, taken once where control flow is uniform: the parallax loops run a
-// different number of times per pixel, and implicit derivatives inside them are undefined.
-vec2 g_uvDx, g_uvDy;
-void initHeightGradients(vec2 uv) {
-  g_uvDx = dFdx(uv);
-  g_uvDy = dFdy(uv);
-}
+// The pixel's mip level, taken once where control flow is uniform: the parallax loops run a
+// different number of times per pixel, and implicit derivatives inside them are undefined. The
+// height field is sampled trilinearly (the lab binds such a sampler), so one level is all its
+// footprint needs, and an explicit level is cheaper per read than gradients.
+float g_heightLod;
+void initHeightGradients(vec2 uv) { g_heightLod = textureQueryLod(u_heightMap, uv).y; }
 
-float heightAt(vec2 uv) { return textureGrad(u_heightMap, uv, g_uvDx, g_uvDy).r; }
+float heightAt(vec2 uv) { return textureLod(u_heightMap, uv, g_heightLod).r; }
 
 // Bump mapping, tangent-space normal. GAMES101 (assignment 3): forward differences one texel apart,
 // dU = kh kn (h(u + 1/w, v) - h(u, v)): kh and kn are free, so the result agrees with the
