@@ -81,7 +81,7 @@ $r --set shadows.light_type=spot --set shadows.fill_light=on --set shadows.filte
 cp build/tutorial-shadows-path/shadows_sweep.csv $f/shadows_path.csv
 # shadows.md: the standard sweep (filter x map size x bias)
 "$sl" sweep --lab shadows --size 960x540 --frames 5 --out build/tutorial-shadows
-cp build/tutorial-shadows/shadows_misclassified_pct.svg build/tutorial-shadows/shadows_visibility_rmse.svg \
+cp build/tutorial-shadows/shadows_*_point_light.svg build/tutorial-shadows/shadows_*_area_light.svg \
   build/tutorial-shadows/shadows_sweep.csv $f/
 }
 
