@@ -5,6 +5,8 @@
 #include <regex>
 #include <sstream>
 
+#include "shader/preprocessor.h"
+
 namespace shadelab {
 
 std::string Diagnostic::format() const {
@@ -39,9 +41,12 @@ std::vector<Diagnostic> parseCompileLog(std::string_view log, const std::vector<
   std::vector<Diagnostic> out;
   std::istringstream in{std::string(log)};
   std::string line;
-  auto fileName = [&](const std::string& idx) {
-    const size_t k = std::stoul(idx);
-    return k < files.size() ? files[k].string() : "source-string " + idx;
+  // The file and line a (source string, line) pair names, with the file index decoded from the
+  // line where the driver reported source string 0 (see preprocessor.h).
+  auto locate = [&](Diagnostic& d, const std::string& source, const std::string& line) {
+    const auto [k, n] = splitLine(std::stoi(source), std::stoi(line));
+    d.file = size_t(k) < files.size() ? files[size_t(k)].string() : "source-string " + std::to_string(k);
+    d.line = n;
   };
   while (std::getline(in, line)) {
     if (trim(line).empty()) continue;
@@ -49,19 +54,16 @@ std::vector<Diagnostic> parseCompileLog(std::string_view log, const std::vector<
     d.raw = line;
     std::smatch m;
     if (std::regex_match(line, m, mesa)) {
-      d.file = fileName(m[1]);
-      d.line = std::stoi(m[2]);
+      locate(d, m[1], m[2]);
       d.column = std::stoi(m[3]);
       d.isError = isErrorWord(m[4]);
       d.message = trim(m[5]);
     } else if (std::regex_match(line, m, nvidia)) {
-      d.file = fileName(m[1]);
-      d.line = std::stoi(m[2]);
+      locate(d, m[1], m[2]);
       d.isError = isErrorWord(m[3]);
       d.message = trim(m[4].str().empty() ? m[5].str() : m[4].str() + ": " + m[5].str());
     } else if (std::regex_match(line, m, amd)) {
-      d.file = fileName(m[2]);
-      d.line = std::stoi(m[3]);
+      locate(d, m[2], m[3]);
       d.isError = isErrorWord(m[1]);
       d.message = trim(m[4]);
     } else {

@@ -120,12 +120,12 @@ struct Expander {
         const int k = int(out.files.size());
         out.files.push_back(file);
         out.relPaths.push_back(incRel);
-        out.text += "#line 1 " + std::to_string(k) + "\n";
+        out.text += "#line " + std::to_string(encodeLine(k, 1)) + " " + std::to_string(k) + "\n";
         stack.push_back(incRel);
         if (!expand(incRel, incText, k, false)) return false;
         stack.pop_back();
       }
-      out.text += "#line " + std::to_string(lineNo + 1) + " " + std::to_string(fileIndex) + "\n";
+      out.text += "#line " + std::to_string(encodeLine(fileIndex, lineNo + 1)) + " " + std::to_string(fileIndex) + "\n";
     }
     return true;
   }

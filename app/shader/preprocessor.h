@@ -6,6 +6,11 @@
 //                  #line 2 0             (source-string 0 = the main file, resumes after #version)
 //                  ...main file, with each #include replaced by
 //                  #line 1 k  <included file k>  #line n+1 parent
+//
+// Mesa's compiler drops the source-string number from its messages (every error says 0:), so the
+// file is carried in the line number too: lines of file k are numbered k * kLinesPerFile + n. A
+// driver that reports the source string (NVIDIA, AMD) and one that does not (Mesa) both decode to
+// the same file and line (`splitLine`).
 #pragma once
 #include <filesystem>
 #include <string>
@@ -15,6 +20,13 @@
 namespace shadelab {
 
 using Defines = std::vector<std::pair<std::string, std::string>>;
+
+inline constexpr int kLinesPerFile = 100000;
+inline int encodeLine(int fileIndex, int line) { return fileIndex * kLinesPerFile + line; }
+// A driver's (source string, line) -> (file index, line in that file).
+inline std::pair<int, int> splitLine(int sourceString, int line) {
+  return line >= kLinesPerFile ? std::pair{line / kLinesPerFile, line % kLinesPerFile} : std::pair{sourceString, line};
+}
 
 // Where shader files are looked up, first match wins: the student's folder(s), then shaders/.
 class ShaderSearchPath {

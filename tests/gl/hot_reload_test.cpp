@@ -163,6 +163,21 @@ TEST_F(HotReload, AMissingIncludeIsShownOnceWithItsCaret) {
   EXPECT_EQ(d.sourceLine, "#include \"common/lightning.glsl\"") << "the panel's caret needs the line";
 }
 
+TEST_F(HotReload, AnErrorInAnIncludedFileNamesThatFileAndLine) {
+  // Mesa reports every compile error as source string 0; the file must come through all the same.
+  host->renderFrame({64, 64});
+  fs::create_directories(student / "common");
+  std::ofstream(student / "common" / "tint.glsl") << "// a student's helper\nvec3 tint() {\n  return oops;\n}\n";
+  save(solidFrag("tint().r, 0.0, 0.0", "#include \"common/tint.glsl\""));
+  const size_t before = diagnostics.size();
+  ASSERT_TRUE(waitForRebuild(program().generation(), before));
+  ASSERT_GT(diagnostics.size(), before);
+  const Diagnostic& d = diagnostics[before];
+  EXPECT_EQ(d.file, (student / "common" / "tint.glsl").string());
+  EXPECT_EQ(d.line, 3);
+  EXPECT_EQ(d.sourceLine, "  return oops;");
+}
+
 TEST_F(HotReload, ALinkErrorPointsAtTheDeclarationItNames) {
   // A function declared and called but never defined: the linker names it (and no line), the
   // library finds where it is declared.

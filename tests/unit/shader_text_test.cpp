@@ -41,7 +41,9 @@ TEST_F(ShaderText, IncludesAreExpandedOnceWithLineDirectives) {
   ASSERT_TRUE(out.ok()) << out.error;
   ASSERT_EQ(out.files.size(), 2u);
   EXPECT_EQ(out.files[1], root / "common/light.glsl");
-  EXPECT_NE(out.text.find("#line 1 1\nfloat light() { return 1.0; }\n#line 3 0\n"), std::string::npos) << out.text;
+  // The included file's lines carry its index twice: as the source string and as 100000 x index + line.
+  EXPECT_NE(out.text.find("#line 100001 1\nfloat light() { return 1.0; }\n#line 3 0\n"), std::string::npos)
+      << out.text;
   EXPECT_EQ(out.text.find("float light()"), out.text.rfind("float light()"));  // included once
   EXPECT_NE(out.text.find("#line 4 0\nvoid main"), std::string::npos) << out.text;
 }
@@ -90,6 +92,18 @@ TEST(CompileLog, MesaNvidiaAmdAndRawLines) {
   EXPECT_EQ(d[3].file, "shaders/common/light.glsl");
   EXPECT_EQ(d[4].line, 0);
   EXPECT_EQ(d[4].message, "error: linking failed");  // unparsed: kept verbatim
+}
+
+TEST(CompileLog, TheFileIsDecodedFromTheLineWhenTheDriverReportsSourceZero) {
+  // Mesa reports every message as source string 0; the preprocessor numbered file 1's lines from 100001.
+  const std::vector<std::filesystem::path> files = {"shaders/lab/a.frag", "shaders/common/light.glsl"};
+  auto d = parseCompileLog("0:100009(33): error: `oops' undeclared\n", files);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].format(), "shaders/common/light.glsl:9:33: error: `oops' undeclared");
+  d = parseCompileLog("1(100009) : error C1008: undefined variable \"oops\"\n", files);  // NVIDIA: both agree
+  EXPECT_EQ(d.at(0).format(), "shaders/common/light.glsl:9: error: C1008: undefined variable \"oops\"");
+  d = parseCompileLog("0:12(5): error: x\n", files);  // the main file's lines are as they are
+  EXPECT_EQ(d.at(0).format(), "shaders/lab/a.frag:12:5: error: x");
 }
 
 TEST(CompileLog, UnknownSourceStringIsNamedNotDropped) {
