@@ -96,7 +96,7 @@ std::vector<LabPanel> SurfaceLab::panels() const {
        {"subdivision level", std::to_string(drawnLevel_)},
        {"height scale (world)", formatFixed(params.heightScale, 4)},
        {"UV shear, median (deg)", formatFixed(shearMedian_, 1)},
-       {"UV shear, 90th percentile (deg)", formatFixed(shearP90_, 1)}}});
+       {"UV shear, 90 % (deg)", formatFixed(shearP90_, 1)}}});
   drawn.items.push_back(PanelText{"Every technique is measured against the true surface (Measure): shaded RMSE, the "
                                   "mean angle between its normals and the truth's, and the share of pixels covered by "
                                   "one but not the other (silhouette). UV shear is the angle between dp/du and the "
