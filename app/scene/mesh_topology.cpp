@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <unordered_map>
 
 namespace shadelab {
@@ -105,42 +106,65 @@ std::vector<glm::vec3> faceNormals(std::span<const glm::vec3> p, std::span<const
   return n;
 }
 
-std::vector<glm::vec3> vertexNormals(std::span<const glm::vec3> p, std::span<const uint32_t> indices,
-                                     NormalWeighting weighting) {
-  std::vector<glm::vec3> n(p.size(), glm::vec3(0.0f));
+namespace {
+
+template <class Vec>
+std::vector<Vec> vertexNormalsT(std::span<const Vec> p, std::span<const uint32_t> indices, NormalWeighting weighting) {
+  using T = typename Vec::value_type;
+  std::vector<Vec> n(p.size(), Vec(0));
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
     const uint32_t i[3] = {indices[t], indices[t + 1], indices[t + 2]};
-    const glm::vec3 c = glm::cross(p[i[1]] - p[i[0]], p[i[2]] - p[i[0]]);  // |c| = twice the area
+    const Vec c = glm::cross(p[i[1]] - p[i[0]], p[i[2]] - p[i[0]]);  // |c| = twice the area
+    const T len = glm::length(c);
+    if (!std::isfinite(len)) continue;  // a NaN position must not spoil its neighbours
     if (weighting == NormalWeighting::Area) {
       for (uint32_t v : i) n[v] += c;
       continue;
     }
-    const float len = glm::length(c);
-    if (!(len > 0.0f) || !std::isfinite(len)) continue;
-    const glm::vec3 unit = c / len;
+    if (!(len > T(0))) continue;
+    const Vec unit = c / len;
     for (int k = 0; k < 3; ++k) {
-      const glm::vec3 e1 = p[i[(k + 1) % 3]] - p[i[k]], e2 = p[i[(k + 2) % 3]] - p[i[k]];
-      const float l1 = glm::length(e1), l2 = glm::length(e2);
-      if (!(l1 > 0.0f && l2 > 0.0f)) continue;
-      n[i[k]] += unit * std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), -1.0f, 1.0f));
+      const Vec e1 = p[i[(k + 1) % 3]] - p[i[k]], e2 = p[i[(k + 2) % 3]] - p[i[k]];
+      const T l1 = glm::length(e1), l2 = glm::length(e2);
+      if (!(l1 > T(0) && l2 > T(0))) continue;
+      n[i[k]] += unit * std::acos(std::clamp(glm::dot(e1, e2) / (l1 * l2), T(-1), T(1)));
     }
   }
+  const T tiny = std::numeric_limits<T>::min() * T(1e8);  // about 1e-30 in float, 1e-300 in double
   for (auto& v : n) {
-    const float len = glm::length(v);
-    v = len > 1e-30f && std::isfinite(len) ? v / len : glm::vec3(0, 0, 1);
+    const T len = glm::length(v);
+    v = len > tiny && std::isfinite(len) ? v / len : Vec(0, 0, 1);
   }
   return n;
 }
 
-double meanEdgeLength(std::span<const glm::vec3> p, std::span<const uint32_t> indices) {
+template <class Vec>
+double meanEdgeLengthT(std::span<const Vec> p, std::span<const uint32_t> indices) {
   double sum = 0;
   size_t count = 0;
   for (size_t t = 0; t + 2 < indices.size(); t += 3)
     for (int e = 0; e < 3; ++e) {
-      sum += glm::length(p[indices[t + size_t(e)]] - p[indices[t + size_t((e + 1) % 3)]]);
+      sum += double(glm::length(p[indices[t + size_t(e)]] - p[indices[t + size_t((e + 1) % 3)]]));
       ++count;
     }
   return count ? sum / double(count) : 0.0;
+}
+
+}  // namespace
+
+std::vector<glm::vec3> vertexNormals(std::span<const glm::vec3> p, std::span<const uint32_t> indices,
+                                     NormalWeighting weighting) {
+  return vertexNormalsT(p, indices, weighting);
+}
+std::vector<glm::dvec3> vertexNormals(std::span<const glm::dvec3> p, std::span<const uint32_t> indices,
+                                      NormalWeighting weighting) {
+  return vertexNormalsT(p, indices, weighting);
+}
+double meanEdgeLength(std::span<const glm::vec3> p, std::span<const uint32_t> indices) {
+  return meanEdgeLengthT(p, indices);
+}
+double meanEdgeLength(std::span<const glm::dvec3> p, std::span<const uint32_t> indices) {
+  return meanEdgeLengthT(p, indices);
 }
 
 MeshStatistics meshStatistics(const MeshData& mesh, const WeldedMesh& w, const Adjacency& a) {

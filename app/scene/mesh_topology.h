@@ -57,9 +57,12 @@ enum class NormalWeighting {
   Angle,  // by the face's angle at the vertex (Thuermer and Wuethrich 1998): independent of how the
           // surface around the vertex happens to be triangulated
 };
-// Unit vertex normals; a vertex no face gives a direction to gets +Z.
+// Unit vertex normals; a vertex no face gives a direction to gets +Z. In float for drawing, in
+// double for the denoising lab's solvers.
 std::vector<glm::vec3> vertexNormals(std::span<const glm::vec3> positions, std::span<const uint32_t> indices,
                                      NormalWeighting weighting);
+std::vector<glm::dvec3> vertexNormals(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices,
+                                      NormalWeighting weighting);
 
 // Counts a student can read in a mesh-statistics table.
 struct MeshStatistics {
@@ -70,5 +73,6 @@ struct MeshStatistics {
 };
 MeshStatistics meshStatistics(const MeshData& mesh, const WeldedMesh& welded, const Adjacency& adjacency);
 double meanEdgeLength(std::span<const glm::vec3> positions, std::span<const uint32_t> indices);
+double meanEdgeLength(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices);
 
 }  // namespace shadelab

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "scene/mesh_topology.h"
+
 namespace shadelab {
 namespace {
 
@@ -74,7 +76,7 @@ std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, con
   m->renderAdjacency = buildAdjacency(m->render.positions.size(), m->render.indices);
   m->clean = toDouble(m->welded.positions);
   m->statistics = meshStatistics(m->render, m->welded, m->weldedAdjacency);
-  m->meanEdge = meanEdgeLengthOf(m->clean, m->welded.indices);
+  m->meanEdge = meanEdgeLength(m->clean, m->welded.indices);
   if (!(m->meanEdge > 0.0)) m->meanEdge = 1.0;
   if (published) {
     const WeldedMesh twin = weldByPosition(*published);
@@ -143,7 +145,7 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   // 4. Offsets along the noisy surface's normals, per render vertex.
   if (job) job->stage(0.8f, 0.82f);
   if (job) job->progress(0.0f, "offsets along the normals");
-  const std::vector<glm::dvec3> normals = vertexNormalsOf(start, indices);
+  const std::vector<glm::dvec3> normals = vertexNormals(start, indices, NormalWeighting::Area);
   std::vector<glm::dvec3> noisyR(renderCount), smoothedR(renderCount), attributeR(renderCount), cleanR(renderCount);
   r.noisy.resize(renderCount);
   r.smoothed.resize(renderCount);

@@ -25,8 +25,4 @@ struct NoiseSettings {
 std::vector<glm::dvec3> addNoise(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices,
                                  const NoiseSettings& settings);
 
-// Area-weighted unit vertex normals in double (+Z where no face gives a direction).
-std::vector<glm::dvec3> vertexNormalsOf(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices);
-double meanEdgeLengthOf(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices);
-
 }  // namespace shadelab

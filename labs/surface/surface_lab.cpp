@@ -25,11 +25,7 @@ constexpr std::string_view kViews[] = {"shaded", "normals", "tangent-angle", "he
 // Texture units of surface.frag's samplers.
 enum Unit { kColorUnit = 0, kNormalUnit = 1, kHeightUnit = 2 };
 
-bool usesHeight(SurfaceTechnique t) {
-  return t == SurfaceTechnique::Bump || t == SurfaceTechnique::Displacement || t == SurfaceTechnique::Tessellation ||
-         t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom ||
-         t == SurfaceTechnique::Truth;
-}
+bool usesHeight(SurfaceTechnique t) { return t == SurfaceTechnique::Bump || isParallax(t) || isDisplacing(t); }
 
 gl::Texture2D onePixel(const uint8_t rgba[4]) {
   gl::SamplerState s;
@@ -120,12 +116,8 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
 // tangent space with a per-vertex source, the tangent-angle view, or the overlay.
 bool SurfaceLab::needsTangents() const {
   const auto t = params.technique;
-  const bool tangentSpace = t == SurfaceTechnique::NormalMap || t == SurfaceTechnique::Bump ||
-                            t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax ||
-                            t == SurfaceTechnique::Pom ||
-                            ((t == SurfaceTechnique::Displacement || t == SurfaceTechnique::Tessellation ||
-                              t == SurfaceTechnique::Truth) &&
-                             params.displacedNormals == DisplacedNormals::FromHeight);
+  const bool tangentSpace = t == SurfaceTechnique::NormalMap || t == SurfaceTechnique::Bump || isParallax(t) ||
+                            (isDisplacing(t) && params.displacedNormals == DisplacedNormals::FromHeight);
   const bool compared = params.view == SurfaceView::TangentAngle &&
                         (params.tangents != TangentSource::Screen || params.compareWith != TangentSource::Screen);
   return (tangentSpace && params.tangents != TangentSource::Screen) || compared || params.overlay;
@@ -178,8 +170,7 @@ ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
     case SurfaceTechnique::Pom: define("POM"); break;
     case SurfaceTechnique::None: break;
   }
-  const bool parallax = t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
-  if (parallax && p.selfShadow) define("SELF_SHADOW");
+  if (isParallax(t) && p.selfShadow) define("SELF_SHADOW");
   if (t == SurfaceTechnique::Truth && p.selfShadow) define("TRUE_SHADOW");
   if (p.tangents == TangentSource::Screen) define("TANGENTS_SCREEN");
   if (p.compareWith == TangentSource::Screen) define("COMPARE_SCREEN");

@@ -14,6 +14,14 @@
 namespace shadelab {
 
 enum class SurfaceTechnique { None, NormalMap, Bump, Displacement, Tessellation, Parallax, SteepParallax, Pom, Truth };
+// The techniques that move the texture lookup instead of the geometry.
+inline bool isParallax(SurfaceTechnique t) {
+  return t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
+}
+// The techniques that displace the mesh (on the CPU's subdivision, the GPU's, or as the truth).
+inline bool isDisplacing(SurfaceTechnique t) {
+  return t == SurfaceTechnique::Displacement || t == SurfaceTechnique::Tessellation || t == SurfaceTechnique::Truth;
+}
 enum class SurfaceAt { Top, Bottom };
 enum class GreenConvention { OpenGl, DirectX };
 enum class MapDecoding { Linear, Srgb };

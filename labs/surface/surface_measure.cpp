@@ -8,14 +8,6 @@
 #include "util/format.h"
 
 namespace shadelab {
-namespace {
-
-bool parallaxFamily(SurfaceTechnique t) {
-  return t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
-}
-
-}  // namespace
-
 ReferenceSpec SurfaceLab::reference() const {
   ReferenceSpec spec;
   spec.kind = TruthKind::Image;
@@ -77,7 +69,7 @@ std::vector<std::string> SurfaceLab::warnings() const {
     w.push_back("height scale " + formatFixed(p.heightScale, 2) +
                 ": relief this deep folds displaced geometry over itself and stretches parallax far beyond what one "
                 "layer of texels can show");
-  if (parallaxFamily(p.technique) && p.surfaceAt == SurfaceAt::Bottom)
+  if (isParallax(p.technique) && p.surfaceAt == SurfaceAt::Bottom)
     w.push_back("parallax mapping reads depth below the polygon (the surface at the top of the field); with "
                 "surface_at = bottom the truth stands out by the height scale instead");
   if (p.technique == SurfaceTechnique::Displacement && drawnLevel_ < p.subdivision)

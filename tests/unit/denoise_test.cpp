@@ -142,14 +142,14 @@ TEST(Noise, IsSeededAndHasTheAskedSigma) {
   const NoiseSettings set{NoiseKind::Gaussian, 0.3, 0.1, 42};
   const auto a = addNoise(s.p, s.idx, set), b = addNoise(s.p, s.idx, set);
   EXPECT_EQ(a, b);
-  const auto normals = vertexNormalsOf(s.p, s.idx);
+  const auto normals = vertexNormals(s.p, s.idx, NormalWeighting::Area);
   double sq = 0, tangential = 0;
   for (size_t v = 0; v < a.size(); ++v) {
     const double along = glm::dot(a[v] - s.p[v], normals[v]);
     sq += along * along;
     tangential += glm::length(a[v] - s.p[v] - along * normals[v]);
   }
-  const double sigma = std::sqrt(sq / double(a.size())), expected = 0.3 * meanEdgeLengthOf(s.p, s.idx);
+  const double sigma = std::sqrt(sq / double(a.size())), expected = 0.3 * meanEdgeLength(s.p, s.idx);
   EXPECT_NEAR(sigma, expected, 0.1 * expected);
   EXPECT_LT(tangential, 1e-9) << "noise moves along the normal only";
   size_t moved = 0;
