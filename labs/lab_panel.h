@@ -26,7 +26,7 @@ struct PanelTable {
 
 struct PanelSeries {
   std::string name;
-  std::vector<float> x, y;
+  std::vector<float> x, y;  // a non-finite point breaks the line (several outlines in one series)
 };
 
 struct PanelPlot {
@@ -34,6 +34,7 @@ struct PanelPlot {
   bool logY = false;  // energies and errors that span decades
   std::vector<PanelSeries> series;
   std::vector<float> markX;  // vertical markers (the iteration where the energy grew)
+  bool equalAxes = false;    // one unit as long on x as on y: shapes (a footprint in texel space)
 };
 
 struct PanelImage {

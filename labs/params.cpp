@@ -108,6 +108,8 @@ void DescribeParams::add(const ParamInfo& info, const std::string& type, const s
   std::string line = "  " + labId_ + "." + std::string(info.key) + " = " + value + "  " + type;
   if (!info.units.empty()) line += " " + std::string(info.units);
   line += "\n      " + std::string(info.help);
+  if (!unavailable_.empty()) line += "\n      (unavailable: " + unavailable_ + ")";
+  unavailable_.clear();
   lines.push_back(line);
 }
 void DescribeParams::floatParam(const ParamInfo& info, float& value, float min, float max, bool) {

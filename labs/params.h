@@ -32,6 +32,9 @@ class ParamVisitor {
   // A button ("add noise", "bake"): `run` acts on the lab at once. The CLI runs it with
   // --do lab.key; it is no value, so presets and --set leave it alone.
   virtual void action(const ParamInfo& info, const std::function<void()>& run) {}
+  // The next parameter can have no effect here (the driver lacks an extension): the panel greys
+  // it out and shows `reason`, `list` says so. It still holds and accepts a value.
+  virtual void unavailable(std::string_view reason) {}
 
   // Enums are stored as enum classes in Params and visited as named choices.
   template <typename E>
@@ -100,11 +103,13 @@ class DescribeParams final : public ParamVisitor {
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
   void section(std::string_view title) override;
   void action(const ParamInfo& info, const std::function<void()>&) override;
+  void unavailable(std::string_view reason) override { unavailable_ = reason; }
   std::vector<std::string> lines;
 
  private:
   void add(const ParamInfo& info, const std::string& type, const std::string& value);
   std::string labId_;
+  std::string unavailable_;  // for the next parameter
 };
 
 }  // namespace shadelab

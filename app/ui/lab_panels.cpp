@@ -28,9 +28,14 @@ struct DrawItem {
   }
   void operator()(const PanelPlot& p) const {
     if (!p.title.empty()) ImGui::TextUnformatted(p.title.c_str());
-    XYPlot plot{p.xLabel, p.yLabel, p.logY, {}, p.markX};
-    for (auto& s : p.series) plot.series.push_back({s.name, s.x, s.y});
-    drawXYPlot(("plot" + std::to_string(index)).c_str(), plot, 150.0f);
+    XYPlot plot{p.xLabel, p.yLabel, p.logY, {}, p.markX, p.equalAxes};
+    for (auto& s : p.series) {
+      XYSeries& line = plot.series.emplace_back();
+      line.name = s.name;
+      line.x = s.x;
+      line.y = s.y;
+    }
+    drawXYPlot(("plot" + std::to_string(index)).c_str(), plot, p.equalAxes ? 220.0f : 150.0f);
   }
   void operator()(const PanelImage& img) const {
     if (!img.texture) return;

@@ -13,6 +13,7 @@ class ImGuiParams final : public ParamVisitor {
 
   void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale) override {
     if (!open_) return;
+    Greyed greyed(unavailable_);
     const std::string label = withUnits(info);
     changed |= ImGui::SliderFloat(label.c_str(), &value, min, max, logScale ? "%.4g" : "%.3f",
                                   logScale ? ImGuiSliderFlags_Logarithmic : 0);
@@ -21,6 +22,7 @@ class ImGuiParams final : public ParamVisitor {
   }
   void intParam(const ParamInfo& info, int& value, int min, int max) override {
     if (!open_) return;
+    Greyed greyed(unavailable_);
     const std::string label = withUnits(info);
     changed |= ImGui::SliderInt(label.c_str(), &value, min, max);
     value = std::clamp(value, min, max);
@@ -28,11 +30,13 @@ class ImGuiParams final : public ParamVisitor {
   }
   void boolParam(const ParamInfo& info, bool& value) override {
     if (!open_) return;
+    Greyed greyed(unavailable_);
     changed |= ImGui::Checkbox(std::string(info.label).c_str(), &value);
     tooltip(info);
   }
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override {
     if (!open_) return;
+    Greyed greyed(unavailable_);
     const std::string label(info.label);
     if (ImGui::BeginCombo(label.c_str(), std::string(names[size_t(index)]).c_str())) {
       for (size_t i = 0; i < names.size(); ++i)
@@ -48,6 +52,7 @@ class ImGuiParams final : public ParamVisitor {
   void section(std::string_view title) override {
     open_ = ImGui::CollapsingHeader(std::string(title).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
   }
+  void unavailable(std::string_view reason) override { unavailable_ = reason; }
   void action(const ParamInfo& info, const std::function<void()>& run) override {
     if (!open_) return;
     if (ImGui::Button(std::string(info.label).c_str())) {
@@ -58,7 +63,27 @@ class ImGuiParams final : public ParamVisitor {
   }
 
  private:
+  // Greys out one widget that can have no effect here, and says why beside it.
+  class Greyed {
+   public:
+    explicit Greyed(std::string& reason) : reason_(std::move(reason)) {
+      reason.clear();
+      if (!reason_.empty()) ImGui::BeginDisabled();
+    }
+    ~Greyed() {
+      if (reason_.empty()) return;
+      ImGui::EndDisabled();
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextDisabled("%s", reason_.c_str());
+      ImGui::PopTextWrapPos();
+    }
+
+   private:
+    std::string reason_;
+  };
+
   bool open_ = true;
+  std::string unavailable_;  // for the next widget
   static std::string withUnits(const ParamInfo& info) {
     return info.units.empty() ? std::string(info.label) : std::string(info.label) + " (" + std::string(info.units) + ")";
   }

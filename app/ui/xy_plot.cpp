@@ -49,12 +49,21 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
     dl->AddText(ImVec2(p0.x + 8, p0.y + 8), IM_COL32(150, 150, 150, 255), "no data yet");
     return;
   }
-  if (!plot.logY) y0 = std::min(y0, 0.0f);
+  if (!plot.logY && !plot.equalAxes) y0 = std::min(y0, 0.0f);
   if (x1 - x0 < 1e-12f) { x0 -= 0.5f; x1 += 0.5f; }
   if (y1 - y0 < 1e-12f) { y0 -= 0.5f; y1 += 0.5f; }
   const float padX = (x1 - x0) * 0.06f, padY = (y1 - y0) * 0.08f;
   x0 -= padX; x1 += padX; y1 += padY;
-  if (plot.logY) y0 -= padY;
+  if (plot.logY || plot.equalAxes) y0 -= padY;
+  if (plot.equalAxes && !plot.logY) {
+    // One unit the same length on both axes: widen whichever range is short for its side.
+    const float perPixel = std::max((x1 - x0) / std::max(p1.x - p0.x, 1.0f), (y1 - y0) / std::max(p1.y - p0.y, 1.0f));
+    const float cx = 0.5f * (x0 + x1), cy = 0.5f * (y0 + y1);
+    x0 = cx - 0.5f * perPixel * (p1.x - p0.x);
+    x1 = cx + 0.5f * perPixel * (p1.x - p0.x);
+    y0 = cy - 0.5f * perPixel * (p1.y - p0.y);
+    y1 = cy + 0.5f * perPixel * (p1.y - p0.y);
+  }
   auto map = [&](float x, float y) {
     return ImVec2(p0.x + (x - x0) / (x1 - x0) * (p1.x - p0.x), p1.y - (yOf(y) - y0) / (y1 - y0) * (p1.y - p0.y));
   };
@@ -80,8 +89,14 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
     const XYSeries& s = plot.series[k];
     const ImU32 color = s.color ? s.color : kPalette[k % 6];
     std::vector<ImVec2> pts;
+    // A non-finite point ends one polyline and starts the next (several squares in one series).
+    auto flush = [&] {
+      if (!s.points && pts.size() >= 2) dl->AddPolyline(pts.data(), int(pts.size()), color, 0, 1.6f);
+      if (!s.points) pts.clear();
+    };
     for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
-      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && !(plot.logY && s.y[i] <= 0)) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) flush();
+      else if (!(plot.logY && s.y[i] <= 0)) {
         pts.push_back(map(s.x[i], s.y[i]));
         if (s.points) {
           const bool big = int(i) == s.highlight;
@@ -94,7 +109,7 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
           }
         }
       }
-    if (!s.points && pts.size() >= 2) dl->AddPolyline(pts.data(), int(pts.size()), color, 0, 1.6f);
+    flush();
     if (!s.name.empty()) {
       int row = 0;
       for (size_t j = 0; j < k; ++j) row += !plot.series[j].name.empty();

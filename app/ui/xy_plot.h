@@ -22,6 +22,7 @@ struct XYPlot {
   bool logY = false;
   std::vector<XYSeries> series;
   std::vector<float> markX;  // dashed vertical markers
+  bool equalAxes = false;    // one unit as long on both axes (shapes in texel space)
 };
 
 // Draws into a box `height` pixels high across the available width.
