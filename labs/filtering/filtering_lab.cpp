@@ -1,0 +1,370 @@
+#include "labs/filtering/filtering_lab.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "labs/filtering/filtering_scenes.h"
+
+namespace shadelab {
+namespace {
+
+constexpr std::string_view kFilters[] = {"nearest", "bilinear", "bicubic"};
+constexpr std::string_view kMipmaps[] = {"off", "nearest-level", "linear-level"};
+constexpr std::string_view kBuilders[] = {"box", "kaiser", "driver"};
+constexpr std::string_view kViews[] = {"shaded", "mip-level", "anisotropy"};
+constexpr std::string_view kPixelFilters[] = {"box", "gaussian"};
+
+constexpr int kUnit = 0;
+
+// Rows of a decoded image (top-down) in GL's order (bottom-up): every level is made and kept in
+// that order, so uploads and read-backs need no flipping.
+std::vector<uint8_t> flipRows(const std::vector<uint8_t>& rgba, glm::ivec2 size) {
+  std::vector<uint8_t> out(rgba.size());
+  const size_t stride = size_t(size.x) * 4;
+  for (int y = 0; y < size.y; ++y)
+    std::copy_n(rgba.begin() + ptrdiff_t(size_t(size.y - 1 - y) * stride), stride, out.begin() + ptrdiff_t(size_t(y) * stride));
+  return out;
+}
+
+// Mean and standard deviation of a level's luminance (linear light).
+std::pair<float, float> luminanceStats(const LinearImage& image) {
+  double sum = 0.0, sq = 0.0;
+  for (const glm::vec4& t : image.texels) {
+    const double l = 0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b;
+    sum += l;
+    sq += l * l;
+  }
+  const double n = double(std::max<size_t>(image.texels.size(), 1));
+  const double mean = sum / n;
+  return {float(mean), float(std::sqrt(std::max(sq / n - mean * mean, 0.0)))};
+}
+
+}  // namespace
+
+std::string_view FilteringLab::summary() const {
+  return "A ground plane to the horizon: near, one texel covers many pixels (magnification); far, one pixel covers "
+         "hundreds of texels (minification). Nearest sparkles, bilinear aliases in the distance, mipmaps trade the "
+         "aliasing for blur, trilinear hides the seams between levels, anisotropic filtering takes several probes "
+         "along the footprint and keeps the detail. Every filter is measured against each pixel's footprint "
+         "integrated by 16 x 16 samples, and by how much it flickers while the camera creeps forward.";
+}
+
+std::vector<SceneRecipe> FilteringLab::scenes() const { return filteringScenes(); }
+
+void FilteringLab::visitParams(ParamVisitor& v) {
+  auto& p = params;
+  v.section("Filter");
+  v.enumParam({"filter", "Within a level", "", "nearest: the texel the sample falls in; bilinear: the four nearest "
+               "texels, two lerps and a third; bicubic: sixteen texels with Catmull-Rom weights (written in the shader "
+               "only: hardware has no bicubic filter)."}, p.filter, kFilters);
+  v.enumParam({"mipmaps", "Mip levels", "", "off: always level 0 (minification aliases); nearest-level: the level "
+               "closest to L = log2(footprint in texels); linear-level: a blend of the two levels around L "
+               "(with bilinear: trilinear filtering)."}, p.mipmaps, kMipmaps);
+  v.boolParam({"in_shader", "Written in the shader", "", "Filter with texelFetch and arithmetic (filter.glsl) instead "
+               "of the texture unit: the same filter, made visible and editable."}, p.inShader);
+  if (anisotropyLimit_ > 0.0f && anisotropyLimit_ <= 1.0f && !p.inShader)
+    v.unavailable("this driver has no anisotropic filtering (EXT_texture_filter_anisotropic); tick 'Written in the "
+                  "shader' to use the shader's version");
+  v.intParam({"anisotropy", "Anisotropy", "x", "Up to this many probes along the footprint's long axis, each at the "
+              "level of the footprint's width over their number (needs mip levels)."}, p.anisotropy, 1, 16);
+  v.floatParam({"lod_bias", "LOD bias", "levels", "Added to L: positive reads smaller levels (blur), negative larger "
+                "ones (aliasing). Hardware clamps it to the driver's limit."}, p.lodBias, -16.0f, 16.0f);
+  v.boolParam({"manual_level", "Choose the level", "", "Read one level everywhere, ignoring the footprint."},
+              p.manualLevel);
+  v.floatParam({"level", "Level", "", "The level read when it is chosen by hand (fractions blend two levels with "
+                "linear-level)."}, p.level, 0.0f, 14.0f);
+  v.section("Mip chain");
+  v.enumParam({"downsampler", "Made by", "", "box: each texel the mean of the texels it covers (in linear light, exact "
+               "for odd sizes); kaiser: a Kaiser-windowed sinc 3 texels wide (alpha 4), sharper levels; driver: "
+               "glGenerateMipmap, whatever the driver does."}, p.builder, kBuilders);
+  v.section("View");
+  v.enumParam({"view", "View", "", "shaded; mip-level: the level read, one colour per level (red 0, orange 1, yellow 2, "
+               "green 3, cyan 4, blue 5, violet 6, pink 7, then again), blended for trilinear; anisotropy: the "
+               "footprint's length over its width, slate 1x to yellow 16x."}, p.view, kViews);
+  v.boolParam({"footprint_probe", "Footprint probe", "", "Read one pixel's footprint back from the GPU and draw it in "
+               "texel space (the Footprint panel); the pixel is marked with a ring."}, p.probe);
+  v.floatParam({"probe_x", "Probe x", "", "The probe pixel across the frame, 0 left .. 1 right."}, p.probeX, 0.0f, 1.0f);
+  v.floatParam({"probe_y", "Probe y", "", "The probe pixel down the frame, 0 top .. 1 bottom."}, p.probeY, 0.0f, 1.0f);
+  v.section("Measure");
+  v.enumParam({"pixel_filter", "Reference pixel filter", "", "How the truth weighs its 16 x 16 samples over a pixel: box "
+               "(the pixel's square) or gaussian (sigma 0.5 px over 3 x 3 px: softer, less ringing)."},
+              p.pixelFilter, kPixelFilters);
+  v.intParam({"motion_frame", "Motion frame", "", "Frame of the slow forward move that flicker is measured over "
+              "(each moves the camera 0.4 % of its distance)."}, p.motionFrame, 0, 30);
+  v.boolParam({"animate", "Animate", "", "Move the camera slowly back and forth (window only): watch the distance "
+               "shimmer."}, p.animate);
+}
+
+bool FilteringLab::inShader() const { return params.inShader || params.filter == TexelFilter::Bicubic; }
+
+SceneNeeds FilteringLab::needs() const {
+  SceneNeeds n;
+  n.uvs = true;
+  n.baseColorTextures = false;  // the lab decodes and builds its own chains, for the images it draws
+  n.mipmaps = false;
+  return n;
+}
+
+ProgramSpec FilteringLab::programSpec(const FilteringParams& p, bool probePass) const {
+  ProgramSpec spec;
+  spec.stages = {{GL_VERTEX_SHADER, "filtering/filtering.vert"}, {GL_FRAGMENT_SHADER, "filtering/filtering.frag"}};
+  auto define = [&](const char* name) { spec.defines.emplace_back(name, "1"); };
+  if (probePass) {
+    spec.name = "filtering/footprint probe";
+    define("PROBE");
+    define("MIP_NONE");
+    return spec;
+  }
+  const bool shader = p.inShader || p.filter == TexelFilter::Bicubic;
+  spec.name = "filtering/" + std::string(kFilters[int(p.filter)]) + " " + std::string(kMipmaps[int(p.mipmaps)]) +
+              (shader ? " (shader)" : "");
+  static const char* filters[] = {"FILTER_NEAREST", "FILTER_BILINEAR", "FILTER_BICUBIC"};
+  static const char* mips[] = {"MIP_NONE", "MIP_NEAREST", "MIP_LINEAR"};
+  static const char* views[] = {"VIEW_SHADED", "VIEW_MIP_LEVEL", "VIEW_ANISOTROPY"};
+  define(filters[int(p.filter)]);
+  define(mips[int(p.mipmaps)]);
+  define(views[int(p.view)]);
+  if (shader) define("IN_SHADER");
+  if (p.manualLevel) define("MANUAL_LEVEL");
+  if (p.probe) define("PROBE_MARKER");
+  return spec;
+}
+
+std::vector<ProgramSpec> FilteringLab::allPrograms() const {
+  std::vector<ProgramSpec> all = {programSpec(FilteringParams{}, true)};
+  for (int f = 0; f < 3; ++f)
+    for (int m = 0; m < 3; ++m)
+      for (int shader = 0; shader < 2; ++shader)
+        for (int view = 0; view < 3; ++view) {
+          FilteringParams p;
+          p.filter = TexelFilter(f);
+          p.mipmaps = MipSelection(m);
+          p.inShader = shader;
+          p.view = FilteringView(view);
+          p.manualLevel = view == 1;
+          p.probe = view != 2;
+          all.push_back(programSpec(p, false));
+        }
+  return all;
+}
+
+std::string FilteringLab::setup(LabContext& ctx) {
+  shaders_ = &ctx.shaders;
+  sampler_ = gl::Sampler::make();
+  makeTexelSampler();
+  probeTarget_ = gl::RenderTarget::create({2, 2}, GL_RGBA32F);
+  glGetFloatv(GL_MAX_TEXTURE_LOD_BIAS, &maxBias_);
+  anisotropyLimit_ = gl::maxAnisotropy();
+  const uint8_t white[4] = {255, 255, 255, 255};
+  gl::SamplerState s;
+  s.minFilter = s.magFilter = GL_NEAREST;
+  white_ = gl::Texture2D::fromRgba8({1, 1}, white, s, true);
+  return {};
+}
+
+void FilteringLab::teardown() {
+  program_.reset();
+  probeProgram_.reset();
+  sampler_.reset();
+  texelSampler_.reset();
+  probeTarget_ = gl::RenderTarget();
+  white_ = gl::Texture2D();
+  chains_.clear();
+  decoded_.clear();
+  sceneRevision_ = -1;
+  shown_ = -1;
+  shaders_ = nullptr;
+}
+
+const FilteringLab::ChainTexture* FilteringLab::chain(const Scene& scene, int image) {
+  for (const ChainTexture& c : chains_)
+    if (c.image == image && c.builder == params.builder) return &c;
+  if (image < 0 || size_t(image) >= scene.images.size()) return nullptr;
+  auto& level0 = decoded_[size_t(image)];
+  if (!level0) {
+    std::vector<uint8_t> rgba;
+    glm::ivec2 size;
+    if (auto err = decodeImage(scene.images[size_t(image)], rgba, size); !err.empty()) {
+      frameNotes_.push_back(err + "; drawn untextured");
+      return nullptr;
+    }
+    level0 = decodeSrgb8(size, flipRows(rgba, size));
+    ++imagesDecoded_;
+  }
+  ChainTexture c;
+  c.image = image;
+  c.builder = params.builder;
+  const glm::ivec2 size = level0->size;
+  c.levels = mipLevelCount(size);
+  c.texture = gl::Texture2D::allocate(size, GL_SRGB8_ALPHA8, c.levels);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  std::vector<std::vector<uint8_t>> levels;  // sRGB8, GL's row order
+  if (params.builder == MipBuilder::Driver) {
+    levels.push_back(encodeSrgb8(*level0));
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, levels[0].data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    for (int l = 1; l < c.levels; ++l) {
+      const glm::ivec2 s = mipLevelSize(size, l);
+      levels.emplace_back(size_t(s.x) * size_t(s.y) * 4);
+      glGetTexImage(GL_TEXTURE_2D, l, GL_RGBA, GL_UNSIGNED_BYTE, levels.back().data());
+    }
+  } else {
+    const auto chainLevels = buildMipChain(*level0, params.builder == MipBuilder::Box ? MipDownsampler::Box
+                                                                                        : MipDownsampler::Kaiser);
+    for (int l = 0; l < c.levels; ++l) {
+      levels.push_back(encodeSrgb8(chainLevels[size_t(l)]));
+      const glm::ivec2 s = chainLevels[size_t(l)].size;
+      glTexSubImage2D(GL_TEXTURE_2D, l, 0, 0, s.x, s.y, GL_RGBA, GL_UNSIGNED_BYTE, levels.back().data());
+    }
+  }
+  // Statistics of the levels as stored (8-bit), and the chain side by side: level 0 on the left,
+  // the others stacked on its right.
+  glm::ivec2 atlasSize(size.x + (c.levels > 1 ? mipLevelSize(size, 1).x : 0), size.y);
+  int stack = 0;
+  for (int l = 1; l < c.levels; ++l) stack += mipLevelSize(size, l).y + 2;
+  atlasSize.y = std::max(atlasSize.y, stack);
+  atlasSize.x += 2;
+  std::vector<uint8_t> atlas(size_t(atlasSize.x) * size_t(atlasSize.y) * 4, 40);
+  int y0 = atlasSize.y;  // levels 1.. from the top down (GL rows run bottom-up)
+  for (int l = 0; l < c.levels; ++l) {
+    const glm::ivec2 s = mipLevelSize(size, l);
+    c.sizes.push_back(s);
+    c.contrast.push_back(luminanceStats(decodeSrgb8(s, levels[size_t(l)])).second);
+    const int x = l == 0 ? 0 : size.x + 2;
+    const int y = l == 0 ? atlasSize.y - s.y : (y0 -= s.y + (l == 1 ? 0 : 2));
+    for (int row = 0; row < s.y; ++row)
+      std::copy_n(levels[size_t(l)].begin() + ptrdiff_t(size_t(row) * size_t(s.x) * 4), size_t(s.x) * 4,
+                  atlas.begin() + ptrdiff_t((size_t(y + row) * size_t(atlasSize.x) + size_t(x)) * 4));
+  }
+  gl::SamplerState as;
+  as.wrapS = as.wrapT = GL_CLAMP_TO_EDGE;
+  c.atlas = gl::Texture2D::fromRgba8(atlasSize, atlas.data(), as, true);
+  chains_.push_back(std::move(c));
+  return &chains_.back();
+}
+
+void FilteringLab::applySampler() {
+  const GLuint s = sampler_.get();
+  static const GLenum minFilter[2][3] = {{GL_NEAREST, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST_MIPMAP_LINEAR},
+                                         {GL_LINEAR, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_LINEAR}};
+  const bool nearest = params.filter == TexelFilter::Nearest;
+  glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GLint(minFilter[nearest ? 0 : 1][int(params.mipmaps)]));
+  glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glSamplerParameterf(s, GL_TEXTURE_LOD_BIAS, std::clamp(params.lodBias, -maxBias_, maxBias_));
+  if (anisotropyLimit_ > 1.0f)
+    glSamplerParameterf(s, GL_TEXTURE_MAX_ANISOTROPY, std::clamp(float(params.anisotropy), 1.0f, anisotropyLimit_));
+}
+
+// What filter.glsl reads texels through: one texel of one level, nothing blended.
+void FilteringLab::makeTexelSampler() {
+  texelSampler_ = gl::Sampler::make();
+  const GLuint s = texelSampler_.get();
+  glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+// The camera, moved forward along its view by the slow motion flicker is measured over.
+glm::mat4 FilteringLab::viewMatrix(const Frame& frame) const {
+  const glm::vec3 eye = frame.camera.eye();
+  const glm::vec3 forward = glm::normalize(frame.camera.target - eye);
+  float offset = 0.004f * float(params.motionFrame);
+  if (params.animate) offset += 0.05f * std::sin(0.6f * frame.time);
+  return frame.camera.view() * glm::translate(glm::mat4(1.0f), -forward * offset * frame.camera.distance);
+}
+
+void FilteringLab::render(Frame& frame) {
+  frameNotes_.clear();
+  if (sceneRevision_ != frame.scene.revision) {
+    chains_.clear();
+    decoded_.assign(frame.scene.images.size(), std::nullopt);
+    sceneRevision_ = frame.scene.revision;
+  }
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glClearColor(0.55f, 0.68f, 0.82f, 0.0f);  // sky; alpha 0: not covered, left out of the error
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  applySampler();
+  const glm::mat4 viewProj = frame.projection() * viewMatrix(frame);
+  shown_ = -1;
+  Program& prog = program_.get(*shaders_, programSpec(params, false));
+  {
+    auto pass = frame.pass(std::string("texture: ") + std::string(kFilters[int(params.filter)]) + ", mip " +
+                           std::string(kMipmaps[int(params.mipmaps)]) + (inShader() ? ", in shader" : "") +
+                           (params.anisotropy > 1 ? ", " + std::to_string(params.anisotropy) + "x" : ""));
+    prog.use();
+    prog.set("u_viewProj", viewProj);
+    prog.set("u_map", kUnit);
+    prog.set("u_lodBias", params.lodBias);
+    prog.set("u_level", params.level);
+    prog.set("u_maxAnisotropy", inShader() ? float(params.anisotropy)
+                                           : std::min(float(params.anisotropy), std::max(anisotropyLimit_, 1.0f)));
+    const glm::ivec2 size = frame.size();
+    prog.set("u_probe", glm::vec2(std::floor(params.probeX * float(size.x - 1)) + 0.5f,
+                                  float(size.y - 1) - std::floor(params.probeY * float(size.y - 1)) + 0.5f));
+    for (const Instance& inst : frame.scene.instances) {
+      const MeshData& mesh = frame.scene.meshes[size_t(inst.mesh)];
+      const Material& mat = frame.scene.materials[size_t(std::max(mesh.material, 0))];
+      const ChainTexture* tex = mesh.uvs.empty() ? nullptr : chain(frame.scene, mat.baseColorImage);
+      if (tex && shown_ < 0) shown_ = int(tex - chains_.data());
+      (tex ? tex->texture : white_).bind(kUnit);
+      glBindSampler(kUnit, inShader() ? texelSampler_.get() : sampler_.get());
+      prog.set("u_maxLevel", tex ? tex->levels - 1 : 0);
+      prog.set("u_baseColor", mat.baseColor);
+      prog.set("u_model", inst.model);
+      frame.gpu.draw(inst);
+    }
+    glBindSampler(kUnit, 0);
+  }
+  if (params.probe) probeFootprint(frame, viewProj);
+}
+
+// One pixel's footprint: the probe program draws the scene into a 2 x 2 target whose viewport
+// is shifted so that the probe pixel lands on its corner (derivatives need the 2 x 2 quad).
+void FilteringLab::probeFootprint(Frame& frame, const glm::mat4& viewProj) {
+  auto pass = frame.pass("footprint probe");
+  const glm::ivec2 size = frame.size();
+  const glm::ivec2 px(int(std::floor(params.probeX * float(size.x - 1))), int(std::floor(params.probeY * float(size.y - 1))));
+  const int glY = size.y - 1 - px.y;
+  GLint previous = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+  probeTarget_.bind();
+  glViewport(-(px.x & ~1), -(glY & ~1), size.x, size.y);  // the quad containing the pixel
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  Program& prog = probeProgram_.get(*shaders_, programSpec(params, true));
+  prog.use();
+  prog.set("u_viewProj", viewProj);
+  prog.set("u_map", kUnit);
+  for (const Instance& inst : frame.scene.instances) {
+    const MeshData& mesh = frame.scene.meshes[size_t(inst.mesh)];
+    const Material& mat = frame.scene.materials[size_t(std::max(mesh.material, 0))];
+    const ChainTexture* tex = mesh.uvs.empty() ? nullptr : chain(frame.scene, mat.baseColorImage);
+    (tex ? tex->texture : white_).bind(kUnit);
+    prog.set("u_model", inst.model);
+    prog.set("u_maxLevel", 0);
+    frame.gpu.draw(inst);
+  }
+  float texel[4] = {0, 0, 0, 0};
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, probeTarget_.fbo());
+  glReadPixels(px.x & 1, glY & 1, 1, 1, GL_RGBA, GL_FLOAT, texel);
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+  glViewport(0, 0, size.x, size.y);
+  footprint_.pixel = px;
+  footprint_.dx = {texel[0], texel[1]};
+  footprint_.dy = {texel[2], texel[3]};
+  footprint_.covered = texel[0] != 0.0f || texel[1] != 0.0f || texel[2] != 0.0f || texel[3] != 0.0f;
+}
+
+std::vector<ProgramRef> FilteringLab::activePrograms() const {
+  std::vector<ProgramRef> out;
+  if (program_.current()) out.push_back(program_.current());
+  if (params.probe && probeProgram_.current()) out.push_back(probeProgram_.current());
+  return out;
+}
+
+}  // namespace shadelab
