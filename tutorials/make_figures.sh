@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Regenerates the figures of the tutorials from the headless renderer. Each command here is the
 # one printed beside its figure.
-# usage: tutorials/make_figures.sh [path/to/shadelab] [shading] [shadows] [surface] [denoise] (none named: all)
+# usage: tutorials/make_figures.sh [path/to/shadelab] [shading] [shadows] [surface] [denoise] [filtering] (none named: all)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sl=build/shadelab
 if [ $# -gt 0 ] && [ -x "$1" ]; then sl=$1; shift; fi
-labs=${*:-shading shadows surface denoise}
+labs=${*:-shading shadows surface denoise filtering}
 f=tutorials/figures
 mkdir -p "$f"
 
@@ -169,12 +169,50 @@ cp build/tutorial-denoise-bake/denoise_sweep.csv $f/denoise_bake_sweep.csv
 cp build/tutorial-denoise-checks/denoise_sweep.csv $f/denoise_checks_sweep.csv
 }
 
+filtering_figures() {
+# filtering.md: the grazing plane, filter by filter (480x270, no probe ring)
+r="$sl render --lab filtering --size 480x270 --set filtering.footprint_probe=off"
+$r --set filtering.filter=nearest --set filtering.mipmaps=off --out $f/filtering_1_nearest.png
+$r --set filtering.filter=bilinear --set filtering.mipmaps=off --out $f/filtering_2_bilinear.png
+$r --set filtering.mipmaps=nearest-level --out $f/filtering_3_mip_nearest.png
+$r --set filtering.mipmaps=nearest-level --set filtering.view=mip-level --out $f/filtering_3_mip_nearest_levels.png
+$r --out $f/filtering_4_trilinear.png
+$r --set filtering.view=mip-level --out $f/filtering_4_trilinear_levels.png
+$r --set filtering.anisotropy=16 --out $f/filtering_5_anisotropic.png
+$r --set filtering.anisotropy=16 --set filtering.view=mip-level --out $f/filtering_5_anisotropic_levels.png
+$r --set filtering.view=anisotropy --out $f/filtering_5_anisotropy_view.png
+$r --set filtering.lod_bias=2 --out $f/filtering_6_bias_plus_2.png
+$r --set filtering.lod_bias=-2 --out $f/filtering_6_bias_minus_2.png
+
+# filtering.md: magnification, a 16 x 16 texture over the screen
+for filter in nearest bilinear bicubic; do
+  $r --scene magnify --set filtering.filter=$filter --out $f/filtering_magnify_$filter.png
+done
+
+# filtering.md: the zone plate to the horizon, bilinear without levels and trilinear with each chain
+$r --scene grazing-zoneplate --set filtering.mipmaps=off --out $f/filtering_zoneplate_no_mips.png
+for chain in box kaiser; do
+  $r --scene grazing-zoneplate --set filtering.downsampler=$chain --out $f/filtering_zoneplate_$chain.png
+done
+
+# filtering.md: error against cost, the lab's standard sweep, and the two chains' tables
+"$sl" sweep --lab filtering --size 960x540 --frames 5 --set filtering.footprint_probe=off --out build/tutorial-filtering
+cp build/tutorial-filtering/filtering_rmse.svg build/tutorial-filtering/filtering_flicker.svg \
+  build/tutorial-filtering/filtering_sweep.csv $f/
+for chain in box kaiser; do
+  "$sl" render --lab filtering --scene grazing-zoneplate --size 480x270 --set filtering.downsampler=$chain \
+    --out build/tutorial-filtering/chain_$chain.png
+  cp build/tutorial-filtering/chain_$chain.json $f/filtering_chain_$chain.json
+done
+}
+
 for lab in $labs; do
   case $lab in
     shading) shading_figures ;;
     shadows) shadows_figures ;;
     surface) surface_figures ;;
     denoise) denoise_figures ;;
-    *) echo "make_figures.sh: unknown lab '$lab' (valid: shading, shadows, surface, denoise)" >&2; exit 1 ;;
+    filtering) filtering_figures ;;
+    *) echo "make_figures.sh: unknown lab '$lab' (valid: shading, shadows, surface, denoise, filtering)" >&2; exit 1 ;;
   esac
 done

@@ -187,7 +187,8 @@ std::vector<SweepAxis> FilteringLab::standardSweep() const {
            {"nearest:mipmaps=off", "bilinear:mipmaps=off", "bicubic:mipmaps=off", "nearest:mipmaps=nearest-level",
             "bilinear:mipmaps=nearest-level", "bilinear", "bilinear:in_shader=on", "bilinear:downsampler=kaiser",
             "bicubic", "bilinear:anisotropy=2", "bilinear:anisotropy=4", "bilinear:anisotropy=8",
-            "bilinear:anisotropy=16", "bilinear:anisotropy=16:in_shader=on"}}};
+            "bilinear:anisotropy=16", "bilinear:anisotropy=2:in_shader=on", "bilinear:anisotropy=4:in_shader=on",
+            "bilinear:anisotropy=8:in_shader=on", "bilinear:anisotropy=16:in_shader=on"}}};
 }
 
 std::vector<StressCase> FilteringLab::stressCases() const {

@@ -131,3 +131,19 @@ TEST(Params, ListShowsSectionsAndActions) {
   EXPECT_EQ(d.lines[1], "  [Noise]");
   EXPECT_EQ(d.lines[3].rfind("  denoise.add_noise  action (--do denoise.add_noise)", 0), 0u);
 }
+
+TEST(Params, AnUnavailableParameterSaysWhyOnlyOnItsOwnLine) {
+  int anisotropy = 4, layers = 8;
+  DescribeParams d("filtering");
+  d.unavailable("this driver has no anisotropic filtering");
+  d.intParam({"anisotropy", "Anisotropy", "x", "Probes."}, anisotropy, 1, 16);
+  d.intParam({"layers", "Layers", "", "Slices."}, layers, 1, 64);
+  ASSERT_EQ(d.lines.size(), 2u);
+  EXPECT_NE(d.lines[0].find("(unavailable: this driver has no anisotropic filtering)"), std::string::npos);
+  EXPECT_EQ(d.lines[1].find("unavailable"), std::string::npos);
+  SetFromString set("filtering", "anisotropy", "8");  // it still holds a value
+  set.unavailable("no extension");
+  set.intParam({"anisotropy", "Anisotropy", "x", "Probes."}, anisotropy, 1, 16);
+  EXPECT_EQ(set.result(), "");
+  EXPECT_EQ(anisotropy, 8);
+}
