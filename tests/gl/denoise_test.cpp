@@ -13,13 +13,6 @@ using namespace shadelab;
 
 namespace {
 
-double metric(const Metrics& m, const char* key) {
-  for (auto& [k, v] : m)
-    if (k == key) return v;
-  ADD_FAILURE() << "no metric " << key;
-  return NAN;
-}
-
 std::shared_ptr<const DenoiseModel> cubeModel() {
   Scene s;
   for (auto& r : denoiseScenes())
@@ -40,14 +33,14 @@ TEST(Denoise, WeldedCopiesGetIdenticalOffsetsAndUnweldedOnesCrack) {
   host.settle();
   host.renderFrame({160, 120});
   Metrics m = host.lab().meshMetrics();
-  EXPECT_EQ(metric(m, "attribute_gap_max"), 0.0) << "copies of a position must move together";
-  EXPECT_GT(metric(m, "seam_gap_max"), 0.0) << "the bilinear map path reads different texels across a seam";
-  EXPECT_LT(metric(m, "angle_error_deg"), metric(m, "noisy_angle_deg"));
+  EXPECT_EQ(test::metric(m, "attribute_gap_max"), 0.0) << "copies of a position must move together";
+  EXPECT_GT(test::metric(m, "seam_gap_max"), 0.0) << "the bilinear map path reads different texels across a seam";
+  EXPECT_LT(test::metric(m, "angle_error_deg"), test::metric(m, "noisy_angle_deg"));
   ASSERT_EQ(host.set("denoise.weld=off"), "");
   host.settle();
   host.renderFrame({160, 120});
   m = host.lab().meshMetrics();
-  EXPECT_GT(metric(m, "attribute_gap_max"), 0.05) << "unwelded, seam copies are smoothed apart";
+  EXPECT_GT(test::metric(m, "attribute_gap_max"), 0.05) << "unwelded, seam copies are smoothed apart";
   EXPECT_EQ(gl::drainErrors(), "");
 }
 

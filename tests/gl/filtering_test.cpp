@@ -16,18 +16,7 @@ using namespace shadelab;
 namespace {
 
 std::unique_ptr<LabHost> filteringHost(const std::vector<std::string>& sets, const char* scene = "grazing-tiles") {
-  auto host = std::make_unique<LabHost>(test::builtinShaders());
-  EXPECT_EQ(host->selectLab("filtering"), "");
-  EXPECT_EQ(host->selectScene(scene), "");
-  for (auto& s : sets) EXPECT_EQ(host->set(s), "") << s;
-  return host;
-}
-
-double metric(const Metrics& m, const char* key) {
-  for (auto& [k, v] : m)
-    if (k == key) return v;
-  ADD_FAILURE() << "no metric " << key;
-  return NAN;
+  return test::labHost("filtering", scene, sets);
 }
 
 // The largest difference of any channel over the pixels both images cover.
@@ -111,10 +100,10 @@ TEST(Filtering, ErrorFallsFromNearestToBilinearToTrilinearToAnisotropic) {
     host->renderFrame({320, 180});
     auto m = measurer.measureNow({320, 180}, 0.0f, {{"gpu_ms", 1.0}});
     ASSERT_TRUE(m);
-    const double rmse = metric(m->values, "rmse"), flicker = metric(m->values, "flicker");
+    const double rmse = test::metric(m->values, "rmse"), flicker = test::metric(m->values, "flicker");
     EXPECT_LT(rmse, previousRmse) << name;
     EXPECT_LT(flicker, previousFlicker) << name;
-    EXPECT_NEAR(metric(m->values, "psnr_db"), -20.0 * std::log10(rmse), 1e-6);
+    EXPECT_NEAR(test::metric(m->values, "psnr_db"), -20.0 * std::log10(rmse), 1e-6);
     previousRmse = rmse;
     previousFlicker = flicker;
   }

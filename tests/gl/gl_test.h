@@ -1,7 +1,12 @@
 #pragma once
 #include <filesystem>
 
+#include <cmath>
 #include <functional>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
 #include <vector>
 
 #include "context/gl_context.h"
@@ -13,6 +18,23 @@ extern GlContext* g_context;
 
 inline ShaderSearchPath builtinShaders() {
   return ShaderSearchPath({std::filesystem::path(SHADELAB_SOURCE_DIR) / "shaders"});
+}
+
+// A lab on one of its scenes with `sets` ("lab.key=value") applied; each must be accepted.
+inline std::unique_ptr<LabHost> labHost(const char* lab, const char* scene, const std::vector<std::string>& sets) {
+  auto host = std::make_unique<LabHost>(builtinShaders());
+  EXPECT_EQ(host->selectLab(lab), "");
+  if (scene) EXPECT_EQ(host->selectScene(scene), "");
+  for (auto& s : sets) EXPECT_EQ(host->set(s), "") << s;
+  return host;
+}
+
+// One of a measurement's values by name; a missing one fails the test.
+inline double metric(const Metrics& m, const char* key) {
+  for (auto& [k, v] : m)
+    if (k == key) return v;
+  ADD_FAILURE() << "no metric " << key;
+  return NAN;
 }
 
 inline std::filesystem::path testOutput(const std::string& name) {

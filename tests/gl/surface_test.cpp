@@ -15,18 +15,7 @@ using namespace shadelab;
 namespace {
 
 std::unique_ptr<LabHost> surfaceHost(const std::vector<std::string>& sets, const char* scene = "bricks") {
-  auto host = std::make_unique<LabHost>(test::builtinShaders());
-  EXPECT_EQ(host->selectLab("surface"), "");
-  EXPECT_EQ(host->selectScene(scene), "");
-  for (auto& s : sets) EXPECT_EQ(host->set(s), "") << s;
-  return host;
-}
-
-double metric(const Metrics& m, const char* key) {
-  for (auto& [k, v] : m)
-    if (k == key) return v;
-  ADD_FAILURE() << "no metric " << key;
-  return NAN;
+  return test::labHost("surface", scene, sets);
 }
 
 }  // namespace
@@ -122,8 +111,8 @@ TEST(Surface, DisplacementApproachesTheTruthAsTheMeshIsSubdivided) {
     host->set("surface.subdivision=" + std::to_string(levels[i]));
     auto m = measurer.measureNow({160, 120}, 0.0f, {{"gpu_ms", 1.0}});
     ASSERT_TRUE(m);
-    angle[i] = metric(m->values, "normal_angle_deg");
-    silhouette[i] = metric(m->values, "silhouette_pct");
+    angle[i] = test::metric(m->values, "normal_angle_deg");
+    silhouette[i] = test::metric(m->values, "silhouette_pct");
   }
   EXPECT_GT(angle[0], angle[1]);
   EXPECT_GT(angle[1], angle[2]);
@@ -131,8 +120,8 @@ TEST(Surface, DisplacementApproachesTheTruthAsTheMeshIsSubdivided) {
   host->set("surface.technique=truth");  // the truth against itself, through the same path
   auto self = measurer.measureNow({160, 120}, 0.0f, {{"gpu_ms", 1.0}});
   ASSERT_TRUE(self);
-  EXPECT_LT(metric(self->values, "normal_angle_deg"), angle[2]);
-  EXPECT_LT(metric(self->values, "silhouette_pct"), 0.5);
+  EXPECT_LT(test::metric(self->values, "normal_angle_deg"), angle[2]);
+  EXPECT_LT(test::metric(self->values, "silhouette_pct"), 0.5);
 }
 
 TEST(Surface, SelfShadowingIsJudgedAgainstAShadowedTruth) {
@@ -150,7 +139,7 @@ TEST(Surface, SelfShadowingIsJudgedAgainstAShadowedTruth) {
   auto rmse = [&] {
     auto m = measurer.measureNow({192, 108}, 0.0f, {{"gpu_ms", 1.0}});
     EXPECT_TRUE(m);
-    return m ? metric(m->values, "rmse") : NAN;
+    return m ? test::metric(m->values, "rmse") : NAN;
   };
   const double pom = rmse();
   host->set("surface.technique=normal-map");
