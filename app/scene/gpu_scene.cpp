@@ -4,8 +4,6 @@
 
 namespace shadelab {
 
-namespace {
-
 // Our images are rows top-down; GL's first row is v = 0 at the bottom. Flip once, at upload.
 std::vector<unsigned char> flipRows(const std::vector<unsigned char>& rgba, glm::ivec2 size, int channels) {
   const size_t stride = size_t(size.x) * size_t(channels);
@@ -14,6 +12,8 @@ std::vector<unsigned char> flipRows(const std::vector<unsigned char>& rgba, glm:
     std::copy_n(rgba.begin() + ptrdiff_t(size_t(size.y - 1 - y) * stride), stride, out.begin() + ptrdiff_t(size_t(y) * stride));
   return out;
 }
+
+namespace {
 
 // The file's sampler, with the lab's overrides on top; no mip filter without a mip chain.
 gl::SamplerState samplerFor(const ImageSource& image, const SceneNeeds& needs) {

@@ -88,5 +88,7 @@ struct Scene {
 
 // Decodes an image to RGBA8, rows top-down. Returns "" or a one-line error naming the file.
 std::string decodeImage(const ImageSource& source, std::vector<unsigned char>& rgba, glm::ivec2& size);
+// Rows top-down (decoded images) to GL's bottom-up order, or back: `channels` bytes per texel.
+std::vector<unsigned char> flipRows(const std::vector<unsigned char>& rgba, glm::ivec2 size, int channels);
 
 }  // namespace shadelab

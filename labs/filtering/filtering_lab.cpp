@@ -16,18 +16,8 @@ constexpr std::string_view kPixelFilters[] = {"box", "gaussian"};
 
 constexpr int kUnit = 0;
 
-// Rows of a decoded image (top-down) in GL's order (bottom-up): every level is made and kept in
-// that order, so uploads and read-backs need no flipping.
-std::vector<uint8_t> flipRows(const std::vector<uint8_t>& rgba, glm::ivec2 size) {
-  std::vector<uint8_t> out(rgba.size());
-  const size_t stride = size_t(size.x) * 4;
-  for (int y = 0; y < size.y; ++y)
-    std::copy_n(rgba.begin() + ptrdiff_t(size_t(size.y - 1 - y) * stride), stride, out.begin() + ptrdiff_t(size_t(y) * stride));
-  return out;
-}
-
-// Mean and standard deviation of a level's luminance (linear light).
-std::pair<float, float> luminanceStats(const LinearImage& image) {
+// The standard deviation of a level's luminance (linear light): how much detail it still holds.
+float luminanceContrast(const LinearImage& image) {
   double sum = 0.0, sq = 0.0;
   for (const glm::vec4& t : image.texels) {
     const double l = 0.2126 * t.r + 0.7152 * t.g + 0.0722 * t.b;
@@ -36,7 +26,7 @@ std::pair<float, float> luminanceStats(const LinearImage& image) {
   }
   const double n = double(std::max<size_t>(image.texels.size(), 1));
   const double mean = sum / n;
-  return {float(mean), float(std::sqrt(std::max(sq / n - mean * mean, 0.0)))};
+  return float(std::sqrt(std::max(sq / n - mean * mean, 0.0)));
 }
 
 }  // namespace
@@ -188,7 +178,7 @@ const FilteringLab::ChainTexture* FilteringLab::chain(const Scene& scene, int im
       frameNotes_.push_back(err + "; drawn untextured");
       return nullptr;
     }
-    level0 = decodeSrgb8(size, flipRows(rgba, size));
+    level0 = decodeSrgb8(size, flipRows(rgba, size, 4));  // kept in GL's row order: no flip at upload
     ++imagesDecoded_;
   }
   ChainTexture c;
@@ -230,7 +220,7 @@ const FilteringLab::ChainTexture* FilteringLab::chain(const Scene& scene, int im
   for (int l = 0; l < c.levels; ++l) {
     const glm::ivec2 s = mipLevelSize(size, l);
     c.sizes.push_back(s);
-    c.contrast.push_back(luminanceStats(decodeSrgb8(s, levels[size_t(l)])).second);
+    c.contrast.push_back(luminanceContrast(decodeSrgb8(s, levels[size_t(l)])));
     const int x = l == 0 ? 0 : size.x + 2;
     const int y = l == 0 ? atlasSize.y - s.y : (y0 -= s.y + (l == 1 ? 0 : 2));
     for (int row = 0; row < s.y; ++row)
@@ -303,9 +293,8 @@ void FilteringLab::render(Frame& frame) {
     prog.set("u_level", params.level);
     prog.set("u_maxAnisotropy", inShader() ? float(params.anisotropy)
                                            : std::min(float(params.anisotropy), std::max(anisotropyLimit_, 1.0f)));
-    const glm::ivec2 size = frame.size();
-    prog.set("u_probe", glm::vec2(std::floor(params.probeX * float(size.x - 1)) + 0.5f,
-                                  float(size.y - 1) - std::floor(params.probeY * float(size.y - 1)) + 0.5f));
+    const glm::ivec2 probe = probePixel(frame.size());  // from the top-left; gl_FragCoord counts from the bottom
+    prog.set("u_probe", glm::vec2(float(probe.x) + 0.5f, float(frame.size().y - 1 - probe.y) + 0.5f));
     for (const Instance& inst : frame.scene.instances) {
       const MeshData& mesh = frame.scene.meshes[size_t(inst.mesh)];
       const Material& mat = frame.scene.materials[size_t(std::max(mesh.material, 0))];
@@ -323,12 +312,16 @@ void FilteringLab::render(Frame& frame) {
   if (params.probe) probeFootprint(frame, viewProj);
 }
 
+glm::ivec2 FilteringLab::probePixel(glm::ivec2 size) const {
+  return {int(std::floor(params.probeX * float(size.x - 1))), int(std::floor(params.probeY * float(size.y - 1)))};
+}
+
 // One pixel's footprint: the probe program draws the scene into a 2 x 2 target whose viewport
 // is shifted so that the probe pixel lands on its corner (derivatives need the 2 x 2 quad).
 void FilteringLab::probeFootprint(Frame& frame, const glm::mat4& viewProj) {
   auto pass = frame.pass("footprint probe");
   const glm::ivec2 size = frame.size();
-  const glm::ivec2 px(int(std::floor(params.probeX * float(size.x - 1))), int(std::floor(params.probeY * float(size.y - 1))));
+  const glm::ivec2 px = probePixel(size);
   const int glY = size.y - 1 - px.y;
   GLint previous = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);

@@ -98,6 +98,7 @@ class FilteringLab final : public LabWithParams<FilteringParams> {
   void applySampler();
   void makeTexelSampler();
   void probeFootprint(Frame& frame, const glm::mat4& viewProj);
+  glm::ivec2 probePixel(glm::ivec2 size) const;  // from the frame's top-left
   glm::mat4 viewMatrix(const Frame& frame) const;
 
   ShaderLibrary* shaders_ = nullptr;

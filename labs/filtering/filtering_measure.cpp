@@ -134,20 +134,21 @@ std::vector<LabPanel> FilteringLab::panels() const {
       plot.xLabel = "u (texels)";
       plot.yLabel = "v (texels)";
       plot.equalAxes = true;
-      PanelSeries quad{"pixel footprint", {}, {}};
-      for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(-1, -1)}) {
-        const glm::vec2 q = 0.5f * (c.x * f.dx + c.y * f.dy);
-        quad.x.push_back(q.x);
-        quad.y.push_back(q.y);
-      }
-      auto square = [](PanelSeries& s, glm::vec2 centre, float side) {
+      // Closed outlines of parallelograms centre +- ex/2 +- ey/2, a break (NaN) after each.
+      auto outline = [](PanelSeries& series, glm::vec2 centre, glm::vec2 ex, glm::vec2 ey) {
         for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(-1, -1)}) {
-          s.x.push_back(centre.x + 0.5f * side * c.x);
-          s.y.push_back(centre.y + 0.5f * side * c.y);
+          const glm::vec2 q = centre + 0.5f * (c.x * ex + c.y * ey);
+          series.x.push_back(q.x);
+          series.y.push_back(q.y);
         }
-        s.x.push_back(NAN);  // a break before the next square
-        s.y.push_back(NAN);
+        series.x.push_back(NAN);
+        series.y.push_back(NAN);
       };
+      auto square = [&](PanelSeries& series, glm::vec2 centre, float side) {
+        outline(series, centre, glm::vec2(side, 0.0f), glm::vec2(0.0f, side));
+      };
+      PanelSeries quad{"pixel footprint", {}, {}};
+      outline(quad, glm::vec2(0.0f), f.dx, f.dy);
       PanelSeries iso{"isotropic: one texel of level L", {}, {}};
       square(iso, glm::vec2(0.0f), std::exp2(std::max(lod, 0.0f)));
       PanelSeries probes{"anisotropic probes", {}, {}};
