@@ -158,6 +158,9 @@ class Lab {
   virtual Metrics meshMetrics() const { return {}; }
   // What a sweep and the app's Measure panel plot.
   virtual std::vector<PlotSpec> plots() const { return {{"rmse"}, {"surface_rmse"}}; }
+  // What a metric measures and what it is divided by, where its name does not say: metric ->
+  // one sentence. A sweep's CSV opens with them as "# key: note" lines.
+  virtual Settings metricNotes() const { return {}; }
   virtual std::vector<StressCase> stressCases() const { return {}; }
   virtual std::vector<SweepAxis> standardSweep() const { return {}; }
 };

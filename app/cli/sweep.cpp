@@ -89,6 +89,7 @@ int runSweep(const Options& o) {
                  std::to_string(o.size.y);
   report.renderer = s.context->describe();
   report.costClock = host.timerClock();
+  report.metricNotes = host.lab().metricNotes();
   report.plots = host.lab().plots();
   std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
                     std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);

@@ -11,6 +11,13 @@ bool loadFunctions(ShlGetProcAddress getProc, const char** missing) {
   return usable;
 }
 
+bool hasTessellation() {
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  return major >= 4 && glPatchParameteri != nullptr;
+}
+
 const char* errorString(GLenum error) {
   switch (error) {
     case GL_INVALID_ENUM: return "GL_INVALID_ENUM";

@@ -16,6 +16,9 @@ namespace gl {
 // first missing function in `missing`) when the context lacks a core function we rely on.
 bool loadFunctions(ShlGetProcAddress getProc, const char** missing = nullptr);
 
+// Tessellation stages (core in 4.0): the contexts ask for 3.3, so labs check before using them.
+bool hasTessellation();
+
 const char* errorString(GLenum error);  // "GL_INVALID_ENUM", ...
 // Drains glGetError; returns "" or a comma-separated list such as "GL_INVALID_ENUM".
 std::string drainErrors();

@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <glm/glm.hpp>
+
 namespace gl {
 
 static int fullMipChain(glm::ivec2 s) { return 1 + int(std::floor(std::log2(std::max(1, std::max(s.x, s.y))))); }
@@ -32,7 +34,12 @@ Texture2D Texture2D::allocate(glm::ivec2 size, GLenum internalFormat, int levels
   t.size_ = size;
   t.levels_ = levels > 0 ? levels : fullMipChain(size);
   glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexStorage2D(GL_TEXTURE_2D, t.levels_, internalFormat, size.x, size.y);
+  // Every level, as GL 3.3 allocates them (glTexStorage2D is 4.2); MAX_LEVEL marks the chain complete.
+  for (int level = 0; level < t.levels_; ++level) {
+    const glm::ivec2 s = glm::max(size >> level, glm::ivec2(1));
+    glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat), s.x, s.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, t.levels_ - 1);
   SamplerState s;
   s.minFilter = t.levels_ > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR;
   s.wrapS = s.wrapT = GL_CLAMP_TO_EDGE;

@@ -47,6 +47,7 @@ std::vector<std::string> truthsOf(const SweepReport& r) {
 std::string sweepCsv(const SweepReport& r) {
   if (r.rows.empty()) return "";
   std::string csv;
+  for (auto& [key, note] : r.metricNotes) csv += "# " + key + ": " + note + "\n";
   const auto& first = r.rows.front();
   for (auto& [k, v] : first.params) csv += csvField(k) + ",";
   csv += "truth,";

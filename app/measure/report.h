@@ -31,6 +31,7 @@ struct SweepReport {
   std::vector<std::pair<std::string, std::string>> truths;  // truth -> what it is, in order of appearance
   std::string costClock;  // how gpu_ms was measured (queries or glFinish wall time)
   std::vector<PlotSpec> plots;
+  std::vector<std::pair<std::string, std::string>> metricNotes;  // metric -> what it is divided by
   std::vector<SweepRow> rows;
   std::vector<std::pair<std::string, ImageF>> referenceThumbnails;  // per truth, when it is an image
 };

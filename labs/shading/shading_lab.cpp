@@ -140,6 +140,8 @@ void ShadingLab::render(Frame& frame) {
     prog.set("u_kd", params.kd);
     prog.set("u_ks", params.ks);
     prog.set("u_shininess", params.shininess);
+    const float minDistance = std::max(1e-3f * radius, 1e-15f);
+    prog.set("u_minDistance2", minDistance * minDistance);
     prog.set("u_baseColor", mat.baseColor);
     if (tex) {
       tex->bind(0);

@@ -30,7 +30,9 @@ LightFrame buildLight(const LightSetup& s, const Bounds& bounds, std::vector<std
   const glm::vec3 c = bounds.center();
   const float R = std::max(bounds.radius(), 1e-30f);
   const float el = glm::radians(s.elevationDeg), az = glm::radians(s.azimuthDeg);
-  const glm::vec3 toLight(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+  const glm::vec3 toLight = glm::dot(s.fromPoint, s.fromPoint) > 0.0f
+                                ? glm::normalize(s.fromPoint)
+                                : glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
   L.direction = -toLight;
 
   if (s.type == LightType::Directional) {
@@ -79,29 +81,201 @@ LightFrame buildLight(const LightSetup& s, const Bounds& bounds, std::vector<std
   return L;
 }
 
-std::vector<glm::vec2> poissonDisk(int count) {
-  std::vector<glm::vec2> pts;
-  uint32_t state = 0x9E3779B9u;
-  auto rnd = [&] {  // xorshift32: the same disk on every machine
-    state ^= state << 13;
-    state ^= state >> 17;
-    state ^= state << 5;
-    return float(state) / 4294967296.0f;
-  };
-  // Minimum distance for `count` well-spread points in the unit disk, relaxed whenever a point
-  // cannot be placed after many tries.
-  float minDist = 1.6f / std::sqrt(float(std::max(count, 1)));
-  while (int(pts.size()) < count) {
-    bool placed = false;
-    for (int attempt = 0; attempt < 2000 && !placed; ++attempt) {
-      const glm::vec2 p(rnd() * 2 - 1, rnd() * 2 - 1);
-      if (glm::dot(p, p) > 1.0f) continue;
-      placed = std::all_of(pts.begin(), pts.end(), [&](const glm::vec2& q) { return glm::distance(p, q) >= minDist; });
-      if (placed) pts.push_back(p);
+std::vector<glm::vec3> frustumSlice(const ViewVolume& view, float nearDepth, float farDepth) {
+  std::vector<glm::vec3> corners;
+  for (float depth : {nearDepth, farDepth})
+    for (int c = 0; c < 4; ++c) {
+      const glm::vec4 far = view.inverseViewProj * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, 1.0f, 1.0f);
+      const glm::vec3 ray = glm::vec3(far) / far.w - view.eye;
+      corners.push_back(view.eye + ray * (depth / glm::dot(ray, view.forward)));
     }
-    if (!placed) minDist *= 0.95f;
+  return corners;
+}
+
+namespace {
+
+struct Plane {
+  glm::vec3 n;
+  float d;  // inside: dot(n, p) + d >= 0
+  float at(const glm::vec3& p) const { return glm::dot(n, p) + d; }
+};
+
+// Clips the segment a-b to the inside of every plane; appends what is left's end points.
+void clipSegment(glm::vec3 a, glm::vec3 b, const std::vector<Plane>& planes, std::vector<glm::vec3>& out) {
+  float t0 = 0.0f, t1 = 1.0f;
+  for (const Plane& pl : planes) {
+    const float da = pl.at(a), db = pl.at(b);
+    if (da < 0 && db < 0) return;
+    if (da < 0) t0 = std::max(t0, da / (da - db));
+    else if (db < 0) t1 = std::min(t1, da / (da - db));
+    if (t0 > t1) return;
   }
-  return pts;
+  out.push_back(a + (b - a) * t0);
+  out.push_back(a + (b - a) * t1);
+}
+
+constexpr int kBoxEdges[24] = {0, 1, 2, 3, 4, 5, 6, 7, 0, 2, 1, 3, 4, 6, 5, 7, 0, 4, 1, 5, 2, 6, 3, 7};
+
+}  // namespace
+
+std::vector<glm::vec3> clipToBounds(const std::vector<glm::vec3>& slice, const Bounds& bounds) {
+  std::vector<glm::vec3> out;
+  if (slice.size() != 8 || bounds.min.x > bounds.max.x) return out;
+  // Both are hexahedra with corners indexed by bits (x, y, near/far): the same 12 edges.
+  std::vector<Plane> box;
+  for (int a = 0; a < 3; ++a) {
+    glm::vec3 n(0.0f);
+    n[a] = 1.0f;
+    box.push_back({n, -bounds.min[a]});
+    box.push_back({-n, bounds.max[a]});
+  }
+  const glm::vec3 centre = [&] {
+    glm::vec3 c(0.0f);
+    for (auto& p : slice) c += p;
+    return c / 8.0f;
+  }();
+  std::vector<Plane> frustum;
+  const int faces[6][3] = {{0, 1, 2}, {4, 5, 6}, {0, 1, 4}, {2, 3, 6}, {0, 2, 4}, {1, 3, 5}};
+  for (auto& f : faces) {
+    glm::vec3 n = glm::cross(slice[f[1]] - slice[f[0]], slice[f[2]] - slice[f[0]]);
+    if (glm::dot(n, n) == 0.0f) continue;  // a degenerate face (near depth 0): the others bound it
+    n = glm::normalize(n);
+    Plane pl{n, -glm::dot(n, slice[f[0]])};
+    if (pl.at(centre) < 0) pl = {-n, -pl.d};
+    pl.d += 1e-5f * (std::abs(pl.d) + 1.0f);  // points on the face count as inside
+    frustum.push_back(pl);
+  }
+  glm::vec3 boxCorner[8];
+  for (int c = 0; c < 8; ++c)
+    boxCorner[c] = {(c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
+                    (c & 4) ? bounds.max.z : bounds.min.z};
+  for (int e = 0; e < 24; e += 2) {
+    clipSegment(slice[size_t(kBoxEdges[e])], slice[size_t(kBoxEdges[e + 1])], box, out);
+    clipSegment(boxCorner[kBoxEdges[e]], boxCorner[kBoxEdges[e + 1]], frustum, out);
+  }
+  return out;
+}
+
+glm::vec2 visibleDepthRange(const ViewVolume& view, const Bounds& bounds) {
+  const auto pts = clipToBounds(frustumSlice(view, view.nearPlane, view.farPlane), bounds);
+  if (pts.empty()) return glm::vec2(0.0f);
+  glm::vec2 range(view.farPlane, view.nearPlane);
+  for (auto& p : pts) {
+    const float d = glm::dot(p - view.eye, view.forward);
+    range = {std::min(range.x, d), std::max(range.y, d)};
+  }
+  return glm::clamp(range, glm::vec2(view.nearPlane), glm::vec2(view.farPlane));
+}
+
+std::vector<float> practicalSplits(int count, float n, float f, float lambda) {
+  std::vector<float> splits;
+  n = std::max(n, 1e-30f);
+  for (int i = 0; i <= count; ++i) {
+    const float t = float(i) / float(std::max(count, 1));
+    splits.push_back(lambda * n * std::pow(f / n, t) + (1.0f - lambda) * (n + (f - n) * t));
+  }
+  splits.front() = n;
+  splits.back() = f;  // exactly, whatever pow rounds to
+  return splits;
+}
+
+LightFrame fitDirectional(const LightFrame& sceneFit, const std::vector<glm::vec3>& points, const Bounds& bounds,
+                          int mapSize, bool snap, float marginTexels) {
+  if (points.empty()) return sceneFit;
+  LightFrame L = sceneFit;
+  glm::vec2 lo(INFINITY), hi(-INFINITY);
+  for (auto& p : points) {
+    const glm::vec3 v = glm::vec3(L.view * glm::vec4(p, 1.0f));
+    lo = glm::min(lo, glm::vec2(v));
+    hi = glm::max(hi, glm::vec2(v));
+  }
+  const float size = float(std::max(mapSize, 1));
+  // Square texels: the larger side decides; a few texels of margin keep filter taps on the map.
+  float half = 0.5f * std::max(hi.x - lo.x, hi.y - lo.y);
+  half = std::max(half * size / (size - 2.0f * marginTexels), 1e-6f * bounds.radius());
+  glm::vec2 centre = 0.5f * (lo + hi);
+  if (snap) {
+    half = std::exp2(std::ceil(std::log2(half) * 8.0f) / 8.0f);
+    const float texel = 2.0f * half / size;
+    centre = glm::round(centre / texel) * texel;
+  }
+  // Depth: every corner of the scene, so casters outside the camera's view still cast.
+  float zNear = INFINITY, zFar = -INFINITY;
+  for (int c = 0; c < 8; ++c) {
+    const glm::vec3 corner((c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
+                           (c & 4) ? bounds.max.z : bounds.min.z);
+    const float z = -(L.view * glm::vec4(corner, 1.0f)).z;
+    zNear = std::min(zNear, z);
+    zFar = std::max(zFar, z);
+  }
+  const float pad = 1e-3f * std::max(zFar - zNear, 1e-30f);
+  L.nearPlane = zNear - pad;
+  L.farPlane = zFar + pad;
+  L.orthoHalfExtent = half;
+  L.orthoCentre = centre;
+  L.proj = glm::ortho(centre.x - half, centre.x + half, centre.y - half, centre.y + half, L.nearPlane, L.farPlane);
+  L.viewProj = L.proj * L.view;
+  return L;
+}
+
+std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
+                                   const Bounds& bounds) {
+  const glm::vec2 range = visibleDepthRange(view, bounds);
+  if (range.y <= range.x) return {{sceneFit, view.farPlane, view.farPlane}};
+  const int count = std::clamp(setup.count, 1, 4);
+  const std::vector<float> splits = practicalSplits(count, range.x, range.y, setup.lambda);
+  std::vector<Cascade> cascades;
+  float from = splits[0];  // where this cascade's slice starts: the previous one's blend band included
+  for (int i = 0; i < count; ++i) {
+    const float to = splits[size_t(i) + 1];
+    const float band = i + 1 < count ? setup.blend * (to - splits[size_t(i)]) : 0.0f;
+    const auto pts = clipToBounds(frustumSlice(view, from, to), bounds);
+    cascades.push_back({fitDirectional(sceneFit, pts, bounds, setup.mapSize, setup.snap), to, to - band});
+    from = to - band;
+  }
+  cascades.back().splitFar = cascades.back().blendFrom = view.farPlane;  // the last one takes the rest
+  return cascades;
+}
+
+float minimumSpacing(const std::vector<glm::vec2>& pts) {
+  float best = INFINITY;
+  for (size_t i = 0; i < pts.size(); ++i)
+    for (size_t j = i + 1; j < pts.size(); ++j) best = std::min(best, glm::distance(pts[i], pts[j]));
+  return best;
+}
+
+float spacingBound(int count) {
+  // n (d/2)^2 <= (pi / sqrt 12) (1 + d/2)^2  =>  d <= 2 k / (sqrt n - k), k = sqrt(pi / sqrt 12).
+  const float k = std::sqrt(3.14159265f / std::sqrt(12.0f));
+  return 2.0f * k / (std::sqrt(float(count)) - k);
+}
+
+std::vector<glm::vec2> poissonDisk(int count) {
+  std::vector<glm::vec2> best;
+  for (uint32_t seed = 1; seed <= 16; ++seed) {
+    std::vector<glm::vec2> pts;
+    uint32_t state = 0x9E3779B9u * seed;
+    auto rnd = [&] {  // xorshift32: the same disk on every machine
+      state ^= state << 13;
+      state ^= state >> 17;
+      state ^= state << 5;
+      return float(state) / 4294967296.0f;
+    };
+    // Start at the packing bound and relax slowly whenever a point cannot be placed.
+    float minDist = spacingBound(std::max(count, 2));
+    while (int(pts.size()) < count) {
+      bool placed = false;
+      for (int attempt = 0; attempt < 500 && !placed; ++attempt) {
+        const glm::vec2 p(rnd() * 2 - 1, rnd() * 2 - 1);
+        if (glm::dot(p, p) > 1.0f) continue;
+        placed = std::all_of(pts.begin(), pts.end(), [&](const glm::vec2& q) { return glm::distance(p, q) >= minDist; });
+        if (placed) pts.push_back(p);
+      }
+      if (!placed) minDist *= 0.98f;
+    }
+    if (best.empty() || minimumSpacing(pts) > minimumSpacing(best)) best = std::move(pts);
+  }
+  return best;
 }
 
 }  // namespace shadelab

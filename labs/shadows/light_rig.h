@@ -23,6 +23,8 @@ struct LightSetup {
   float orthoExtent = 1.0f;     // directional, !autoFit: half-width of the box, in scene radii
   float nearPlane = 0.5f;       // !autoFit: in scene radii
   float farPlane = 5.0f;        // !autoFit: in scene radii
+  glm::vec3 fromPoint{0.0f};    // nonzero: the light shines from this point towards the origin
+                                // (overrides azimuth and elevation; a scene's own light)
 };
 
 struct LightFrame {
@@ -35,6 +37,7 @@ struct LightFrame {
   float orthoHalfExtent = 1.0f;  // directional
   float tanHalfFov = 1.0f;       // spot (point faces: 1)
   float radiusWorld = 0.0f;      // area-light radius (directional: tangent of the angular radius)
+  glm::vec2 orthoCentre{0.0f};   // directional: the box's centre in light view space (0: on the scene)
 
   // World size of one shadow-map texel at `depth` (distance along the light's axis, or from a
   // point light), for a map of `resolution` texels across.
@@ -45,8 +48,62 @@ struct LightFrame {
 // well (the scene outside the light's frustum, near/far ratio beyond depth precision, ...).
 LightFrame buildLight(const LightSetup& setup, const Bounds& bounds, std::vector<std::string>& warnings);
 
-// Deterministic Poisson-disk samples in the unit disk (dart throwing, fixed seed): well spread,
-// so few samples hide the grid of a PCF kernel.
+// The camera as a fitted shadow map sees it.
+struct ViewVolume {
+  glm::mat4 inverseViewProj{1.0f};  // NDC -> world
+  glm::vec3 eye{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};  // unit
+  float nearPlane = 0.05f, farPlane = 100.0f;
+};
+
+// The eight corners of the camera frustum between view depths `nearDepth` and `farDepth`
+// (distances along `forward`): near face then far face.
+std::vector<glm::vec3> frustumSlice(const ViewVolume& view, float nearDepth, float farDepth);
+// The vertices of the convex slice intersected with `bounds`: corners of either inside the
+// other, and where edges of one cross faces of the other. Empty when they do not meet.
+std::vector<glm::vec3> clipToBounds(const std::vector<glm::vec3>& slice, const Bounds& bounds);
+// The view-depth range of the part of the scene the camera can see: (nearest, farthest), or
+// (0, 0) when the frustum misses the scene.
+glm::vec2 visibleDepthRange(const ViewVolume& view, const Bounds& bounds);
+// Cascade boundaries by the practical split scheme (Zhang et al., "Parallel-split shadow maps",
+// 2006): C_i = lambda n (f/n)^(i/N) + (1 - lambda) (n + (f - n) i/N), i = 0..N.
+std::vector<float> practicalSplits(int count, float nearDepth, float farDepth, float lambda);
+// A directional light refitted around `points`: the same light-view axes as `sceneFit` (so the
+// texel grid is fixed in world space), x/y hugging the points with a margin of `marginTexels`,
+// depth spanning the whole scene (every caster between the light and the points). `snap`
+// quantises the half-width to 1/8 octaves and moves the centre by whole texels: a camera move
+// smaller than a texel leaves the map unchanged, so its shadows do not shimmer.
+LightFrame fitDirectional(const LightFrame& sceneFit, const std::vector<glm::vec3>& points, const Bounds& bounds,
+                          int mapSize, bool snap, float marginTexels = 4.0f);
+
+struct CascadeSetup {
+  int count = 1;         // 1: one map fitted to everything the camera sees
+  float lambda = 0.75f;  // split scheme: 0 uniform, 1 logarithmic
+  float blend = 0.1f;    // fraction of each cascade's range blended into the next
+  bool snap = true;
+  int mapSize = 1024;
+};
+
+struct Cascade {
+  LightFrame light;
+  float splitFar = 0.0f;   // view depth where this cascade hands over to the next
+  float blendFrom = 0.0f;  // view depth where blending into the next begins (= splitFar: none)
+};
+
+// Directional cascades for what the camera sees; falls back to `sceneFit` (one cascade) when
+// the camera sees none of the scene.
+std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
+                                   const Bounds& bounds);
+
+// Deterministic Poisson-disk samples in the unit disk, made for exactly `count` points (never a
+// prefix of a larger set, whose first points are badly spread): dart throwing from a large
+// minimum distance downwards, best of several seeds by minimum spacing.
 std::vector<glm::vec2> poissonDisk(int count);
+// The smallest distance between two points of `pts`.
+float minimumSpacing(const std::vector<glm::vec2>& pts);
+// An upper bound on the minimum spacing any `count` points in the unit disk can have: disks of
+// radius d/2 around them fit inside a disk of radius 1 + d/2 at most at the hexagonal density
+// pi / sqrt(12).
+float spacingBound(int count);
 
 }  // namespace shadelab

@@ -108,29 +108,35 @@ ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const
         if (o[3] == 0.0f) continue;
         const glm::vec3 P(p[0], p[1], p[2]), N(normals.at(x, y)[0], normals.at(x, y)[1], normals.at(x, y)[2]);
         const glm::vec3 origin = P + N * epsilon;
-        int lit = 0;
-        for (int i = 0; i < n; ++i)
-          for (int j = 0; j < n; ++j) {
-            const glm::vec2 d = n > 1 ? diskSample(i, j, n) : glm::vec2(0.0f);
-            glm::vec3 dir;
-            float dist;
-            if (light.type == LightType::Directional) {
-              glm::vec3 t, b;
-              basis(-light.direction, t, b);
-              dir = glm::normalize(-light.direction + (t * d.x + b * d.y) * light.radiusWorld);
-              dist = std::numeric_limits<float>::infinity();
-            } else {
-              const glm::vec3 toCentre = light.position - origin;
-              glm::vec3 t, b;
-              basis(glm::normalize(toCentre), t, b);
-              const glm::vec3 target = light.position + (t * d.x + b * d.y) * light.radiusWorld;
-              dir = target - origin;
-              dist = 1.0f;  // the ray is origin + dir * t, t in [0, 1): stop at the light
-            }
-            lit += !scene.occluded(origin, dir, dist);
+        // A ray towards the point `d` (unit disk) of the light's disk; true when it gets through.
+        auto reaches = [&](glm::vec2 d) {
+          glm::vec3 dir;
+          float dist;
+          if (light.type == LightType::Directional) {
+            glm::vec3 t, b;
+            basis(-light.direction, t, b);
+            dir = glm::normalize(-light.direction + (t * d.x + b * d.y) * light.radiusWorld);
+            dist = std::numeric_limits<float>::infinity();
+          } else {
+            const glm::vec3 toCentre = light.position - origin;
+            glm::vec3 t, b;
+            basis(glm::normalize(toCentre), t, b);
+            const glm::vec3 target = light.position + (t * d.x + b * d.y) * light.radiusWorld;
+            dir = target - origin;
+            dist = 1.0f;  // the ray is origin + dir * t, t in [0, 1): stop at the light
           }
-        const float v = float(lit) / float(n * n);
-        o[0] = o[1] = o[2] = v;
+          return !scene.occluded(origin, dir, dist);
+        };
+        const float hard = reaches(glm::vec2(0.0f)) ? 1.0f : 0.0f;
+        float area = hard;
+        if (n > 1) {
+          int lit = 0;
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) lit += reaches(diskSample(i, j, n));
+          area = float(lit) / float(n * n);
+        }
+        o[0] = hard;
+        o[1] = o[2] = area;
       }
       const int done = ++rowsDone;
       // One thread reports (JobContext is thread-safe, but one voice is enough).

@@ -28,7 +28,9 @@ class RayScene {
 };
 
 // positions: xyz = world position, w > 0.5 where a surface was drawn that faces the light;
-// normals: xyz = its normal. Returns visibility in RGB and the same validity in A.
+// normals: xyz = its normal. Returns the visibility of the light's centre (a point light: one
+// ray) in R, of its whole disk (samplesPerAxis^2 stratified rays; the centre's again when the
+// radius is 0) in G and B, and the same validity in A.
 // `epsilon` (world units) lifts ray origins off the surface along the normal. With a `job`, rows
 // report progress and stop early when it is cancelled (the image is then incomplete).
 ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const ImageF& positions,

@@ -1,29 +1,85 @@
 #include "labs/shadows/shadow_map.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace shadelab {
+namespace {
 
-void ShadowMap::ensure(bool cube, int size, GLenum format) {
-  if (texture_ && cube == cube_ && size == size_ && format == format_) return;
-  release();
-  cube_ = cube;
-  size_ = size;
-  format_ = format;
-  texture_ = gl::TextureName::make();
-  const GLenum target = cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-  glBindTexture(target, texture_.get());
-  glTexStorage2D(target, 1, format, size, size);
-  fbo_ = gl::FramebufferName::make();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // all six faces if a cube
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
+int mipLevels(int size) {
+  int levels = 1;
+  while ((size >> levels) > 0) ++levels;
+  return levels;
+}
+
+GLenum momentChannels(GLenum format) {
+  return format == GL_R32F ? GL_RED : format == GL_RG32F ? GL_RG : GL_RGBA;
+}
+
+void allocateArray(GLuint texture, GLenum internal, GLenum format, int size, int layers, int levels) {
+  glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+  for (int level = 0; level < levels; ++level) {
+    const int s = std::max(size >> level, 1);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GLint(internal), s, s, layers, 0, format, GL_FLOAT, nullptr);
+  }
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+}
+
+void checkComplete(int size) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("shadow map " + std::to_string(size) + "^2 is incomplete (status " + std::to_string(status) + ")");
+}
+
+}  // namespace
+
+void ShadowMap::ensure(const MapShape& shape) {
+  if (texture_ && shape == shape_) return;
+  release();
+  shape_ = shape;
+  const int size = shape.size;
+  texture_ = gl::TextureName::make();
+  if (shape.cube) {
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.get());
+    for (int f = 0; f < 6; ++f)
+      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GLint(shape.depthFormat), size, size, 0, GL_DEPTH_COMPONENT,
+                   GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  } else {
+    allocateArray(texture_.get(), shape.depthFormat, GL_DEPTH_COMPONENT, size, shape.layers, 1);
+  }
+  fbo_ = gl::FramebufferName::make();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // layered: all faces or layers
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+  checkComplete(size);
+
+  if (shape.momentFormat && !shape.cube) {
+    moments_ = gl::TextureName::make();
+    allocateArray(moments_.get(), shape.momentFormat, momentChannels(shape.momentFormat), size, shape.layers,
+                  shape.momentMips ? mipLevels(size) : 1);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, 0);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, 0);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    checkComplete(size);
+    blurTemp_ = gl::TextureName::make();
+    allocateArray(blurTemp_.get(), shape.momentFormat, momentChannels(shape.momentFormat), size, 1, 1);
+    blurFbo_ = gl::FramebufferName::make();
+    glBindFramebuffer(GL_FRAMEBUFFER, blurFbo_.get());
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, blurTemp_.get(), 0, 0);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    checkComplete(size);
+    momentSampler_ = gl::Sampler::make();
+    glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MIN_FILTER, shape.momentMips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (shape.momentMips && gl::maxAnisotropy() > 1.0f)
+      glSamplerParameterf(momentSampler_.get(), GL_TEXTURE_MAX_ANISOTROPY, std::min(8.0f, gl::maxAnisotropy()));
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
   raw_ = gl::Sampler::make();
   compare_ = gl::Sampler::make();
@@ -37,14 +93,25 @@ void ShadowMap::ensure(bool cube, int size, GLenum format) {
   for (GLuint s : {raw_.get(), compare_.get()}) glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
 }
 
-void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light,
+void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light, int layer,
                        const DepthPassState& state) {
+  const int size = shape_.size;
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-  glViewport(0, 0, size_, size_);
+  if (!shape_.cube) {
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, layer);
+    if (moments_) glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
+  }
+  glViewport(0, 0, size, size);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  glClear(GL_DEPTH_BUFFER_BIT);
+  if (moments_) {
+    // Where nothing was drawn the moments are those of the far plane: lit.
+    glClearColor(state.momentClear.r, state.momentClear.g, state.momentClear.b, state.momentClear.a);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  } else {
+    glClear(GL_DEPTH_BUFFER_BIT);
+  }
   if (state.cullFront) {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
@@ -61,11 +128,17 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
       gpu.draw(inst);
     }
   };
-  if (cube_) {
+  if (shape_.cube) {
     program.set("u_lightPos", light.position);
     program.set("u_far", light.farPlane);
   }
-  if (cube_ && state.sixPasses) {
+  if (moments_) {
+    program.set("u_lightPos", light.position);
+    program.set("u_lightAxis", light.direction);
+    program.set("u_near", light.nearPlane);
+    program.set("u_far", light.farPlane);
+  }
+  if (shape_.cube && state.sixPasses) {
     for (int f = 0; f < 6; ++f) {  // one face at a time: the vertices are submitted six times
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, f);
       glClear(GL_DEPTH_BUFFER_BIT);
@@ -73,7 +146,7 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
       drawAll();
     }
     glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // layered again
-  } else if (cube_) {
+  } else if (shape_.cube) {
     program.setArray("u_faceViewProj", light.faceViewProj, 6);
     drawAll();
   } else {
@@ -87,8 +160,48 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
   }
 }
 
+void ShadowMap::filterMoments(Program& blur, int radius, GLuint emptyVao) {
+  if (!moments_) return;
+  const int size = shape_.size;
+  if (radius > 0) {
+    glDisable(GL_DEPTH_TEST);
+    glViewport(0, 0, size, size);
+    blur.use();
+    blur.set("u_src", 0);
+    blur.set("u_radius", radius);
+    glActiveTexture(GL_TEXTURE0);
+    glBindSampler(0, 0);
+    glBindVertexArray(emptyVao);
+    for (int layer = 0; layer < shape_.layers; ++layer) {
+      // Across: this layer of the moments -> the scratch layer; down: back into this layer.
+      glBindFramebuffer(GL_FRAMEBUFFER, blurFbo_.get());
+      glBindTexture(GL_TEXTURE_2D_ARRAY, moments_.get());
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      blur.set("u_layer", layer);
+      blur.set("u_direction", glm::vec2(1.0f, 0.0f));
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
+      glBindTexture(GL_TEXTURE_2D_ARRAY, blurTemp_.get());
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      blur.set("u_layer", 0);
+      blur.set("u_direction", glm::vec2(0.0f, 1.0f));
+      glDisable(GL_DEPTH_TEST);  // the depth layer stays attached; the blur must not test against it
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glEnable(GL_DEPTH_TEST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (shape_.momentMips) {
+    glBindTexture(GL_TEXTURE_2D_ARRAY, moments_.get());
+    glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  }
+}
+
 void ShadowMap::bind(int rawUnit, int compareUnit, bool border) const {
-  const GLenum target = cube_ ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+  const GLenum target = shape_.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D_ARRAY;
   const GLint wrap = border ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
   for (GLuint s : {raw_.get(), compare_.get()}) {
     glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
@@ -103,38 +216,58 @@ void ShadowMap::bind(int rawUnit, int compareUnit, bool border) const {
   glBindSampler(compareUnit, compare_.get());
 }
 
+void ShadowMap::bindMoments(int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, moments_.get());
+  glBindSampler(unit, momentSampler_.get());
+}
+
 void ShadowMap::release() {
   fbo_.reset();
+  blurFbo_.reset();
   texture_.reset();
+  moments_.reset();
+  blurTemp_.reset();
   raw_.reset();
   compare_.reset();
-  size_ = 0;
+  momentSampler_.reset();
+  shape_ = {};
 }
 
 void DummyDepthTextures::create() {
-  tex2D_ = gl::TextureName::make();
-  glBindTexture(GL_TEXTURE_2D, tex2D_.get());
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT16, 1, 1);
-  texCube_ = gl::TextureName::make();
-  glBindTexture(GL_TEXTURE_CUBE_MAP, texCube_.get());
-  glTexStorage2D(GL_TEXTURE_CUBE_MAP, 1, GL_DEPTH_COMPONENT16, 1, 1);
+  array_ = gl::TextureName::make();
+  allocateArray(array_.get(), GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, 1, 1, 1);
+  cube_ = gl::TextureName::make();
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_.get());
+  for (int f = 0; f < 6; ++f)
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_DEPTH_COMPONENT16, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
+  moments_ = gl::TextureName::make();
+  allocateArray(moments_.get(), GL_RGBA32F, GL_RGBA, 1, 1, 1);
 }
 
-void DummyDepthTextures::bind2D(int unit) const {
+void DummyDepthTextures::bindArray(int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D, tex2D_.get());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, array_.get());
   glBindSampler(unit, 0);
 }
 
 void DummyDepthTextures::bindCube(int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_CUBE_MAP, texCube_.get());
+  glBindTexture(GL_TEXTURE_CUBE_MAP, cube_.get());
+  glBindSampler(unit, 0);
+}
+
+void DummyDepthTextures::bindMoments(int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, moments_.get());
   glBindSampler(unit, 0);
 }
 
 void DummyDepthTextures::release() {
-  tex2D_.reset();
-  texCube_.reset();
+  array_.reset();
+  cube_.reset();
+  moments_.reset();
 }
 
 }  // namespace shadelab

@@ -1,6 +1,8 @@
-// A light's depth map on the GPU (a 2D texture, or a cube for a point light), the framebuffer the
-// depth pass draws into, and two samplers over the same texture: one reads raw depth (for PCF
-// taps and the PCSS blocker search), one compares in hardware (sampler2DShadow).
+// A light's depth map on the GPU: a 2D array (one layer per cascade; one layer for a spot or an
+// unsplit directional light) or a cube for a point light, the framebuffer the depth pass draws
+// into, and two samplers over the same texture: one reads raw depth (PCF taps, the PCSS blocker
+// search), one compares in hardware (sampler2DArrayShadow). Filtered maps (VSM, ESM, EVSM) add a
+// float colour array of moments, written by the same pass, blurred and mipmapped.
 #pragma once
 #include "gl/texture.h"
 #include "labs/shadows/light_rig.h"
@@ -14,45 +16,65 @@ struct DepthPassState {
   float offsetFactor = 0.0f;   // glPolygonOffset(factor, units); 0, 0 = off
   float offsetUnits = 0.0f;
   bool sixPasses = false;      // cube maps: one pass per face instead of one geometry-shader pass
+  glm::vec4 momentClear{1.0f}; // filtered maps: the moments of the far plane (where nothing is drawn)
+};
+
+struct MapShape {
+  bool cube = false;
+  int size = 0;
+  int layers = 1;             // 2D arrays: cascades
+  GLenum depthFormat = 0;
+  GLenum momentFormat = 0;    // 0: no moments; GL_R32F (ESM), GL_RG32F (VSM), GL_RGBA32F (EVSM)
+  bool momentMips = false;
+  bool operator==(const MapShape&) const = default;
 };
 
 class ShadowMap {
  public:
-  // (Re)allocates only when the shape, size or format changes.
-  void ensure(bool cube, int size, GLenum depthFormat);
-  // Draws every instance's depth from the light. `program` is the depth program variant for
-  // this map (CUBE_MAP for a one-pass cube, CUBE_FACE for six passes).
-  void render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light,
+  // (Re)allocates only when the shape changes.
+  void ensure(const MapShape& shape);
+  // Draws every instance's depth (and moments) from `light` into `layer`. `program` is the depth
+  // program variant for this map (CUBE_MAP for a one-pass cube, CUBE_FACE for six passes,
+  // MOMENTS for a filtered map).
+  void render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light, int layer,
               const DepthPassState& state);
+  // Separable Gaussian blur of every moment layer, `radius` texels each way (0: none), then the
+  // mip chain when the shape asks for one. `blur` is shaders/shadows/blur.frag; `emptyVao` draws
+  // its full-screen triangle.
+  void filterMoments(Program& blur, int radius, GLuint emptyVao);
   // Binds the raw sampler to `rawUnit` and the comparing one to `compareUnit`; `border` picks
   // CLAMP_TO_BORDER (depth 1: outside the map is lit) over CLAMP_TO_EDGE (edge texels repeat).
   void bind(int rawUnit, int compareUnit, bool border) const;
+  void bindMoments(int unit) const;  // trilinear (and anisotropic where the driver has it)
   void release();
 
-  bool cube() const { return cube_; }
-  int size() const { return size_; }
+  bool cube() const { return shape_.cube; }
+  int size() const { return shape_.size; }
+  int layers() const { return shape_.layers; }
+  bool hasMoments() const { return bool(moments_); }
+  GLuint texture() const { return texture_.get(); }
   explicit operator bool() const { return bool(texture_); }
 
  private:
-  gl::TextureName texture_;
-  gl::FramebufferName fbo_;
-  gl::Sampler raw_, compare_;
-  bool cube_ = false;
-  int size_ = 0;
-  GLenum format_ = 0;
+  gl::TextureName texture_, moments_, blurTemp_;
+  gl::FramebufferName fbo_, blurFbo_;
+  gl::Sampler raw_, compare_, momentSampler_;
+  MapShape shape_;
 };
 
-// 1x1 depth textures, 2D and cube, bound to sampler units a configuration does not use: GL
-// forbids samplers of different types on one unit, so every unit gets a texture of its type.
+// 1x1 depth textures, 2D array and cube, and a 1x1 float array, bound to sampler units a
+// configuration does not use: GL forbids samplers of different types on one unit, so every unit
+// gets a texture of its type.
 class DummyDepthTextures {
  public:
   void create();
-  void bind2D(int unit) const;
+  void bindArray(int unit) const;
   void bindCube(int unit) const;
+  void bindMoments(int unit) const;
   void release();
 
  private:
-  gl::TextureName tex2D_, texCube_;
+  gl::TextureName array_, cube_, moments_;
 };
 
 }  // namespace shadelab

@@ -1,6 +1,13 @@
 #include "labs/shadows/shadows_lab.h"
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+
 #include <glm/gtc/matrix_inverse.hpp>
+
+#include "labs/variants.h"
 
 #include "labs/shadows/ray_visibility.h"
 
@@ -8,9 +15,11 @@ namespace shadelab {
 namespace {
 
 constexpr std::string_view kLightTypes[] = {"directional", "spot", "point"};
-constexpr std::string_view kFilters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss"};
-constexpr std::string_view kViews[] = {"shaded", "visibility", "bias-heat", "texel-density",
-                                       "pcss-blocker", "pcss-penumbra", "depth-raw", "depth-linear"};
+constexpr std::string_view kFilters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss", "vsm", "esm", "evsm"};
+constexpr std::string_view kViews[] = {"shaded", "visibility", "bias-heat", "texel-density", "pcss-blocker",
+                                       "pcss-penumbra", "cascades", "depth-raw", "depth-linear"};
+constexpr std::string_view kFits[] = {"scene", "view", "cascades"};
+constexpr std::string_view kCascadeIndices[] = {"1", "2", "3", "4"};
 constexpr std::string_view kFormats[] = {"16", "24", "32f"};
 constexpr std::string_view kMapSizes[] = {"256", "512", "1024", "2048", "4096", "8192"};
 constexpr std::string_view kSampleCounts[] = {"8", "16", "32", "64"};
@@ -18,8 +27,33 @@ constexpr std::string_view kDepthLights[] = {"key", "fill"};
 const GLenum kFormatEnums[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
 
 // Texture units of lit.frag's samplers, fixed so no two sampler types ever share a unit.
-enum Unit { kKeyMap = 0, kKeyCube, kKeyCmp, kKeyCmpCube, kFillMap, kFillCmp, kNoCube, kNoCmpCube };
-enum Slot { kLitSlot = 0, kKeyDepthSlot, kFillDepthSlot, kDepthViewSlot, kLinesSlot, kSlotCount };
+enum Unit { kKeyMap = 0, kKeyCube, kKeyCmp, kKeyCmpCube, kFillMap, kFillCmp, kNoCube, kNoCmpCube, kKeyMoments, kFillMoments };
+enum Slot { kLitSlot = 0, kKeyDepthSlot, kFillDepthSlot, kDepthViewSlot, kLinesSlot, kBlurSlot, kSlotCount };
+
+// The moments a filtered map holds where nothing was drawn (depth t = 1): warpDepth(1) in
+// shadow_filters.glsl.
+glm::vec4 farMoments(const ShadowsParams& p, ShadowFilter f) {
+  if (f == ShadowFilter::Esm) return glm::vec4(std::exp(p.esmExponent), 0, 0, 0);
+  if (f == ShadowFilter::Evsm) {
+    const float pos = std::exp(p.evsmPositive), neg = -std::exp(-p.evsmNegative);
+    return {pos, pos * pos, neg, neg * neg};
+  }
+  return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
+}
+
+GLenum momentFormat(ShadowFilter f) {
+  return f == ShadowFilter::Esm ? GL_R32F : f == ShadowFilter::Vsm ? GL_RG32F : f == ShadowFilter::Evsm ? GL_RGBA32F : 0;
+}
+
+ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
+  return isMomentFilter(p.filter) && p.keyType == LightType::Point ? ShadowFilter::Pcf : p.filter;
+}
+
+// The directional key light is split (or fitted to the view) only when auto-fit is on.
+int cascadeCountOf(const ShadowsParams& p) {
+  if (p.keyType != LightType::Directional || !p.autoFit) return 0;  // 0: the scene-fitted map
+  return p.fit == MapFit::Cascades ? std::clamp(p.cascadeCount, 2, 4) : p.fit == MapFit::View ? 1 : 0;
+}
 
 bool viewIsDepthMap(ShadowView v) { return v == ShadowView::DepthRaw || v == ShadowView::DepthLinear; }
 
@@ -41,8 +75,14 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.enumParam({"light_type", "Key light", "", "directional: orthographic map; spot: perspective map; point: a cube "
                "map drawn in one pass (geometry shader writes gl_Layer)."}, p.keyType, kLightTypes);
   v.boolParam({"key_casts", "Key casts shadows", "", "Off: no depth pass runs for the key light."}, p.keyCasts);
+  const bool sceneLit = p.sceneLight && glm::dot(sceneLight_, sceneLight_) > 0.0f;
+  v.boolParam({"scene_light", "Scene's own light", "", "A scene with a light of its own (learnopengl: from (-2, 4, "
+               "-1) towards the origin, as in the chapter) sets the key light's direction; off: the sliders do."},
+              p.sceneLight);
+  if (sceneLit) v.unavailable("the scene sets the light's direction (untick 'Scene's own light')");
   v.floatParam({"light_elevation", "Light elevation", "deg", "Key light above the horizon; 85..89.9 from zenith is "
                 "grazing (elevation 5..0.1)."}, p.elevationDeg, 0.1f, 90.0f);
+  if (sceneLit) v.unavailable("the scene sets the light's direction (untick 'Scene's own light')");
   v.floatParam({"light_azimuth", "Light azimuth", "deg", "Key light around the vertical axis."}, p.azimuthDeg, -180.0f, 180.0f);
   v.floatParam({"light_distance", "Light distance", "radii", "Spot/point light distance from the scene centre, in "
                 "scene radii (below 1 the light is inside the scene)."}, p.lightDistance, 0.0f, 20.0f);
@@ -59,6 +99,28 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
                 p.mapSizeIndex, kMapSizes);
   v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, p.depthFormat, kFormats);
   v.boolParam({"auto_fit", "Auto-fit frustum", "", "Fit the light's extent and near/far to the scene bounds."}, p.autoFit);
+  const char* fitReason = p.keyType != LightType::Directional ? "fitting to the view is for directional lights"
+                          : !p.autoFit                      ? "auto-fit is off: the extent is set by hand"
+                                                            : nullptr;
+  if (fitReason) v.unavailable(fitReason);
+  v.enumParam({"fit", "Directional map covers", "", "scene: the whole scene's bounds (texels wasted on what the camera "
+               "never sees); view: what the camera sees (its frustum clipped to the scene); cascades: the view split "
+               "by depth into cascade_count maps of map_size^2 each, near slices getting the finest texels."},
+              p.fit, kFits);
+  if (fitReason || p.fit != MapFit::Cascades) v.unavailable(fitReason ? fitReason : "fit is not 'cascades'");
+  v.intParam({"cascade_count", "Cascades", "maps", "Cascaded shadow maps: 2..4 maps, each map_size^2 (memory "
+              "grows with the count)."}, p.cascadeCount, 2, 4);
+  if (fitReason || p.fit != MapFit::Cascades) v.unavailable(fitReason ? fitReason : "fit is not 'cascades'");
+  v.floatParam({"split_lambda", "Split lambda", "", "Where the cascades split: 0 uniform in depth, 1 logarithmic "
+                "(equal texel-to-pixel ratio), between: the practical split scheme's blend."}, p.splitLambda, 0.0f, 1.0f);
+  if (fitReason || p.fit != MapFit::Cascades) v.unavailable(fitReason ? fitReason : "fit is not 'cascades'");
+  v.floatParam({"cascade_blend", "Cascade blend band", "", "Fraction of each cascade's depth range over which it "
+                "fades into the next (both are filtered there): hides the seam; 0 = hard switch."},
+               p.cascadeBlend, 0.0f, 0.5f);
+  if (fitReason || p.fit == MapFit::Scene) v.unavailable(fitReason ? fitReason : "fit is 'scene': the map never moves");
+  v.boolParam({"snap_texels", "Snap to texels", "", "Fitted maps move in whole texels and grow in 1/8-octave steps, "
+               "so a moving camera does not make shadow edges shimmer. Off: watch the edges crawl while orbiting."},
+              p.snapTexels);
   v.floatParam({"ortho_extent", "Ortho extent", "radii", "Directional light box half-width when auto-fit is off."},
                p.orthoExtent, 1e-3f, 1e3f, true);
   v.floatParam({"near", "Light near", "radii", "Light near plane when auto-fit is off."}, p.nearPlane, 1e-6f, 1e3f, true);
@@ -86,7 +148,8 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
                "at that tap, not the centre depth: wide kernels on slopes need no extra bias."}, p.receiverPlane);
   v.section("Filter");
   v.enumParam({"filter", "Filter", "", "hard: one tap; hardware-pcf: sampler2DShadow, 2x2 bilinear; pcf: N x N taps; "
-               "poisson: a Poisson disk; pcss: blocker search + penumbra-sized PCF."}, p.filter, kFilters);
+               "poisson: a Poisson disk; pcss: blocker search + penumbra-sized PCF; vsm, esm, evsm: filtered maps "
+               "(moments of depth, blurred and mipmapped; a point light falls back to pcf)."}, p.filter, kFilters);
   v.intParam({"pcf_size", "PCF kernel N", "taps", "N x N taps; a compile-time loop bound (one program per N)."},
              p.pcfSize, 1, 15);
   v.choiceParam({"poisson_samples", "Poisson samples", "", "Taps of the Poisson-disk filter."}, p.poissonIndex, kSampleCounts);
@@ -94,11 +157,41 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.boolParam({"rotate", "Rotate per pixel", "", "Rotate the Poisson disk per pixel: banding becomes noise."}, p.rotateSamples);
   v.choiceParam({"blocker_samples", "PCSS blocker samples", "", "Taps of the blocker search."}, p.blockerIndex, kSampleCounts);
   v.choiceParam({"pcss_samples", "PCSS filter samples", "", "Taps of the penumbra filter."}, p.pcssIndex, kSampleCounts);
+  const char* momentReason = !isMomentFilter(p.filter)         ? "only for vsm, esm and evsm"
+                             : p.keyType == LightType::Point ? "filtered maps need a 2D map; the point light uses PCF"
+                                                               : nullptr;
+  if (momentReason) v.unavailable(momentReason);
+  v.intParam({"blur_radius", "Moment blur", "texels", "Separable Gaussian blur of the moment map, texels each way "
+              "(sigma = radius / 2); 0 runs no blur pass."}, p.blurRadius, 0, 16);
+  if (momentReason) v.unavailable(momentReason);
+  v.boolParam({"moment_mips", "Mipmapped moments", "", "Build the moment map's mip chain and sample it trilinearly "
+               "(anisotropically where the driver can): distant receivers average many texels, not alias."},
+              p.momentMips);
+  if (momentReason || p.filter == ShadowFilter::Esm) v.unavailable(momentReason ? momentReason : "only for vsm and evsm");
+  v.floatParam({"min_variance", "Minimum variance", "", "Floor on the variance (normalised depth squared): too small, "
+                "acne-like noise; too large, contact shadows fade."}, p.minVariance, 0.0f, 1e-2f, true);
+  if (p.filter != ShadowFilter::Vsm) v.unavailable("only for vsm");
+  v.floatParam({"bleed_reduction", "Light-bleeding reduction", "", "VSM: p -> (p - a) / (1 - a) cuts the light that "
+                "bleeds through a second occluder behind the first, at the price of darker penumbrae."},
+               p.bleedReduction, 0.0f, 0.95f);
+  if (p.filter != ShadowFilter::Esm) v.unavailable("only for esm");
+  v.floatParam({"esm_exponent", "ESM exponent c", "", "exp(c t) in 32-bit float: larger c, sharper and less leaky "
+                "contact, until exp(c) nears float's limit at c = 88."}, p.esmExponent, 1.0f, 85.0f);
+  if (p.filter != ShadowFilter::Evsm) v.unavailable("only for evsm");
+  v.floatParam({"evsm_positive", "EVSM positive exponent", "", "exp(c+ t) and its square are stored: c+ <= 42 keeps "
+                "the square finite in 32-bit float."}, p.evsmPositive, 1.0f, 42.0f);
+  if (p.filter != ShadowFilter::Evsm) v.unavailable("only for evsm");
+  v.floatParam({"evsm_negative", "EVSM negative exponent", "", "-exp(-c- t) and its square: the second warp that "
+                "catches what the first lets bleed."}, p.evsmNegative, 1.0f, 42.0f);
   v.section("View");
-  v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - occluder - "
-               "bias: red = acne, blue = leaks); texel-density; pcss-blocker; pcss-penumbra; depth-raw/-linear (the "
-               "key map; a cube unrolled)."}, p.view, kViews);
+  v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - stored "
+               "depth in units of the bias: green = ample margin, orange = nearly acne, red = acne, grey = a real "
+               "shadow); texel-density; pcss-blocker; pcss-penumbra; cascades (one colour each, the blend band "
+               "striped, magenta = a gap); depth-raw/-linear (the map; a cube unrolled)."}, p.view, kViews);
   v.choiceParam({"depth_light", "Depth view of", "", "Which light's map the depth views show."}, p.depthLight, kDepthLights);
+  if (p.fit != MapFit::Cascades || p.depthLight != 0) v.unavailable("the key light has one map");
+  v.choiceParam({"depth_cascade", "Depth view cascade", "", "Which cascade's map the depth views show."},
+                p.depthCascade, kCascadeIndices);
   v.floatParam({"depth_zoom", "Depth view zoom", "x", "Magnification of the depth views."}, p.depthZoom, 1.0f, 64.0f, true);
   v.floatParam({"depth_centre_u", "Depth view centre u", "", "Map coordinate at the middle of the view."},
                p.depthCentreU, 0.0f, 1.0f);
@@ -130,6 +223,7 @@ LightSetup ShadowsLab::keySetup() const {
   s.orthoExtent = params.orthoExtent;
   s.nearPlane = params.nearPlane;
   s.farPlane = params.farPlane;
+  if (params.sceneLight) s.fromPoint = sceneLight_;
   return s;
 }
 
@@ -155,34 +249,53 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) c
   }
   if (p.farFix) spec.defines.emplace_back("FAR_FIX", "1");
   if (p.receiverPlane) spec.defines.emplace_back("RECEIVER_PLANE", "1");
-  static const char* filterDefine[] = {"FILTER_HARD", "FILTER_HW_PCF", "FILTER_PCF", "FILTER_POISSON", "FILTER_PCSS"};
-  spec.defines.emplace_back(filterDefine[int(p.filter)], "1");
-  if (p.filter == ShadowFilter::Pcf) spec.defines.emplace_back("PCF_SIZE", std::to_string(p.pcfSize));
-  if (p.filter == ShadowFilter::Poisson) {
+  const ShadowFilter filter = effectiveFilterOf(p);
+  static const char* filterDefine[] = {"FILTER_HARD", "FILTER_HW_PCF", "FILTER_PCF", "FILTER_POISSON",
+                                       "FILTER_PCSS", "FILTER_VSM", "FILTER_ESM", "FILTER_EVSM"};
+  spec.defines.emplace_back(filterDefine[int(filter)], "1");
+  if (filter == ShadowFilter::Pcf) spec.defines.emplace_back("PCF_SIZE", std::to_string(p.pcfSize));
+  if (filter == ShadowFilter::Poisson) {
     spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.poissonIndex));
     if (p.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
   }
-  if (p.filter == ShadowFilter::Pcss) {
+  if (const int cascades = cascadeCountOf(p); cascades >= 2 && p.keyCasts && !gbuffer)
+    spec.defines.emplace_back("CASCADE_COUNT", std::to_string(cascades));
+  if (filter == ShadowFilter::Pcss) {
     spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.blockerIndex));
     spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.pcssIndex));
   }
   static const char* viewDefine[] = {"VIEW_SHADED", "VIEW_VISIBILITY", "VIEW_BIAS_HEAT", "VIEW_TEXEL_DENSITY",
-                                     "VIEW_PCSS_BLOCKER", "VIEW_PCSS_PENUMBRA", "VIEW_SHADED", "VIEW_SHADED"};
+                                     "VIEW_PCSS_BLOCKER", "VIEW_PCSS_PENUMBRA", "VIEW_CASCADES", "VIEW_SHADED",
+                                     "VIEW_SHADED"};
   spec.defines.emplace_back(internal == InternalView::Position ? "VIEW_POSITION"
                             : internal == InternalView::Normal ? "VIEW_NORMAL"
                                                                : viewDefine[int(p.view)], "1");
-  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.keyType)]) + " " + std::string(kFilters[int(p.filter)]);
+  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.keyType)]) + " " + std::string(kFilters[int(filter)]);
   return spec;
 }
 
-ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses) const {
+ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses, ShadowFilter filter) {
   ProgramSpec spec;
   const bool oneCubePass = cube && !sixPasses;
+  const bool moments = !cube && isMomentFilter(filter);
   spec.name = oneCubePass ? "shadows/depth cube" : cube ? "shadows/depth cube face" : "shadows/depth";
   spec.stages.push_back({GL_VERTEX_SHADER, "shadows/depth.vert"});
   if (oneCubePass) spec.stages.push_back({GL_GEOMETRY_SHADER, "shadows/depth_cube.geom"});
-  spec.stages.push_back({GL_FRAGMENT_SHADER, "shadows/depth.frag"});
+  spec.stages.push_back({GL_FRAGMENT_SHADER, moments ? "shadows/moments.frag" : "shadows/depth.frag"});
   if (cube) spec.defines.emplace_back(oneCubePass ? "CUBE_MAP" : "CUBE_FACE", "1");
+  if (moments) {
+    static const char* filterDefine[] = {"", "", "", "", "", "FILTER_VSM", "FILTER_ESM", "FILTER_EVSM"};
+    spec.defines.emplace_back("MOMENTS", "1");
+    spec.defines.emplace_back(filterDefine[int(filter)], "1");
+    spec.name += " " + std::string(kFilters[int(filter)]) + " moments";
+  }
+  return spec;
+}
+
+ProgramSpec ShadowsLab::blurSpec() {
+  ProgramSpec spec;
+  spec.name = "shadows/moment blur";
+  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/blur.frag"}};
   return spec;
 }
 
@@ -204,38 +317,98 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
 }
 
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
-  std::vector<ProgramSpec> all = {depthSpec(false, false), depthSpec(true, false), depthSpec(true, true), linesSpec()};
+  std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard), depthSpec(true, false, ShadowFilter::Hard),
+                                  depthSpec(true, true, ShadowFilter::Hard), linesSpec(), blurSpec()};
+  for (ShadowFilter f : {ShadowFilter::Vsm, ShadowFilter::Esm, ShadowFilter::Evsm}) all.push_back(depthSpec(false, false, f));
   ShadowsParams p;
   for (int type = 0; type < 3; ++type) {
     p.keyType = LightType(type);
-    for (int view : {6, 7}) {
-      p.view = ShadowView(view);
+    for (ShadowView view : {ShadowView::DepthRaw, ShadowView::DepthLinear}) {
+      p.view = view;
       all.push_back(depthViewSpec(p));
     }
-    p.depthLight = 1;
-    all.push_back(depthViewSpec(p));
-    p.depthLight = 0;
-    for (int view = 0; view < 6; ++view)
-      for (int filter = 0; filter < 5; ++filter) {
-        p.view = ShadowView(view);
-        p.filter = ShadowFilter(filter);
-        p.fillLight = view == 0 && filter == 2;
-        p.pcfSize = 1 + 2 * (type + view) % 15;
-        p.poissonIndex = view % 4;
-        p.rotateSamples = view % 2 == 0;
-        p.farFix = view != 1;
-        p.receiverPlane = filter % 2 == 0;
-        all.push_back(litSpec(p, InternalView::None));
-      }
-    all.push_back(litSpec(p, InternalView::Position));
-    all.push_back(litSpec(p, InternalView::Normal));
   }
-  p = ShadowsParams{};
-  for (int n = 1; n <= 15; ++n) {  // every PCF kernel size is its own program
-    p.pcfSize = n;
-    all.push_back(litSpec(p, InternalView::None));
+  p.depthLight = 1;
+  all.push_back(depthViewSpec(p));
+
+  // The lit program: every value of every parameter that shapes it, and every pair of values of
+  // any two of them (labs/variants.h). A filter and its own settings form one dimension: pcf_size
+  // means nothing to pcss.
+  struct FilterVariant { ShadowFilter filter; int a = 0, b = 0; };
+  std::vector<FilterVariant> filters = {{ShadowFilter::Hard}, {ShadowFilter::HardwarePcf}, {ShadowFilter::Vsm},
+                                        {ShadowFilter::Esm}, {ShadowFilter::Evsm}};
+  for (int n = 1; n <= 15; ++n) filters.push_back({ShadowFilter::Pcf, n});
+  for (int i = 0; i < 4; ++i)
+    for (int rotate = 0; rotate < 2; ++rotate) filters.push_back({ShadowFilter::Poisson, i, rotate});
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) filters.push_back({ShadowFilter::Pcss, i, j});
+  const ShadowView views[] = {ShadowView::Shaded, ShadowView::Visibility, ShadowView::BiasHeat, ShadowView::TexelDensity,
+                              ShadowView::PcssBlocker, ShadowView::PcssPenumbra, ShadowView::Cascades};
+  const int viewCount = int(std::size(views)) + 2;  // + the reference's g-buffer views
+  const int fits = 5;                               // scene, view, cascades x 2, 3, 4
+  for (const auto& row : pairwiseCover({3, int(filters.size()), viewCount, 3, 2, 2, 2, fits})) {
+    ShadowsParams q;
+    q.keyType = LightType(row[0]);
+    const FilterVariant& f = filters[size_t(row[1])];
+    q.filter = f.filter;
+    q.pcfSize = f.filter == ShadowFilter::Pcf ? f.a : q.pcfSize;
+    if (f.filter == ShadowFilter::Poisson) q.poissonIndex = f.a, q.rotateSamples = f.b == 1;
+    if (f.filter == ShadowFilter::Pcss) q.blockerIndex = f.a, q.pcssIndex = f.b;
+    InternalView internal = InternalView::None;
+    if (row[2] < int(std::size(views))) q.view = views[row[2]];
+    else internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;
+    q.fillLight = row[3] > 0;
+    q.fillCasts = row[3] == 2;
+    q.keyCasts = row[4] == 1;
+    q.farFix = row[5] == 1;
+    q.receiverPlane = row[6] == 1;
+    q.fit = row[7] == 0 ? MapFit::Scene : row[7] == 1 ? MapFit::View : MapFit::Cascades;
+    q.cascadeCount = std::max(row[7], 2);
+    all.push_back(litSpec(q, internal));
   }
+
+  // ... and the defaults with any one selectable parameter changed, found from the parameter
+  // list itself, so a parameter added later is covered without being named here.
+  struct Knobs final : ParamVisitor {
+    std::vector<std::function<void(int)>> set;  // set(value) for each value 0..count-1
+    std::vector<int> counts;
+    void floatParam(const ParamInfo&, float&, float, float, bool) override {}
+    void intParam(const ParamInfo&, int& v, int lo, int hi) override {
+      if (hi - lo > 16) return;  // a count, not a switch (tessellation): no define depends on it
+      set.push_back([&v, lo](int k) { v = lo + k; });
+      counts.push_back(hi - lo + 1);
+    }
+    void boolParam(const ParamInfo&, bool& v) override {
+      set.push_back([&v](int k) { v = k != 0; });
+      counts.push_back(2);
+    }
+    void choiceParam(const ParamInfo&, int& v, std::span<const std::string_view> names) override {
+      set.push_back([&v](int k) { v = k; });
+      counts.push_back(int(names.size()));
+    }
+  };
+  ShadowsLab probe;
+  Knobs knobs;
+  probe.visitParams(knobs);
+  for (size_t k = 0; k < knobs.set.size(); ++k)
+    for (int value = 0; value < knobs.counts[k]; ++value) {
+      probe.resetParams();
+      knobs.set[k](value);
+      for (auto& spec : probe.currentPrograms()) all.push_back(std::move(spec));
+    }
+  // One of each: the library compiles a key once, but a shorter list is a faster check.
+  std::set<std::string> seen;
+  std::erase_if(all, [&](const ProgramSpec& spec) { return !seen.insert(spec.key()).second; });
   return all;
+}
+
+std::vector<ProgramSpec> ShadowsLab::currentPrograms() const {
+  const ShadowFilter filter = effectiveFilterOf(params);
+  std::vector<ProgramSpec> out = {litSpec(params, InternalView::None), litSpec(params, InternalView::Position),
+                                  depthSpec(params.keyType == LightType::Point, params.sixCubePasses, filter),
+                                  depthSpec(false, false, filter), depthViewSpec(params)};
+  if (isMomentFilter(filter)) out.push_back(blurSpec());
+  return out;
 }
 
 std::string ShadowsLab::setup(LabContext& ctx) {
@@ -256,7 +429,8 @@ std::string ShadowsLab::setup(LabContext& ctx) {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
   glBindVertexArray(0);
-  poisson_ = poissonDisk(64);
+  // Cube-map lookups near a face's edge filter across into the next face (core since 3.2).
+  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   return {};
 }
 
@@ -270,6 +444,7 @@ void ShadowsLab::teardown() {
   frustumVbo_.reset();
   rayScene_.reset();
   rayRevision_ = -1;
+  cascades_.clear();
   shaders_ = nullptr;
 }
 
@@ -280,8 +455,14 @@ std::vector<ProgramRef> ShadowsLab::activePrograms() const {
   return out;
 }
 
-static void setLight(Program& prog, const char* name, const LightFrame& L, int mapSize) {
-  const std::string n(name);
+const std::vector<glm::vec2>& ShadowsLab::disk(int count) {
+  static const std::vector<glm::vec2> disks[4] = {poissonDisk(8), poissonDisk(16), poissonDisk(32), poissonDisk(64)};
+  return disks[std::clamp(int(std::log2(std::max(count, 8))) - 3, 0, 3)];
+}
+
+ShadowFilter ShadowsLab::effectiveFilter() const { return effectiveFilterOf(params); }
+
+static void setLight(Program& prog, const std::string& n, const LightFrame& L, int mapSize, int layer = 0) {
   prog.set((n + ".viewProj").c_str(), L.viewProj);
   prog.set((n + ".position").c_str(), L.position);
   prog.set((n + ".axis").c_str(), L.direction);
@@ -292,6 +473,22 @@ static void setLight(Program& prog, const char* name, const LightFrame& L, int m
   prog.set((n + ".halfWidth").c_str(), L.type == LightType::Directional ? L.orthoHalfExtent : L.tanHalfFov);
   prog.set((n + ".mapSize").c_str(), float(mapSize));
   prog.set((n + ".radius").c_str(), L.radiusWorld);
+  prog.set((n + ".layer").c_str(), float(layer));
+}
+
+void ShadowsLab::setFilterUniforms(Program& prog) const {
+  const ShadowFilter filter = effectiveFilterOf(params);
+  prog.set("u_bias", params.bias);
+  prog.set("u_slopeBias", params.slopeBias);
+  prog.set("u_normalOffset", params.normalOffset);
+  prog.set("u_filterRadius", params.filterRadius);
+  const int taps = filter == ShadowFilter::Pcss ? 8 << params.pcssIndex : 8 << params.poissonIndex;
+  prog.setArray("u_filterDisk", disk(taps).data(), int(disk(taps).size()));
+  prog.setArray("u_blockerDisk", disk(8 << params.blockerIndex).data(), int(disk(8 << params.blockerIndex).size()));
+  prog.set("u_minVariance", params.minVariance);
+  prog.set("u_bleed", params.bleedReduction);
+  prog.set("u_esmExponent", params.esmExponent);
+  prog.set("u_evsmExponents", glm::vec2(params.evsmPositive, params.evsmNegative));
 }
 
 void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill) {
@@ -300,31 +497,41 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   prog.set("u_viewProj", frame.viewProj());
   prog.set("u_eye", frame.camera.eye());
   prog.set("u_ambient", 0.12f);
-  setLight(prog, "u_key", key, params.mapSize());
+  setLight(prog, "u_key", cascades_.empty() ? key : cascades_[0].light, params.mapSize());
+  if (cascades_.size() >= 2) {
+    for (size_t i = 0; i < cascades_.size(); ++i) {
+      const std::string n = "u_cascade[" + std::to_string(i) + "]";
+      setLight(prog, n, cascades_[i].light, params.mapSize(), int(i));
+      prog.set(("u_cascadeFar[" + std::to_string(i) + "]").c_str(), cascades_[i].splitFar);
+      prog.set(("u_blendFrom[" + std::to_string(i) + "]").c_str(), cascades_[i].blendFrom);
+    }
+    prog.set("u_viewForward", glm::normalize(frame.camera.target - frame.camera.eye()));
+  }
   // Irradiance 1 at the scene centre whatever the light type and scale.
   const float keyR2 = key.type == LightType::Directional ? 1.0f : glm::dot(key.position - b.center(), key.position - b.center());
   prog.set("u_keyPower", glm::vec3(1.0f, 0.97f, 0.92f) * keyR2);
-  prog.set("u_bias", params.bias);
-  prog.set("u_slopeBias", params.slopeBias);
-  prog.set("u_normalOffset", params.normalOffset);
-  prog.set("u_filterRadius", params.filterRadius);
-  prog.setArray("u_poisson", poisson_.data(), int(poisson_.size()));
+  setFilterUniforms(prog);
   const struct { const char* name; int unit; } units[] = {{"u_keyMap", kKeyMap}, {"u_keyCube", kKeyCube}, {"u_keyCmp", kKeyCmp},
       {"u_keyCmpCube", kKeyCmpCube}, {"u_fillMap", kFillMap}, {"u_fillCmp", kFillCmp}, {"u_noCube", kNoCube},
-      {"u_noCmpCube", kNoCmpCube}};
+      {"u_noCmpCube", kNoCmpCube}, {"u_keyMoments", kKeyMoments}, {"u_fillMoments", kFillMoments}};
   for (auto& u : units) prog.set(u.name, u.unit);
   // Every unit gets a texture of its sampler's type; the real maps replace the dummies.
-  for (int unit : {kKeyMap, kKeyCmp, kFillMap, kFillCmp}) dummies_.bind2D(unit);
+  for (int unit : {kKeyMap, kKeyCmp, kFillMap, kFillCmp}) dummies_.bindArray(unit);
   for (int unit : {kKeyCube, kKeyCmpCube, kNoCube, kNoCmpCube}) dummies_.bindCube(unit);
+  for (int unit : {kKeyMoments, kFillMoments}) dummies_.bindMoments(unit);
   if (keyMap_ && params.keyCasts) {
     if (keyMap_.cube()) keyMap_.bind(kKeyCube, kKeyCmpCube, params.borderClamp);
     else keyMap_.bind(kKeyMap, kKeyCmp, params.borderClamp);
+    if (keyMap_.hasMoments()) keyMap_.bindMoments(kKeyMoments);
   }
   if (fill) {
     setLight(prog, "u_fill", *fill, params.mapSize());
     const float r2 = glm::dot(fill->position - b.center(), fill->position - b.center());
     prog.set("u_fillPower", glm::vec3(0.35f, 0.45f, 0.6f) * r2);
-    if (fillMap_ && params.fillCasts) fillMap_.bind(kFillMap, kFillCmp, params.borderClamp);
+    if (fillMap_ && params.fillCasts) {
+      fillMap_.bind(kFillMap, kFillCmp, params.borderClamp);
+      if (fillMap_.hasMoments()) fillMap_.bindMoments(kFillMoments);
+    }
   }
   for (const Instance& inst : frame.scene.instances) {
     const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
@@ -333,7 +540,7 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
     prog.set("u_baseColor", mat.baseColor);
     frame.gpu.draw(inst);
   }
-  for (int unit = 0; unit <= kNoCmpCube; ++unit) glBindSampler(unit, 0);
+  for (int unit = 0; unit <= kFillMoments; ++unit) glBindSampler(unit, 0);
 }
 
 void ShadowsLab::drawFrustum(Frame& frame, const LightFrame& key) {
@@ -342,51 +549,106 @@ void ShadowsLab::drawFrustum(Frame& frame, const LightFrame& key) {
   Program& prog = fetch(kLinesSlot, linesSpec());
   prog.use();
   prog.set("u_viewProj", frame.viewProj());
-  prog.set("u_lightInverse", glm::inverse(key.viewProj));
   prog.set("u_color", glm::vec3(1.0f, 0.85f, 0.2f));
   glBindVertexArray(frustumVao_.get());
-  glDrawArrays(GL_LINES, 0, 24);
+  if (cascades_.empty()) {
+    prog.set("u_lightInverse", glm::inverse(key.viewProj));
+    glDrawArrays(GL_LINES, 0, 24);
+  }
+  for (const Cascade& c : cascades_) {  // every cascade's box
+    prog.set("u_lightInverse", glm::inverse(c.light.viewProj));
+    glDrawArrays(GL_LINES, 0, 24);
+  }
+}
+
+static ViewVolume viewVolume(const Frame& frame) {
+  ViewVolume v;
+  v.inverseViewProj = glm::inverse(frame.viewProj());
+  v.eye = frame.camera.eye();
+  v.forward = glm::normalize(frame.camera.target - v.eye);
+  v.nearPlane = frame.camera.nearPlane;
+  v.farPlane = frame.camera.farPlane;
+  return v;
+}
+
+void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format) {
+  const bool cube = params.keyType == LightType::Point;
+  const ShadowFilter filter = effectiveFilterOf(params);
+  const int layers = std::max<int>(int(cascades_.size()), 1);
+  const std::string size = std::to_string(params.mapSize()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
+  const std::string kind = std::string(kLightTypes[int(params.keyType)]) +
+                           (cascades_.size() >= 2 ? " cascade " : params.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
+  keyMap_.ensure({cube, params.mapSize(), layers, format, cube ? 0u : momentFormat(filter), params.momentMips});
+  Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses, filter));
+  depth.use();
+  setFilterUniforms(depth);  // the moment pass warps depth with the same exponents the lookups use
+  for (int layer = 0; layer < layers; ++layer) {
+    auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
+                           size + (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
+                           (keyMap_.hasMoments() ? " + " + std::string(kFilters[int(filter)]) + " moments" : ""));
+    keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer, state);
+  }
+  if (keyMap_.hasMoments() && (params.blurRadius > 0 || params.momentMips)) {
+    auto pass = frame.pass("moment blur " + std::to_string(params.blurRadius) + " texels" +
+                           (params.momentMips ? " + mips" : ""));
+    keyMap_.filterMoments(fetch(kBlurSlot, blurSpec()), params.blurRadius, emptyVao_.get());
+  }
 }
 
 void ShadowsLab::render(Frame& frame) {
   const Bounds bounds = frame.scene.bounds;
+  sceneLight_ = frame.scene.suggestedLight;
   lightWarnings_.clear();
   const LightFrame key = buildLight(keySetup(), bounds, lightWarnings_);
   std::vector<std::string> ignored;
   const LightFrame fill = buildLight(fillSetup(), bounds, ignored);
   const GLenum format = kFormatEnums[int(params.depthFormat)];
-  const DepthPassState depthState{params.cullFront, params.offsetFactor, params.offsetUnits, params.sixCubePasses};
+  const ShadowFilter filter = effectiveFilterOf(params);
+  DepthPassState depthState{params.cullFront, params.offsetFactor, params.offsetUnits, params.sixCubePasses};
+  depthState.momentClear = farMoments(params, filter);
   const bool gbuffer = internalView_ != InternalView::None;
-  const std::string mapName = std::to_string(params.mapSize()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
+
+  // The key light's maps: the scene-fitted one, or fitted to the view, or one per cascade.
+  cascades_.clear();
+  if (const int count = cascadeCountOf(params); count > 0)
+    cascades_ = buildCascades(key, {count, params.splitLambda, params.cascadeBlend, params.snapTexels, params.mapSize()},
+                              viewVolume(frame), bounds);
 
   // 1. Depth passes, only for lights that cast and only when the view reads their maps.
   if (params.keyCasts && !gbuffer) {
-    const bool cube = params.keyType == LightType::Point;
-    auto pass = frame.pass("shadow map: key " + std::string(kLightTypes[int(params.keyType)]) + " " + mapName +
-                           (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : ""));
-    keyMap_.ensure(cube, params.mapSize(), format);
-    keyMap_.render(frame.scene, frame.gpu, fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses)), key, depthState);
+    renderKeyMaps(frame, key, depthState, format);
   } else if (!params.keyCasts) {
     keyMap_.release();  // (a g-buffer render keeps it: the next frame needs it again)
   }
   const bool fillMapNeeded = params.fillLight && params.fillCasts && !gbuffer &&
                              (!viewIsDepthMap(params.view) || params.depthLight == 1);
   if (fillMapNeeded) {
-    auto pass = frame.pass("shadow map: fill spot " + mapName);
-    fillMap_.ensure(false, params.mapSize(), format);
-    fillMap_.render(frame.scene, frame.gpu, fetch(kFillDepthSlot, depthSpec(false, false)), fill, depthState);
+    const std::string size = std::to_string(params.mapSize()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
+    {
+      auto pass = frame.pass("shadow map: fill spot " + size +
+                             (isMomentFilter(filter) ? " + " + std::string(kFilters[int(filter)]) + " moments" : ""));
+      fillMap_.ensure({false, params.mapSize(), 1, format, momentFormat(filter), params.momentMips});
+      Program& depth = fetch(kFillDepthSlot, depthSpec(false, false, filter));
+      depth.use();
+      setFilterUniforms(depth);
+      fillMap_.render(frame.scene, frame.gpu, depth, fill, 0, depthState);
+    }
+    if (fillMap_.hasMoments() && (params.blurRadius > 0 || params.momentMips)) {
+      auto pass = frame.pass("moment blur (fill)");
+      fillMap_.filterMoments(fetch(kBlurSlot, blurSpec()), params.blurRadius, emptyVao_.get());
+    }
   } else if (!(params.fillLight && params.fillCasts)) {
     fillMap_.release();
   }
 
-  // 2. The camera pass: the lit scene (or a diagnostic view of it), or the key map itself.
+  // 2. The camera pass: the lit scene (or a diagnostic view of it), or a map itself.
   frame.target.bind();
   glDisable(GL_CULL_FACE);
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the metrics
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (viewIsDepthMap(params.view) && !gbuffer) {
-    drawDepthView(frame, key, fill);
+    drawDepthView(frame, fill);
     return;
   }
   {
@@ -396,20 +658,30 @@ void ShadowsLab::render(Frame& frame) {
   if (params.showFrustum && !gbuffer) drawFrustum(frame, key);
 }
 
-void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill) {
+void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& fill) {
   auto pass = frame.pass("depth map view");
   const bool showFill = params.depthLight == 1;
   const ShadowMap& map = showFill ? fillMap_ : keyMap_;
   if (!map) return;  // that light casts no shadow: there is no map to show (warnings() says so)
+  const int layer = showFill ? 0 : std::min(params.depthCascade, map.layers() - 1);
+  std::vector<std::string> ignored;
+  const LightFrame shown = showFill ? fill
+                           : cascades_.empty() ? buildLight(keySetup(), frame.scene.bounds, ignored)
+                                               : cascades_[size_t(layer)].light;
   Program& prog = fetch(kDepthViewSlot, depthViewSpec(params));
   prog.use();
-  setLight(prog, "u_key", showFill ? fill : key, params.mapSize());
+  setLight(prog, "u_key", shown, params.mapSize(), layer);
   prog.set("u_keyMap", int(kKeyMap));
   prog.set("u_keyCube", int(kKeyCube));
-  dummies_.bind2D(kKeyMap);
+  dummies_.bindArray(kKeyMap);
   dummies_.bindCube(kKeyCube);
   if (map.cube()) map.bind(kKeyCube, kKeyCmpCube, true);
   else map.bind(kKeyMap, kKeyCmp, true);
+  // The distances the scene occupies from this light: what the linear view stretches to white.
+  const Bounds& b = frame.scene.bounds;
+  const float centre = shown.type == LightType::Point ? glm::length(b.center() - shown.position)
+                                                      : glm::dot(b.center() - shown.position, shown.direction);
+  prog.set("u_range", glm::vec2(std::max(centre - b.radius(), shown.nearPlane), centre + b.radius()));
   const float aspect = frame.aspect(), cells = map.cube() ? 4.0f / 3.0f : 1.0f;
   prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
   prog.set("u_zoom", params.depthZoom);
@@ -445,6 +717,16 @@ std::vector<std::string> ShadowsLab::warnings() const {
     w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
   if ((p.view == ShadowView::PcssBlocker || p.view == ShadowView::PcssPenumbra) && p.filter != ShadowFilter::Pcss)
     w.push_back("the PCSS views show data only with filter = pcss");
+  if (isMomentFilter(p.filter) && p.keyType == LightType::Point)
+    w.push_back(std::string(kFilters[int(p.filter)]) + " needs a 2D map: the point light's cube map is filtered with "
+                "pcf (" + std::to_string(p.pcfSize) + "x" + std::to_string(p.pcfSize) + ") instead");
+  if (p.fit != MapFit::Scene && (p.keyType != LightType::Directional || !p.autoFit))
+    w.push_back("fit = " + std::string(kFits[int(p.fit)]) + " applies to an auto-fitted directional light only");
+  if (p.view == ShadowView::Cascades && cascadeCountOf(p) < 2)
+    w.push_back("one map, one colour: the cascades view needs fit = cascades");
+  if (p.filter == ShadowFilter::Esm && p.esmExponent > 80.0f)
+    w.push_back("ESM exponent " + formatNumber(p.esmExponent) + ": exp(c) is within a factor " +
+                formatNumber(std::exp(88.7f - p.esmExponent)) + " of float's limit; a blur of overflowing texels would be inf");
   return w;
 }
 

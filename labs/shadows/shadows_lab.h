@@ -2,7 +2,9 @@
 // panning -> border and far-plane artifacts -> PCF -> Poisson PCF -> PCSS, for directional,
 // spot and point lights, each step measured against ray-traced visibility (Embree).
 // Williams, "Casting curved shadows on curved surfaces", 1978; Reeves et al., "Rendering
-// antialiased shadows with depth maps", 1987 (PCF); Fernando 2005 (PCSS).
+// antialiased shadows with depth maps", 1987 (PCF); Fernando 2005 (PCSS); Zhang et al. 2006
+// (cascades, the practical split scheme); Donnelly and Lauritzen 2006 (VSM); Annen et al. 2008
+// (ESM); Lauritzen and McCool 2008 (EVSM).
 // Read next: shaders/shadows/shadow_filters.glsl, tutorials/shadows.md.
 #pragma once
 #include <memory>
@@ -16,13 +18,21 @@ namespace shadelab {
 
 class RayScene;
 
-enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss };
-enum class ShadowView { Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, DepthRaw, DepthLinear };
+enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm };
+enum class ShadowView {
+  Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, Cascades, DepthRaw, DepthLinear
+};
 enum class DepthFormat { D16, D24, D32F };
+enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
+
+inline bool isMomentFilter(ShadowFilter f) {
+  return f == ShadowFilter::Vsm || f == ShadowFilter::Esm || f == ShadowFilter::Evsm;
+}
 
 struct ShadowsParams {
   LightType keyType = LightType::Directional;
   bool keyCasts = true;
+  bool sceneLight = true;       // a scene with a light of its own (learnopengl) sets the direction
   float elevationDeg = 40.0f;   // key light above the horizon
   float azimuthDeg = 35.0f;
   float lightDistance = 3.0f;   // spot/point, scene radii from the centre
@@ -33,6 +43,11 @@ struct ShadowsParams {
   int mapSizeIndex = 3;         // 256 << index: 256 .. 8192
   DepthFormat depthFormat = DepthFormat::D24;
   bool autoFit = true;
+  MapFit fit = MapFit::Scene;   // directional, auto-fit: the whole scene, the view, or cascades
+  int cascadeCount = 4;         // fit = cascades: 2..4 maps of map_size^2 each
+  float splitLambda = 0.75f;    // 0: uniform splits, 1: logarithmic
+  float cascadeBlend = 0.1f;    // fraction of a cascade's range blended into the next
+  bool snapTexels = true;       // fitted maps move by whole texels: no shimmer as the camera moves
   float orthoExtent = 1.0f;     // scene radii (directional, auto-fit off)
   float nearPlane = 0.5f;       // scene radii (auto-fit off)
   float farPlane = 5.0f;        // scene radii (auto-fit off)
@@ -53,8 +68,16 @@ struct ShadowsParams {
   bool rotateSamples = true;    // per-pixel rotation of the Poisson disk
   int blockerIndex = 1;         // PCSS blocker search samples: 8 << index
   int pcssIndex = 1;            // PCSS filter samples: 8 << index (16: on the error-cost front)
+  int blurRadius = 2;           // filtered maps: Gaussian blur, texels each way (0: no blur pass)
+  bool momentMips = true;       // filtered maps: mipmapped, sampled trilinear
+  float minVariance = 1e-5f;    // VSM/EVSM: variance floor (in normalised depth squared)
+  float bleedReduction = 0.3f;  // VSM: p -> (p - a) / (1 - a)
+  float esmExponent = 60.0f;    // ESM: c in exp(c t)
+  float evsmPositive = 30.0f;   // EVSM: exponents of the positive and negative warps
+  float evsmNegative = 8.0f;
   ShadowView view = ShadowView::Shaded;
   int depthLight = 0;           // the map the depth views show: 0 key, 1 fill
+  int depthCascade = 0;         // ... and which cascade of the key light's
   float depthZoom = 1.0f;
   float depthCentreU = 0.5f;
   float depthCentreV = 0.5f;
@@ -89,18 +112,35 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   TraceWork traceReference(Frame& frame) override;
   Settings measuredView() const override { return {{"view", "visibility"}}; }
   Metrics metrics(const ImageF& image, const ImageF& reference) const override;
-  std::vector<PlotSpec> plots() const override { return {{"misclassified_pct"}, {"visibility_rmse"}}; }
+  std::vector<PlotSpec> plots() const override {
+    return {{"visibility_rmse_hard"}, {"visibility_rmse_area"}, {"misclassified_pct"}};
+  }
+  Settings metricNotes() const override;
   std::vector<StressCase> stressCases() const override;
   std::vector<SweepAxis> standardSweep() const override;
+  std::vector<SceneRecipe> scenes() const override;
+
+  // The filter the programs use: filtered maps need a 2D map, so a point light gets 3x3 PCF.
+  ShadowFilter effectiveFilter() const;
+  // The key light's maps in the last frame: one, or one per cascade (tests, the Cascades panel).
+  const std::vector<Cascade>& cascades() const { return cascades_; }
+  const ShadowMap& keyMap() const { return keyMap_; }
+  // Every program the current settings can draw with (a subset of allPrograms()'s, as tests check).
+  std::vector<ProgramSpec> currentPrograms() const;
+  // The unit-disk samples the shaders get for `count` taps (8, 16, 32, 64).
+  static const std::vector<glm::vec2>& disk(int count);
 
  private:
   enum class InternalView { None, Position, Normal };  // G-buffer for the ray-traced reference
   LightSetup keySetup() const;
   LightSetup fillSetup() const;
   ProgramSpec litSpec(const ShadowsParams& p, InternalView internal) const;
-  ProgramSpec depthSpec(bool cube, bool sixPasses) const;
+  static ProgramSpec depthSpec(bool cube, bool sixPasses, ShadowFilter filter);
+  static ProgramSpec blurSpec();
   ProgramSpec depthViewSpec(const ShadowsParams& p) const;
-  void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);
+  void setFilterUniforms(Program& prog) const;
+  void renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format);
+  void drawDepthView(Frame& frame, const LightFrame& fill);
   Program& fetch(size_t slot, const ProgramSpec& spec) { return programs_[slot].get(*shaders_, spec); }
   static ProgramSpec linesSpec();
   void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);
@@ -112,7 +152,8 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   DummyDepthTextures dummies_;
   gl::VertexArray emptyVao_, frustumVao_;
   gl::Buffer frustumVbo_;
-  std::vector<glm::vec2> poisson_;
+  std::vector<Cascade> cascades_;  // the key light's maps, as last rendered
+  glm::vec3 sceneLight_{0.0f};     // the current scene's own light, if it has one
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   int rayRevision_ = -1;

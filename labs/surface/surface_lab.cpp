@@ -140,7 +140,8 @@ SceneNeeds SurfaceLab::needs() const {
 
 ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
   ProgramSpec spec;
-  const SurfaceTechnique t = hasUvs ? p.technique : SurfaceTechnique::None;  // no UVs: nothing to map
+  SurfaceTechnique t = hasUvs ? p.technique : SurfaceTechnique::None;  // no UVs: nothing to map
+  if (t == SurfaceTechnique::Tessellation && !gl::hasTessellation()) t = SurfaceTechnique::None;  // a 3.3 context
   spec.name = "surface/" + std::string(kTechniques[int(t)]);
   const bool tess = t == SurfaceTechnique::Tessellation;
   spec.stages.push_back({GL_VERTEX_SHADER, "surface/surface.vert"});
@@ -293,7 +294,10 @@ void SurfaceLab::render(Frame& frame) {
   const bool wall = frame.scene.name == "bricks" || frame.scene.name == "bricks-learnopengl";
   const glm::vec3 lightDir = wall ? glm::vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el))
                                   : glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-  const bool tess = params.technique == SurfaceTechnique::Tessellation;
+  const bool tess = params.technique == SurfaceTechnique::Tessellation && gl::hasTessellation();
+  if (params.technique == SurfaceTechnique::Tessellation && !tess)
+    frameNotes_.push_back("this context has no tessellation stages (OpenGL 4.0): the surface is drawn without "
+                          "displacement; pick displacement for the same on a subdivided mesh");
   std::string what = std::string(kTechniques[int(params.technique)]);
   if (params.technique == SurfaceTechnique::Displacement || params.technique == SurfaceTechnique::Truth)
     what += ", subdivision " + std::to_string(key.level);

@@ -20,6 +20,7 @@ uniform float u_ka;
 uniform float u_kd;
 uniform float u_ks;
 uniform float u_shininess;
+uniform float u_minDistance2;           // r^2 never falls below this (a thousandth of the scene's radius, squared)
 
 // normalize() of a zero vector is NaN; a degenerate triangle or a light exactly at the point
 // would poison the frame. Fall back to a given direction instead.
@@ -41,8 +42,9 @@ Reflected reflectLights(vec3 position, vec3 normal, vec3 eye) {
   r.specular = vec3(0.0);
   for (int k = 0; k < NUM_LIGHTS; ++k) {
     vec3 toLight = u_lightPos[k] - position;
-    // Clamp r^2 so a light touching the surface stays finite (it would be infinite in theory).
-    float r2 = max(dot(toLight, toLight), 1e-4);
+    // Clamp r^2 so a light touching the surface stays finite (it would be infinite in theory); the
+    // floor scales with the scene, so a scene a millimetre across is lit like one a metre across.
+    float r2 = max(dot(toLight, toLight), u_minDistance2);
     vec3 L = toLight * inversesqrt(r2);
     vec3 E = u_lightPower[k] / r2;
     float NdotL = dot(N, L);

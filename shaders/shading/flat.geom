@@ -3,6 +3,9 @@
 // face normal (not any vertex's). The result is passed on `flat`, so every fragment of the face
 // gets exactly this colour. Zero-area triangles (the poles of a UV sphere) have no normal:
 // safeNormalize falls back to the averaged vertex normal rather than producing NaN.
+// The cross product's sign follows the winding, which files do not always keep consistent; the
+// face normal is turned to agree with the vertex normals instead. Two-sided, as in the other
+// modes: a face seen from behind is lit on the side the eye sees.
 #include "common/lighting.glsl"
 #include "shading/interpolation.glsl"
 
@@ -30,6 +33,8 @@ void main() {
   vec3 averaged = gin[0].normal + gin[1].normal + gin[2].normal;
   vec3 face = cross(gin[1].worldPos - gin[0].worldPos, gin[2].worldPos - gin[0].worldPos);
   vec3 N = safeNormalize(face, safeNormalize(averaged, vec3(0.0, 1.0, 0.0)));
+  if (dot(N, averaged) < 0.0) N = -N;        // the winding disagrees with the normals: trust the normals
+  if (dot(N, u_eye - center) < 0.0) N = -N;  // seen from behind: light the side we see
   Reflected lit = reflectLights(center, N, u_eye);
   for (int i = 0; i < 3; ++i) {
     gout.worldPos = gin[i].worldPos;

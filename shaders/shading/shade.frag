@@ -21,7 +21,21 @@ in Surface {
   LIGHT_INTERP vec3 diffuse;
   LIGHT_INTERP vec3 specular;
 #endif
+#ifdef MODE_GOURAUD
+  LIGHT_INTERP vec3 diffuseBack;
+  LIGHT_INTERP vec3 specularBack;
+#endif
 } fin;
+
+// Which side of the surface the eye sees, whatever the triangle's winding: the triangle's own
+// plane (from screen derivatives) turned towards the eye, then the interpolated normal turned to
+// agree with it. gl_FrontFacing would follow the winding, which mixed-winding files get wrong.
+bool seenFromNormalSide(vec3 worldPos, vec3 normal) {
+  vec3 face = cross(dFdx(worldPos), dFdy(worldPos));
+  if (dot(face, face) == 0.0) return true;
+  if (dot(face, u_eye - worldPos) < 0.0) face = -face;
+  return dot(normal, face) >= 0.0;
+}
 
 out vec4 o_color;
 
@@ -30,12 +44,17 @@ void main() {
 #ifdef BASE_COLOR_MAP
   albedo *= texture(u_baseColorMap, fin.uv).rgb;
 #endif
-#if defined(MODE_GOURAUD) || defined(MODE_FLAT)
-  vec3 diffuse = fin.diffuse;
+  bool front = seenFromNormalSide(fin.worldPos, fin.normal);
+#if defined(MODE_FLAT)
+  vec3 diffuse = fin.diffuse;  // flat.geom lit the side the eye sees already
   vec3 specular = fin.specular;
+#elif defined(MODE_GOURAUD)
+  // Seen from behind (open meshes, the inside of a teapot), the other side's lighting.
+  vec3 diffuse = front ? fin.diffuse : fin.diffuseBack;
+  vec3 specular = front ? fin.specular : fin.specularBack;
 #else
   // Seen from behind (open meshes, the inside of a teapot), light the side we see.
-  vec3 N = gl_FrontFacing ? fin.normal : -fin.normal;
+  vec3 N = front ? fin.normal : -fin.normal;
   Reflected lit = reflectLights(fin.worldPos, N, u_eye);
   vec3 diffuse = lit.diffuse;
   vec3 specular = lit.specular;

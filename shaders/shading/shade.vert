@@ -23,8 +23,10 @@ out Surface {  // straight to shade.frag
   vec3 normal;
   UV_INTERP vec2 uv;
 #ifdef MODE_GOURAUD
-  vec3 diffuse;
+  vec3 diffuse;       // lit on the normal's side ...
   vec3 specular;
+  vec3 diffuseBack;   // ... and on the other: the fragment stage picks the side the eye sees
+  vec3 specularBack;
 #endif
 } vout;
 
@@ -37,6 +39,9 @@ void main() {
   Reflected lit = reflectLights(world.xyz, vout.normal, u_eye);
   vout.diffuse = lit.diffuse;
   vout.specular = lit.specular;
+  Reflected back = reflectLights(world.xyz, -vout.normal, u_eye);
+  vout.diffuseBack = back.diffuse;
+  vout.specularBack = back.specular;
 #endif
   gl_Position = u_viewProj * world;
 }

@@ -1,7 +1,9 @@
 #version 330 core
 // Shadows lab, camera pass: Blinn-Phong from a key light (directional, spot or point, chosen by
 // KEY_TYPE) and an optional spot fill light, each shadowed through its own map; or one of the
-// diagnostic views (visibility, bias heat map, texel density, PCSS blocker depth and penumbra).
+// diagnostic views (visibility, bias heat map, texel density, PCSS blocker depth and penumbra,
+// cascades). A directional key light may be split into CASCADE_COUNT cascades, each a map of its
+// own fitted to a slice of the view; a blend band hides the seams between them.
 // Read next: shadow_filters.glsl.
 #include "common/output.glsl"
 #include "shadows/shadow_filters.glsl"
@@ -15,17 +17,29 @@ uniform float u_ambient;
 
 uniform ShadowLight u_key;
 uniform vec3 u_keyPower;   // irradiance at the scene centre x colour (spot/point: x r^2 there)
-uniform sampler2D u_keyMap;
+uniform sampler2DArray u_keyMap;
 uniform samplerCube u_keyCube;
-uniform sampler2DShadow u_keyCmp;
+uniform sampler2DArrayShadow u_keyCmp;
 uniform samplerCubeShadow u_keyCmpCube;
+#ifdef FILTER_MOMENTS
+uniform sampler2DArray u_keyMoments;
+#endif
+#ifdef CASCADE_COUNT
+uniform ShadowLight u_cascade[CASCADE_COUNT];
+uniform float u_cascadeFar[CASCADE_COUNT];    // view depth where cascade i hands over to i + 1
+uniform float u_blendFrom[CASCADE_COUNT];     // view depth where blending into i + 1 begins
+uniform vec3 u_viewForward;
+#endif
 #ifdef FILL_LIGHT
 uniform ShadowLight u_fill;
 uniform vec3 u_fillPower;
-uniform sampler2D u_fillMap;
-uniform sampler2DShadow u_fillCmp;
+uniform sampler2DArray u_fillMap;
+uniform sampler2DArrayShadow u_fillCmp;
 uniform samplerCube u_noCube;             // the fill light is a spot: never sampled
 uniform samplerCubeShadow u_noCmpCube;
+#ifdef FILTER_MOMENTS
+uniform sampler2DArray u_fillMoments;
+#endif
 #endif
 
 out vec4 o_color;
@@ -50,29 +64,58 @@ vec3 blinnPhong(vec3 E, float NdotL, vec3 N, vec3 toLight, vec3 V, vec3 albedo) 
   return E * (albedo * NdotL + 0.25 * pow(max(dot(N, H), 0.0), 48.0));
 }
 
-vec3 heatColor(float texels) {
-  // Red: shadowed by less than 3 texels (on a lit surface that is acne). Blue: lit by less than
-  // 3 texels (where a shadow should begin, that is a leak / peter-panning). Grey: clear cases.
-  float t = clamp(abs(texels) / 3.0, 0.0, 1.0);
-  vec3 nearZero = texels > 0.0 ? vec3(1.0, 0.1, 0.05) : vec3(0.1, 0.35, 1.0);
-  return mix(nearZero, vec3(0.25), t);
+// The gap between the receiver and the depth stored for it, in units of the bias: the surface
+// itself stores a gap near 0 (green), lit only thanks to the bias as the gap nears it (yellow,
+// orange), acne beyond it (red). A gap of many texels is a real occluder: a shadow (grey).
+vec3 heatColor(ShadowDebug d) {
+  if (d.gap > 8.0 && d.heat > 1.0) return vec3(0.22);
+  if (d.heat > 1.0) return vec3(1.0, 0.08, 0.05);
+  float t = clamp(d.heat, -1.0, 1.0);
+  return t < 0.0 ? mix(vec3(0.15, 0.75, 0.25), vec3(0.1, 0.3, 1.0), -t)
+                 : mix(vec3(0.15, 0.75, 0.25), vec3(1.0, 0.75, 0.05), t);
+}
+
+// The key light's shadow term for the chosen filter.
+float keyShadow(ShadowLight L, ShadowSurface s, out ShadowDebug dbg) {
+#ifdef FILTER_MOMENTS
+  return momentVisibility(KEY_TYPE, L, u_keyMoments, s, dbg);
+#else
+  return visibility(KEY_TYPE, L, u_keyMap, u_keyCube, u_keyCmp, u_keyCmpCube, s, dbg);
+#endif
 }
 
 void main() {
   vec3 N = normalize(gl_FrontFacing ? v_normal : -v_normal);
   vec3 P = v_worldPos;
   vec3 V = normalize(u_eye - P);
+  ShadowSurface surface = shadowSurface(P, N);
   float keyNdotL;
   vec3 keyE = irradiance(KEY_TYPE, u_key, u_keyPower, P, N, keyNdotL);
   bool valid = keyNdotL > 0.0 && max(keyE.r, max(keyE.g, keyE.b)) > 0.0;
 
   ShadowDebug dbg;
   dbg.heat = 0.0;
+  dbg.gap = 0.0;
   dbg.blocker = -1.0;
   dbg.penumbra = 0.0;
   float keyVis = 1.0;
+  int cascade = 0;
+  float blend = 0.0;
 #ifdef KEY_CASTS
-  keyVis = visibility(KEY_TYPE, u_key, u_keyMap, u_keyCube, u_keyCmp, u_keyCmpCube, P, N, dbg);
+#ifdef CASCADE_COUNT
+  float viewDepth = dot(P - u_eye, u_viewForward);
+  for (int i = 0; i < CASCADE_COUNT - 1; ++i)
+    if (viewDepth > u_cascadeFar[i]) cascade = i + 1;
+  keyVis = keyShadow(u_cascade[cascade], surface, dbg);
+  if (cascade < CASCADE_COUNT - 1 && viewDepth > u_blendFrom[cascade]) {
+    // The last stretch of a cascade fades into the next, which covers it too: no visible seam.
+    blend = clamp((viewDepth - u_blendFrom[cascade]) / max(u_cascadeFar[cascade] - u_blendFrom[cascade], 1e-30), 0.0, 1.0);
+    ShadowDebug next;
+    keyVis = mix(keyVis, keyShadow(u_cascade[cascade + 1], surface, next), blend);
+  }
+#else
+  keyVis = keyShadow(u_key, surface, dbg);
+#endif
 #endif
 
 #if defined(VIEW_VISIBILITY)
@@ -82,15 +125,36 @@ void main() {
 #elif defined(VIEW_NORMAL)
   o_color = vec4(N, valid ? 1.0 : 0.0);
 #elif defined(VIEW_BIAS_HEAT)
-  o_color = encodeOutput(valid ? heatColor(dbg.heat) : vec3(0.05));
+  o_color = encodeOutput(valid ? heatColor(dbg) : vec3(0.05));
 #elif defined(VIEW_TEXEL_DENSITY)
   // log2(shadow texel / screen pixel) on the surface: green = matched, red = the map is coarser
   // than the screen (jagged edges), blue = finer (wasted texels).
   float pixelWorld = max(length(fwidth(P)), 1e-30);
-  float ratio = log2(max(texelWorldAt(KEY_TYPE, u_key, lightDepth(KEY_TYPE, u_key, P)), 1e-30) / pixelWorld);
+#ifdef CASCADE_COUNT
+  ShadowLight T = u_cascade[cascade];
+#else
+  ShadowLight T = u_key;
+#endif
+  float ratio = log2(max(texelWorldAt(KEY_TYPE, T, lightDepth(KEY_TYPE, T, P)), 1e-30) / pixelWorld);
   vec3 c = ratio > 0.0 ? mix(vec3(0.2, 0.8, 0.2), vec3(1.0, 0.1, 0.1), clamp(ratio / 3.0, 0.0, 1.0))
                        : mix(vec3(0.2, 0.8, 0.2), vec3(0.1, 0.2, 1.0), clamp(-ratio / 3.0, 0.0, 1.0));
   o_color = encodeOutput(c * (0.35 + 0.65 * max(keyNdotL, 0.0)));
+#elif defined(VIEW_CASCADES)
+  // One colour per cascade, the blend band striped towards the next; magenta where a pixel falls
+  // outside the map of its cascade (a gap in the cover: there must be none).
+  const vec3 colours[4] = vec3[4](vec3(0.9, 0.3, 0.25), vec3(0.3, 0.8, 0.3), vec3(0.3, 0.5, 1.0), vec3(0.95, 0.8, 0.2));
+#ifdef CASCADE_COUNT
+  ShadowLight C = u_cascade[cascade];
+#else
+  ShadowLight C = u_key;
+#endif
+  vec4 clip = C.viewProj * vec4(P, 1.0);
+  vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+  bool outside = any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)));
+  vec3 c = colours[cascade];
+  if (blend > 0.0 && fract((gl_FragCoord.x + gl_FragCoord.y) / 12.0) < 0.5) c = mix(c, colours[min(cascade + 1, 3)], blend);
+  c *= 0.45 + 0.55 * keyVis;
+  o_color = encodeOutput(outside && KEY_TYPE == LIGHT_DIRECTIONAL ? vec3(1.0, 0.0, 1.0) : c);
 #elif defined(VIEW_PCSS_BLOCKER)
   o_color = encodeOutput(dbg.blocker < 0.0 ? vec3(0.0, 0.15, 0.0) : vec3(dbg.blocker));
 #elif defined(VIEW_PCSS_PENUMBRA)
@@ -104,7 +168,11 @@ void main() {
   float fillVis = 1.0;
 #ifdef FILL_CASTS
   ShadowDebug fillDbg;
-  fillVis = visibility(LIGHT_SPOT, u_fill, u_fillMap, u_noCube, u_fillCmp, u_noCmpCube, P, N, fillDbg);
+#ifdef FILTER_MOMENTS
+  fillVis = momentVisibility(LIGHT_SPOT, u_fill, u_fillMoments, surface, fillDbg);
+#else
+  fillVis = visibility(LIGHT_SPOT, u_fill, u_fillMap, u_noCube, u_fillCmp, u_noCmpCube, surface, fillDbg);
+#endif
 #endif
   color += blinnPhong(fillE * fillVis, fillNdotL, N, toLightDir(LIGHT_SPOT, u_fill, P), V, albedo);
 #endif

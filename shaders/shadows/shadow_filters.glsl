@@ -11,6 +11,11 @@
 // kernels on sloped receivers need no extra bias (Isidoro, "Shadow mapping: GPU-based tips and
 // techniques", GDC 2006, does this with screen-space derivatives; the ray-plane form is exact).
 // PCSS: Fernando, "Percentage-Closer Soft Shadows", SIGGRAPH 2005 sketch.
+// Filtered maps store moments of depth instead and are blurred and mipmapped like any texture:
+// VSM (Donnelly and Lauritzen 2006), ESM (Annen et al. 2008), EVSM (Lauritzen and McCool 2008).
+//
+// 2D maps are array textures: one layer per cascade (one layer when there are none); the layer
+// travels in ShadowLight.layer.
 
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_SPOT 1
@@ -27,13 +32,39 @@ struct ShadowLight {
   float halfWidth;    // map plane half width: ortho half extent, or tan(half fov) (1 for cube faces)
   float mapSize;      // texels across
   float radius;       // area light: world radius (directional: tangent of the angular radius)
+  float layer;        // 2D maps: the array layer (the cascade)
 };
 
 uniform float u_bias;          // texels
 uniform float u_slopeBias;     // texels
 uniform float u_normalOffset;  // texels
 uniform float u_filterRadius;  // texels (Poisson PCF)
-uniform vec2 u_poisson[64];    // unit-disk samples
+// Unit-disk samples, one well-spread set per count (never a prefix of a bigger one): the filter's
+// taps (Poisson, PCSS) and the PCSS blocker search's.
+uniform vec2 u_filterDisk[64];
+uniform vec2 u_blockerDisk[64];
+
+// What the filters need of the surface, taken in uniform control flow (derivatives are undefined
+// inside a branch that differs between neighbouring pixels, as a cascade choice does).
+struct ShadowSurface {
+  vec3 P;       // world position
+  vec3 N;       // shading normal, facing the viewer
+  vec3 plane;   // the triangle's own normal, on N's side
+  vec3 dPdx;    // screen derivatives of P
+  vec3 dPdy;
+};
+
+ShadowSurface shadowSurface(vec3 P, vec3 N) {
+  ShadowSurface s;
+  s.P = P;
+  s.N = N;
+  s.dPdx = dFdx(P);
+  s.dPdy = dFdy(P);
+  vec3 geometric = cross(s.dPdx, s.dPdy);  // N may be interpolated; this is the triangle's plane
+  s.plane = dot(geometric, geometric) > 0.0 ? normalize(geometric) : N;
+  if (dot(s.plane, N) < 0.0) s.plane = -s.plane;
+  return s;
+}
 
 struct ShadowQuery {
   vec3 point;      // the (normal-offset) receiver point
@@ -50,7 +81,8 @@ struct ShadowQuery {
 };
 
 struct ShadowDebug {
-  float heat;        // (receiver - occluder - bias) in texels, at the centre tap
+  float heat;        // (receiver - occluder) in units of the bias, at the centre tap (1: acne begins)
+  float gap;         // (receiver - occluder) in texels: large = shadowed by something else
   float blocker;     // PCSS average blocker depth, 0..1 over near..far (-1: none found)
   float penumbra;    // PCSS filter radius in texels
 };
@@ -81,15 +113,14 @@ vec3 toLightDir(int type, ShadowLight L, vec3 P) {
   return type == LIGHT_DIRECTIONAL ? -L.axis : normalize(L.position - P);
 }
 
-ShadowQuery makeQuery(int type, ShadowLight L, vec3 P, vec3 N) {
+ShadowQuery makeQuery(int type, ShadowLight L, ShadowSurface s) {
   ShadowQuery q;
+  vec3 P = s.P, N = s.N;
   float NdotL = clamp(dot(N, toLightDir(type, L, P)), 0.0, 1.0);
   q.texelWorld = texelWorldAt(type, L, lightDepth(type, L, P));
   vec3 Pn = P + N * (u_normalOffset * q.texelWorld);
   q.point = Pn;
-  vec3 geometric = cross(dFdx(P), dFdy(P));  // the triangle's plane; N may be interpolated
-  q.plane = dot(geometric, geometric) > 0.0 ? normalize(geometric) : N;
-  if (dot(q.plane, N) < 0.0) q.plane = -q.plane;
+  q.plane = s.plane;
   q.depth = lightDepth(type, L, Pn);
   q.bias = max(u_slopeBias * (1.0 - NdotL), u_bias) * q.texelWorld;
   q.beyondFar = q.depth > L.farPlane;
@@ -104,7 +135,7 @@ ShadowQuery makeQuery(int type, ShadowLight L, vec3 P, vec3 N) {
   } else {
     vec4 clip = L.viewProj * vec4(Pn, 1.0);
     float w = abs(clip.w) > 1e-30 ? clip.w : 1e-30;
-    q.base = vec3(clip.xy / w * 0.5 + 0.5, 0.0);
+    q.base = vec3(clip.xy / w * 0.5 + 0.5, L.layer);
     q.tanCentre = (clip.xy / w) * L.halfWidth;
     q.beyondFar = q.beyondFar || clip.w <= 0.0;
     q.texel = 1.0 / L.mapSize;
@@ -113,12 +144,12 @@ ShadowQuery makeQuery(int type, ShadowLight L, vec3 P, vec3 N) {
   return q;
 }
 
-float tapLinear(int type, ShadowLight L, sampler2D map, samplerCube cube, ShadowQuery q, vec2 offsetTexels) {
+float tapLinear(int type, ShadowLight L, sampler2DArray map, samplerCube cube, ShadowQuery q, vec2 offsetTexels) {
   if (type == LIGHT_POINT) {
     vec3 dir = q.base + (q.tangent * offsetTexels.x + q.bitangent * offsetTexels.y) * q.texel;
-    return storedToLinear(type, L, texture(cube, dir).r);
+    return storedToLinear(type, L, textureLod(cube, dir, 0.0).r);
   }
-  return storedToLinear(type, L, texture(map, q.base.xy + offsetTexels * q.texel).r);
+  return storedToLinear(type, L, textureLod(map, vec3(q.base.xy + offsetTexels * q.texel, q.base.z), 0.0).r);
 }
 
 // The receiver's depth where the tap's light ray meets the receiver plane (or the centre depth).
@@ -148,7 +179,7 @@ float receiverDepth(int type, ShadowLight L, ShadowQuery q, vec2 o) {
 #endif
 }
 
-float tapCompare(int type, ShadowLight L, sampler2D map, samplerCube cube, ShadowQuery q, vec2 offsetTexels) {
+float tapCompare(int type, ShadowLight L, sampler2DArray map, samplerCube cube, ShadowQuery q, vec2 offsetTexels) {
   return receiverDepth(type, L, q, offsetTexels) - q.bias > tapLinear(type, L, map, cube, q, offsetTexels) ? 0.0 : 1.0;
 }
 
@@ -163,10 +194,79 @@ vec2 rotated(vec2 v, float a) {
   return vec2(c * v.x - s * v.y, s * v.x + c * v.y);
 }
 
-float visibility(int type, ShadowLight L, sampler2D map, samplerCube cube, sampler2DShadow cmp,
-                 samplerCubeShadow cmpCube, vec3 P, vec3 N, out ShadowDebug dbg) {
-  ShadowQuery q = makeQuery(type, L, P, N);
-  dbg.heat = (q.depth - q.bias - tapLinear(type, L, map, cube, q, vec2(0.0))) / max(q.texelWorld, 1e-30);
+#if defined(FILTER_VSM) || defined(FILTER_ESM) || defined(FILTER_EVSM)
+#define FILTER_MOMENTS 1
+#endif
+
+// Filtered maps. Depth is stored as t = (d - near) / (far - near) in [0, 1], linear along the
+// light's axis, so the warps below never see more than exp(c).
+uniform float u_minVariance;   // VSM/EVSM: floor on the variance (in t^2)
+uniform float u_bleed;         // VSM: light-bleeding reduction, p -> (p - a) / (1 - a)
+uniform float u_esmExponent;   // ESM: c in exp(c t)
+uniform vec2 u_evsmExponents;  // EVSM: positive and negative warp exponents
+
+float momentDepth(ShadowLight L, float d) {
+  return clamp((d - L.nearPlane) / max(L.farPlane - L.nearPlane, 1e-30), 0.0, 1.0);
+}
+
+// What the depth pass stores for depth t (moments.frag), and what the filters compare against.
+vec4 warpDepth(float t) {
+#if defined(FILTER_ESM)
+  return vec4(exp(u_esmExponent * t), 0.0, 0.0, 0.0);
+#elif defined(FILTER_EVSM)
+  float p = exp(u_evsmExponents.x * t), n = -exp(-u_evsmExponents.y * t);
+  return vec4(p, p * p, n, n * n);
+#else
+  return vec4(t, t * t, 0.0, 0.0);
+#endif
+}
+
+// Chebyshev's one-tailed bound: an upper bound on the lit fraction for receiver depth t.
+float chebyshev(vec2 m, float t, float minVariance) {
+  if (t <= m.x) return 1.0;
+  float variance = max(m.y - m.x * m.x, minVariance);
+  float d = t - m.x;
+  return variance / (variance + d * d);
+}
+
+float momentVisibility(int type, ShadowLight L, sampler2DArray moments, ShadowSurface s, out ShadowDebug dbg) {
+  ShadowQuery q = makeQuery(type, L, s);
+  dbg.heat = 0.0;
+  dbg.gap = 0.0;
+  dbg.blocker = -1.0;
+  dbg.penumbra = 0.0;
+#ifdef FAR_FIX
+  if (q.beyondFar) return 1.0;
+#endif
+  // Texture-space derivatives from the surface's own, through the light's projection: the
+  // branch this runs in may differ between neighbouring pixels.
+  vec4 cx = L.viewProj * vec4(s.P + s.dPdx, 1.0), cy = L.viewProj * vec4(s.P + s.dPdy, 1.0);
+  vec2 uvx = cx.xy / max(abs(cx.w), 1e-30) * 0.5 + 0.5 - q.base.xy;
+  vec2 uvy = cy.xy / max(abs(cy.w), 1e-30) * 0.5 + 0.5 - q.base.xy;
+  vec4 m = textureGrad(moments, q.base, uvx, uvy);
+  float t = momentDepth(L, q.depth - q.bias);
+#if defined(FILTER_ESM)
+  // exp(-c t) E[exp(c d)], in logs so neither factor overflows on its own.
+  return clamp(exp(log(max(m.x, 1e-30)) - u_esmExponent * t), 0.0, 1.0);
+#elif defined(FILTER_EVSM)
+  vec4 w = warpDepth(t);
+  // The variance floor scaled by each warp's slope at t (d/dt of exp(c t) is c exp(c t)).
+  float dp = u_evsmExponents.x * w.x, dn = u_evsmExponents.y * w.z;
+  float pos = chebyshev(m.xy, w.x, u_minVariance * dp * dp);
+  float neg = chebyshev(m.zw, w.z, u_minVariance * dn * dn);
+  return clamp(min(pos, neg), 0.0, 1.0);
+#else
+  float p = chebyshev(m.xy, t, u_minVariance);
+  return clamp((p - u_bleed) / max(1.0 - u_bleed, 1e-6), 0.0, 1.0);
+#endif
+}
+
+float visibility(int type, ShadowLight L, sampler2DArray map, samplerCube cube, sampler2DArrayShadow cmp,
+                 samplerCubeShadow cmpCube, ShadowSurface s, out ShadowDebug dbg) {
+  ShadowQuery q = makeQuery(type, L, s);
+  float gap = q.depth - tapLinear(type, L, map, cube, q, vec2(0.0));
+  dbg.heat = gap / max(q.bias, 1e-30);
+  dbg.gap = gap / max(q.texelWorld, 1e-30);
   dbg.blocker = -1.0;
   dbg.penumbra = 0.0;
 #ifdef FAR_FIX
@@ -175,7 +275,7 @@ float visibility(int type, ShadowLight L, sampler2D map, samplerCube cube, sampl
 #if defined(FILTER_HW_PCF)
   // One tap; the sampler compares the four nearest texels and blends the results bilinearly.
   float ref = linearToStored(type, L, q.depth - q.bias);
-  return type == LIGHT_POINT ? texture(cmpCube, vec4(q.base, ref)) : texture(cmp, vec3(q.base.xy, ref));
+  return type == LIGHT_POINT ? texture(cmpCube, vec4(q.base, ref)) : texture(cmp, vec4(q.base, ref));
 #elif defined(FILTER_PCF)
   float lit = 0.0;
   for (int i = 0; i < PCF_SIZE; ++i)
@@ -190,7 +290,7 @@ float visibility(int type, ShadowLight L, sampler2D map, samplerCube cube, sampl
 #endif
   float lit = 0.0;
   for (int k = 0; k < POISSON_COUNT; ++k)
-    lit += tapCompare(type, L, map, cube, q, rotated(u_poisson[k], angle) * u_filterRadius);
+    lit += tapCompare(type, L, map, cube, q, rotated(u_filterDisk[k], angle) * u_filterRadius);
   return lit / float(POISSON_COUNT);
 #elif defined(FILTER_PCSS)
   // Sizes on the map plane: world units for an orthographic map, tangents for a perspective one.
@@ -205,11 +305,14 @@ float visibility(int type, ShadowLight L, sampler2D map, samplerCube cube, sampl
                                            : L.radius * max(dR - zMin, 0.0) / (dR * zMin);
   float searchTexels = search * toTexels;
   float angle = pixelAngle();
-  // 1. Blocker search: the average depth of what lies between the receiver and the light.
+  // 1. Blocker search: the average depth of what lies between the receiver and the light. Each
+  // tap compares against the receiver's plane at that tap, as the PCF taps do: against the centre
+  // depth a sloped receiver would find itself and count as its own blocker.
   float sum = 0.0, count = 0.0;
   for (int k = 0; k < BLOCKER_COUNT; ++k) {
-    float d = tapLinear(type, L, map, cube, q, rotated(u_poisson[k], angle) * searchTexels);
-    if (d < dR - q.bias) {
+    vec2 o = rotated(u_blockerDisk[k], angle) * searchTexels;
+    float d = tapLinear(type, L, map, cube, q, o);
+    if (d < receiverDepth(type, L, q, o) - q.bias) {
       sum += d;
       count += 1.0;
     }
@@ -224,7 +327,7 @@ float visibility(int type, ShadowLight L, sampler2D map, samplerCube cube, sampl
   // 3. PCF over that width.
   float lit = 0.0;
   for (int k = 0; k < PCSS_COUNT; ++k)
-    lit += tapCompare(type, L, map, cube, q, rotated(u_poisson[k], angle) * filterTexels);
+    lit += tapCompare(type, L, map, cube, q, rotated(u_filterDisk[k], angle) * filterTexels);
   return lit / float(PCSS_COUNT);
 #else
   return tapCompare(type, L, map, cube, q, vec2(0.0));

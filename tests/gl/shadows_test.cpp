@@ -123,10 +123,15 @@ TEST(Shadows, DepthViewShowsEitherLightsMap) {
 TEST(Shadows, SoftShadowsApproachTheAreaLight) {
   auto host = shadowsHost({"shadows.filter=pcss", "shadows.light_radius=0.1"});
   const ImageF truth = host->renderReference({160, 90});
-  const double pcss = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse");
+  const double pcss = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
   host->set("shadows.filter=hard");  // the same area-light truth, judged against a hard shadow
-  const double hard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse");
+  const double hard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
   EXPECT_LT(pcss, hard);
+  // ... while against the point-light truth, the hard shadow is the closer of the two.
+  const double hardVsHard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
+  host->set("shadows.filter=pcss");
+  const double pcssVsHard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
+  EXPECT_LT(hardVsHard, pcssVsHard);
 }
 
 struct ShadowGolden {

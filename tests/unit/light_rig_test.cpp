@@ -106,19 +106,26 @@ TEST(PoissonDisk, DeterministicInsideTheDiskAndSpread) {
 TEST(ShadowMetrics, CountsMisclassifiedAcneAndLeaks) {
   ShadowsLab lab;
   ImageF img, ref;
-  img.size = ref.size = {4, 1};
-  //            lit/lit      acne         leak         background (ignored)
-  img.rgba = {1, 1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 0, 0, 0, 0};
-  ref.rgba = {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 0};
+  img.size = ref.size = {5, 1};
+  // The truth holds the point light's visibility in R and the area light's in G.
+  //            lit/lit      acne         leak         shadow/shadow  background (ignored)
+  img.rgba = {1, 1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 0, 0, 0, 1, 0, 0, 0, 0};
+  ref.rgba = {1, 1, 1, 1, 1, 1, 1, 1, 0, 0.5f, 0.5f, 1, 0, 0, 0, 1, 1, 1, 1, 0};
   const Metrics m = lab.metrics(img, ref);
   auto get = [&](const char* k) {
     for (auto& [key, v] : m)
       if (key == k) return v;
     return -1.0;
   };
-  EXPECT_NEAR(get("misclassified_pct"), 100.0 * 2 / 3, 1e-9);
-  EXPECT_NEAR(get("acne_pct"), 100.0 / 3, 1e-9);
-  EXPECT_NEAR(get("leak_pct"), 100.0 / 3, 1e-9);
-  EXPECT_NEAR(get("visibility_rmse"), std::sqrt(2.0 / 3), 1e-9);
-  EXPECT_NEAR(get("valid_pct"), 75.0, 1e-9);
+  EXPECT_NEAR(get("misclassified_pct"), 100.0 * 2 / 4, 1e-9);  // of the pixels that face the light
+  EXPECT_NEAR(get("acne_pct"), 100.0 / 2, 1e-9);                // of the truly lit pixels
+  EXPECT_NEAR(get("leak_pct"), 100.0 / 2, 1e-9);                // of the truly shadowed pixels
+  EXPECT_NEAR(get("visibility_rmse_hard"), std::sqrt(2.0 / 4), 1e-6);
+  EXPECT_NEAR(get("visibility_rmse_area"), std::sqrt((1 + 0.25) / 4), 1e-6);
+  EXPECT_NEAR(get("valid_pct"), 80.0, 1e-9);
+  // The CSV says what each is divided by.
+  for (const char* key : {"misclassified_pct", "acne_pct", "leak_pct", "visibility_rmse_hard", "visibility_rmse_area"}) {
+    const Settings notes = lab.metricNotes();
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [&](auto& n) { return n.first == key; })) << key;
+  }
 }
