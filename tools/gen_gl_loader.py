@@ -3,14 +3,15 @@
 
 Why our own loader: under OSMesa, libepoxy aborts and GLEW refuses to start, while
 a table of function pointers filled through the context's getProcAddress works for
-OSMesa, EGL and GLFW alike. Every core function up to GL 3.3 becomes a pointer
+OSMesa, EGL and GLFW alike. Every core function up to GL 4.1 becomes a pointer
 `shl_glName` and a macro `glName` that names it, so code (and Dear ImGui's OpenGL3
 backend, built with IMGUI_IMPL_OPENGL_LOADER_CUSTOM) reads as plain GL.
 
-3.3 is the version every context asks for, so it is also the ceiling here: a call from a
-later version (glTexStorage2D is 4.2) does not compile, instead of working on Mesa, which
-hands out 4.5 whatever is asked, and failing on a driver that gives exactly 3.3. The few later
-functions in OPTIONAL are loaded too; the code calls them only where the context has them.
+4.1 is the version every context asks for first (gl::kContextVersions), so it is also the
+ceiling here: a call from a later version (glTexStorage2D is 4.2) does not compile, instead of
+working on Mesa, which hands out 4.5 whatever is asked, and failing on a driver that gives
+exactly what was asked. Where only 3.3 can be had, the 4.0/4.1 functions stay null and the
+code that needs them checks first (gl::hasTessellation).
 
 usage: gen_gl_loader.py /usr/include/GL/glcorearb.h OUT_DIR
 writes OUT_DIR/gl_loader.h and OUT_DIR/gl_loader.cpp
@@ -18,10 +19,7 @@ writes OUT_DIR/gl_loader.h and OUT_DIR/gl_loader.cpp
 import re
 import sys
 
-MAX_VERSION = (3, 3)
-# Later functions the project calls only behind a check that the context has them (see
-# gl::hasTessellation in app/gl/gl.h): name -> the version that made it core.
-OPTIONAL = {"glPatchParameteri": (4, 0)}
+MAX_VERSION = (4, 1)
 PROTO = re.compile(r"^GLAPI\s+(.+?)\s*APIENTRY\s+(gl\w+)\s*\((.*)\);\s*$")
 VERSION_BLOCK = re.compile(r"^#ifndef GL_VERSION_(\d)_(\d)\s*$")
 
@@ -40,7 +38,7 @@ def core_functions(header_text):
             version = None
             continue
         m = PROTO.match(line)
-        if m and version is not None and (version <= MAX_VERSION or OPTIONAL.get(m.group(2)) == version):
+        if m and version is not None and version <= MAX_VERSION:
             names.append(m.group(2))
     return names
 
@@ -50,8 +48,8 @@ def main():
         sys.exit("usage: gen_gl_loader.py GLCOREARB_H OUT_DIR")
     with open(sys.argv[1], encoding="utf-8") as f:
         names = core_functions(f.read())
-    if len(names) < 300:
-        sys.exit(f"gen_gl_loader.py: {sys.argv[1]}: found only {len(names)} core functions, expected ~340")
+    if len(names) < 400:
+        sys.exit(f"gen_gl_loader.py: {sys.argv[1]}: found only {len(names)} core functions, expected ~460")
     out = sys.argv[2]
     pfn = lambda n: "PFN" + n.upper() + "PROC"
     with open(f"{out}/gl_loader.h", "w", encoding="utf-8") as h:

@@ -56,11 +56,13 @@ EGLContext createCoreContext(EGLDisplay display) {
   EGLConfig config;
   EGLint n = 0;
   if (!eglChooseConfig(display, configAttribs, &config, 1, &n) || n < 1) config = nullptr;
-  const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-  EGLContext ctx = eglCreateContext(display, config, EGL_NO_CONTEXT, ctxAttribs);
-  if (ctx != EGL_NO_CONTEXT && eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) return ctx;
-  if (ctx != EGL_NO_CONTEXT) eglDestroyContext(display, ctx);
+  for (const gl::Version v : gl::kContextVersions) {
+    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, v.major, EGL_CONTEXT_MINOR_VERSION, v.minor,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    EGLContext ctx = eglCreateContext(display, config, EGL_NO_CONTEXT, ctxAttribs);
+    if (ctx != EGL_NO_CONTEXT && eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) return ctx;
+    if (ctx != EGL_NO_CONTEXT) eglDestroyContext(display, ctx);
+  }
   eglTerminate(display);
   return EGL_NO_CONTEXT;
 }

@@ -27,12 +27,15 @@ class OsMesaContext final : public GlContext {
 }  // namespace
 
 std::unique_ptr<GlContext> createOsMesaContext(std::string& error) {
-  const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-                         OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                         OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
-  OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
+  OSMesaContext ctx = nullptr;
+  for (const gl::Version v : gl::kContextVersions) {
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
+                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, v.major,
+                           OSMESA_CONTEXT_MINOR_VERSION, v.minor, 0};
+    if ((ctx = OSMesaCreateContextAttribs(attribs, nullptr))) break;
+  }
   if (!ctx) {
-    error = "osmesa: could not create an OpenGL 3.3 core context (is libosmesa6 installed?)";
+    error = "osmesa: could not create an OpenGL 4.1 or 3.3 core context (is libosmesa6 installed?)";
     return nullptr;
   }
   auto context = std::make_unique<OsMesaContext>(ctx);

@@ -3,6 +3,7 @@
 #pragma once
 #include <string>
 
+#include "context/load_gl.h"
 #include "gl_loader.h"
 
 #ifndef GL_TEXTURE_MAX_ANISOTROPY
@@ -12,11 +13,8 @@
 
 namespace gl {
 
-// Fills the loader through the context's getProcAddress. Returns false (with the name of the
-// first missing function in `missing`) when the context lacks a core function we rely on.
-bool loadFunctions(ShlGetProcAddress getProc, const char** missing = nullptr);
 
-// Tessellation stages (core in 4.0): the contexts ask for 3.3, so labs check before using them.
+// Tessellation stages (core in 4.0): a 3.3 context has none, so labs check before using them.
 bool hasTessellation();
 
 const char* errorString(GLenum error);  // "GL_INVALID_ENUM", ...

@@ -11,6 +11,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include "context/load_gl.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -186,11 +188,14 @@ void leftPanel(AppState& app) {
 int runWindow(const Options& options, const WindowOptions& wopt) {
   glfwSetErrorCallback([](int, const char* d) { std::fprintf(stderr, "glfw: %s\n", d); });
   if (!glfwInit()) return 2;
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(1280, 800, "ShadeLab", nullptr, nullptr);
+  GLFWwindow* window = nullptr;
+  for (const gl::Version v : gl::kContextVersions) {
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, v.major);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, v.minor);
+    if ((window = glfwCreateWindow(1280, 800, "ShadeLab", nullptr, nullptr))) break;
+  }
   if (!window) {
     glfwTerminate();
     return 2;
