@@ -46,7 +46,7 @@ cp build/tutorial-sweep/shading_rmse.svg build/tutorial-sweep/shading_surface_rm
 }
 
 shadows_figures() {
-# shadows.md: the path, step by step (each image 480x270; the errors and costs come from the sweep below)
+# shadows.md: the path, step by step (each image 480x270; the errors and costs come from the sweeps below)
 r="$sl render --lab shadows --size 480x270"
 $r --set shadows.filter=hard --set shadows.bias=0 --set shadows.slope_bias=0 --out $f/shadows_1_acne.png
 $r --set shadows.filter=hard --out $f/shadows_2_bias.png
@@ -65,8 +65,9 @@ $r --set shadows.filter=pcf --set shadows.pcf_size=5 --out $f/shadows_6_pcf5.png
 $r --set shadows.filter=poisson --set shadows.filter_radius=3 --out $f/shadows_7_poisson.png
 $r --set shadows.filter=pcss --set shadows.light_radius=0.12 --out $f/shadows_8_pcss.png
 $r --set shadows.filter=pcss --set shadows.light_radius=0.12 --set shadows.view=pcss-penumbra --out $f/shadows_8_penumbra.png
+$r --set shadows.view=bias-heat --out $f/shadows_9_bias_heat.png
 $r --set shadows.filter=hard --set shadows.bias=0.5 --set shadows.slope_bias=0 --set shadows.view=bias-heat \
-  --out $f/shadows_9_bias_heat.png
+  --out $f/shadows_9_bias_heat_low.png
 $r --set shadows.view=texel-density --set shadows.map_size=512 --out $f/shadows_9_texel_density.png
 $r --set shadows.view=depth-linear --out $f/shadows_9_depth_map.png
 $r --set shadows.light_type=point --set shadows.light_distance=1.2 --set shadows.view=depth-linear \
@@ -79,10 +80,42 @@ $r --set shadows.light_type=spot --set shadows.fill_light=on --set shadows.filte
 "$sl" sweep --lab shadows --size 960x540 --frames 7 --out build/tutorial-shadows-path \
   --vary filter=hard:bias=0:slope_bias=0,hard,hard:bias=45:slope_bias=0,hardware-pcf,pcf:pcf_size=3,pcf:pcf_size=5,pcf:pcf_size=5:receiver_plane=off,poisson,pcss
 cp build/tutorial-shadows-path/shadows_sweep.csv $f/shadows_path.csv
-# shadows.md: the standard sweep (filter x map size x bias)
+
+# shadows.md: LearnOpenGL's scene at the chapter's 800x600, one 1024^2 map fitted to the scene, to
+# the view, and cascades of the same memory (4 x 512^2)
+l="$sl render --lab shadows --scene learnopengl --size 800x600 --set shadows.filter=hard"
+$l --set shadows.map_size=1024 --out $f/shadows_11_scene_fit.png
+$l --set shadows.map_size=1024 --set shadows.fit=view --out $f/shadows_11_view_fit.png
+$l --set shadows.map_size=512 --set shadows.fit=cascades --out $f/shadows_11_cascades.png
+$l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.view=cascades --out $f/shadows_11_cascade_view.png
+$l --set shadows.map_size=1024 --set shadows.view=texel-density --out $f/shadows_11_density_scene.png
+$l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.view=texel-density \
+  --out $f/shadows_11_density_cascades.png
+$l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.view=depth-linear --set shadows.depth_cascade=1 \
+  --out $f/shadows_11_cascade1_map.png
+"$sl" sweep --lab shadows --scene learnopengl --size 800x600 --frames 7 --set shadows.filter=hard \
+  --set shadows.map_size=1024 --out build/tutorial-shadows-fit \
+  --vary fit=scene,view,cascades:map_size=512,cascades:map_size=512:split_lambda=0,cascades:map_size=512:split_lambda=1,cascades:map_size=512:cascade_count=2,cascades:map_size=1024
+cp build/tutorial-shadows-fit/shadows_sweep.csv $f/shadows_fit.csv
+
+# shadows.md: filtered maps (moments of depth, blurred and mipmapped) beside PCF and PCSS
+$r --set shadows.filter=vsm --set shadows.light_radius=0.12 --out $f/shadows_12_vsm.png
+$r --set shadows.filter=vsm --set shadows.light_radius=0.12 --set shadows.bleed_reduction=0 \
+  --camera "yaw=-60,pitch=30,distance=4,target=0.3;0.4;0.6" --out $f/shadows_12_vsm_bleeding.png
+$r --set shadows.filter=vsm --set shadows.light_radius=0.12 \
+  --camera "yaw=-60,pitch=30,distance=4,target=0.3;0.4;0.6" --out $f/shadows_12_vsm_reduced.png
+$r --set shadows.filter=esm --set shadows.light_radius=0.12 --out $f/shadows_12_esm.png
+$r --set shadows.filter=evsm --set shadows.light_radius=0.12 --out $f/shadows_12_evsm.png
+$r --set shadows.filter=evsm --set shadows.light_radius=0.12 \
+  --camera "yaw=-60,pitch=30,distance=4,target=0.3;0.4;0.6" --out $f/shadows_12_evsm_close.png
+"$sl" sweep --lab shadows --size 960x540 --frames 7 --set shadows.light_radius=0.12 --out build/tutorial-shadows-filtered \
+  --vary filter=hard,pcf:pcf_size=5,pcss,vsm,vsm:bleed_reduction=0,vsm:blur_radius=6,esm,esm:esm_exponent=20,evsm,evsm:moment_mips=off
+cp build/tutorial-shadows-filtered/shadows_sweep.csv $f/shadows_filtered.csv
+
+# shadows.md: the standard sweep (filter x map size x bias), one front per truth
 "$sl" sweep --lab shadows --size 960x540 --frames 5 --out build/tutorial-shadows
-cp build/tutorial-shadows/shadows_*_point_light.svg build/tutorial-shadows/shadows_*_area_light.svg \
-  build/tutorial-shadows/shadows_sweep.csv $f/
+cp build/tutorial-shadows/shadows_visibility_rmse_hard*.svg build/tutorial-shadows/shadows_visibility_rmse_area*.svg \
+  build/tutorial-shadows/shadows_misclassified_pct*.svg build/tutorial-shadows/shadows_sweep.csv $f/
 }
 
 surface_figures() {

@@ -59,6 +59,9 @@ void PassTimer::end() {
 
 const std::vector<PassTiming>& PassTimer::endFrame() {
   last_.clear();
+  // One wait for the whole frame, then every result is there: cheaper than a blocking read per
+  // query, which some drivers serve by sleeping and waking up once per query.
+  if (clock_ == Clock::GpuQuery && !passes_.empty()) glFinish();
   for (size_t i = 0; i < passes_.size(); ++i) {
     if (clock_ == Clock::GpuQuery) {
       GLuint64 ns = 0;

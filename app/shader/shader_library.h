@@ -47,6 +47,9 @@ class Program {
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
   const std::vector<std::filesystem::path>& files() const { return files_; }
 
+  // Whether the program reads the uniform `name` (the compiler drops the ones it does not): a lab
+  // binds textures only for the samplers its current variant really samples.
+  bool uses(const char* name) { return location(name) >= 0; }
   // Uniforms of the bound program; names it does not use are ignored (as GL does for -1).
   void set(const char* name, int v);
   void set(const char* name, float v);

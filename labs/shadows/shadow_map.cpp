@@ -49,21 +49,18 @@ void ShadowMap::ensure(const MapShape& shape) {
   } else {
     allocateArray(texture_.get(), shape.depthFormat, GL_DEPTH_COMPONENT, size, shape.layers, 1);
   }
-  fbo_ = gl::FramebufferName::make();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-  glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // layered: all faces or layers
-  glDrawBuffer(GL_NONE);
-  glReadBuffer(GL_NONE);
-  checkComplete(size);
-
+  if (shape.cube) {  // layered: the geometry shader picks the face (or six passes attach one each)
+    fbo_ = gl::FramebufferName::make();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    checkComplete(size);
+  }
   if (shape.momentFormat && !shape.cube) {
     moments_ = gl::TextureName::make();
     allocateArray(moments_.get(), shape.momentFormat, momentChannels(shape.momentFormat), size, shape.layers,
                   shape.momentMips ? mipLevels(size) : 1);
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, 0);
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, 0);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
-    checkComplete(size);
     blurTemp_ = gl::TextureName::make();
     allocateArray(blurTemp_.get(), shape.momentFormat, momentChannels(shape.momentFormat), size, 1, 1);
     blurFbo_ = gl::FramebufferName::make();
@@ -79,6 +76,16 @@ void ShadowMap::ensure(const MapShape& shape) {
     if (shape.momentMips && gl::maxAnisotropy() > 1.0f)
       glSamplerParameterf(momentSampler_.get(), GL_TEXTURE_MAX_ANISOTROPY, std::min(8.0f, gl::maxAnisotropy()));
   }
+  if (!shape.cube)
+    for (int layer = 0; layer < shape.layers; ++layer) {
+      layerFbos_.push_back(gl::FramebufferName::make());
+      glBindFramebuffer(GL_FRAMEBUFFER, layerFbos_.back().get());
+      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, layer);
+      if (moments_) glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
+      glDrawBuffer(moments_ ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+      glReadBuffer(GL_NONE);
+      checkComplete(size);
+    }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
   raw_ = gl::Sampler::make();
@@ -96,11 +103,7 @@ void ShadowMap::ensure(const MapShape& shape) {
 void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light, int layer,
                        const DepthPassState& state) {
   const int size = shape_.size;
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-  if (!shape_.cube) {
-    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, layer);
-    if (moments_) glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
-  }
+  glBindFramebuffer(GL_FRAMEBUFFER, shape_.cube ? fbo_.get() : layerFbos_[size_t(layer)].get());
   glViewport(0, 0, size, size);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -181,8 +184,7 @@ void ShadowMap::filterMoments(Program& blur, int radius, GLuint emptyVao) {
       blur.set("u_layer", layer);
       blur.set("u_direction", glm::vec2(1.0f, 0.0f));
       glDrawArrays(GL_TRIANGLES, 0, 3);
-      glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
+      glBindFramebuffer(GL_FRAMEBUFFER, layerFbos_[size_t(layer)].get());
       glBindTexture(GL_TEXTURE_2D_ARRAY, blurTemp_.get());
       glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
       glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -200,13 +202,16 @@ void ShadowMap::filterMoments(Program& blur, int radius, GLuint emptyVao) {
   }
 }
 
-void ShadowMap::bind(int rawUnit, int compareUnit, bool border) const {
+void ShadowMap::bind(int rawUnit, int compareUnit, bool border) {
   const GLenum target = shape_.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D_ARRAY;
-  const GLint wrap = border ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
-  for (GLuint s : {raw_.get(), compare_.get()}) {
-    glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
-    glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
-    glSamplerParameteri(s, GL_TEXTURE_WRAP_R, wrap);
+  if (wrapBorder_ != int(border)) {  // sampler state changes make drivers revalidate: only on change
+    const GLint wrap = border ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
+    for (GLuint s : {raw_.get(), compare_.get()}) {
+      glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
+      glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
+      glSamplerParameteri(s, GL_TEXTURE_WRAP_R, wrap);
+    }
+    wrapBorder_ = int(border);
   }
   glActiveTexture(GL_TEXTURE0 + rawUnit);
   glBindTexture(target, texture_.get());
@@ -224,6 +229,8 @@ void ShadowMap::bindMoments(int unit) const {
 
 void ShadowMap::release() {
   fbo_.reset();
+  layerFbos_.clear();
+  wrapBorder_ = -1;
   blurFbo_.reset();
   texture_.reset();
   moments_.reset();

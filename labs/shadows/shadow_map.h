@@ -4,6 +4,8 @@
 // search), one compares in hardware (sampler2DArrayShadow). Filtered maps (VSM, ESM, EVSM) add a
 // float colour array of moments, written by the same pass, blurred and mipmapped.
 #pragma once
+#include <vector>
+
 #include "gl/texture.h"
 #include "labs/shadows/light_rig.h"
 #include "scene/gpu_scene.h"
@@ -44,7 +46,7 @@ class ShadowMap {
   void filterMoments(Program& blur, int radius, GLuint emptyVao);
   // Binds the raw sampler to `rawUnit` and the comparing one to `compareUnit`; `border` picks
   // CLAMP_TO_BORDER (depth 1: outside the map is lit) over CLAMP_TO_EDGE (edge texels repeat).
-  void bind(int rawUnit, int compareUnit, bool border) const;
+  void bind(int rawUnit, int compareUnit, bool border);
   void bindMoments(int unit) const;  // trilinear (and anisotropic where the driver has it)
   void release();
 
@@ -58,8 +60,11 @@ class ShadowMap {
  private:
   gl::TextureName texture_, moments_, blurTemp_;
   gl::FramebufferName fbo_, blurFbo_;
+  std::vector<gl::FramebufferName> layerFbos_;  // 2D arrays: one per layer, attached once (re-attaching
+                                                // every frame makes drivers revalidate the framebuffer)
   gl::Sampler raw_, compare_, momentSampler_;
   MapShape shape_;
+  int wrapBorder_ = -1;  // the samplers' wrap mode as last set: 1 border, 0 edge
 };
 
 // 1x1 depth textures, 2D array and cube, and a 1x1 float array, bound to sampler units a

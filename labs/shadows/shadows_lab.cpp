@@ -515,23 +515,40 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
       {"u_keyCmpCube", kKeyCmpCube}, {"u_fillMap", kFillMap}, {"u_fillCmp", kFillCmp}, {"u_noCube", kNoCube},
       {"u_noCmpCube", kNoCmpCube}, {"u_keyMoments", kKeyMoments}, {"u_fillMoments", kFillMoments}};
   for (auto& u : units) prog.set(u.name, u.unit);
-  // Every unit gets a texture of its sampler's type; the real maps replace the dummies.
-  for (int unit : {kKeyMap, kKeyCmp, kFillMap, kFillCmp}) dummies_.bindArray(unit);
-  for (int unit : {kKeyCube, kKeyCmpCube, kNoCube, kNoCmpCube}) dummies_.bindCube(unit);
-  for (int unit : {kKeyMoments, kFillMoments}) dummies_.bindMoments(unit);
-  if (keyMap_ && params.keyCasts) {
-    if (keyMap_.cube()) keyMap_.bind(kKeyCube, kKeyCmpCube, params.borderClamp);
-    else keyMap_.bind(kKeyMap, kKeyCmp, params.borderClamp);
-    if (keyMap_.hasMoments()) keyMap_.bindMoments(kKeyMoments);
-  }
+  // Each sampler the variant really samples gets a texture of its type on its own unit: the real
+  // map, or a 1x1 dummy. Units the variant does not read are left alone (every binding is state
+  // the driver checks at the next draw).
+  const bool keyReal = keyMap_ && params.keyCasts, fillReal = fill && fillMap_ && params.fillCasts;
+  boundSamplers_.clear();
+  auto bindMap = [&](ShadowMap& map, bool real, bool cube, const char* raw, const char* cmp, int rawUnit, int cmpUnit) {
+    if (!prog.uses(raw) && !prog.uses(cmp)) return;
+    if (real && map.cube() == cube) {
+      map.bind(rawUnit, cmpUnit, params.borderClamp);
+      boundSamplers_.insert(boundSamplers_.end(), {rawUnit, cmpUnit});
+    } else {
+      for (int unit : {rawUnit, cmpUnit}) cube ? dummies_.bindCube(unit) : dummies_.bindArray(unit);
+    }
+  };
+  auto bindMoments = [&](ShadowMap& map, bool real, const char* name, int unit) {
+    if (!prog.uses(name)) return;
+    if (real && map.hasMoments()) {
+      map.bindMoments(unit);
+      boundSamplers_.push_back(unit);
+    } else {
+      dummies_.bindMoments(unit);
+    }
+  };
+  bindMap(keyMap_, keyReal, false, "u_keyMap", "u_keyCmp", kKeyMap, kKeyCmp);
+  bindMap(keyMap_, keyReal, true, "u_keyCube", "u_keyCmpCube", kKeyCube, kKeyCmpCube);
+  bindMoments(keyMap_, keyReal, "u_keyMoments", kKeyMoments);
+  bindMap(fillMap_, fillReal, false, "u_fillMap", "u_fillCmp", kFillMap, kFillCmp);
+  bindMoments(fillMap_, fillReal, "u_fillMoments", kFillMoments);
+  if (prog.uses("u_noCube") || prog.uses("u_noCmpCube"))
+    for (int unit : {kNoCube, kNoCmpCube}) dummies_.bindCube(unit);
   if (fill) {
     setLight(prog, "u_fill", *fill, params.mapSize());
     const float r2 = glm::dot(fill->position - b.center(), fill->position - b.center());
     prog.set("u_fillPower", glm::vec3(0.35f, 0.45f, 0.6f) * r2);
-    if (fillMap_ && params.fillCasts) {
-      fillMap_.bind(kFillMap, kFillCmp, params.borderClamp);
-      if (fillMap_.hasMoments()) fillMap_.bindMoments(kFillMoments);
-    }
   }
   for (const Instance& inst : frame.scene.instances) {
     const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
@@ -540,7 +557,8 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
     prog.set("u_baseColor", mat.baseColor);
     frame.gpu.draw(inst);
   }
-  for (int unit = 0; unit <= kFillMoments; ++unit) glBindSampler(unit, 0);
+  // Sampler objects override texture state: leave none bound for whoever draws next.
+  for (int unit : boundSamplers_) glBindSampler(GLuint(unit), 0);
 }
 
 void ShadowsLab::drawFrustum(Frame& frame, const LightFrame& key) {
@@ -661,7 +679,7 @@ void ShadowsLab::render(Frame& frame) {
 void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& fill) {
   auto pass = frame.pass("depth map view");
   const bool showFill = params.depthLight == 1;
-  const ShadowMap& map = showFill ? fillMap_ : keyMap_;
+  ShadowMap& map = showFill ? fillMap_ : keyMap_;
   if (!map) return;  // that light casts no shadow: there is no map to show (warnings() says so)
   const int layer = showFill ? 0 : std::min(params.depthCascade, map.layers() - 1);
   std::vector<std::string> ignored;

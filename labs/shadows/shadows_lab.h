@@ -153,6 +153,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   gl::VertexArray emptyVao_, frustumVao_;
   gl::Buffer frustumVbo_;
   std::vector<Cascade> cascades_;  // the key light's maps, as last rendered
+  std::vector<int> boundSamplers_;  // units drawLit bound sampler objects to
   glm::vec3 sceneLight_{0.0f};     // the current scene's own light, if it has one
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
