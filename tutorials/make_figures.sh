@@ -114,8 +114,8 @@ cp build/tutorial-shadows-filtered/shadows_sweep.csv $f/shadows_filtered.csv
 
 # shadows.md: the standard sweep (filter x map size x bias), one front per truth
 "$sl" sweep --lab shadows --size 960x540 --frames 5 --out build/tutorial-shadows
-cp build/tutorial-shadows/shadows_visibility_rmse_hard*.svg build/tutorial-shadows/shadows_visibility_rmse_area*.svg \
-  build/tutorial-shadows/shadows_misclassified_pct*.svg build/tutorial-shadows/shadows_sweep.csv $f/
+cp build/tutorial-shadows/shadows_visibility_rmse_hard.svg build/tutorial-shadows/shadows_visibility_rmse_area.svg \
+  build/tutorial-shadows/shadows_misclassified_pct.svg build/tutorial-shadows/shadows_sweep.csv $f/
 }
 
 surface_figures() {

@@ -123,11 +123,11 @@ std::vector<glm::vec3> clipToBounds(const std::vector<glm::vec3>& slice, const B
   if (slice.size() != 8 || bounds.min.x > bounds.max.x) return out;
   // Both are hexahedra with corners indexed by bits (x, y, near/far): the same 12 edges.
   std::vector<Plane> box;
-  for (int a = 0; a < 3; ++a) {
+  for (int a = 0; a < 3; ++a) {  // a little slack: a floor's box is flat, and must still clip to itself
     glm::vec3 n(0.0f);
     n[a] = 1.0f;
-    box.push_back({n, -bounds.min[a]});
-    box.push_back({-n, bounds.max[a]});
+    box.push_back({n, -bounds.min[a] + 1e-5f * (std::abs(bounds.min[a]) + 1.0f)});
+    box.push_back({-n, bounds.max[a] + 1e-5f * (std::abs(bounds.max[a]) + 1.0f)});
   }
   const glm::vec3 centre = [&] {
     glm::vec3 c(0.0f);
@@ -156,8 +156,17 @@ std::vector<glm::vec3> clipToBounds(const std::vector<glm::vec3>& slice, const B
   return out;
 }
 
-glm::vec2 visibleDepthRange(const ViewVolume& view, const Bounds& bounds) {
-  const auto pts = clipToBounds(frustumSlice(view, view.nearPlane, view.farPlane), bounds);
+std::vector<glm::vec3> clipToParts(const std::vector<glm::vec3>& slice, const std::vector<Bounds>& parts) {
+  std::vector<glm::vec3> out;
+  for (const Bounds& part : parts) {
+    const auto piece = clipToBounds(slice, part);
+    out.insert(out.end(), piece.begin(), piece.end());
+  }
+  return out;
+}
+
+glm::vec2 visibleDepthRange(const ViewVolume& view, const std::vector<Bounds>& parts) {
+  const auto pts = clipToParts(frustumSlice(view, view.nearPlane, view.farPlane), parts);
   if (pts.empty()) return glm::vec2(0.0f);
   glm::vec2 range(view.farPlane, view.nearPlane);
   for (auto& p : pts) {
@@ -219,9 +228,25 @@ LightFrame fitDirectional(const LightFrame& sceneFit, const std::vector<glm::vec
 }
 
 std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
-                                   const Bounds& bounds) {
-  const glm::vec2 range = visibleDepthRange(view, bounds);
-  if (range.y <= range.x) return {{sceneFit, view.farPlane, view.farPlane}};
+                                   const Bounds& bounds, const std::vector<Bounds>& someParts) {
+  const std::vector<Bounds> parts = someParts.empty() ? std::vector<Bounds>{bounds} : someParts;
+  const glm::vec2 range = visibleDepthRange(view, parts);
+  // What a map holds, in light depth: for the depth view, which stretches it over black..white.
+  auto contentDepth = [&](const LightFrame& L, const std::vector<glm::vec3>& pts) {
+    glm::vec2 r(INFINITY, -INFINITY);
+    for (auto& p : pts) {
+      const float d = glm::dot(p - L.position, L.direction);
+      r = {std::min(r.x, d), std::max(r.y, d)};
+    }
+    return pts.empty() ? glm::vec2(L.nearPlane, L.farPlane) : r;
+  };
+  if (range.y <= range.x) {
+    std::vector<glm::vec3> corners;
+    for (int c = 0; c < 8; ++c)
+      corners.push_back({(c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
+                         (c & 4) ? bounds.max.z : bounds.min.z});
+    return {{sceneFit, view.farPlane, view.farPlane, contentDepth(sceneFit, corners)}};
+  }
   const int count = std::clamp(setup.count, 1, 4);
   const std::vector<float> splits = practicalSplits(count, range.x, range.y, setup.lambda);
   std::vector<Cascade> cascades;
@@ -229,8 +254,9 @@ std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetu
   for (int i = 0; i < count; ++i) {
     const float to = splits[size_t(i) + 1];
     const float band = i + 1 < count ? setup.blend * (to - splits[size_t(i)]) : 0.0f;
-    const auto pts = clipToBounds(frustumSlice(view, from, to), bounds);
-    cascades.push_back({fitDirectional(sceneFit, pts, bounds, setup.mapSize, setup.snap), to, to - band});
+    const auto pts = clipToParts(frustumSlice(view, from, to), parts);
+    const LightFrame fitted = fitDirectional(sceneFit, pts, bounds, setup.mapSize, setup.snap);
+    cascades.push_back({fitted, to, to - band, contentDepth(fitted, pts)});
     from = to - band;
   }
   cascades.back().splitFar = cascades.back().blendFrom = view.farPlane;  // the last one takes the rest

@@ -63,8 +63,11 @@ std::vector<glm::vec3> frustumSlice(const ViewVolume& view, float nearDepth, flo
 // other, and where edges of one cross faces of the other. Empty when they do not meet.
 std::vector<glm::vec3> clipToBounds(const std::vector<glm::vec3>& slice, const Bounds& bounds);
 // The view-depth range of the part of the scene the camera can see: (nearest, farthest), or
-// (0, 0) when the frustum misses the scene.
-glm::vec2 visibleDepthRange(const ViewVolume& view, const Bounds& bounds);
+// (0, 0) when the frustum misses every box of `parts` (the instances' world boxes: tighter than
+// the scene's one box, which includes the empty air above a floor).
+glm::vec2 visibleDepthRange(const ViewVolume& view, const std::vector<Bounds>& parts);
+// The slice's intersection with each part, every vertex of every piece.
+std::vector<glm::vec3> clipToParts(const std::vector<glm::vec3>& slice, const std::vector<Bounds>& parts);
 // Cascade boundaries by the practical split scheme (Zhang et al., "Parallel-split shadow maps",
 // 2006): C_i = lambda n (f/n)^(i/N) + (1 - lambda) (n + (f - n) i/N), i = 0..N.
 std::vector<float> practicalSplits(int count, float nearDepth, float farDepth, float lambda);
@@ -88,12 +91,14 @@ struct Cascade {
   LightFrame light;
   float splitFar = 0.0f;   // view depth where this cascade hands over to the next
   float blendFrom = 0.0f;  // view depth where blending into the next begins (= splitFar: none)
+  glm::vec2 contentDepth{0.0f};  // light depth of what the cascade covers: (nearest, farthest)
 };
 
-// Directional cascades for what the camera sees; falls back to `sceneFit` (one cascade) when
-// the camera sees none of the scene.
+// Directional cascades for what the camera sees of `parts` (each instance's world box; empty:
+// the scene's box); depth always spans `bounds`, so every caster is drawn. Falls back to
+// `sceneFit` (one cascade) when the camera sees none of the scene.
 std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
-                                   const Bounds& bounds);
+                                   const Bounds& bounds, const std::vector<Bounds>& parts = {});
 
 // Deterministic Poisson-disk samples in the unit disk, made for exactly `count` points (never a
 // prefix of a larger set, whose first points are badly spread): dart throwing from a large

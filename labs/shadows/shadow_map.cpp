@@ -73,8 +73,6 @@ void ShadowMap::ensure(const MapShape& shape) {
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (shape.momentMips && gl::maxAnisotropy() > 1.0f)
-      glSamplerParameterf(momentSampler_.get(), GL_TEXTURE_MAX_ANISOTROPY, std::min(8.0f, gl::maxAnisotropy()));
   }
   if (!shape.cube)
     for (int layer = 0; layer < shape.layers; ++layer) {

@@ -47,7 +47,7 @@ class ShadowMap {
   // Binds the raw sampler to `rawUnit` and the comparing one to `compareUnit`; `border` picks
   // CLAMP_TO_BORDER (depth 1: outside the map is lit) over CLAMP_TO_EDGE (edge texels repeat).
   void bind(int rawUnit, int compareUnit, bool border);
-  void bindMoments(int unit) const;  // trilinear (and anisotropic where the driver has it)
+  void bindMoments(int unit) const;  // trilinear (the shader picks the level per pixel)
   void release();
 
   bool cube() const { return shape_.cube; }

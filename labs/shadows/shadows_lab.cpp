@@ -165,7 +165,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
               "(sigma = radius / 2); 0 runs no blur pass."}, p.blurRadius, 0, 16);
   if (momentReason) v.unavailable(momentReason);
   v.boolParam({"moment_mips", "Mipmapped moments", "", "Build the moment map's mip chain and sample it trilinearly "
-               "(anisotropically where the driver can): distant receivers average many texels, not alias."},
+               "(the level chosen per pixel): distant receivers average many texels, not alias."},
               p.momentMips);
   if (momentReason || p.filter == ShadowFilter::Esm) v.unavailable(momentReason ? momentReason : "only for vsm and evsm");
   v.floatParam({"min_variance", "Minimum variance", "", "Floor on the variance (normalised depth squared): too small, "
@@ -628,9 +628,23 @@ void ShadowsLab::render(Frame& frame) {
 
   // The key light's maps: the scene-fitted one, or fitted to the view, or one per cascade.
   cascades_.clear();
-  if (const int count = cascadeCountOf(params); count > 0)
+  if (const int count = cascadeCountOf(params); count > 0) {
+    if (partsRevision_ != frame.scene.revision) {  // each instance's world box, once per scene build
+      parts_.clear();
+      for (const Instance& inst : frame.scene.instances) {
+        const Bounds local = frame.scene.meshes[size_t(inst.mesh)].bounds();
+        Bounds world;
+        for (int c = 0; c < 8; ++c)
+          world.extend(glm::vec3(inst.model * glm::vec4((c & 1) ? local.max.x : local.min.x,
+                                                        (c & 2) ? local.max.y : local.min.y,
+                                                        (c & 4) ? local.max.z : local.min.z, 1.0f)));
+        if (local.min.x <= local.max.x) parts_.push_back(world);
+      }
+      partsRevision_ = frame.scene.revision;
+    }
     cascades_ = buildCascades(key, {count, params.splitLambda, params.cascadeBlend, params.snapTexels, params.mapSize()},
-                              viewVolume(frame), bounds);
+                              viewVolume(frame), bounds, parts_);
+  }
 
   // 1. Depth passes, only for lights that cast and only when the view reads their maps.
   if (params.keyCasts && !gbuffer) {
@@ -695,11 +709,14 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& fill) {
   dummies_.bindCube(kKeyCube);
   if (map.cube()) map.bind(kKeyCube, kKeyCmpCube, true);
   else map.bind(kKeyMap, kKeyCmp, true);
-  // The distances the scene occupies from this light: what the linear view stretches to white.
+  // The distances the map's content occupies from this light: what the linear view stretches to
+  // white (a cascade holds a thin slice of the scene; the whole scene's range would show it grey).
   const Bounds& b = frame.scene.bounds;
   const float centre = shown.type == LightType::Point ? glm::length(b.center() - shown.position)
                                                       : glm::dot(b.center() - shown.position, shown.direction);
-  prog.set("u_range", glm::vec2(std::max(centre - b.radius(), shown.nearPlane), centre + b.radius()));
+  glm::vec2 range(std::max(centre - b.radius(), shown.nearPlane), centre + b.radius());
+  if (!showFill && !cascades_.empty()) range = cascades_[size_t(layer)].contentDepth;
+  prog.set("u_range", range);
   const float aspect = frame.aspect(), cells = map.cube() ? 4.0f / 3.0f : 1.0f;
   prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
   prog.set("u_zoom", params.depthZoom);

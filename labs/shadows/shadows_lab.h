@@ -154,6 +154,8 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   gl::Buffer frustumVbo_;
   std::vector<Cascade> cascades_;  // the key light's maps, as last rendered
   std::vector<int> boundSamplers_;  // units drawLit bound sampler objects to
+  std::vector<Bounds> parts_;       // each instance's world box: what view fitting clips against
+  int partsRevision_ = -1;
   glm::vec3 sceneLight_{0.0f};     // the current scene's own light, if it has one
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running

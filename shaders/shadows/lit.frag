@@ -107,12 +107,18 @@ void main() {
   for (int i = 0; i < CASCADE_COUNT - 1; ++i)
     if (viewDepth > u_cascadeFar[i]) cascade = i + 1;
   keyVis = keyShadow(u_cascade[cascade], surface, dbg);
-  if (cascade < CASCADE_COUNT - 1 && viewDepth > u_blendFrom[cascade]) {
-    // The last stretch of a cascade fades into the next, which covers it too: no visible seam.
+  if (cascade < CASCADE_COUNT - 1 && viewDepth > u_blendFrom[cascade])
     blend = clamp((viewDepth - u_blendFrom[cascade]) / max(u_cascadeFar[cascade] - u_blendFrom[cascade], 1e-30), 0.0, 1.0);
-    ShadowDebug next;
-    keyVis = mix(keyVis, keyShadow(u_cascade[cascade + 1], surface, next), blend);
-  }
+  // The last stretch of a cascade fades into the next, which covers it too: no visible seam.
+  ShadowDebug next;
+#ifdef FILTER_MOMENTS
+  // One lookup of a mipmapped map, made by every pixel: inside a branch that only some pixels of
+  // a 2x2 quad take, llvmpipe (Mesa 22.3) reads the wrong level and draws a dark line along the
+  // start of each blend band.
+  keyVis = mix(keyVis, keyShadow(u_cascade[min(cascade + 1, CASCADE_COUNT - 1)], surface, next), blend);
+#else
+  if (blend > 0.0) keyVis = mix(keyVis, keyShadow(u_cascade[cascade + 1], surface, next), blend);
+#endif
 #else
   keyVis = keyShadow(u_key, surface, dbg);
 #endif

@@ -238,12 +238,15 @@ float momentVisibility(int type, ShadowLight L, sampler2DArray moments, ShadowSu
 #ifdef FAR_FIX
   if (q.beyondFar) return 1.0;
 #endif
-  // Texture-space derivatives from the surface's own, through the light's projection: the
-  // branch this runs in may differ between neighbouring pixels.
+  // The mip level from the surface's own screen derivatives, through the light's projection, one
+  // per pixel: neighbouring pixels may read different cascades' maps (or take a branch others do
+  // not), where a level chosen per 2x2 quad (textureGrad on llvmpipe) reads the wrong one.
   vec4 cx = L.viewProj * vec4(s.P + s.dPdx, 1.0), cy = L.viewProj * vec4(s.P + s.dPdy, 1.0);
-  vec2 uvx = cx.xy / max(abs(cx.w), 1e-30) * 0.5 + 0.5 - q.base.xy;
-  vec2 uvy = cy.xy / max(abs(cy.w), 1e-30) * 0.5 + 0.5 - q.base.xy;
-  vec4 m = textureGrad(moments, q.base, uvx, uvy);
+  vec2 size = vec2(textureSize(moments, 0).xy);
+  vec2 uvx = (cx.xy / max(abs(cx.w), 1e-30) * 0.5 + 0.5 - q.base.xy) * size;
+  vec2 uvy = (cy.xy / max(abs(cy.w), 1e-30) * 0.5 + 0.5 - q.base.xy) * size;
+  float lod = 0.5 * log2(max(max(dot(uvx, uvx), dot(uvy, uvy)), 1e-30));
+  vec4 m = textureLod(moments, q.base, max(lod, 0.0));
   float t = momentDepth(L, q.depth - q.bias);
 #if defined(FILTER_ESM)
   // exp(-c t) E[exp(c d)], in logs so neither factor overflows on its own.
