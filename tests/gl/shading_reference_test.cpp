@@ -1,6 +1,8 @@
 // The shading lab measured against its reference (per-fragment Phong on the finest mesh).
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "gl_test.h"
 
 using namespace shadelab;
@@ -46,4 +48,68 @@ TEST(ShadingReference, AffineUvsAreWrongOnlyUnderPerspective) {
   host.set("shading.uv_interpolation=affine");
   host.renderFrame({192, 108});
   EXPECT_LT(compareImages(host.readImage(), top).badPixelPct, 0.5);
+}
+
+namespace {
+
+// A 2 x 2 quad at height 0 split into two triangles, the second wound the other way (as files
+// stitched from several sources often are); every vertex normal points up. `scale` shrinks it.
+std::string mixedWindingQuad(const std::string& name, float scale) {
+  const std::string path = test::testOutput(name).string();
+  std::ofstream f(path);
+  for (auto [x, z] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}})
+    f << "v " << x * scale << " 0 " << z * scale << "\n";
+  f << "vn 0 1 0\n";
+  f << "f 1//1 4//1 3//1\n";  // counter-clockwise seen from above
+  f << "f 1//1 2//1 3//1\n";  // clockwise seen from above
+  return path;
+}
+
+// The mean green of the image's left and right halves' centres (one triangle each, seen from above).
+std::pair<double, double> halves(const ImageF& img) {
+  double sum[2] = {0, 0};
+  int n[2] = {0, 0};
+  for (int y = img.size.y / 4; y < img.size.y * 3 / 4; ++y)
+    for (int x = img.size.x / 8; x < img.size.x * 7 / 8; ++x) {
+      const bool right = x > img.size.x / 2;
+      if (std::abs(x - img.size.x / 2) < img.size.x / 16) continue;  // keep off the diagonal
+      sum[right] += img.at(x, y)[1];
+      ++n[right];
+    }
+  return {sum[0] / std::max(n[0], 1), sum[1] / std::max(n[1], 1)};
+}
+
+ImageF shadedFromAbove(LabHost& host) {
+  host.renderFrame({64, 64});  // builds the scene and frames the camera
+  EXPECT_EQ(host.camera().parse("yaw=0,pitch=89,fov=30"), "");
+  host.camera().distance = 2.8f * host.scene().bounds.radius();  // the quad fills the middle, at any scale
+  host.camera().target = host.scene().bounds.center();
+  host.camera().fitDepthRange(host.scene().bounds.center(), host.scene().bounds.radius());
+  const gl::RenderTarget target = gl::RenderTarget::create({128, 128});
+  host.drawInto(target, host.camera(), 0.0f);
+  return ImageF{{128, 128}, target.readRgba()};
+}
+
+}  // namespace
+
+// Flat shading takes the face normal from the winding; a triangle wound the other way must still
+// face the way its vertex normals say, and every mode lights the side the eye sees.
+TEST(Shading, MixedWindingShadesAlikeInEveryMode) {
+  const std::string path = mixedWindingQuad("mixed_winding.obj", 1.0f);
+  for (const char* mode : {"flat", "gouraud", "phong"}) {
+    auto host = test::labHost("shading", path.c_str(), {std::string("shading.mode=") + mode, "shading.ks=0"});
+    const auto [left, right] = halves(shadedFromAbove(*host));
+    EXPECT_GT(left, 0.1) << mode;
+    EXPECT_NEAR(right / left, 1.0, 0.15) << mode << ": one triangle of the quad shades differently";
+  }
+}
+
+// The inverse-square falloff's floor on r^2 scales with the scene: a scene a thousandth the size
+// (lights a thousandth as far) is lit exactly as brightly.
+TEST(Shading, TinyScenesAreLitLikeLargeOnes) {
+  auto big = test::labHost("shading", mixedWindingQuad("quad_1.obj", 1.0f).c_str(), {"shading.mode=phong"});
+  auto tiny = test::labHost("shading", mixedWindingQuad("quad_1e-3.obj", 1e-3f).c_str(), {"shading.mode=phong"});
+  const double a = halves(shadedFromAbove(*big)).first, b = halves(shadedFromAbove(*tiny)).first;
+  EXPECT_GT(a, 0.1);
+  EXPECT_NEAR(b / a, 1.0, 0.05);
 }
