@@ -97,7 +97,7 @@ BENCHMARK(BM_Frame)->DenseRange(0, 2)->UseManualTime()->Unit(benchmark::kMillise
 // 1280x720, per light type and filter, on the default shadow scene.
 void BM_ShadowFilter(benchmark::State& state) {
   static const char* lights[] = {"directional", "spot", "point"};
-  static const char* filters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss"};
+  static const char* filters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss", "vsm", "esm", "evsm"};
   LabHost host(ShaderSearchPath({builtinShaderDir()}));
   host.selectLab("shadows");
   host.set(std::string("shadows.light_type=") + lights[state.range(0)]);
@@ -111,6 +111,7 @@ void BM_ShadowFilter(benchmark::State& state) {
 BENCHMARK(BM_ShadowFilter)
     ->ArgsProduct({{0, 2}, {0, 1, 3, 4}, {3}})
     ->ArgsProduct({{0, 2}, {2}, {3, 5, 9, 15}})
+    ->ArgsProduct({{0}, {5, 6, 7}, {3}})  // filtered maps: depth + moments, blur, mips, lighting
     ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
 
 // BM_SurfaceTechnique/<i>: GPU ms of a 1280x720 frame of the surface lab's brick wall, per technique

@@ -100,14 +100,10 @@ cp build/tutorial-shadows-fit/shadows_sweep.csv $f/shadows_fit.csv
 
 # shadows.md: filtered maps (moments of depth, blurred and mipmapped) beside PCF and PCSS
 $r --set shadows.filter=vsm --set shadows.light_radius=0.12 --out $f/shadows_12_vsm.png
-$r --set shadows.filter=vsm --set shadows.light_radius=0.12 --set shadows.bleed_reduction=0 \
-  --camera "yaw=-60,pitch=30,distance=4,target=0.3;0.4;0.6" --out $f/shadows_12_vsm_bleeding.png
-$r --set shadows.filter=vsm --set shadows.light_radius=0.12 \
-  --camera "yaw=-60,pitch=30,distance=4,target=0.3;0.4;0.6" --out $f/shadows_12_vsm_reduced.png
 $r --set shadows.filter=esm --set shadows.light_radius=0.12 --out $f/shadows_12_esm.png
 $r --set shadows.filter=evsm --set shadows.light_radius=0.12 --out $f/shadows_12_evsm.png
-$r --set shadows.filter=evsm --set shadows.light_radius=0.12 \
-  --camera "yaw=-60,pitch=30,distance=4,target=0.3;0.4;0.6" --out $f/shadows_12_evsm_close.png
+$l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.filter=evsm \
+  --camera "yaw=-30,pitch=35,distance=4,target=1.5;0;1,fov=45,near=0.1,far=100" --out $f/shadows_12_evsm_cascades.png
 "$sl" sweep --lab shadows --size 960x540 --frames 7 --set shadows.light_radius=0.12 --out build/tutorial-shadows-filtered \
   --vary filter=hard,pcf:pcf_size=5,pcss,vsm,vsm:bleed_reduction=0,vsm:blur_radius=6,esm,esm:esm_exponent=20,evsm,evsm:moment_mips=off
 cp build/tutorial-shadows-filtered/shadows_sweep.csv $f/shadows_filtered.csv
