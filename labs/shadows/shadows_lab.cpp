@@ -65,8 +65,9 @@ ShadowsLab::~ShadowsLab() = default;
 std::string_view ShadowsLab::summary() const {
   return "A shadow map stores, per texel, the depth of the nearest surface seen from the light; a pixel is in "
          "shadow when it lies farther than that. Walk the path: set bias to 0 (acne), raise it (peter-panning), "
-         "turn off border clamp and the far fix (the artifacts they remove), then PCF, Poisson and PCSS. "
-         "Every step is measured against ray-traced visibility.";
+         "turn off border clamp and the far fix (the artifacts they remove), then PCF, Poisson and PCSS, and the "
+         "filtered maps (VSM, ESM, EVSM). On the learnopengl scene, fit the map to the view or split it into "
+         "cascades. Every step is measured against ray-traced visibility of a point and of an area light.";
 }
 
 void ShadowsLab::visitParams(ParamVisitor& v) {
