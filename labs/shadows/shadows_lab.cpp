@@ -2,29 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <set>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include "labs/variants.h"
-
 #include "labs/shadows/ray_visibility.h"
+#include "labs/shadows/shadow_options.h"
 
 namespace shadelab {
 namespace {
-
-constexpr std::string_view kLightTypes[] = {"directional", "spot", "point"};
-constexpr std::string_view kFilters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss", "vsm", "esm", "evsm"};
-constexpr std::string_view kViews[] = {"shaded", "visibility", "bias-heat", "texel-density", "pcss-blocker",
-                                       "pcss-penumbra", "cascades", "depth-raw", "depth-linear"};
-constexpr std::string_view kFits[] = {"scene", "view", "cascades"};
-constexpr std::string_view kCascadeIndices[] = {"1", "2", "3", "4"};
-constexpr std::string_view kFormats[] = {"16", "24", "32f"};
-constexpr std::string_view kMapSizes[] = {"256", "512", "1024", "2048", "4096", "8192"};
-constexpr std::string_view kSampleCounts[] = {"8", "16", "32", "64"};
-constexpr std::string_view kDepthLights[] = {"key", "fill"};
-const GLenum kFormatEnums[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
 
 // Texture units of lit.frag's samplers, fixed so no two sampler types ever share a unit.
 enum Unit { kKeyMap = 0, kKeyCube, kKeyCmp, kKeyCmpCube, kFillMap, kFillCmp, kNoCube, kNoCmpCube, kKeyMoments, kFillMoments };
@@ -39,20 +24,6 @@ glm::vec4 farMoments(const ShadowsParams& p, ShadowFilter f) {
     return {pos, pos * pos, neg, neg * neg};
   }
   return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
-}
-
-GLenum momentFormat(ShadowFilter f) {
-  return f == ShadowFilter::Esm ? GL_R32F : f == ShadowFilter::Vsm ? GL_RG32F : f == ShadowFilter::Evsm ? GL_RGBA32F : 0;
-}
-
-ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
-  return isMomentFilter(p.filter) && p.keyType == LightType::Point ? ShadowFilter::Pcf : p.filter;
-}
-
-// The directional key light is split (or fitted to the view) only when auto-fit is on.
-int cascadeCountOf(const ShadowsParams& p) {
-  if (p.keyType != LightType::Directional || !p.autoFit) return 0;  // 0: the scene-fitted map
-  return p.fit == MapFit::Cascades ? std::clamp(p.cascadeCount, 2, 4) : p.fit == MapFit::View ? 1 : 0;
 }
 
 bool viewIsDepthMap(ShadowView v) { return v == ShadowView::DepthRaw || v == ShadowView::DepthLinear; }
@@ -236,180 +207,6 @@ LightSetup ShadowsLab::fillSetup() const {
   s.distance = 3.0f;
   s.spotAngleDeg = 60.0f;
   return s;
-}
-
-ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) const {
-  ProgramSpec spec;
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/lit.vert"}, {GL_FRAGMENT_SHADER, "shadows/lit.frag"}};
-  spec.defines.emplace_back("KEY_TYPE", std::to_string(int(p.keyType)));
-  const bool gbuffer = internal != InternalView::None;
-  if (p.keyCasts && !gbuffer) spec.defines.emplace_back("KEY_CASTS", "1");
-  if (p.fillLight && !gbuffer) {
-    spec.defines.emplace_back("FILL_LIGHT", "1");
-    if (p.fillCasts) spec.defines.emplace_back("FILL_CASTS", "1");
-  }
-  if (p.farFix) spec.defines.emplace_back("FAR_FIX", "1");
-  if (p.receiverPlane) spec.defines.emplace_back("RECEIVER_PLANE", "1");
-  const ShadowFilter filter = effectiveFilterOf(p);
-  static const char* filterDefine[] = {"FILTER_HARD", "FILTER_HW_PCF", "FILTER_PCF", "FILTER_POISSON",
-                                       "FILTER_PCSS", "FILTER_VSM", "FILTER_ESM", "FILTER_EVSM"};
-  spec.defines.emplace_back(filterDefine[int(filter)], "1");
-  if (filter == ShadowFilter::Pcf) spec.defines.emplace_back("PCF_SIZE", std::to_string(p.pcfSize));
-  if (filter == ShadowFilter::Poisson) {
-    spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.poissonIndex));
-    if (p.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
-  }
-  if (const int cascades = cascadeCountOf(p); cascades >= 2 && p.keyCasts && !gbuffer)
-    spec.defines.emplace_back("CASCADE_COUNT", std::to_string(cascades));
-  if (filter == ShadowFilter::Pcss) {
-    spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.blockerIndex));
-    spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.pcssIndex));
-  }
-  static const char* viewDefine[] = {"VIEW_SHADED", "VIEW_VISIBILITY", "VIEW_BIAS_HEAT", "VIEW_TEXEL_DENSITY",
-                                     "VIEW_PCSS_BLOCKER", "VIEW_PCSS_PENUMBRA", "VIEW_CASCADES", "VIEW_SHADED",
-                                     "VIEW_SHADED"};
-  spec.defines.emplace_back(internal == InternalView::Position ? "VIEW_POSITION"
-                            : internal == InternalView::Normal ? "VIEW_NORMAL"
-                                                               : viewDefine[int(p.view)], "1");
-  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.keyType)]) + " " + std::string(kFilters[int(filter)]);
-  return spec;
-}
-
-ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses, ShadowFilter filter) {
-  ProgramSpec spec;
-  const bool oneCubePass = cube && !sixPasses;
-  const bool moments = !cube && isMomentFilter(filter);
-  spec.name = oneCubePass ? "shadows/depth cube" : cube ? "shadows/depth cube face" : "shadows/depth";
-  spec.stages.push_back({GL_VERTEX_SHADER, "shadows/depth.vert"});
-  if (oneCubePass) spec.stages.push_back({GL_GEOMETRY_SHADER, "shadows/depth_cube.geom"});
-  spec.stages.push_back({GL_FRAGMENT_SHADER, moments ? "shadows/moments.frag" : "shadows/depth.frag"});
-  if (cube) spec.defines.emplace_back(oneCubePass ? "CUBE_MAP" : "CUBE_FACE", "1");
-  if (moments) {
-    static const char* filterDefine[] = {"", "", "", "", "", "FILTER_VSM", "FILTER_ESM", "FILTER_EVSM"};
-    spec.defines.emplace_back("MOMENTS", "1");
-    spec.defines.emplace_back(filterDefine[int(filter)], "1");
-    spec.name += " " + std::string(kFilters[int(filter)]) + " moments";
-  }
-  return spec;
-}
-
-ProgramSpec ShadowsLab::blurSpec() {
-  ProgramSpec spec;
-  spec.name = "shadows/moment blur";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/blur.frag"}};
-  return spec;
-}
-
-ProgramSpec ShadowsLab::linesSpec() {
-  ProgramSpec spec;
-  spec.name = "shadows/lines";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/lines.vert"}, {GL_FRAGMENT_SHADER, "shadows/lines.frag"}};
-  return spec;
-}
-
-ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
-  ProgramSpec spec;
-  spec.name = "shadows/depth view";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/depth_view.frag"}};
-  const LightType shown = p.depthLight == 1 ? LightType::Spot : p.keyType;  // the fill light is a spot
-  spec.defines.emplace_back("KEY_TYPE", std::to_string(int(shown)));
-  if (p.view == ShadowView::DepthLinear) spec.defines.emplace_back("LINEAR_DEPTH", "1");
-  return spec;
-}
-
-std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
-  std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard), depthSpec(true, false, ShadowFilter::Hard),
-                                  depthSpec(true, true, ShadowFilter::Hard), linesSpec(), blurSpec()};
-  for (ShadowFilter f : {ShadowFilter::Vsm, ShadowFilter::Esm, ShadowFilter::Evsm}) all.push_back(depthSpec(false, false, f));
-  ShadowsParams p;
-  for (int type = 0; type < 3; ++type) {
-    p.keyType = LightType(type);
-    for (ShadowView view : {ShadowView::DepthRaw, ShadowView::DepthLinear}) {
-      p.view = view;
-      all.push_back(depthViewSpec(p));
-    }
-  }
-  p.depthLight = 1;
-  all.push_back(depthViewSpec(p));
-
-  // The lit program: every value of every parameter that shapes it, and every pair of values of
-  // any two of them (labs/variants.h). A filter and its own settings form one dimension: pcf_size
-  // means nothing to pcss.
-  struct FilterVariant { ShadowFilter filter; int a = 0, b = 0; };
-  std::vector<FilterVariant> filters = {{ShadowFilter::Hard}, {ShadowFilter::HardwarePcf}, {ShadowFilter::Vsm},
-                                        {ShadowFilter::Esm}, {ShadowFilter::Evsm}};
-  for (int n = 1; n <= 15; ++n) filters.push_back({ShadowFilter::Pcf, n});
-  for (int i = 0; i < 4; ++i)
-    for (int rotate = 0; rotate < 2; ++rotate) filters.push_back({ShadowFilter::Poisson, i, rotate});
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) filters.push_back({ShadowFilter::Pcss, i, j});
-  const ShadowView views[] = {ShadowView::Shaded, ShadowView::Visibility, ShadowView::BiasHeat, ShadowView::TexelDensity,
-                              ShadowView::PcssBlocker, ShadowView::PcssPenumbra, ShadowView::Cascades};
-  const int viewCount = int(std::size(views)) + 2;  // + the reference's g-buffer views
-  const int fits = 5;                               // scene, view, cascades x 2, 3, 4
-  for (const auto& row : pairwiseCover({3, int(filters.size()), viewCount, 3, 2, 2, 2, fits})) {
-    ShadowsParams q;
-    q.keyType = LightType(row[0]);
-    const FilterVariant& f = filters[size_t(row[1])];
-    q.filter = f.filter;
-    q.pcfSize = f.filter == ShadowFilter::Pcf ? f.a : q.pcfSize;
-    if (f.filter == ShadowFilter::Poisson) q.poissonIndex = f.a, q.rotateSamples = f.b == 1;
-    if (f.filter == ShadowFilter::Pcss) q.blockerIndex = f.a, q.pcssIndex = f.b;
-    InternalView internal = InternalView::None;
-    if (row[2] < int(std::size(views))) q.view = views[row[2]];
-    else internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;
-    q.fillLight = row[3] > 0;
-    q.fillCasts = row[3] == 2;
-    q.keyCasts = row[4] == 1;
-    q.farFix = row[5] == 1;
-    q.receiverPlane = row[6] == 1;
-    q.fit = row[7] == 0 ? MapFit::Scene : row[7] == 1 ? MapFit::View : MapFit::Cascades;
-    q.cascadeCount = std::max(row[7], 2);
-    all.push_back(litSpec(q, internal));
-  }
-
-  // ... and the defaults with any one selectable parameter changed, found from the parameter
-  // list itself, so a parameter added later is covered without being named here.
-  struct Knobs final : ParamVisitor {
-    std::vector<std::function<void(int)>> set;  // set(value) for each value 0..count-1
-    std::vector<int> counts;
-    void floatParam(const ParamInfo&, float&, float, float, bool) override {}
-    void intParam(const ParamInfo&, int& v, int lo, int hi) override {
-      if (hi - lo > 16) return;  // a count, not a switch (tessellation): no define depends on it
-      set.push_back([&v, lo](int k) { v = lo + k; });
-      counts.push_back(hi - lo + 1);
-    }
-    void boolParam(const ParamInfo&, bool& v) override {
-      set.push_back([&v](int k) { v = k != 0; });
-      counts.push_back(2);
-    }
-    void choiceParam(const ParamInfo&, int& v, std::span<const std::string_view> names) override {
-      set.push_back([&v](int k) { v = k; });
-      counts.push_back(int(names.size()));
-    }
-  };
-  ShadowsLab probe;
-  Knobs knobs;
-  probe.visitParams(knobs);
-  for (size_t k = 0; k < knobs.set.size(); ++k)
-    for (int value = 0; value < knobs.counts[k]; ++value) {
-      probe.resetParams();
-      knobs.set[k](value);
-      for (auto& spec : probe.currentPrograms()) all.push_back(std::move(spec));
-    }
-  // One of each: the library compiles a key once, but a shorter list is a faster check.
-  std::set<std::string> seen;
-  std::erase_if(all, [&](const ProgramSpec& spec) { return !seen.insert(spec.key()).second; });
-  return all;
-}
-
-std::vector<ProgramSpec> ShadowsLab::currentPrograms() const {
-  const ShadowFilter filter = effectiveFilterOf(params);
-  std::vector<ProgramSpec> out = {litSpec(params, InternalView::None), litSpec(params, InternalView::Position),
-                                  depthSpec(params.keyType == LightType::Point, params.sixCubePasses, filter),
-                                  depthSpec(false, false, filter), depthViewSpec(params)};
-  if (isMomentFilter(filter)) out.push_back(blurSpec());
-  return out;
 }
 
 std::string ShadowsLab::setup(LabContext& ctx) {
