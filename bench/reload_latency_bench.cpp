@@ -75,6 +75,22 @@ void timeFrames(benchmark::State& state, LabHost& host, glm::ivec2 size) {
   }
 }
 
+// One configuration of `lab` (its `key=value` settings, with `extra` first) timed as above, and
+// labelled with the settings.
+void timeConfiguration(benchmark::State& state, const char* lab, const std::vector<std::string>& config,
+                       const std::vector<std::string>& extra = {}) {
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
+  host.selectLab(lab);
+  std::string label;
+  for (const std::string& kv : extra) host.set(std::string(lab) + "." + kv);
+  for (const std::string& kv : config) {
+    host.set(std::string(lab) + "." + kv);
+    label += (label.empty() ? "" : " ") + kv;
+  }
+  timeFrames(state, host, {1280, 720});
+  state.SetLabel(label);
+}
+
 // The compile + link share of the reload: one program of the shading lab, rebuilt from disk.
 void BM_CompileProgram(benchmark::State& state) {
   LabHost host(ShaderSearchPath({builtinShaderDir()}));
@@ -141,15 +157,7 @@ const std::vector<std::vector<std::string>> kSurfaceConfigs = {
 };
 
 void BM_SurfaceTechnique(benchmark::State& state) {
-  LabHost host(ShaderSearchPath({builtinShaderDir()}));
-  host.selectLab("surface");
-  std::string label;
-  for (const std::string& kv : kSurfaceConfigs[size_t(state.range(0))]) {
-    host.set("surface." + kv);
-    label += (label.empty() ? "" : " ") + kv;
-  }
-  timeFrames(state, host, {1280, 720});
-  state.SetLabel(label);
+  timeConfiguration(state, "surface", kSurfaceConfigs[size_t(state.range(0))]);
 }
 BENCHMARK(BM_SurfaceTechnique)
     ->DenseRange(0, int(kSurfaceConfigs.size()) - 1)
@@ -207,16 +215,7 @@ const std::vector<std::vector<std::string>> kFilteringConfigs = {
 };
 
 void BM_FilteringFilter(benchmark::State& state) {
-  LabHost host(ShaderSearchPath({builtinShaderDir()}));
-  host.selectLab("filtering");
-  host.set("filtering.footprint_probe=off");
-  std::string label;
-  for (const std::string& kv : kFilteringConfigs[size_t(state.range(0))]) {
-    host.set("filtering." + kv);
-    label += (label.empty() ? "" : " ") + kv;
-  }
-  timeFrames(state, host, {1280, 720});
-  state.SetLabel(label);
+  timeConfiguration(state, "filtering", kFilteringConfigs[size_t(state.range(0))], {"footprint_probe=off"});
 }
 BENCHMARK(BM_FilteringFilter)
     ->DenseRange(0, int(kFilteringConfigs.size()) - 1)

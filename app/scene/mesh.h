@@ -16,6 +16,10 @@ struct Bounds {
   }
   bool empty() const { return min.x > max.x; }
   glm::vec3 center() const { return empty() ? glm::vec3(0) : (min + max) * 0.5f; }
+  // Corner c of the eight: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
+  glm::vec3 corner(int c) const {
+    return {(c & 1) ? max.x : min.x, (c & 2) ? max.y : min.y, (c & 4) ? max.z : min.z};
+  }
   float radius() const { return empty() ? 1.0f : glm::length(max - min) * 0.5f; }
 };
 

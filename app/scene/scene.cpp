@@ -4,17 +4,22 @@
 
 namespace shadelab {
 
+Bounds Scene::boundsOfInstance(size_t i) const {
+  const Instance& inst = instances[i];
+  const Bounds mb = meshes[size_t(inst.mesh)].bounds();
+  Bounds b;
+  if (!mb.empty())
+    for (int c = 0; c < 8; ++c) b.extend(glm::vec3(inst.model * glm::vec4(mb.corner(c), 1.0f)));
+  return b;
+}
+
 Bounds Scene::computeBounds() const {
   Bounds b;
-  for (auto& inst : instances) {
-    const Bounds mb = meshes[size_t(inst.mesh)].bounds();
-    if (mb.empty()) continue;
-    for (int corner = 0; corner < 8; ++corner) {
-      const glm::vec3 p((corner & 1) ? mb.max.x : mb.min.x, (corner & 2) ? mb.max.y : mb.min.y,
-                        (corner & 4) ? mb.max.z : mb.min.z);
-      b.extend(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
+  for (size_t i = 0; i < instances.size(); ++i)
+    if (const Bounds ib = boundsOfInstance(i); !ib.empty()) {
+      b.extend(ib.min);
+      b.extend(ib.max);
     }
-  }
   return b;
 }
 

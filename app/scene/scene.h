@@ -83,7 +83,9 @@ struct Scene {
   int revision = 0;                    // set by the host on every build: caches keyed on it go stale
 
   Bounds bounds;  // world-space bounds of all instances, kept by the host (computeBounds) after each build
+  std::vector<Bounds> instanceBounds;  // each instance's world box, kept beside `bounds`
   Bounds computeBounds() const;  // walks every vertex: call once per build, not per frame
+  Bounds boundsOfInstance(size_t i) const;  // its mesh's box through its model matrix
   size_t triangleCount() const;
 };
 

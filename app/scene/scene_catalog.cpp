@@ -158,6 +158,8 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     for (auto& inst : out.instances) inst.model = glm::scale(glm::mat4(1.0f), glm::vec3(needs.scale)) * inst.model;
     out.suggestedCamera.clear();  // it is in unscaled units; framing the bounds still works
   }
+  out.instanceBounds.clear();
+  for (size_t i = 0; i < out.instances.size(); ++i) out.instanceBounds.push_back(out.boundsOfInstance(i));
   out.bounds = out.computeBounds();
   // Leave out what the configuration does not use.
   for (auto& mesh : out.meshes) {

@@ -145,13 +145,9 @@ std::vector<glm::vec3> clipToBounds(const std::vector<glm::vec3>& slice, const B
     pl.d += 1e-5f * (std::abs(pl.d) + 1.0f);  // points on the face count as inside
     frustum.push_back(pl);
   }
-  glm::vec3 boxCorner[8];
-  for (int c = 0; c < 8; ++c)
-    boxCorner[c] = {(c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
-                    (c & 4) ? bounds.max.z : bounds.min.z};
   for (int e = 0; e < 24; e += 2) {
     clipSegment(slice[size_t(kBoxEdges[e])], slice[size_t(kBoxEdges[e + 1])], box, out);
-    clipSegment(boxCorner[kBoxEdges[e]], boxCorner[kBoxEdges[e + 1]], frustum, out);
+    clipSegment(bounds.corner(kBoxEdges[e]), bounds.corner(kBoxEdges[e + 1]), frustum, out);
   }
   return out;
 }
@@ -211,9 +207,7 @@ LightFrame fitDirectional(const LightFrame& sceneFit, const std::vector<glm::vec
   // Depth: every corner of the scene, so casters outside the camera's view still cast.
   float zNear = INFINITY, zFar = -INFINITY;
   for (int c = 0; c < 8; ++c) {
-    const glm::vec3 corner((c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
-                           (c & 4) ? bounds.max.z : bounds.min.z);
-    const float z = -(L.view * glm::vec4(corner, 1.0f)).z;
+    const float z = -(L.view * glm::vec4(bounds.corner(c), 1.0f)).z;
     zNear = std::min(zNear, z);
     zFar = std::max(zFar, z);
   }
@@ -242,9 +236,7 @@ std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetu
   };
   if (range.y <= range.x) {
     std::vector<glm::vec3> corners;
-    for (int c = 0; c < 8; ++c)
-      corners.push_back({(c & 1) ? bounds.max.x : bounds.min.x, (c & 2) ? bounds.max.y : bounds.min.y,
-                         (c & 4) ? bounds.max.z : bounds.min.z});
+    for (int c = 0; c < 8; ++c) corners.push_back(bounds.corner(c));
     return {{sceneFit, view.farPlane, view.farPlane, contentDepth(sceneFit, corners)}};
   }
   const int count = std::clamp(setup.count, 1, 4);

@@ -24,6 +24,10 @@ void allocateArray(GLuint texture, GLenum internal, GLenum format, int size, int
     glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GLint(internal), s, s, layers, 0, format, GL_FLOAT, nullptr);
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  // The texture's own filtering serves reads with no sampler object (the blur's texelFetch, the
+  // dummies); lookups in lit.frag go through the samplers, which override it.
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
 void checkComplete(int size) {
@@ -165,7 +169,7 @@ void ShadowMap::filterMoments(Program& blur, int radius, GLuint emptyVao) {
   if (!moments_) return;
   const int size = shape_.size;
   if (radius > 0) {
-    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_DEPTH_TEST);  // each layer's framebuffer has its depth layer attached: no test against it
     glViewport(0, 0, size, size);
     blur.use();
     blur.set("u_src", 0);
@@ -177,18 +181,13 @@ void ShadowMap::filterMoments(Program& blur, int radius, GLuint emptyVao) {
       // Across: this layer of the moments -> the scratch layer; down: back into this layer.
       glBindFramebuffer(GL_FRAMEBUFFER, blurFbo_.get());
       glBindTexture(GL_TEXTURE_2D_ARRAY, moments_.get());
-      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
       blur.set("u_layer", layer);
       blur.set("u_direction", glm::vec2(1.0f, 0.0f));
       glDrawArrays(GL_TRIANGLES, 0, 3);
       glBindFramebuffer(GL_FRAMEBUFFER, layerFbos_[size_t(layer)].get());
       glBindTexture(GL_TEXTURE_2D_ARRAY, blurTemp_.get());
-      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
       blur.set("u_layer", 0);
       blur.set("u_direction", glm::vec2(0.0f, 1.0f));
-      glDisable(GL_DEPTH_TEST);  // the depth layer stays attached; the blur must not test against it
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glEnable(GL_DEPTH_TEST);

@@ -254,8 +254,13 @@ std::vector<ProgramRef> ShadowsLab::activePrograms() const {
 }
 
 const std::vector<glm::vec2>& ShadowsLab::disk(int count) {
-  static const std::vector<glm::vec2> disks[4] = {poissonDisk(8), poissonDisk(16), poissonDisk(32), poissonDisk(64)};
-  return disks[std::clamp(int(std::log2(std::max(count, 8))) - 3, 0, 3)];
+  // Each set is made the first time a filter asks for it (dart throwing takes tens of ms for 64).
+  switch (std::clamp(count, 8, 64)) {
+    case 8: { static const std::vector<glm::vec2> d = poissonDisk(8); return d; }
+    case 16: { static const std::vector<glm::vec2> d = poissonDisk(16); return d; }
+    case 32: { static const std::vector<glm::vec2> d = poissonDisk(32); return d; }
+    default: { static const std::vector<glm::vec2> d = poissonDisk(64); return d; }
+  }
 }
 
 ShadowFilter ShadowsLab::effectiveFilter() const { return effectiveFilterOf(params); }
@@ -280,9 +285,15 @@ void ShadowsLab::setFilterUniforms(Program& prog) const {
   prog.set("u_slopeBias", params.slopeBias);
   prog.set("u_normalOffset", params.normalOffset);
   prog.set("u_filterRadius", params.filterRadius);
-  const int taps = filter == ShadowFilter::Pcss ? 8 << params.pcssIndex : 8 << params.poissonIndex;
-  prog.setArray("u_filterDisk", disk(taps).data(), int(disk(taps).size()));
-  prog.setArray("u_blockerDisk", disk(8 << params.blockerIndex).data(), int(disk(8 << params.blockerIndex).size()));
+  // The disks only where the variant samples them (Poisson, PCSS): made on first use, not for PCF.
+  if (prog.uses("u_filterDisk")) {
+    const auto& taps = disk(filter == ShadowFilter::Pcss ? 8 << params.pcssIndex : 8 << params.poissonIndex);
+    prog.setArray("u_filterDisk", taps.data(), int(taps.size()));
+  }
+  if (prog.uses("u_blockerDisk")) {
+    const auto& taps = disk(8 << params.blockerIndex);
+    prog.setArray("u_blockerDisk", taps.data(), int(taps.size()));
+  }
   prog.set("u_minVariance", params.minVariance);
   prog.set("u_bleed", params.bleedReduction);
   prog.set("u_esmExponent", params.esmExponent);
@@ -396,8 +407,10 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
                            (cascades_.size() >= 2 ? " cascade " : params.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
   keyMap_.ensure({cube, params.mapSize(), layers, format, cube ? 0u : momentFormat(filter), params.momentMips});
   Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses, filter));
-  depth.use();
-  setFilterUniforms(depth);  // the moment pass warps depth with the same exponents the lookups use
+  if (isMomentFilter(filter)) {
+    depth.use();
+    setFilterUniforms(depth);  // the moment pass warps depth with the same exponents the lookups use
+  }
   for (int layer = 0; layer < layers; ++layer) {
     auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
                            size + (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
@@ -426,23 +439,9 @@ void ShadowsLab::render(Frame& frame) {
 
   // The key light's maps: the scene-fitted one, or fitted to the view, or one per cascade.
   cascades_.clear();
-  if (const int count = cascadeCountOf(params); count > 0) {
-    if (partsRevision_ != frame.scene.revision) {  // each instance's world box, once per scene build
-      parts_.clear();
-      for (const Instance& inst : frame.scene.instances) {
-        const Bounds local = frame.scene.meshes[size_t(inst.mesh)].bounds();
-        Bounds world;
-        for (int c = 0; c < 8; ++c)
-          world.extend(glm::vec3(inst.model * glm::vec4((c & 1) ? local.max.x : local.min.x,
-                                                        (c & 2) ? local.max.y : local.min.y,
-                                                        (c & 4) ? local.max.z : local.min.z, 1.0f)));
-        if (local.min.x <= local.max.x) parts_.push_back(world);
-      }
-      partsRevision_ = frame.scene.revision;
-    }
+  if (const int count = cascadeCountOf(params); count > 0)
     cascades_ = buildCascades(key, {count, params.splitLambda, params.cascadeBlend, params.snapTexels, params.mapSize()},
-                              viewVolume(frame), bounds, parts_);
-  }
+                              viewVolume(frame), bounds, frame.scene.instanceBounds);
 
   // 1. Depth passes, only for lights that cast and only when the view reads their maps.
   if (params.keyCasts && !gbuffer) {
@@ -459,8 +458,10 @@ void ShadowsLab::render(Frame& frame) {
                              (isMomentFilter(filter) ? " + " + std::string(kFilters[int(filter)]) + " moments" : ""));
       fillMap_.ensure({false, params.mapSize(), 1, format, momentFormat(filter), params.momentMips});
       Program& depth = fetch(kFillDepthSlot, depthSpec(false, false, filter));
-      depth.use();
-      setFilterUniforms(depth);
+      if (isMomentFilter(filter)) {
+        depth.use();
+        setFilterUniforms(depth);
+      }
       fillMap_.render(frame.scene, frame.gpu, depth, fill, 0, depthState);
     }
     if (fillMap_.hasMoments() && (params.blurRadius > 0 || params.momentMips)) {
@@ -478,7 +479,7 @@ void ShadowsLab::render(Frame& frame) {
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the metrics
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (viewIsDepthMap(params.view) && !gbuffer) {
-    drawDepthView(frame, fill);
+    drawDepthView(frame, key, fill);
     return;
   }
   {
@@ -488,16 +489,13 @@ void ShadowsLab::render(Frame& frame) {
   if (params.showFrustum && !gbuffer) drawFrustum(frame, key);
 }
 
-void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& fill) {
+void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill) {
   auto pass = frame.pass("depth map view");
   const bool showFill = params.depthLight == 1;
   ShadowMap& map = showFill ? fillMap_ : keyMap_;
   if (!map) return;  // that light casts no shadow: there is no map to show (warnings() says so)
   const int layer = showFill ? 0 : std::min(params.depthCascade, map.layers() - 1);
-  std::vector<std::string> ignored;
-  const LightFrame shown = showFill ? fill
-                           : cascades_.empty() ? buildLight(keySetup(), frame.scene.bounds, ignored)
-                                               : cascades_[size_t(layer)].light;
+  const LightFrame& shown = showFill ? fill : cascades_.empty() ? key : cascades_[size_t(layer)].light;
   Program& prog = fetch(kDepthViewSlot, depthViewSpec(params));
   prog.use();
   setLight(prog, "u_key", shown, params.mapSize(), layer);

@@ -140,7 +140,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   ProgramSpec depthViewSpec(const ShadowsParams& p) const;
   void setFilterUniforms(Program& prog) const;
   void renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format);
-  void drawDepthView(Frame& frame, const LightFrame& fill);
+  void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);
   Program& fetch(size_t slot, const ProgramSpec& spec) { return programs_[slot].get(*shaders_, spec); }
   static ProgramSpec linesSpec();
   void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);
@@ -154,8 +154,6 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   gl::Buffer frustumVbo_;
   std::vector<Cascade> cascades_;  // the key light's maps, as last rendered
   std::vector<int> boundSamplers_;  // units drawLit bound sampler objects to
-  std::vector<Bounds> parts_;       // each instance's world box: what view fitting clips against
-  int partsRevision_ = -1;
   glm::vec3 sceneLight_{0.0f};     // the current scene's own light, if it has one
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
