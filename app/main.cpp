@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   if (o.command == "list") return runList(o);
   if (o.command == "check-shaders") return runCheckShaders(o);
   if (o.command == "compare") return runCompare(o);
+  if (o.command == "grade") return runGrade(o);
 
 #ifdef SHADELAB_HAS_WINDOW
   const int rc = runWindow(o, window);

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "cli/session.h"
+#include "grade/rubric.h"
 #include "host/measurer.h"
 #include "scene/scene_catalog.h"
 
@@ -99,6 +100,12 @@ int runList(const Options& o) {
   }
   std::printf("\nscenes (or any .gltf/.glb/.obj/.off/.ply file):\n");
   for (auto& s : listScenes()) std::printf("  %-14s %s\n", s.id.c_str(), s.description.c_str());
+  std::printf("\nexercises (shadelab grade --exercise ID --shaders DIR; %s):\n", exercisesRoot().c_str());
+  for (auto& id : listExercises(exercisesRoot())) {
+    Exercise ex;
+    const std::string err = loadExercise(exercisesRoot(), id, ex);
+    std::printf("  %-26s %s\n", id.c_str(), err.empty() ? ex.title.c_str() : err.c_str());
+  }
   std::printf("\nheadless backends: %s\n", std::string(kHeadlessBackends).c_str());
   return 0;
 }

@@ -16,6 +16,9 @@ commands:
   list            labs, their parameters with ranges, and scenes
   check-shaders   compile every program and variant of every lab; non-zero exit on any error
   compare A B     RMSE and max error between two images; --out DIFF.png writes an amplified difference
+  grade           grade a student's shaders:   --exercise LAB/NAME | --all  --shaders DIR  [--out DIR]
+                  one line per check and a score; a Markdown, HTML and JSON report in --out (default
+                  out/grades/...); exit 0 at or above the pass mark, 1 below it, 2 if it could not grade
 
 options:
   --lab ID            lab to run (see `shadelab list`)
@@ -32,6 +35,9 @@ options:
   --out PATH          output file or folder
   --measure           measure the frame against the lab's ground truth (render: printed and in the JSON;
                       the window: as if Measure were pressed)
+  --exercise ID       grade: the exercise (see `shadelab list`), e.g. shadows/pcf
+  --all               grade: every exercise
+  --watchdog SECONDS  grade: how long the student's shader may take per configuration (default 20)
   -h, --help          this text
 )";
 }
@@ -47,13 +53,13 @@ static std::string parseSize(const std::string& text, glm::ivec2& size) {
 }
 
 std::string parseOptions(int argc, char** argv, Options& o) {
-  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders", "compare"};
+  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders", "compare", "grade"};
   int i = 1;
   if (i < argc && argv[i][0] != '-') {
     o.command = argv[i++];
     bool known = false;
     for (auto c : kCommands) known |= o.command == c;
-    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders, compare)";
+    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders, compare, grade)";
   }
   for (; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -63,6 +69,10 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     }
     if (arg == "--measure") {
       o.measure = true;
+      continue;
+    }
+    if (arg == "--all") {
+      o.allExercises = true;
       continue;
     }
     if (arg.rfind("--", 0) != 0) {
@@ -82,9 +92,15 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     else if (arg == "--preset") o.preset = v;
     else if (arg == "--backend") o.backend = v;
     else if (arg == "--out") o.out = v;
+    else if (arg == "--exercise") o.exercise = v;
     else if (arg == "--size") {
       if (auto e = parseSize(v, o.size); !e.empty()) return e;
       o.sizeGiven = true;
+    } else if (arg == "--watchdog") {
+      char* end = nullptr;
+      o.watchdog = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end || !(o.watchdog >= 0.1 && o.watchdog <= 3600))
+        return "--watchdog: '" + v + "' is not a number of seconds in [0.1, 3600]";
     } else if (arg == "--time" || arg == "--frames") {
       char* end = nullptr;
       const double d = std::strtod(v.c_str(), &end);
@@ -95,7 +111,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
-             "--backend, --out, --measure)";
+             "--backend, --out, --measure, --exercise, --all, --watchdog)";
     }
   }
   for (auto& dir : o.shaderDirs)

@@ -10,7 +10,7 @@
 namespace shadelab {
 
 struct Options {
-  std::string command;  // "" (window), render, sweep, stress, list, check-shaders, compare
+  std::string command;  // "" (window), render, sweep, stress, list, check-shaders, compare, grade
   std::string lab;      // "" = the default (or the preset's)
   std::string scene;    // "" = the lab's default
   std::vector<std::string> sets;                 // --set lab.key=value, in order
@@ -27,6 +27,9 @@ struct Options {
   int frames = 5;                                // timed frames per configuration (medians)
   int warmup = 2;
   bool measure = false;                          // render: measure against the lab's truth too
+  std::string exercise;                          // grade: --exercise lab/name
+  bool allExercises = false;                     // grade: --all
+  double watchdog = 20.0;                        // grade: seconds a student's frames may take
   bool help = false;
   std::vector<std::string> positional;           // compare A.png B.png
 };

@@ -81,9 +81,7 @@ std::vector<size_t> paretoFront(const SweepReport& r, const PlotSpec& plot, cons
   return front;
 }
 
-namespace {
-
-std::string escape(const std::string& s) {
+std::string htmlEscape(const std::string& s) {
   std::string o;
   for (char c : s) {
     if (c == '<') o += "&lt;";
@@ -95,7 +93,7 @@ std::string escape(const std::string& s) {
   return o;
 }
 
-std::string base64(const std::vector<unsigned char>& data) {
+static std::string base64(const std::vector<unsigned char>& data) {
   static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   for (size_t i = 0; i < data.size(); i += 3) {
@@ -109,7 +107,7 @@ std::string base64(const std::vector<unsigned char>& data) {
   return out;
 }
 
-std::string dataUri(const ImageF& img) {
+std::string pngDataUri(const ImageF& img) {
   if (img.rgba.empty()) return "";
   std::vector<unsigned char> rgb(size_t(img.size.x) * img.size.y * 3), png;
   for (size_t i = 0; i < rgb.size() / 3; ++i)
@@ -123,6 +121,8 @@ std::string dataUri(const ImageF& img) {
       }, &png, img.size.x, img.size.y, 3, rgb.data(), img.size.x * 3);
   return "data:image/png;base64," + base64(png);
 }
+
+namespace {
 
 std::string fourDigits(double v) {
   char buf[32];
@@ -187,13 +187,13 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
          "' text-anchor='end'>" + formatNumber(t) + "</text>\n";
   if (!truth.empty())
     s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>truth: " +
-         escape(truth) + "</text>\n";
+         htmlEscape(truth) + "</text>\n";
   s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
        formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
   s += "<text x='" + formatNumber((L + W - R) / 2) + "' y='" + formatNumber(H - 12) + "' text-anchor='middle'>" +
-       escape(costAxisLabel(costKey)) + "</text>\n";
+       htmlEscape(costAxisLabel(costKey)) + "</text>\n";
   s += "<text transform='translate(16," + formatNumber((T + H - B) / 2) + ") rotate(-90)' text-anchor='middle'>" +
-       escape(errorKey) + " (lower is closer to the reference)</text>\n";
+       htmlEscape(errorKey) + " (lower is closer to the reference)</text>\n";
   // Pareto front: the configurations nothing else beats on both axes.
   std::string path;
   for (size_t i : paretoFront(r, spec, truth))
@@ -204,7 +204,7 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
     if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
     const char* color = kPalette[groups[row.group] % 8];
     s += "<circle cx='" + formatNumber(sx(row.value(costKey))) + "' cy='" + formatNumber(sy(row.value(errorKey))) +
-         "' r='5' fill='" + color + "' fill-opacity='0.8'><title>" + escape(row.label) + ": " + errorKey + " " +
+         "' r='5' fill='" + color + "' fill-opacity='0.8'><title>" + htmlEscape(row.label) + ": " + errorKey + " " +
          formatNumber(row.value(errorKey)) + ", " + costKey + " " + formatNumber(row.value(costKey)) +
          "</title></circle>\n";
   }
@@ -213,7 +213,7 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
     const double y = T + 14 + 18 * k++;
     s += "<circle cx='" + formatNumber(W - R + 16) + "' cy='" + formatNumber(y - 4) + "' r='5' fill='" +
          kPalette[index % 8] + "'/><text x='" + formatNumber(W - R + 26) + "' y='" + formatNumber(y) + "'>" +
-         escape(name) + "</text>\n";
+         htmlEscape(name) + "</text>\n";
   }
   s += "<text x='" + formatNumber(W - R + 10) + "' y='" + formatNumber(T + 14 + 18 * k + 6) +
        "' fill='#777'>- - Pareto front</text>\n</svg>\n";
@@ -227,44 +227,44 @@ std::string sweepPlotSvg(const SweepReport& r, const PlotSpec& spec, const std::
 }
 
 std::string sweepHtml(const SweepReport& r) {
-  std::string h = "<!doctype html>\n<html><head><meta charset='utf-8'><title>" + escape(r.title) +
+  std::string h = "<!doctype html>\n<html><head><meta charset='utf-8'><title>" + htmlEscape(r.title) +
                   "</title>\n<style>body{font-family:sans-serif;margin:24px;max-width:1400px}"
                   "table{border-collapse:collapse;font-size:13px}td,th{border:1px solid #ccc;padding:3px 7px;"
                   "text-align:right}code{background:#f4f4f4;padding:2px 4px}.imgs{display:flex;flex-wrap:wrap;gap:10px}"
                   ".imgs figure{margin:0;font-size:12px}</style></head><body>\n";
-  h += "<h1>" + escape(r.title) + "</h1>\n";
-  h += "<p>Made by <code>" + escape(r.command) + "</code></p>\n";
-  h += "<p>Renderer: " + escape(r.renderer) + "<br>";
-  for (auto& [truth, what] : r.truths) h += "Truth <b>" + escape(truth) + "</b>: " + escape(what) + "<br>";
+  h += "<h1>" + htmlEscape(r.title) + "</h1>\n";
+  h += "<p>Made by <code>" + htmlEscape(r.command) + "</code></p>\n";
+  h += "<p>Renderer: " + htmlEscape(r.renderer) + "<br>";
+  for (auto& [truth, what] : r.truths) h += "Truth <b>" + htmlEscape(truth) + "</b>: " + htmlEscape(what) + "<br>";
   h += "gpu_ms: the median over the timed frames of the summed time of every pass, measured with " +
-       escape(r.costClock) + ".</p>\n";
+       htmlEscape(r.costClock) + ".</p>\n";
   const auto truths = truthsOf(r);
   for (auto& spec : r.plots)
     for (auto& truth : truths)
-      h += "<h2>" + escape(spec.error) + " against " + escape(spec.cost) +
-           (truths.size() > 1 ? " (truth: " + escape(truth) + ")" : "") + "</h2>\n" + plot(r, spec, truth);
+      h += "<h2>" + htmlEscape(spec.error) + " against " + htmlEscape(spec.cost) +
+           (truths.size() > 1 ? " (truth: " + htmlEscape(truth) + ")" : "") + "</h2>\n" + plot(r, spec, truth);
   h += "<h2>Configurations</h2>\n<table><tr><th>configuration</th><th>truth</th>";
   if (!r.rows.empty())
-    for (auto& [k, v] : r.rows.front().values) h += "<th>" + escape(k) + "</th>";
+    for (auto& [k, v] : r.rows.front().values) h += "<th>" + htmlEscape(k) + "</th>";
   h += "</tr>\n";
   for (auto& row : r.rows) {
     const bool broken = row.value("shader_errors") > 0;  // a fallback was drawn: mark the row
     h += std::string(broken ? "<tr style='background:#fdd' title='a program did not build'>" : "<tr>") +
-         "<td style='text-align:left'>" + escape(row.label) + "</td><td>" + escape(row.truth) + "</td>";
+         "<td style='text-align:left'>" + htmlEscape(row.label) + "</td><td>" + htmlEscape(row.truth) + "</td>";
     for (auto& [k, v] : row.values) h += "<td>" + fourDigits(v) + "</td>";  // the CSV keeps every digit
     h += "</tr>\n";
   }
   h += "</table>\n<h2>Images</h2>\n<div class='imgs'>\n";
   for (auto& [truth, image] : r.referenceThumbnails)
-    h += "<figure><img src='" + dataUri(image) + "'><figcaption>truth: " + escape(truth) + "</figcaption></figure>\n";
+    h += "<figure><img src='" + pngDataUri(image) + "'><figcaption>truth: " + htmlEscape(truth) + "</figcaption></figure>\n";
   for (auto& row : r.rows) {
-    std::string caption = escape(row.label);
+    std::string caption = htmlEscape(row.label);
     if (!r.plots.empty()) {
       const PlotSpec& p = r.plots.front();
-      caption += "<br>" + escape(p.error) + " " + fourDigits(row.value(p.error)) + ", " + escape(p.cost) + " " +
+      caption += "<br>" + htmlEscape(p.error) + " " + fourDigits(row.value(p.error)) + ", " + htmlEscape(p.cost) + " " +
                  fourDigits(row.value(p.cost));
     }
-    h += "<figure><img src='" + dataUri(row.thumbnail) + "'><figcaption>" + caption + "</figcaption></figure>\n";
+    h += "<figure><img src='" + pngDataUri(row.thumbnail) + "'><figcaption>" + caption + "</figcaption></figure>\n";
   }
   h += "</div>\n</body></html>\n";
   return h;

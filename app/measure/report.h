@@ -45,6 +45,10 @@ std::string sweepHtml(const SweepReport& r);
 std::string sweepPlotSvg(const SweepReport& r, const PlotSpec& plot, const std::string& truth);
 // Indices of the rows of `truth` ("" = all) on the lower-left Pareto front of (cost, error).
 std::vector<size_t> paretoFront(const SweepReport& r, const PlotSpec& plot, const std::string& truth = "");
+// Text for HTML element content and attribute values.
+std::string htmlEscape(const std::string& s);
+// The image as an 8-bit PNG data URI ("" for an empty image), for self-contained pages.
+std::string pngDataUri(const ImageF& image);
 // Writes text atomically (temporary file + rename). Returns "" or an error naming the file.
 std::string writeTextFile(const std::string& path, const std::string& text);
 

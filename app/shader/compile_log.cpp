@@ -20,6 +20,21 @@ std::string Diagnostic::format() const {
   return s;
 }
 
+std::string Diagnostic::formatWithCaret() const {
+  std::string s = format();
+  if (sourceLine.empty()) return s;
+  s += "\n    ";
+  s += sourceLine;
+  if (column <= 0) return s;
+  std::string pad(size_t(column - 1), ' ');
+  for (size_t i = 0; i < pad.size() && i < sourceLine.size(); ++i)
+    if (sourceLine[i] == '\t') pad[i] = '\t';  // the caret lines up whatever the tab width
+  s += "\n    ";
+  s += pad;
+  s += '^';
+  return s;
+}
+
 namespace {
 
 std::string trim(std::string s) {

@@ -23,6 +23,8 @@ struct Diagnostic {
 
   // "shaders/shading/shade.frag:12:5: error: message"
   std::string format() const;
+  // format(), then the source line and a caret under the column (when they are known).
+  std::string formatWithCaret() const;
 };
 
 std::vector<Diagnostic> parseCompileLog(std::string_view log, const std::vector<std::filesystem::path>& files);

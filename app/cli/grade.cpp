@@ -1,0 +1,224 @@
+// shadelab grade: renders every configuration of an exercise's rubric with the student's shaders
+// (each in a child process under a watchdog), scores the checks and writes the reports.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include "cli/commands.h"
+#include "cli/grade_render.h"
+#include "grade/grading.h"
+#include "grade/watchdog.h"
+#include "measure/report.h"
+#include "shader/preprocessor.h"
+#include "util/output_files.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kCannotGrade = 2;
+constexpr double kSolutionSeconds = 600.0;  // the built-in solution and its truth: generous, never the student's fault
+
+int cannotGrade(const std::string& message) {
+  std::fprintf(stderr, "shadelab: grade: %s\n", message.c_str());
+  return kCannotGrade;
+}
+
+std::string slug(const std::string& s) {
+  std::string out;
+  for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? char(std::tolower(ch)) : '-';
+  return out;
+}
+
+std::string readAll(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+double number(const nlohmann::json& values, const std::string& key) {
+  return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
+}
+
+bool inside(const fs::path& child, const fs::path& parent) {
+  const fs::path c = fs::weakly_canonical(child), p = fs::weakly_canonical(parent);
+  auto [pe, ce] = std::mismatch(p.begin(), p.end(), c.begin(), c.end());
+  return pe == p.end();
+}
+
+std::string describe(const Configuration& c) {
+  std::string s = "scene " + (c.scene.empty() ? std::string("(the lab's default)") : c.scene);
+  if (!c.camera.empty()) s += ", camera " + c.camera;
+  for (auto& [k, v] : c.settings) s += ", " + k + "=" + v;
+  return s;
+}
+
+// The checks of one configuration, from what its child wrote and how it ended. Returns "" or why
+// the grader itself cannot go on (a rubric or solution at fault).
+std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& run, double watchdog,
+                               ConfigurationResult& out) {
+  const Configuration& c = *job.configuration;
+  const nlohmann::json solution = readResult(job, "solution"), student = readResult(job, "student");
+  if (solution.contains("error")) return solution["error"].get<std::string>();
+  if (!solution.contains("renderer"))
+    return "configuration '" + c.name + "': the solution's frame was not made (" + run.describe() + ")";
+  out.solutionImage = job.stem + "-solution.png";
+  out.renderSeconds = run.phaseSeconds;
+  std::string why;  // why no check could be measured
+  if (run.end == WatchedRun::End::TimedOut) {
+    char s[160];
+    std::snprintf(s, sizeof s,
+                  "stopped by the watchdog after %.0f s: the shader ran too long (an unbounded loop?); nothing drawn "
+                  "was scored",
+                  watchdog);
+    why = s;
+  } else if (student.is_null()) {
+    why = "the renderer died drawing the student's shader (" + run.describe() + ")";
+  }
+  if (!why.empty()) out.errors.push_back(why);
+  if (student.is_object()) {
+    for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
+    for (auto& w : student["warnings"]) out.warnings.push_back(w.get<std::string>());
+    out.nonFinite = student["non_finite"].get<size_t>();
+    out.studentImage = job.stem + "-student.png";
+    out.diffImage = job.stem + "-diff.png";
+    if (!student["errors"].empty()) why = "did not build: " + student["errors"][0].get<std::string>().substr(0, student["errors"][0].get<std::string>().find('\n'));
+  }
+  for (auto& check : c.checks) {
+    const bool truth = check.against == Against::Truth;
+    const double solutionValue = truth ? number(solution["vs_truth"], check.metric) : 0.0;
+    if (truth && !std::isfinite(solutionValue)) {
+      std::string reported;
+      for (auto& [k, v] : solution["vs_truth"].items()) reported += (reported.empty() ? "" : ", ") + k;
+      return (job.exercise->dir / "rubric.json").string() + ": check '" + check.name + "': the lab reports no metric '" +
+             check.metric + "' (it reports: " + reported + ")";
+    }
+    if (!why.empty()) {
+      out.checks.push_back(failedCheck(check, solutionValue, why));
+      continue;
+    }
+    CheckResult r = scoreCheck(check, number(student[truth ? "vs_truth" : "vs_solution"], check.metric), solutionValue);
+    if (out.nonFinite && r.grade != Grade::Full)
+      r.message = std::to_string(out.nonFinite) + " NaN/Inf values in the frame. " + r.message;
+    out.checks.push_back(std::move(r));
+  }
+  applyRequirements(out.checks);
+  return {};
+}
+
+// Grades one exercise into `out`; returns "" or why it could not be graded.
+std::string gradeExercise(const std::string& id, const Options& o, const fs::path& dir, ExerciseResult& out,
+                          std::string& renderer) {
+  Exercise ex;
+  if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
+  out = ExerciseResult{};
+  out.id = ex.id;
+  out.title = ex.title;
+  out.lab = ex.lab;
+  out.total = ex.totalPoints();
+  out.passMark = ex.passMark;
+  std::printf("%s: %s (%s)\n", ex.id.c_str(), ex.title.c_str(), (ex.dir / "statement.md").c_str());
+  for (auto& file : ex.files) {
+    const auto found = std::find_if(o.shaderDirs.begin(), o.shaderDirs.end(),
+                                    [&](const fs::path& d) { return fs::is_regular_file(d / file); });
+    if (found == o.shaderDirs.end()) out.missingFiles.push_back(file);
+    else if (readAll(*found / file) == readAll(builtinShaderDir() / file))
+      out.notes.push_back((*found / file).string() + " is the lab's own file, unchanged");
+  }
+  std::vector<std::string> printed;
+  for (size_t i = 0; i < ex.configurations.size(); ++i) {
+    const Configuration& c = ex.configurations[i];
+    ConfigurationResult result;
+    result.name = c.name;
+    result.description = describe(c);
+    if (!out.missingFiles.empty()) {
+      for (auto& check : c.checks)
+        result.checks.push_back(failedCheck(check, std::nan(""), "not submitted: " + out.missingFiles.front() +
+                                                                     " is in none of the --shaders folders"));
+    } else {
+      ConfigurationJob job{&ex, &c, o.shaderDirs, o.backend, dir, slug(ex.id) + "-" + std::to_string(i + 1) + "-" + slug(c.name)};
+      const WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
+                                        [&](const std::string& phase) { return phase == "student" ? o.watchdog : kSolutionSeconds; },
+                                        (dir / "logs" / (job.stem + ".log")).string());
+      if (auto e = scoreConfiguration(job, run, o.watchdog, result); !e.empty()) return e;
+      if (renderer.empty()) renderer = readResult(job, "solution").value("renderer", "");
+      for (const char* phase : {"solution", "student"}) fs::remove(dir / (job.stem + "-" + phase + ".json"));
+    }
+    for (auto& err : result.errors)  // each error once per exercise: every configuration compiles the same file
+      if (std::find(printed.begin(), printed.end(), err) == printed.end()) {
+        std::printf("  %s\n", err.c_str());
+        printed.push_back(err);
+      }
+    for (auto& r : result.checks) {
+      std::printf("%s\n", checkLine(result, r).c_str());
+      if (!r.message.empty() && result.errors.empty()) std::printf("          %s\n", r.message.c_str());
+      out.earned += r.earned;
+    }
+    std::fflush(stdout);
+    out.configurations.push_back(std::move(result));
+  }
+  for (auto& f : out.missingFiles) std::printf("  not submitted: %s is in none of the --shaders folders\n", f.c_str());
+  for (auto& n : out.notes) std::printf("  note: %s\n", n.c_str());
+  std::printf("%s: %g / %g points (%.1f%%), pass mark %.0f%%: %s\n\n", ex.id.c_str(), std::round(out.earned * 100) / 100,
+              out.total, out.percent(), out.passMark, out.passed() ? "passed" : "NOT PASSED");
+  return {};
+}
+
+}  // namespace
+
+int runGrade(const Options& o) {
+  if (o.exercise.empty() == !o.allExercises)
+    return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
+  if (o.shaderDirs.empty()) return cannotGrade("--shaders DIR is required: the folder holding the student's shader files");
+  std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
+  if (ids.empty()) return cannotGrade("no exercises in " + exercisesRoot().string());
+
+  // The report folder: fresh, and never inside what is being graded (the student's folder is only read).
+  fs::path dir = o.out.empty() ? freshName("grades", o.allExercises ? "all" : slug(o.exercise), "") : fs::path(o.out);
+  for (auto& s : o.shaderDirs)
+    if (inside(dir, s))
+      return cannotGrade("--out " + dir.string() + " lies inside the graded folder " + s.string() +
+                         ", which is only ever read; write the report elsewhere");
+  std::error_code ec;
+  if (fs::exists(dir / "report.json")) return cannotGrade("--out " + dir.string() + " already holds a report; nothing is overwritten");
+  fs::create_directories(dir / "logs", ec);
+  if (ec) return cannotGrade("--out " + dir.string() + ": " + ec.message());
+
+  GradeReport report;
+  for (auto& d : o.shaderDirs) report.studentDirs.push_back(d.string());
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
+  report.date = date;
+  report.command = "shadelab grade " + (o.allExercises ? std::string("--all") : "--exercise " + o.exercise);
+  for (auto& d : o.shaderDirs) report.command += " --shaders " + d.string();
+  for (auto& id : ids) {
+    ExerciseResult result;
+    if (auto e = gradeExercise(id, o, dir, result, report.renderer); !e.empty()) return cannotGrade(e);
+    report.exercises.push_back(std::move(result));
+  }
+  for (auto& [name, text] : {std::pair{"report.md", gradeMarkdown(report)}, std::pair{"report.html", gradeHtml(report, dir)},
+                             std::pair{"report.json", gradeJson(report)}})
+    if (auto e = writeTextFile((dir / name).string(), text); !e.empty()) return cannotGrade(e);
+
+  double earned = 0, total = 0;
+  bool passed = true;
+  for (auto& e : report.exercises) {
+    earned += e.earned;
+    total += e.total;
+    passed &= e.passed();
+  }
+  if (report.exercises.size() > 1)
+    std::printf("all: %g / %g points (%.1f%%), %s\n", std::round(earned * 100) / 100, total,
+                total > 0 ? 100.0 * earned / total : 0.0, passed ? "every exercise passed" : "not every exercise passed");
+  std::printf("report: %s (also report.md, report.json)\n", (dir / "report.html").c_str());
+  return passed ? 0 : 1;
+}
+
+}  // namespace shadelab

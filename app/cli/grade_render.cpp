@@ -1,0 +1,122 @@
+#include "cli/grade_render.h"
+
+#include <cmath>
+#include <fstream>
+
+#include "cli/session.h"
+#include "host/measurer.h"
+#include "measure/report.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string configure(LabHost& host, const Exercise& ex, const Configuration& c) {
+  if (ex.lab != host.lab().id())
+    if (auto e = host.selectLab(ex.lab); !e.empty()) return e;
+  if (!c.scene.empty())
+    if (auto e = host.selectScene(c.scene); !e.empty()) return e;
+  for (auto& [key, value] : c.settings)
+    if (auto e = host.set(key + "=" + value); !e.empty()) return e;
+  return applyCamera(host, c.camera);
+}
+
+void writeResult(const ConfigurationJob& job, const std::string& phase, const nlohmann::json& j) {
+  writeTextFile((job.dir / (job.stem + "-" + phase + ".json")).string(), j.dump(2) + "\n");
+}
+
+nlohmann::json metricsJson(const Metrics& metrics) {
+  nlohmann::json j = nlohmann::json::object();
+  for (auto& [k, v] : metrics) j[k] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+  return j;
+}
+
+// Every error of the programs this frame used, at the student's file:line with the caret.
+std::vector<std::string> buildErrors(LabHost& host) {
+  std::vector<std::string> out;
+  for (auto& p : host.lab().activePrograms()) {
+    if (!p->lastBuildFailed() && p->hasGoodProgram()) continue;
+    for (auto& d : p->diagnostics())
+      if (d.isError) {
+        const std::string text = p->spec().name + ": " + d.formatWithCaret();
+        if (std::find(out.begin(), out.end(), text) == out.end()) out.push_back(text);
+      }
+    if (p->diagnostics().empty()) out.push_back(p->spec().name + ": did not build (no message from the driver)");
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json readResult(const ConfigurationJob& job, const std::string& phase) {
+  std::ifstream in(job.dir / (job.stem + "-" + phase + ".json"));
+  if (!in) return {};
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_discarded() ? nlohmann::json() : j;
+}
+
+int renderConfiguration(const ConfigurationJob& job, const std::function<void(const std::string&)>& enter) {
+  const Exercise& ex = *job.exercise;
+  const Configuration& c = *job.configuration;
+  const std::string where = (ex.dir / "rubric.json").string() + ": configuration '" + c.name + "'";
+  const auto failSolution = [&](const std::string& message) {
+    writeResult(job, "solution", {{"error", message}});
+    return 2;
+  };
+  enter("solution");
+  std::string err;
+  auto context = createHeadlessContext(job.backend, err);
+  if (!context) return failSolution(err);
+
+  // The built-in shaders: the solution's frame, and the truth the checks need.
+  ImageF solution;
+  std::vector<ImageF> truths;
+  nlohmann::json solutionJson{{"renderer", context->describe()}};
+  {
+    LabHost host(ShaderSearchPath({builtinShaderDir()}));
+    if (auto e = configure(host, ex, c); !e.empty()) return failSolution(where + ": " + e);
+    host.settle();
+    host.renderFrame(ex.size);
+    solution = host.readImage();
+    if (auto errors = buildErrors(host); !errors.empty())
+      return failSolution(where + ": the lab's own shaders did not build: " + errors.front());
+    if (c.needsTruth()) {
+      Measurer measurer(host);
+      auto m = measurer.measureNow(ex.size, 0.0f, {});
+      if (!m) return failSolution(where + ": this configuration has no ground truth to check against");
+      truths = m->references;
+      solutionJson["vs_truth"] = metricsJson(m->values);
+    }
+    if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty())
+      return failSolution(e);
+  }
+  writeResult(job, "solution", solutionJson);
+
+  // The student's folders first: their frame, compared with the solution's and with the truth.
+  enter("student");
+  std::vector<fs::path> roots = job.studentDirs;
+  roots.push_back(builtinShaderDir());
+  LabHost host{ShaderSearchPath(roots)};
+  if (auto e = configure(host, ex, c); !e.empty()) return failSolution(where + ": " + e);
+  host.settle();
+  host.renderFrame(ex.size);
+  const ImageF image = host.readImage();
+  nlohmann::json student{{"errors", buildErrors(host)}, {"warnings", host.warnings()},
+                         {"non_finite", countNonFinite(image)}};
+  const ImageError e = compareImages(image, solution);
+  student["vs_solution"] = metricsJson({{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
+                                        {"bad_pixel_pct", e.badPixelPct}});
+  if (c.needsTruth() && student["errors"].empty()) {
+    std::vector<ImageF> views;
+    for (auto& view : host.lab().measuredViews()) views.push_back(host.renderView(ex.size, 0.0f, view.settings));
+    student["vs_truth"] = metricsJson(host.lab().viewMetrics(views, truths));
+  }
+  writePng((job.dir / (job.stem + "-student.png")).string(), image);
+  writePng((job.dir / (job.stem + "-diff.png")).string(), diffImage(image, solution));
+  writeResult(job, "student", student);
+  return 0;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,35 @@
+// The part of grading that draws: one rubric configuration, rendered in a child process (see
+// grade/watchdog.h) first with the built-in shaders (the solution, and the lab's ground truth when
+// a check needs it), then with the student's folders searched first. Results go to files beside
+// the report so that what was finished survives a watchdog kill:
+//   <stem>-solution.png, <stem>-student.png, <stem>-diff.png      images for the report
+//   <stem>-solution.json, <stem>-student.json                    numbers, errors, warnings
+#pragma once
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "grade/rubric.h"
+
+namespace shadelab {
+
+struct ConfigurationJob {
+  const Exercise* exercise = nullptr;
+  const Configuration* configuration = nullptr;
+  std::vector<std::filesystem::path> studentDirs;
+  std::string backend;
+  std::filesystem::path dir;  // the report folder
+  std::string stem;           // file names: dir/stem-*.png
+};
+
+// Runs in the child. `enter` announces the phases "solution" and "student". Exit code 0, or 2
+// when the rubric or the built-in solution is at fault (the message is in <stem>-solution.json).
+int renderConfiguration(const ConfigurationJob& job, const std::function<void(const std::string&)>& enter);
+
+// What the child wrote: {} when the file is absent (the child never got there).
+nlohmann::json readResult(const ConfigurationJob& job, const std::string& phase);
+
+}  // namespace shadelab

@@ -1,0 +1,219 @@
+#include "grade/grading.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "measure/image.h"
+#include "measure/report.h"
+
+namespace shadelab {
+
+const char* gradeName(Grade g) {
+  switch (g) {
+    case Grade::Full: return "PASS";
+    case Grade::Partial: return "PARTIAL";
+    default: return "FAIL";
+  }
+}
+
+CheckResult scoreCheck(const Check& check, double value, double solutionValue) {
+  CheckResult r;
+  r.check = check;
+  r.value = value;
+  r.solutionValue = solutionValue;
+  r.fullBound = check.full.bound(solutionValue);
+  r.partialBound = std::max(check.partial.bound(solutionValue), r.fullBound);
+  if (!std::isfinite(value)) {
+    r.grade = Grade::Fail;
+    r.message = check.metric + " is not a number: the frame holds NaN or Inf values";
+    return r;
+  }
+  r.grade = value <= r.fullBound ? Grade::Full : value <= r.partialBound ? Grade::Partial : Grade::Fail;
+  r.earned = r.grade == Grade::Full ? check.points : r.grade == Grade::Partial ? check.points * check.partialCredit : 0.0;
+  if (r.grade != Grade::Full) r.message = check.hint;
+  return r;
+}
+
+void applyRequirements(std::vector<CheckResult>& checks) {
+  for (auto& r : checks) {
+    if (r.check.requiredCheck.empty()) continue;
+    for (auto& other : checks)
+      if (other.check.name == r.check.requiredCheck && other.grade == Grade::Fail && r.grade != Grade::Fail) {
+        r.grade = Grade::Fail;
+        r.earned = 0.0;
+        r.message = "counts only when '" + other.check.name + "' does not fail";
+      }
+  }
+}
+
+CheckResult failedCheck(const Check& check, double solutionValue, const std::string& why) {
+  CheckResult r = scoreCheck(check, std::nan(""), solutionValue);
+  r.message = why;
+  return r;
+}
+
+namespace {
+
+std::string points(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", std::round(v * 100.0) / 100.0);
+  return b;
+}
+
+std::string value(double v) {
+  if (!std::isfinite(v)) return "n/a";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+std::string bound(const Threshold& t, double b) {
+  return t.base == Threshold::Base::Absolute ? value(b) : value(b) + " (" + t.text() + ")";
+}
+
+std::string percent(double p) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f%%", p);
+  return b;
+}
+
+}  // namespace
+
+std::string checkLine(const ConfigurationResult& c, const CheckResult& r) {
+  char line[512];
+  const std::string what = c.name + ": " + r.check.name;
+  std::snprintf(line, sizeof line, "  %-7s %-44s %-16s %9s <= %-24s %s/%s", gradeName(r.grade), what.c_str(),
+                r.check.metric.c_str(), value(r.value).c_str(), bound(r.check.full, r.fullBound).c_str(),
+                points(r.earned).c_str(), points(r.check.points).c_str());
+  return line;
+}
+
+std::string gradeMarkdown(const GradeReport& report) {
+  std::string m = "# ShadeLab grade report\n\n";
+  m += "- Command: `" + report.command + "`\n- Shaders graded: ";
+  for (size_t i = 0; i < report.studentDirs.size(); ++i) m += (i ? ", `" : "`") + report.studentDirs[i] + "`";
+  m += "\n- Renderer: " + report.renderer + "\n- Date: " + report.date + "\n\n";
+  m += "| exercise | score | pass mark | result |\n|---|---|---|---|\n";
+  for (auto& e : report.exercises)
+    m += "| " + e.id + " | " + points(e.earned) + " / " + points(e.total) + " (" + percent(e.percent()) + ") | " +
+         percent(e.passMark) + " | " + (e.passed() ? "passed" : "**not passed**") + " |\n";
+  for (auto& e : report.exercises) {
+    m += "\n## " + e.id + ": " + e.title + "\n\n";
+    m += "Score " + points(e.earned) + " / " + points(e.total) + " (" + percent(e.percent()) + "), pass mark " +
+         percent(e.passMark) + ".\n\n";
+    for (auto& f : e.missingFiles) m += "- **Not submitted**: `" + f + "` is in none of the graded folders.\n";
+    for (auto& n : e.notes) m += "- " + n + "\n";
+    for (auto& c : e.configurations) {
+      m += "\n### " + c.name + "\n\n" + c.description + "\n\n";
+      for (auto& err : c.errors) m += "```\n" + err + "\n```\n\n";
+      if (c.nonFinite) m += "The frame holds " + std::to_string(c.nonFinite) + " NaN/Inf values.\n\n";
+      m += "| check | metric | yours | solution | full marks at | partial at | result | points |\n"
+           "|---|---|---|---|---|---|---|---|\n";
+      bool lost = false;
+      for (auto& r : c.checks) {
+        m += "| " + r.check.name + " | " + r.check.metric + " (vs " +
+             (r.check.against == Against::Truth ? "truth" : "solution") + ") | " + value(r.value) + " | " +
+             value(r.solutionValue) + " | <= " + bound(r.check.full, r.fullBound) + " | <= " +
+             bound(r.check.partial, r.partialBound) + " | " + gradeName(r.grade) + " | " + points(r.earned) + " / " +
+             points(r.check.points) + " |\n";
+        lost |= r.grade != Grade::Full;
+      }
+      for (auto& r : c.checks)
+        if (r.grade != Grade::Full && !r.message.empty()) m += "\n- **" + r.check.name + "**: " + r.message;
+      m += "\n";
+      if (lost && !c.studentImage.empty())
+        m += "\n| yours | solution | difference (x4) |\n|---|---|---|\n| ![](" + c.studentImage + ") | ![](" +
+             c.solutionImage + ") | ![](" + c.diffImage + ") |\n";
+    }
+  }
+  return m;
+}
+
+std::string gradeHtml(const GradeReport& report, const std::filesystem::path& dir) {
+  const auto image = [&](const std::string& name, const std::string& caption) {
+    ImageF img;
+    if (name.empty() || !readImage((dir / name).string(), img).empty()) return std::string();
+    return "<figure><img src='" + pngDataUri(img) + "'><figcaption>" + caption + "</figcaption></figure>";
+  };
+  std::string h =
+      "<!doctype html>\n<html><head><meta charset='utf-8'><title>ShadeLab grade report</title><style>"
+      "body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
+      "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
+      "td:first-child,th:first-child{text-align:left}.PASS{color:#1a7f37}.PARTIAL{color:#b35900}.FAIL{color:#c00}"
+      "pre{background:#f6f6f6;padding:.6em;overflow-x:auto}figure{display:inline-block;margin:4px}"
+      "img{image-rendering:pixelated}figcaption{font-size:90%;text-align:center}</style></head><body>\n"
+      "<h1>ShadeLab grade report</h1>\n<p>Command: <code>" +
+      htmlEscape(report.command) + "</code><br>Renderer: " + htmlEscape(report.renderer) + "<br>Date: " +
+      htmlEscape(report.date) + "</p>\n<table><tr><th>exercise</th><th>score</th><th>pass mark</th><th>result</th></tr>\n";
+  for (auto& e : report.exercises)
+    h += "<tr><td>" + htmlEscape(e.id) + "</td><td>" + points(e.earned) + " / " + points(e.total) + " (" +
+         percent(e.percent()) + ")</td><td>" + percent(e.passMark) + "</td><td class='" +
+         (e.passed() ? "PASS'>passed" : "FAIL'>not passed") + "</td></tr>\n";
+  h += "</table>\n";
+  for (auto& e : report.exercises) {
+    h += "<h2>" + htmlEscape(e.id + ": " + e.title) + "</h2>\n";
+    for (auto& f : e.missingFiles) h += "<p class='FAIL'>Not submitted: <code>" + htmlEscape(f) + "</code></p>\n";
+    for (auto& n : e.notes) h += "<p>" + htmlEscape(n) + "</p>\n";
+    for (auto& c : e.configurations) {
+      h += "<h3>" + htmlEscape(c.name) + "</h3>\n<p>" + htmlEscape(c.description) + "</p>\n";
+      for (auto& err : c.errors) h += "<pre>" + htmlEscape(err) + "</pre>\n";
+      h += "<table><tr><th>check</th><th>metric</th><th>yours</th><th>solution</th><th>full marks at</th>"
+           "<th>partial at</th><th>result</th><th>points</th></tr>\n";
+      bool lost = false;
+      for (auto& r : c.checks) {
+        h += "<tr><td>" + htmlEscape(r.check.name) + "</td><td>" + htmlEscape(r.check.metric) + "</td><td>" +
+             value(r.value) + "</td><td>" + value(r.solutionValue) + "</td><td>&le; " +
+             htmlEscape(bound(r.check.full, r.fullBound)) + "</td><td>&le; " +
+             htmlEscape(bound(r.check.partial, r.partialBound)) + "</td><td class='" + gradeName(r.grade) + "'>" +
+             gradeName(r.grade) + "</td><td>" + points(r.earned) + " / " + points(r.check.points) + "</td></tr>\n";
+        lost |= r.grade != Grade::Full;
+      }
+      h += "</table>\n<ul>";
+      for (auto& r : c.checks)
+        if (r.grade != Grade::Full && !r.message.empty())
+          h += "<li><b>" + htmlEscape(r.check.name) + "</b>: " + htmlEscape(r.message) + "</li>";
+      h += "</ul>\n";
+      if (lost)
+        h += image(c.studentImage, "yours") + image(c.solutionImage, "solution") +
+             image(c.diffImage, "difference, amplified 4x") + "\n";
+    }
+  }
+  return h + "</body></html>\n";
+}
+
+std::string gradeJson(const GradeReport& report) {
+  nlohmann::json j;
+  j["command"] = report.command;
+  j["renderer"] = report.renderer;
+  j["shaders"] = report.studentDirs;
+  j["date"] = report.date;
+  j["exercises"] = nlohmann::json::array();
+  const auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  for (auto& e : report.exercises) {
+    nlohmann::json je{{"id", e.id},           {"title", e.title},         {"lab", e.lab},
+                      {"score", e.earned},    {"total", e.total},         {"percent", e.percent()},
+                      {"pass_mark", e.passMark}, {"passed", e.passed()}, {"missing_files", e.missingFiles},
+                      {"notes", e.notes},     {"checks", nlohmann::json::array()}};
+    for (auto& c : e.configurations)
+      for (auto& r : c.checks)
+        je["checks"].push_back({{"configuration", c.name},
+                                {"check", r.check.name},
+                                {"metric", r.check.metric},
+                                {"against", r.check.against == Against::Truth ? "truth" : "solution"},
+                                {"value", number(r.value)},
+                                {"solution", number(r.solutionValue)},
+                                {"full_at", number(r.fullBound)},
+                                {"partial_at", number(r.partialBound)},
+                                {"result", gradeName(r.grade)},
+                                {"points", r.earned},
+                                {"max_points", r.check.points},
+                                {"message", r.message},
+                                {"errors", c.errors}});
+    j["exercises"].push_back(std::move(je));
+  }
+  return j.dump(2) + "\n";
+}
+
+}  // namespace shadelab

@@ -1,0 +1,70 @@
+// What grading an exercise produced, how a check is scored, and the reports made of it: one line
+// per check on the terminal, Markdown and a self-contained HTML page for the student (their image,
+// the solution's and a difference for every check not passed in full), JSON for a gradebook.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grade/rubric.h"
+
+namespace shadelab {
+
+enum class Grade { Full, Partial, Fail };
+const char* gradeName(Grade g);  // "PASS", "PARTIAL", "FAIL"
+
+struct CheckResult {
+  Check check;
+  double value = 0.0;          // the student's number (NaN when it could not be had)
+  double solutionValue = 0.0;  // the built-in solution's on the same check
+  double fullBound = 0.0, partialBound = 0.0;
+  Grade grade = Grade::Fail;
+  double earned = 0.0;
+  std::string message;  // why it lost points: the rubric's hint, or what went wrong
+};
+
+// Scores `value` against the check's thresholds (a NaN value scores nothing).
+CheckResult scoreCheck(const Check& check, double value, double solutionValue);
+// Checks whose `requires` failed score nothing, whatever their own value.
+void applyRequirements(std::vector<CheckResult>& checks);
+// The check could not be measured at all (did not compile, the watchdog, a crash): no points.
+CheckResult failedCheck(const Check& check, double solutionValue, const std::string& why);
+
+struct ConfigurationResult {
+  std::string name;
+  std::string description;  // "scene shadow-test, filter=pcf pcf_size=5"
+  std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
+  std::vector<std::string> warnings;  // the lab's own, under the student's shader
+  size_t nonFinite = 0;      // NaN/Inf values in the student's frame
+  // Image files beside the report ("" when not made).
+  std::string studentImage, solutionImage, diffImage;
+  std::vector<CheckResult> checks;
+  double renderSeconds = 0.0;  // the student's phase
+};
+
+struct ExerciseResult {
+  std::string id, title, lab;
+  std::vector<std::string> missingFiles;  // the submission lacks them: not graded, 0 points
+  std::vector<std::string> notes;         // e.g. a file identical to the lab's own
+  std::vector<ConfigurationResult> configurations;
+  double earned = 0.0, total = 0.0, passMark = 0.0;
+  double percent() const { return total > 0 ? 100.0 * earned / total : 0.0; }
+  bool passed() const { return percent() + 1e-9 >= passMark; }
+};
+
+struct GradeReport {
+  std::string command;
+  std::string renderer;
+  std::vector<std::string> studentDirs;
+  std::string date;
+  std::vector<ExerciseResult> exercises;
+};
+
+// "  pcf-5x5 [scene shadow-test, pcf_size=5]  acne_pct  0.12 <= 0.62 (solution+0.5)  PASS  2/2"
+std::string checkLine(const ConfigurationResult& c, const CheckResult& r);
+std::string gradeMarkdown(const GradeReport& report);
+// Reads the images named in the report from `dir` and embeds them.
+std::string gradeHtml(const GradeReport& report, const std::filesystem::path& dir);
+std::string gradeJson(const GradeReport& report);
+
+}  // namespace shadelab

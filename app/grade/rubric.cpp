@@ -1,0 +1,197 @@
+#include "grade/rubric.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "util/format.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+double Threshold::bound(double solution) const {
+  switch (base) {
+    case Base::SolutionPlus: return solution + value;
+    case Base::SolutionTimes: return solution * value;
+    default: return value;
+  }
+}
+
+std::string Threshold::text() const {
+  switch (base) {
+    case Base::SolutionPlus: return "solution+" + formatNumber(value);
+    case Base::SolutionTimes: return "solution*" + formatNumber(value);
+    default: return formatNumber(value);
+  }
+}
+
+std::string parseThreshold(const std::string& text, Threshold& out) {
+  std::string number = text;
+  out.base = Threshold::Base::Absolute;
+  if (text.rfind("solution", 0) == 0) {
+    const std::string rest = text.substr(8);
+    if (rest.empty() || (rest[0] != '+' && rest[0] != '*'))
+      return "'" + text + "' is not a number, 'solution+X' or 'solution*X'";
+    out.base = rest[0] == '+' ? Threshold::Base::SolutionPlus : Threshold::Base::SolutionTimes;
+    number = rest.substr(1);
+  }
+  char* end = nullptr;
+  out.value = std::strtod(number.c_str(), &end);
+  if (number.empty() || *end || !(out.value >= 0.0))
+    return "'" + text + "' is not a number >= 0, 'solution+X' or 'solution*X'";
+  return {};
+}
+
+bool Configuration::needsTruth() const {
+  return std::any_of(checks.begin(), checks.end(), [](const Check& c) { return c.against == Against::Truth; });
+}
+
+double Exercise::totalPoints() const {
+  double sum = 0.0;
+  for (auto& c : configurations)
+    for (auto& k : c.checks) sum += k.points;
+  return sum;
+}
+
+fs::path exercisesRoot() {
+  if (const char* env = std::getenv("SHADELAB_EXERCISES"); env && *env) return env;
+  return fs::path(SHADELAB_SOURCE_DIR) / "exercises";
+}
+
+std::vector<std::string> listExercises(const fs::path& root) {
+  std::vector<std::string> ids;
+  std::error_code ec;
+  for (auto& lab : fs::directory_iterator(root, ec))
+    for (auto& ex : fs::directory_iterator(lab.path(), ec))
+      if (fs::is_regular_file(ex.path() / "rubric.json"))
+        ids.push_back(lab.path().filename().string() + "/" + ex.path().filename().string());
+  std::sort(ids.begin(), ids.end());
+  return ids;
+}
+
+namespace {
+
+const char* kSolutionMetrics[] = {"rmse", "covered_rmse", "max_error", "bad_pixel_pct"};
+
+// Reads `key` of `j` as text (strings as they are, numbers formatted), or returns false.
+bool text(const nlohmann::json& j, const char* key, std::string& out) {
+  if (!j.contains(key)) return false;
+  const auto& v = j[key];
+  if (v.is_string()) out = v.get<std::string>();
+  else if (v.is_number()) out = formatNumber(v.get<double>());
+  else if (v.is_boolean()) out = v.get<bool>() ? "on" : "off";
+  else return false;
+  return true;
+}
+
+std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& c) {
+  if (!j.is_object()) return where + ": not an object";
+  if (!text(j, "name", c.name) || c.name.empty()) return where + ": \"name\" is missing";
+  const std::string at = where + " (" + c.name + ")";
+  if (!text(j, "metric", c.metric) || c.metric.empty()) return at + ": \"metric\" is missing";
+  std::string against = "solution";
+  text(j, "against", against);
+  if (against != "solution" && against != "truth") return at + ": \"against\" is '" + against + "' (valid: solution, truth)";
+  c.against = against == "truth" ? Against::Truth : Against::Solution;
+  if (c.against == Against::Solution &&
+      std::find(std::begin(kSolutionMetrics), std::end(kSolutionMetrics), c.metric) == std::end(kSolutionMetrics))
+    return at + ": metric '" + c.metric + "' against the solution (valid: rmse, covered_rmse, max_error, bad_pixel_pct)";
+  std::string full, partial;
+  if (!text(j, "full", full)) return at + ": \"full\" (the threshold for full marks) is missing";
+  if (auto e = parseThreshold(full, c.full); !e.empty()) return at + ": \"full\": " + e;
+  c.partial = c.full;  // no partial band unless given: all or nothing
+  if (text(j, "partial", partial))
+    if (auto e = parseThreshold(partial, c.partial); !e.empty()) return at + ": \"partial\": " + e;
+  if (j.contains("points")) {
+    if (!j["points"].is_number() || !(j["points"].get<double>() > 0)) return at + ": \"points\" must be a number > 0";
+    c.points = j["points"].get<double>();
+  }
+  if (j.contains("partial_credit")) {
+    const auto& p = j["partial_credit"];
+    if (!p.is_number() || !(p.get<double>() >= 0 && p.get<double>() <= 1)) return at + ": \"partial_credit\" must be in [0, 1]";
+    c.partialCredit = p.get<double>();
+  }
+  text(j, "hint", c.hint);
+  text(j, "requires", c.requiredCheck);
+  return {};
+}
+
+std::string loadConfiguration(const nlohmann::json& j, const std::string& where, Configuration& c) {
+  if (!j.is_object()) return where + ": not an object";
+  if (!text(j, "name", c.name) || c.name.empty()) return where + ": \"name\" is missing";
+  const std::string at = where + " (" + c.name + ")";
+  text(j, "scene", c.scene);
+  text(j, "camera", c.camera);
+  if (j.contains("set")) {
+    if (!j["set"].is_object()) return at + ": \"set\" must be an object of parameter -> value";
+    for (auto& [key, value] : j["set"].items()) {
+      std::string v;
+      if (!text(j["set"], key.c_str(), v)) return at + ": \"set\"." + key + " must be a string, number or boolean";
+      c.settings.emplace_back(key, v);
+    }
+  }
+  if (!j.contains("checks") || !j["checks"].is_array() || j["checks"].empty()) return at + ": \"checks\" must be a non-empty array";
+  for (size_t i = 0; i < j["checks"].size(); ++i) {
+    Check check;
+    if (auto e = loadCheck(j["checks"][i], at + ": checks[" + std::to_string(i) + "]", check); !e.empty()) return e;
+    c.checks.push_back(std::move(check));
+  }
+  for (auto& k : c.checks)
+    if (!k.requiredCheck.empty() && std::none_of(c.checks.begin(), c.checks.end(), [&](const Check& o) { return o.name == k.requiredCheck; }))
+      return at + ": check '" + k.name + "' requires '" + k.requiredCheck + "', which is not a check of this configuration";
+  return {};
+}
+
+}  // namespace
+
+std::string loadExercise(const fs::path& root, const std::string& id, Exercise& out) {
+  const fs::path dir = root / id;
+  const fs::path file = dir / "rubric.json";
+  if (id.find("..") != std::string::npos || !fs::is_regular_file(file)) {
+    std::string valid;
+    for (auto& e : listExercises(root)) valid += (valid.empty() ? "" : ", ") + e;
+    return "unknown exercise '" + id + "' (valid: " + (valid.empty() ? "none in " + root.string() : valid) + ")";
+  }
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const std::string where = file.string();
+  if (j.is_discarded() || !j.is_object()) return where + ": not valid JSON";
+  out = Exercise{};
+  out.id = id;
+  out.dir = dir;
+  if (!text(j, "lab", out.lab)) return where + ": \"lab\" is missing";
+  if (!text(j, "title", out.title)) return where + ": \"title\" is missing";
+  if (!j.contains("files") || !j["files"].is_array() || j["files"].empty())
+    return where + ": \"files\" must list the shader files the student submits";
+  for (auto& f : j["files"]) {
+    if (!f.is_string()) return where + ": \"files\" must hold paths relative to a shader folder";
+    out.files.push_back(f.get<std::string>());
+  }
+  if (j.contains("pass_mark")) {
+    if (!j["pass_mark"].is_number() || j["pass_mark"].get<double>() < 0 || j["pass_mark"].get<double>() > 100)
+      return where + ": \"pass_mark\" must be a percentage in [0, 100]";
+    out.passMark = j["pass_mark"].get<double>();
+  }
+  if (j.contains("size")) {
+    const auto& s = j["size"];
+    if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() || s[0].get<int>() < 16 ||
+        s[1].get<int>() < 16 || s[0].get<int>() > 4096 || s[1].get<int>() > 4096)
+      return where + ": \"size\" must be [width, height] with 16 <= each <= 4096";
+    out.size = {s[0].get<int>(), s[1].get<int>()};
+  }
+  if (!j.contains("configurations") || !j["configurations"].is_array() || j["configurations"].empty())
+    return where + ": \"configurations\" must be a non-empty array";
+  for (size_t i = 0; i < j["configurations"].size(); ++i) {
+    Configuration c;
+    if (auto e = loadConfiguration(j["configurations"][i], where + ": configurations[" + std::to_string(i) + "]", c);
+        !e.empty())
+      return e;
+    out.configurations.push_back(std::move(c));
+  }
+  return {};
+}
+
+}  // namespace shadelab

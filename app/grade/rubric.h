@@ -1,0 +1,75 @@
+// Exercises and their rubrics. An exercise lives in exercises/<lab>/<name>/:
+//   statement.md   what to implement, the equation, what to read in the tutorial
+//   starter/       a copy of the lab's shader file(s) with a marked TODO region, laid out like shaders/
+//   rubric.json    the configurations to render and the checks made on each
+//
+// A check compares one number with thresholds for full and partial credit. The number is either
+// the student's frame against the built-in solution's frame of the same configuration (`rmse`,
+// `covered_rmse`, `max_error`, `bad_pixel_pct`), or one of the lab's error metrics against its
+// ground truth (`acne_pct`, `visibility_rmse_area`, `normal_angle_deg`, ...). Lower is better.
+// A threshold is a number, or relative to what the solution scores on the same check:
+// "solution+0.5", "solution*1.1".
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace shadelab {
+
+struct Threshold {
+  double value = 0.0;
+  enum class Base { Absolute, SolutionPlus, SolutionTimes } base = Base::Absolute;
+  // The bound for a solution that scored `solution` (the value itself when absolute).
+  double bound(double solution) const;
+  std::string text() const;  // as written: "0.02", "solution+0.5"
+};
+// "" on success, else what is wrong with `text`.
+std::string parseThreshold(const std::string& text, Threshold& out);
+
+enum class Against { Solution, Truth };
+
+struct Check {
+  std::string name;    // "no acne"
+  std::string metric;  // "rmse" (against the solution) or a lab metric (against the truth)
+  Against against = Against::Solution;
+  Threshold full, partial;  // value <= full: all points; <= partial: partialCredit of them
+  double points = 1.0;
+  double partialCredit = 0.5;
+  std::string hint;  // shown when the check is not passed in full: what is likely wrong
+  // Another check of the same configuration that must not fail for this one to score: "no acne"
+  // means nothing in a frame with no shadow at all.
+  std::string requiredCheck;
+};
+
+// One frame the checks look at: a scene, a camera and the lab's parameters.
+struct Configuration {
+  std::string name;
+  std::string scene;   // "" = the lab's default
+  std::string camera;  // OrbitCamera::parse text, "" = framed
+  std::vector<std::pair<std::string, std::string>> settings;  // lab param -> value, in order
+  std::vector<Check> checks;
+  bool needsTruth() const;
+};
+
+struct Exercise {
+  std::string id;  // "shadows/pcf"
+  std::string lab;
+  std::string title;
+  std::filesystem::path dir;
+  std::vector<std::string> files;  // shader files the student submits, relative to a shader root
+  double passMark = 60.0;          // percent
+  glm::ivec2 size{320, 240};
+  std::vector<Configuration> configurations;
+  double totalPoints() const;
+};
+
+// exercises/ in the source tree (or $SHADELAB_EXERCISES).
+std::filesystem::path exercisesRoot();
+// Every exercise id under `root`, sorted ("shading/blinn-phong", ...).
+std::vector<std::string> listExercises(const std::filesystem::path& root);
+// Reads root/<id>/rubric.json. "" on success, else one line naming the file and the key.
+std::string loadExercise(const std::filesystem::path& root, const std::string& id, Exercise& out);
+
+}  // namespace shadelab

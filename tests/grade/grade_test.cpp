@@ -1,0 +1,228 @@
+// `shadelab grade` end to end, through the real binary: the lab's own shaders score full marks,
+// the starters score low, seeded mistakes fail the check meant to catch them with a message that
+// points at the cause, an endless loop is stopped and grading goes on, a syntax error is reported
+// at the student's file:line, and the student's folder is never written.
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "grade/rubric.h"
+#include "shader/preprocessor.h"
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Graded {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr
+  nlohmann::json report;
+  const nlohmann::json& check(const std::string& name) const {
+    for (auto& c : report["exercises"][0]["checks"])
+      if (c["check"] == name) return c;
+    throw std::runtime_error("no check '" + name + "' in the report");
+  }
+  double percent() const { return report["exercises"][0]["percent"].get<double>(); }
+};
+
+std::string slug(std::string s) {
+  for (auto& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return s;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(SHADELAB_TEST_OUT) / "grade" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Where a test's report goes, beside its student folder (grade() clears it first).
+fs::path reportDir(const std::string& name) { return fs::path(SHADELAB_TEST_OUT) / "grade" / name / "report"; }
+
+Graded grade(const std::string& exercise, const fs::path& shaders, const fs::path& out, const std::string& extra = "") {
+  const fs::path log = fs::path(SHADELAB_TEST_OUT) / "grade" / (slug(out.string()) + ".log");  // outside any student folder
+  fs::remove_all(out);
+  const std::string cmd = std::string(SHADELAB_BINARY) + " grade --exercise " + exercise + " --shaders '" + shaders.string() +
+                          "' --out '" + out.string() + "' " + extra + " > '" + log.string() + "' 2>&1";
+  Graded g;
+  const int status = std::system(cmd.c_str());
+  g.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(log);
+  std::stringstream s;
+  s << in.rdbuf();
+  g.output = s.str();
+  std::ifstream report(out / "report.json");
+  if (report) g.report = nlohmann::json::parse(report, nullptr, false);
+  return g;
+}
+
+// A student folder holding the lab's `file` with `find` (which must occur exactly once, so a
+// change to the lab's shader cannot silently turn the mistake into a no-op) replaced.
+fs::path seeded(const std::string& name, const std::string& file, const std::string& find, const std::string& replace) {
+  std::ifstream in(builtinShaderDir() / file);
+  std::stringstream s;
+  s << in.rdbuf();
+  std::string text = s.str();
+  const size_t at = text.find(find);
+  EXPECT_NE(at, std::string::npos) << file << " no longer holds: " << find;
+  EXPECT_EQ(text.find(find, at + 1), std::string::npos) << file << " holds it twice: " << find;
+  if (at != std::string::npos) text.replace(at, find.size(), replace);
+  const fs::path dir = scratch(name) / "student";
+  fs::create_directories((dir / file).parent_path());
+  std::ofstream(dir / file) << text;
+  return dir;
+}
+
+class EveryExercise : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+TEST_P(EveryExercise, TheLabsOwnShaderScoresFullMarks) {
+  const Graded g = grade(GetParam(), builtinShaderDir(), scratch("solution-" + slug(GetParam())));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.exitCode, 0) << g.output;
+  EXPECT_DOUBLE_EQ(g.percent(), 100.0) << g.output;
+}
+
+TEST_P(EveryExercise, TheStarterRendersButScoresLow) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(exercisesRoot(), GetParam(), ex), "");
+  const Graded g = grade(GetParam(), ex.dir / "starter", scratch("starter-" + slug(GetParam())));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.exitCode, 1) << g.output;
+  EXPECT_LT(g.percent(), 30.0) << g.output;
+  for (auto& c : g.report["exercises"][0]["checks"]) {
+    EXPECT_TRUE(c["errors"].empty()) << "the starter must compile and draw: " << c["errors"];
+    EXPECT_TRUE(c["value"].is_number()) << c["check"];
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Grade, EveryExercise, ::testing::ValuesIn(listExercises(exercisesRoot())),
+                         [](const auto& info) { return slug(info.param); });
+
+TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
+  const fs::path student = seeded("half-vector", "common/lighting.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)",
+                                  "max(dot(N, L + V), 0.0)");
+  const Graded g = grade("shading/blinn-phong", student, reportDir("half-vector"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.check("highlight")["result"], "FAIL");
+  EXPECT_NE(g.check("highlight")["message"].get<std::string>().find("normalised"), std::string::npos);
+}
+
+TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
+  const fs::path student =
+      seeded("bias-sign", "shadows/shadow_filters.glsl",
+             "lit += tapCompare(type, L, map, cube, q, vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
+             "{\n      vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1);\n"
+             "      lit += receiverDepth(type, L, q, o) + q.bias > tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0;\n    }");
+  const Graded g = grade("shadows/pcf", student, reportDir("bias-sign"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.check("no acne")["result"], "FAIL");
+  EXPECT_NE(g.check("no acne")["message"].get<std::string>().find("sign of the bias"), std::string::npos);
+  EXPECT_EQ(g.check("shadow where the truth has one")["result"], "PASS");
+}
+
+TEST(GradeMistakes, TapsInTextureCoordinatesInsteadOfTexelsFailTheSoftEdge) {
+  const fs::path student = seeded("tap-space", "shadows/shadow_filters.glsl",
+                                  "vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
+                                  "(vec2(i, j) - 0.5 * float(PCF_SIZE - 1)) * q.texel);");
+  const Graded g = grade("shadows/pcf", student, reportDir("tap-space"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.check("soft edge")["result"], "FAIL");
+  EXPECT_NE(g.check("soft edge")["message"].get<std::string>().find("in texels"), std::string::npos);
+  EXPECT_EQ(g.check("no acne")["result"], "PASS");
+  EXPECT_EQ(g.check("shadow where the truth has one")["result"], "PASS");
+}
+
+TEST(GradeMistakes, ABumpNormalLeaningWithTheSlopeFailsTheRelief) {
+  const fs::path student =
+      seeded("bump-sign", "surface/height.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));");
+  const Graded g = grade("surface/bump", student, reportDir("bump-sign"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.check("shaded relief")["result"], "FAIL");
+  EXPECT_NE(g.check("shaded relief")["message"].get<std::string>().find("sign error"), std::string::npos);
+}
+
+TEST(GradeMistakes, BilinearWithoutTheHalfTexelShiftFailsTheMagnifiedRamps) {
+  const fs::path student = seeded("half-texel", "filtering/filter.glsl",
+                                  "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
+                                  "vec2 p = fract(uv) * vec2(levelSize(s, level));");
+  const Graded g = grade("filtering/bilinear", student, reportDir("half-texel"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_NE(g.check("smooth ramps between texels")["result"], "PASS");
+  EXPECT_NE(g.check("smooth ramps between texels")["message"].get<std::string>().find("half a texel"), std::string::npos);
+}
+
+TEST(GradeFailures, AnEndlessLoopIsStoppedByTheWatchdogAndGradingGoesOn) {
+  // llvmpipe stops any one loop after 65535 iterations; 32 transcendental steps per iteration
+  // for every fragment of two lights still take minutes. On a GPU it would never end.
+  std::string body = "float s = dot(N, L);\n    for (int i = 0; i >= 0; ++i) {  // never ends\n";
+  for (int k = 0; k < 32; ++k) body += "      s = fract(sin(s * 1.37 + " + std::to_string(k) + ".0) * 43758.5);\n";
+  body += "    }";
+  const fs::path student =
+      seeded("endless", "common/lighting.glsl", "float s = max(dot(N, safeNormalize(L + V, N)), 0.0);", body);
+  const Graded g = grade("shading/blinn-phong", student, reportDir("endless"), "--watchdog 3");
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  const auto& stopped = g.check("highlight");
+  EXPECT_EQ(stopped["result"], "FAIL");
+  EXPECT_NE(stopped["message"].get<std::string>().find("stopped by the watchdog after 3 s"), std::string::npos)
+      << stopped["message"];
+  // The per-vertex configuration runs the loop for a few hundred vertices only: it finishes and is scored.
+  EXPECT_TRUE(g.check("per-vertex highlight")["value"].is_number()) << g.output;
+  EXPECT_EQ(g.exitCode, 1);
+}
+
+TEST(GradeFailures, ASyntaxErrorIsReportedAtTheStudentsFileAndLine) {
+  const fs::path student = seeded("syntax", "common/lighting.glsl", "float s = max(dot(N, safeNormalize(L + V, N)), 0.0);",
+                                  "float s = max(dot(N, safeNormalize(L + V, N)), 0.0)");
+  const Graded g = grade("shading/blinn-phong", student, reportDir("syntax"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  const std::string where = (student / "common/lighting.glsl").string() + ":";
+  EXPECT_NE(g.output.find(where), std::string::npos) << g.output;
+  EXPECT_NE(g.output.find("error"), std::string::npos);
+  EXPECT_NE(g.output.find("\n    "), std::string::npos) << "the source line and its caret";
+  EXPECT_NE(g.output.find('^'), std::string::npos);
+  const auto& c = g.check("highlight");
+  EXPECT_EQ(c["result"], "FAIL");
+  EXPECT_NE(c["message"].get<std::string>().find("did not build: shading/phong: " + where), std::string::npos) << c;
+  EXPECT_EQ(g.percent(), 0.0);
+}
+
+TEST(GradeFailures, TheStudentsFolderIsOnlyRead) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(exercisesRoot(), "shading/blinn-phong", ex), "");
+  const fs::path student = scratch("read-only") / "student";
+  fs::copy(ex.dir / "starter", student, fs::copy_options::recursive);
+  const auto snapshot = [&] {
+    std::string s;
+    for (auto& e : fs::recursive_directory_iterator(student))
+      s += e.path().string() + " " + std::to_string(e.is_regular_file() ? fs::file_size(e.path()) : 0) + " " +
+           std::to_string(fs::last_write_time(e.path()).time_since_epoch().count()) + "\n";
+    return s;
+  };
+  const std::string before = snapshot();
+  const Graded g = grade("shading/blinn-phong", student, reportDir("read-only"));
+  EXPECT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(snapshot(), before);
+  // A report inside the graded folder is refused before anything is written.
+  const Graded inside = grade("shading/blinn-phong", student, student / "report");
+  EXPECT_EQ(inside.exitCode, 2) << inside.output;
+  EXPECT_NE(inside.output.find("only ever read"), std::string::npos) << inside.output;
+  EXPECT_EQ(snapshot(), before);
+}
+
+TEST(GradeFailures, AMissingFileIsNotSubmittedAndScoresNothing) {
+  const fs::path empty = scratch("missing") / "student";
+  fs::create_directories(empty);
+  const Graded g = grade("surface/bump", empty, reportDir("missing"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.percent(), 0.0);
+  EXPECT_EQ(g.report["exercises"][0]["missing_files"][0], "surface/height.glsl");
+  EXPECT_NE(g.output.find("not submitted"), std::string::npos);
+}
