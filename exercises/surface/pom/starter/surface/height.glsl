@@ -1,0 +1,104 @@
+// The height field and what is made of it: a normal by finite differences (bump mapping), and
+// texture coordinates shifted as if the surface had depth (the parallax family).
+//
+// Heights are in [0, 1]. `u_heightScale` world units of relief; `scale` (per fragment) the world
+// length of one unit of u and of v, so a depth of s world units is s / scale in UV units.
+// Parallax mapping assumes the surface is at the top of the height field and reads depth 1 - h.
+
+uniform sampler2D u_heightMap;
+uniform vec2 u_heightTexel;     // 1 / size of the height map
+uniform float u_heightScale;    // world units for a height of 1
+
+// The pixel's mip level, taken once where control flow is uniform: the parallax loops run a
+// different number of times per pixel, and implicit derivatives inside them are undefined. The
+// height field is sampled trilinearly (the lab binds such a sampler), so one level is all its
+// footprint needs, and an explicit level is cheaper per read than gradients.
+float g_heightLod;
+void initHeightGradients(vec2 uv) { g_heightLod = textureQueryLod(u_heightMap, uv).y; }
+
+float heightAt(vec2 uv) { return textureLod(u_heightMap, uv, g_heightLod).r; }
+
+// Bump mapping, tangent-space normal. GAMES101 (assignment 3): forward differences one texel apart,
+// dU = kh kn (h(u + 1/w, v) - h(u, v)): kh and kn are free, so the result agrees with the
+// displaced surface only if kh kn happens to equal s w / (world per UV). The consistent form uses
+// central differences and the fragment's own UV scale, and agrees by construction.
+vec3 bumpNormalGames101(vec2 uv, float kh, float kn) {
+  float h = heightAt(uv);
+  float dU = kh * kn * (heightAt(uv + vec2(u_heightTexel.x, 0.0)) - h);
+  float dV = kh * kn * (heightAt(uv + vec2(0.0, u_heightTexel.y)) - h);
+  return normalize(vec3(-dU, -dV, 1.0));
+}
+
+vec3 heightNormal(vec2 uv, vec2 scale) {
+  vec2 e = u_heightTexel;
+  float dhdu = (heightAt(uv + vec2(e.x, 0.0)) - heightAt(uv - vec2(e.x, 0.0))) / (2.0 * e.x);
+  float dhdv = (heightAt(uv + vec2(0.0, e.y)) - heightAt(uv - vec2(0.0, e.y))) / (2.0 * e.y);
+  vec2 slope = u_heightScale * vec2(dhdu, dhdv) / max(scale, vec2(1e-8));
+  return normalize(vec3(-slope, 1.0));
+}
+
+// The view direction in tangent space, towards the eye; its z is clamped so a grazing ray cannot
+// push the lookup to infinity (beyond about 87 degrees from the normal the shift stops growing).
+vec3 grazingSafe(vec3 v) { return vec3(v.xy, max(v.z, 0.05)); }
+
+// UV shift per unit of depth along the view ray.
+vec2 parallaxDirection(vec3 viewTs, vec2 scale) {
+  vec3 v = grazingSafe(viewTs);
+  return v.xy / v.z * (u_heightScale / max(scale, vec2(1e-8)));
+}
+
+// Parallax mapping (Kaneko et al. 2001): one step, as if the depth at uv held everywhere.
+vec2 parallaxOffset(vec2 uv, vec3 viewTs, vec2 scale, out float depth) {
+  depth = 1.0 - heightAt(uv);
+  return uv - parallaxDirection(viewTs, scale) * depth;
+}
+
+// Steep parallax and parallax occlusion mapping: march the view ray down through `layers` depth
+// slices until it is under the height field; POM then interpolates between the last two slices.
+// The loop is bounded by `layers` whatever the angle.
+vec2 parallaxMarch(vec2 uv, vec3 viewTs, vec2 scale, int layers, bool occlusion, out float depth) {
+  float layerDepth = 1.0 / float(layers);
+  vec2 step = parallaxDirection(viewTs, scale) * layerDepth;
+  // TODO(exercise surface/pom): begin
+  // March the view ray down from depth 0 at uv, one layer (layerDepth deeper, `step` along the
+  // texture) at a time, at most `layers` times, until the ray's depth reaches the surface's depth
+  // there (1 - heightAt). Steep parallax (occlusion false) returns that point. POM interpolates
+  // between this layer and the one before, where the ray crossed the surface. Set `depth` to the
+  // ray's depth at the point returned.
+  depth = 0.0;
+  return uv;
+  // TODO(exercise surface/pom): end
+}
+
+// Self-shadowing: from the point found (at `depth`), march towards the light; any height field
+// above the ray shadows it. Returns 1 lit .. 0 shadowed (soft: how far above the ray it rose).
+float parallaxShadow(vec2 uv, float depth, vec3 lightTs, vec2 scale, int layers) {
+  if (lightTs.z <= 0.0) return 0.0;
+  float layerDepth = depth / float(max(layers / 2, 1));
+  vec2 step = parallaxDirection(lightTs, scale) * layerDepth;
+  float current = depth - layerDepth;
+  vec2 at = uv + step;
+  float worst = 0.0;
+  for (int i = 0; i < layers / 2 && current > 0.0; ++i) {
+    worst = max(worst, current - (1.0 - heightAt(at)));
+    at += step;
+    current -= layerDepth;
+  }
+  return 1.0 - clamp(worst * 8.0, 0.0, 1.0);
+}
+
+// The truth's shadow: the exact visibility of the height field from the point at (uv, depth),
+// marched towards the light in steps of half a texel (at most 1024), hard; the truth's jittered
+// frames antialias its edge. The light direction is not clamped as the view's is above: it is a
+// reference, and a grazing light only costs it more steps.
+float heightFieldVisibility(vec2 uv, float depth, vec3 lightTs, vec2 scale) {
+  if (lightTs.z <= 0.0) return 0.0;
+  if (depth <= 0.0) return 1.0;
+  vec2 shift = lightTs.xy / max(lightTs.z, 1e-4) * (u_heightScale / max(scale, vec2(1e-8))) * depth;
+  int steps = int(clamp(ceil(2.0 * length(shift / u_heightTexel)), 1.0, 1024.0));
+  for (int i = 1; i <= steps; ++i) {
+    float t = float(i) / float(steps);
+    if (1.0 - heightAt(uv + shift * t) < depth * (1.0 - t) - 1e-3) return 0.0;
+  }
+  return 1.0;
+}
