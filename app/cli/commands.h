@@ -10,7 +10,7 @@ int runList(const Options& o);
 int runCheckShaders(const Options& o);
 int runSweep(const Options& o);
 int runStress(const Options& o);
-int runCompare(const Options& o);
-int runGrade(const Options& o);    // exercises/ rubrics against a student's shader folder  // two PNGs -> rmse, max error; --out writes a diff image
+int runCompare(const Options& o);  // two PNGs -> rmse, max error; --out writes a diff image
+int runGrade(const Options& o);    // exercises/ rubrics against a student's shader folder
 
 }  // namespace shadelab

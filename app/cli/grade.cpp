@@ -62,14 +62,12 @@ std::string describe(const Configuration& c) {
 // The checks of one configuration, from what its child wrote and how it ended. Returns "" or why
 // the grader itself cannot go on (a rubric or solution at fault).
 std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& run, double watchdog,
-                               ConfigurationResult& out) {
+                               const nlohmann::json& solution, const nlohmann::json& student, ConfigurationResult& out) {
   const Configuration& c = *job.configuration;
-  const nlohmann::json solution = readResult(job, "solution"), student = readResult(job, "student");
   if (solution.contains("error")) return solution["error"].get<std::string>();
   if (!solution.contains("renderer"))
     return "configuration '" + c.name + "': the solution's frame was not made (" + run.describe() + ")";
   out.solutionImage = job.stem + "-solution.png";
-  out.renderSeconds = run.phaseSeconds;
   std::string why;  // why no check could be measured
   if (run.end == WatchedRun::End::TimedOut) {
     char s[160];
@@ -84,11 +82,13 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
   if (!why.empty()) out.errors.push_back(why);
   if (student.is_object()) {
     for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
-    for (auto& w : student["warnings"]) out.warnings.push_back(w.get<std::string>());
     out.nonFinite = student["non_finite"].get<size_t>();
     out.studentImage = job.stem + "-student.png";
     out.diffImage = job.stem + "-diff.png";
-    if (!student["errors"].empty()) why = "did not build: " + student["errors"][0].get<std::string>().substr(0, student["errors"][0].get<std::string>().find('\n'));
+    if (!student["errors"].empty()) {
+      const std::string first = student["errors"][0].get<std::string>();
+      why = "did not build: " + first.substr(0, first.find('\n'));  // the message line, without the caret
+    }
   }
   for (auto& check : c.checks) {
     const bool truth = check.against == Against::Truth;
@@ -146,9 +146,10 @@ std::string gradeExercise(const std::string& id, const Options& o, const fs::pat
       const WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
                                         [&](const std::string& phase) { return phase == "student" ? o.watchdog : kSolutionSeconds; },
                                         (dir / "logs" / (job.stem + ".log")).string());
-      if (auto e = scoreConfiguration(job, run, o.watchdog, result); !e.empty()) return e;
-      if (renderer.empty()) renderer = readResult(job, "solution").value("renderer", "");
+      const nlohmann::json solution = readResult(job, "solution"), student = readResult(job, "student");
       for (const char* phase : {"solution", "student"}) fs::remove(dir / (job.stem + "-" + phase + ".json"));
+      if (auto e = scoreConfiguration(job, run, o.watchdog, solution, student, result); !e.empty()) return e;
+      if (renderer.empty()) renderer = solution.value("renderer", "");
     }
     for (auto& err : result.errors)  // each error once per exercise: every configuration compiles the same file
       if (std::find(printed.begin(), printed.end(), err) == printed.end()) {

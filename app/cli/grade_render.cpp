@@ -14,13 +14,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string configure(LabHost& host, const Exercise& ex, const Configuration& c) {
-  if (ex.lab != host.lab().id())
-    if (auto e = host.selectLab(ex.lab); !e.empty()) return e;
-  if (!c.scene.empty())
-    if (auto e = host.selectScene(c.scene); !e.empty()) return e;
-  for (auto& [key, value] : c.settings)
-    if (auto e = host.set(key + "=" + value); !e.empty()) return e;
-  return applyCamera(host, c.camera);
+  std::vector<std::string> sets;
+  for (auto& [key, value] : c.settings) sets.push_back(key + "=" + value);
+  return configureHost(host, ex.lab, c.scene, sets, {}, c.camera);
 }
 
 void writeResult(const ConfigurationJob& job, const std::string& phase, const nlohmann::json& j) {
@@ -103,8 +99,7 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   host.settle();
   host.renderFrame(ex.size);
   const ImageF image = host.readImage();
-  nlohmann::json student{{"errors", buildErrors(host)}, {"warnings", host.warnings()},
-                         {"non_finite", countNonFinite(image)}};
+  nlohmann::json student{{"errors", buildErrors(host)}, {"non_finite", countNonFinite(image)}};
   const ImageError e = compareImages(image, solution);
   student["vs_solution"] = metricsJson({{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
                                         {"bad_pixel_pct", e.badPixelPct}});

@@ -3,7 +3,7 @@
 // a check needs it), then with the student's folders searched first. Results go to files beside
 // the report so that what was finished survives a watchdog kill:
 //   <stem>-solution.png, <stem>-student.png, <stem>-diff.png      images for the report
-//   <stem>-solution.json, <stem>-student.json                    numbers, errors, warnings
+//   <stem>-solution.json, <stem>-student.json                    numbers and build errors
 #pragma once
 #include <filesystem>
 #include <functional>

@@ -43,15 +43,21 @@ std::string openSession(const Options& o, Session& s) {
       s.size = {std::clamp(size[0].get<int>(), 16, 16384), std::clamp(size[1].get<int>(), 16, 16384)};
     if (o.time == 0.0f && state.contains("time") && state["time"].is_number()) s.time = state["time"].get<float>();
   }
-  if (!o.lab.empty() && o.lab != host.lab().id())
-    if (auto e = host.selectLab(o.lab); !e.empty()) return e;
-  if (!o.scene.empty())
-    if (auto e = host.selectScene(o.scene); !e.empty()) return e;
-  for (auto& s : o.sets)
+  return configureHost(host, o.lab, o.scene, o.sets, o.actions, o.camera);
+}
+
+std::string configureHost(LabHost& host, const std::string& lab, const std::string& scene,
+                          const std::vector<std::string>& sets, const std::vector<std::string>& actions,
+                          const std::string& camera) {
+  if (!lab.empty() && lab != host.lab().id())
+    if (auto e = host.selectLab(lab); !e.empty()) return e;
+  if (!scene.empty())
+    if (auto e = host.selectScene(scene); !e.empty()) return e;
+  for (auto& s : sets)
     if (auto e = host.set(s); !e.empty()) return "--set: " + e;
-  for (auto& a : o.actions)
+  for (auto& a : actions)
     if (auto e = host.runAction(a); !e.empty()) return "--do: " + e;
-  return applyCamera(host, o.camera);
+  return applyCamera(host, camera);
 }
 
 static double median(std::vector<double> v) {

@@ -22,6 +22,11 @@ ShaderSearchPath shaderSearchPath(const Options& o);
 std::string openSession(const Options& o, Session& s);
 // Applies the camera option: parsed over the framed camera; near/far refit unless given.
 std::string applyCamera(LabHost& host, const std::string& spec);
+// Lab, scene ("" = keep), "lab.key=value" settings, actions, camera, in that order: the one way a
+// headless run (a session, a rubric's configuration) configures a host.
+std::string configureHost(LabHost& host, const std::string& lab, const std::string& scene,
+                          const std::vector<std::string>& sets, const std::vector<std::string>& actions,
+                          const std::string& camera);
 
 struct TimedFrames {
   double gpuMs = 0;  // median over the timed frames of the frame's summed pass times

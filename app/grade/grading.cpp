@@ -73,6 +73,20 @@ std::string bound(const Threshold& t, double b) {
   return t.base == Threshold::Base::Absolute ? value(b) : value(b) + " (" + t.text() + ")";
 }
 
+// One row of a configuration's table of checks, in the Markdown and the HTML report alike.
+constexpr const char* kCheckColumns[] = {"check", "metric", "yours", "solution", "full marks at", "partial at",
+                                         "result", "points"};
+std::vector<std::string> checkCells(const CheckResult& r) {
+  return {r.check.name,
+          r.check.metric + (r.check.against == Against::Truth ? " (vs truth)" : " (vs solution)"),
+          value(r.value),
+          value(r.solutionValue),
+          "<= " + bound(r.check.full, r.fullBound),
+          "<= " + bound(r.check.partial, r.partialBound),
+          gradeName(r.grade),
+          points(r.earned) + " / " + points(r.check.points)};
+}
+
 std::string percent(double p) {
   char b[32];
   std::snprintf(b, sizeof b, "%.1f%%", p);
@@ -109,15 +123,14 @@ std::string gradeMarkdown(const GradeReport& report) {
       m += "\n### " + c.name + "\n\n" + c.description + "\n\n";
       for (auto& err : c.errors) m += "```\n" + err + "\n```\n\n";
       if (c.nonFinite) m += "The frame holds " + std::to_string(c.nonFinite) + " NaN/Inf values.\n\n";
-      m += "| check | metric | yours | solution | full marks at | partial at | result | points |\n"
-           "|---|---|---|---|---|---|---|---|\n";
+      m += "|";
+      for (auto& h : kCheckColumns) m += std::string(" ") + h + " |";
+      m += "\n|---|---|---|---|---|---|---|---|\n";
       bool lost = false;
       for (auto& r : c.checks) {
-        m += "| " + r.check.name + " | " + r.check.metric + " (vs " +
-             (r.check.against == Against::Truth ? "truth" : "solution") + ") | " + value(r.value) + " | " +
-             value(r.solutionValue) + " | <= " + bound(r.check.full, r.fullBound) + " | <= " +
-             bound(r.check.partial, r.partialBound) + " | " + gradeName(r.grade) + " | " + points(r.earned) + " / " +
-             points(r.check.points) + " |\n";
+        m += "|";
+        for (auto& cell : checkCells(r)) m += " " + cell + " |";
+        m += "\n";
         lost |= r.grade != Grade::Full;
       }
       for (auto& r : c.checks)
@@ -142,6 +155,8 @@ std::string gradeHtml(const GradeReport& report, const std::filesystem::path& di
       "body{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}"
       "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
       "td:first-child,th:first-child{text-align:left}.PASS{color:#1a7f37}.PARTIAL{color:#b35900}.FAIL{color:#c00}"
+      "tr.PASS,tr.PARTIAL,tr.FAIL{color:inherit}tr.PASS td:nth-child(7){color:#1a7f37}"
+      "tr.PARTIAL td:nth-child(7){color:#b35900}tr.FAIL td:nth-child(7){color:#c00}"
       "pre{background:#f6f6f6;padding:.6em;overflow-x:auto}figure{display:inline-block;margin:4px}"
       "img{image-rendering:pixelated}figcaption{font-size:90%;text-align:center}</style></head><body>\n"
       "<h1>ShadeLab grade report</h1>\n<p>Command: <code>" +
@@ -159,15 +174,14 @@ std::string gradeHtml(const GradeReport& report, const std::filesystem::path& di
     for (auto& c : e.configurations) {
       h += "<h3>" + htmlEscape(c.name) + "</h3>\n<p>" + htmlEscape(c.description) + "</p>\n";
       for (auto& err : c.errors) h += "<pre>" + htmlEscape(err) + "</pre>\n";
-      h += "<table><tr><th>check</th><th>metric</th><th>yours</th><th>solution</th><th>full marks at</th>"
-           "<th>partial at</th><th>result</th><th>points</th></tr>\n";
+      h += "<table><tr>";
+      for (auto& head : kCheckColumns) h += std::string("<th>") + head + "</th>";
+      h += "</tr>\n";
       bool lost = false;
       for (auto& r : c.checks) {
-        h += "<tr><td>" + htmlEscape(r.check.name) + "</td><td>" + htmlEscape(r.check.metric) + "</td><td>" +
-             value(r.value) + "</td><td>" + value(r.solutionValue) + "</td><td>&le; " +
-             htmlEscape(bound(r.check.full, r.fullBound)) + "</td><td>&le; " +
-             htmlEscape(bound(r.check.partial, r.partialBound)) + "</td><td class='" + gradeName(r.grade) + "'>" +
-             gradeName(r.grade) + "</td><td>" + points(r.earned) + " / " + points(r.check.points) + "</td></tr>\n";
+        h += "<tr class='" + std::string(gradeName(r.grade)) + "'>";
+        for (auto& cell : checkCells(r)) h += "<td>" + htmlEscape(cell) + "</td>";
+        h += "</tr>\n";
         lost |= r.grade != Grade::Full;
       }
       h += "</table>\n<ul>";

@@ -34,12 +34,10 @@ struct ConfigurationResult {
   std::string name;
   std::string description;  // "scene shadow-test, filter=pcf pcf_size=5"
   std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
-  std::vector<std::string> warnings;  // the lab's own, under the student's shader
   size_t nonFinite = 0;      // NaN/Inf values in the student's frame
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;
   std::vector<CheckResult> checks;
-  double renderSeconds = 0.0;  // the student's phase
 };
 
 struct ExerciseResult {

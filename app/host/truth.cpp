@@ -20,8 +20,10 @@ TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Set
   return req;
 }
 
-// The settings current now (a slider may have moved since the request) come back afterwards.
+// The settings current now (a slider may have moved since the request) come back afterwards. A
+// truth is drawn with the built-in shaders: a student's file must not be judged against itself.
 ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter) {
+  const ShaderLibrary::BuiltinOnly builtin(host.shaders());
   const Settings now = host.currentSettings();
   host.applySettings(req.truthSettings);
   host.drawInto(target, req.camera, req.time, jitter);
@@ -31,6 +33,7 @@ ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTa
 }
 
 TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target) {
+  const ShaderLibrary::BuiltinOnly builtin(host.shaders());
   const Settings now = host.currentSettings();
   host.applySettings(req.truthSettings);
   TraceWork work = host.trace(target, req.camera, req.time);

@@ -127,7 +127,8 @@ void Program::setArray(const char* n, const glm::mat4* v, int count) {
   glUniformMatrix4fv(location(n), count, GL_FALSE, glm::value_ptr(v[0]));
 }
 
-ShaderLibrary::ShaderLibrary(ShaderSearchPath path) : path_(std::move(path)) {
+ShaderLibrary::ShaderLibrary(ShaderSearchPath path)
+    : path_(std::move(path)), builtinPath_(std::vector<fs::path>{builtinShaderDir()}) {
   onDiagnostic = [](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.format().c_str()); };
   std::vector<std::string> logs;
   int failed = -1;
@@ -137,12 +138,13 @@ ShaderLibrary::ShaderLibrary(ShaderSearchPath path) : path_(std::move(path)) {
 ShaderLibrary::~ShaderLibrary() = default;
 
 ProgramRef ShaderLibrary::program(const ProgramSpec& spec) {
-  const std::string key = spec.key();
+  const std::string key = keyOf(spec);
   ProgramRef p;
   if (auto it = cache_.find(key); it != cache_.end()) p = it->second.lock();
   if (!p) {
     p = std::make_shared<Program>();
     p->spec_ = spec;
+    p->builtinOnly_ = builtinOnly_;
     p->fallback_ = fallback_.get();
     rebuild(*p, true);
     cache_[key] = p;
@@ -167,7 +169,7 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
   p.relPaths_.clear();
   size_t hash = 0;
   for (auto& stage : p.spec_.stages) {
-    pre.push_back(preprocessShader(path_, stage.path, p.spec_.defines));
+    pre.push_back(preprocessShader(pathOf(p), stage.path, p.spec_.defines));
     auto& src = pre.back();
     for (size_t i = 0; i < src.files.size(); ++i) {
       p.files_.push_back(src.files[i]);
@@ -230,7 +232,7 @@ void ShaderLibrary::watchFiles(const Program& p) {
   // Every root's candidate for every file, so a student's new copy that starts overriding a
   // built-in file is picked up too.
   for (auto& rel : p.relPaths_)
-    for (auto& root : path_.roots()) watcher_.watch(root / rel);
+    for (auto& root : pathOf(p).roots()) watcher_.watch(root / rel);
   for (auto& f : p.files_) watcher_.watch(f);
 }
 
@@ -288,7 +290,7 @@ ShaderLibrary::OverrideResult ShaderLibrary::overrideByName(const fs::path& file
 }
 
 Program& ProgramSlot::get(ShaderLibrary& library, const ProgramSpec& spec) {
-  std::string key = spec.key();
+  std::string key = library.keyOf(spec);
   if (!program_ || key != key_) {
     program_ = library.program(spec);
     key_ = std::move(key);

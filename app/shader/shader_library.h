@@ -78,6 +78,7 @@ class Program {
   int generation_ = 0;
   bool hasErrors_ = false;
   std::vector<Diagnostic> diagnostics_;
+  bool builtinOnly_ = false;  // built from the built-in folder alone (ShaderLibrary::BuiltinOnly)
 };
 
 using ProgramRef = std::shared_ptr<Program>;
@@ -90,6 +91,24 @@ class ShaderLibrary {
 
   // Built on first request. Programs live while someone holds the reference.
   ProgramRef program(const ProgramSpec& spec);
+  // Ground truths are drawn with the built-in shaders, never with the student's files they
+  // judge: while a BuiltinOnly lives, program() builds and serves programs from the built-in
+  // folder alone (no student folder, no dropped file), cached apart from the others.
+  class BuiltinOnly {
+   public:
+    explicit BuiltinOnly(ShaderLibrary& library) : library_(library), was_(library.builtinOnly_) {
+      library.builtinOnly_ = true;
+    }
+    ~BuiltinOnly() { library_.builtinOnly_ = was_; }
+    BuiltinOnly(const BuiltinOnly&) = delete;
+    BuiltinOnly& operator=(const BuiltinOnly&) = delete;
+
+   private:
+    ShaderLibrary& library_;
+    bool was_;
+  };
+  // The cache key of `spec` in the current mode (ProgramSlot refetches when it changes).
+  std::string keyOf(const ProgramSpec& spec) const { return (builtinOnly_ ? "builtin|" : "") + spec.key(); }
   // Polls the file watcher and rebuilds every live program that reads a changed file.
   // Returns how many programs were rebuilt (successfully or not).
   int reloadChanged();
@@ -117,7 +136,10 @@ class ShaderLibrary {
   // Every diagnostic goes to onDiagnostic once until a file changes: one broken include is one
   // message, not one per variant that includes it.
   void report(const std::vector<Diagnostic>& diagnostics);
+  const ShaderSearchPath& pathOf(const Program& p) const { return p.builtinOnly_ ? builtinPath_ : path_; }
   ShaderSearchPath path_;
+  ShaderSearchPath builtinPath_;
+  bool builtinOnly_ = false;
   FileWatcher watcher_;
   gl::ProgramName fallback_;
   std::map<std::string, std::weak_ptr<Program>> cache_;
