@@ -1,10 +1,32 @@
 #!/usr/bin/env bash
-# Build ShadeLab and run the whole test suite (unit, GL through OSMesa, CLI, and the real window
-# under Xvfb) with ctest. Any arguments go to ctest, e.g. ./test.sh -L unit
+# Build ShadeLab and run the whole test suite with ctest: unit, GL through OSMesa, CLI, grading,
+# the real window under Xvfb, and the fuzz targets over their kept inputs plus 20 s of fresh
+# fuzzing each (label fuzz; clang's build in build-fuzz/). Any arguments go to ctest, e.g.
+#   ./test.sh -L unit
+#   ./test.sh --sanitize        the same suite built with AddressSanitizer + UBSan, in build-asan/
 set -euo pipefail
 cd "$(dirname "$0")"
+sanitize=false
+if [ "${1:-}" = --sanitize ]; then
+  sanitize=true
+  shift
+fi
 tools/install_deps.sh test
+export LIBGL_ALWAYS_SOFTWARE=1  # the same llvmpipe rasteriser everywhere, GPU or not
+
+if $sanitize; then
+  cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADELAB_SANITIZE=ON -DSHADELAB_BENCH=OFF >/dev/null
+  cmake --build build-asan
+  # Mesa (llvmpipe, OSMesa, EGL) is not instrumented; tools/lsan.supp names only its libraries.
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1:check_initialization_order=1
+  export LSAN_OPTIONS=suppressions=$PWD/tools/lsan.supp:print_suppressions=0
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  # The fuzz targets are sanitized already; their tests belong to the plain build's run.
+  ctest --test-dir build-asan --output-on-failure -j2 -LE fuzz "$@"
+  exit
+fi
+
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build
-export LIBGL_ALWAYS_SOFTWARE=1  # the same llvmpipe rasteriser everywhere, GPU or not
+tools/fuzz.sh --build
 ctest --test-dir build --output-on-failure -j2 "$@"

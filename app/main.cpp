@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
     else if (a == "--screenshot" && i + 1 < argc) window.screenshot = argv[++i];
     else if (a == "--cycle-labs") window.cycleLabs = true;
     else if (a == "--auto-measure") window.autoMeasure = true;
+    else if (a == "--soak" && i + 1 < argc) window.soakMinutes = std::atof(argv[++i]);
+    else if (a == "--soak-seed" && i + 1 < argc) window.soakSeed = unsigned(std::atol(argv[++i]));
     else args.push_back(argv[i]);
   }
 #else
@@ -43,6 +45,8 @@ int main(int argc, char** argv) {
   if (o.command == "check-shaders") return runCheckShaders(o);
   if (o.command == "compare") return runCompare(o);
   if (o.command == "grade") return runGrade(o);
+  if (o.command == "random") return runRandom(o);
+  if (o.command == "soak") return runSoak(o);
 
 #ifdef SHADELAB_HAS_WINDOW
   const int rc = runWindow(o, window);

@@ -1,13 +1,19 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ShadeLab needs, if any are missing. Nothing else is downloaded.
-# usage: tools/install_deps.sh [build|test]
+# usage: tools/install_deps.sh [build|test|fuzz]
 set -euo pipefail
 build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libbenchmark-dev libembree-dev libeigen3-dev libflann-dev liblz4-dev libopenmesh-dev)
 test_pkgs=(xvfb xauth xdotool)
+fuzz_pkgs=(clang-14 libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes for clang
 want=("${build_pkgs[@]}")
-[ "${1:-build}" = test ] && want+=("${test_pkgs[@]}")
+case "${1:-build}" in
+  build) ;;
+  test) want+=("${test_pkgs[@]}" "${fuzz_pkgs[@]}") ;;
+  fuzz) want+=("${fuzz_pkgs[@]}") ;;
+  *) echo "install_deps: unknown set '$1' (valid: build, test, fuzz)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${want[@]}"; do

@@ -15,6 +15,12 @@ commands:
   stress          run the lab's extreme cases; non-zero exit if any fails
   list            labs, their parameters with ranges, and scenes
   check-shaders   compile every program and variant of every lab; non-zero exit on any error
+  random          property run: --count N random configurations per lab (every lab, or --lab), drawn from
+                  each lab's parameter list with extremes weighted; each must give finite pixels, no GL
+                  error, built programs, and a warning if the frame is black; non-zero exit if any fails
+  soak            --minutes M of random lab switches, parameters, broken and fixed shader files, meshes
+                  loaded and dropped, jobs started and superseded; records resident memory, live GL
+                  objects and jobs over time (--out FILE.csv); non-zero exit on growth or a bad frame
   compare A B     RMSE and max error between two images; --out DIFF.png writes an amplified difference
   grade           grade a student's shaders:   --exercise LAB/NAME | --all  --shaders DIR  [--out DIR]
                   one line per check and a score; a Markdown, HTML and JSON report in --out (default
@@ -38,7 +44,18 @@ options:
   --exercise ID       grade: the exercise (see `shadelab list`), e.g. shadows/pcf
   --all               grade: every exercise
   --watchdog SECONDS  grade: how long the student's shader may take per configuration (default 20)
+  --count N           random: configurations per lab (default 20)
+  --seed N            random, soak: the seed (default 1); the same seed draws the same configurations
+  --minutes M         soak: how long (default 1)
   -h, --help          this text
+
+window only:
+  --exit-after N      run N frames, then exit (tests)
+  --screenshot FILE   save the whole window (UI included) before exiting
+  --cycle-labs        switch to every lab in turn while running
+  --auto-measure      start with Auto measure on
+  --soak M            random use of the window for M minutes (as `soak`), then exit 0, or 1 on a problem
+  --soak-seed N       the soak's seed (default 1)
 )";
 }
 
@@ -53,13 +70,13 @@ static std::string parseSize(const std::string& text, glm::ivec2& size) {
 }
 
 std::string parseOptions(int argc, char** argv, Options& o) {
-  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders", "compare", "grade"};
+  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders", "compare", "grade", "random", "soak"};
   int i = 1;
   if (i < argc && argv[i][0] != '-') {
     o.command = argv[i++];
     bool known = false;
     for (auto c : kCommands) known |= o.command == c;
-    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders, compare, grade)";
+    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak)";
   }
   for (; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -101,6 +118,14 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.watchdog = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(o.watchdog >= 0.1 && o.watchdog <= 3600))
         return "--watchdog: '" + v + "' is not a number of seconds in [0.1, 3600]";
+    } else if (arg == "--count" || arg == "--seed" || arg == "--minutes") {
+      char* end = nullptr;
+      const double d = std::strtod(v.c_str(), &end);
+      if (v.empty() || *end || !(d >= 0) || d > 1e6 || (arg != "--minutes" && d != double(long(d))))
+        return arg + ": '" + v + "' is not " + (arg == "--minutes" ? "a number of minutes" : "a whole number") + " in [0, 1e6]";
+      if (arg == "--count") o.count = int(d);
+      else if (arg == "--seed") o.seed = unsigned(d);
+      else o.minutes = d;
     } else if (arg == "--time" || arg == "--frames") {
       char* end = nullptr;
       const double d = std::strtod(v.c_str(), &end);
@@ -111,7 +136,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
-             "--backend, --out, --measure, --exercise, --all, --watchdog)";
+             "--backend, --out, --measure, --exercise, --all, --watchdog, --count, --seed, --minutes)";
     }
   }
   for (auto& dir : o.shaderDirs)

@@ -30,6 +30,9 @@ struct Options {
   std::string exercise;                          // grade: --exercise lab/name
   bool allExercises = false;                     // grade: --all
   double watchdog = 20.0;                        // grade: seconds a student's frames may take
+  int count = 20;                                // random: configurations per lab
+  unsigned seed = 1;                             // random, soak
+  double minutes = 1.0;                          // soak
   bool help = false;
   std::vector<std::string> positional;           // compare A.png B.png
 };

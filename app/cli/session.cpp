@@ -33,15 +33,11 @@ std::string openSession(const Options& o, Session& s) {
   s.size = o.size;
   s.time = o.time;
   if (!o.preset.empty()) {
-    std::ifstream in(o.preset);
-    if (!in) return o.preset + ": cannot open preset";
-    nlohmann::json state = nlohmann::json::parse(in, nullptr, false);
-    if (state.is_discarded()) return o.preset + ": not valid JSON";
-    if (auto e = host.applyStateJson(state); !e.empty()) return o.preset + ": " + e;
-    const auto& size = state.contains("size") ? state["size"] : nlohmann::json();
-    if (!o.sizeGiven && size.is_array() && size.size() == 2 && size[0].is_number_integer() && size[1].is_number_integer())
-      s.size = {std::clamp(size[0].get<int>(), 16, 16384), std::clamp(size[1].get<int>(), 16, 16384)};
-    if (o.time == 0.0f && state.contains("time") && state["time"].is_number()) s.time = state["time"].get<float>();
+    Preset preset;
+    if (auto e = readPreset(o.preset, preset); !e.empty()) return e;
+    if (auto e = host.applyPreset(preset); !e.empty()) return o.preset + ": " + e;
+    if (!o.sizeGiven && preset.size) s.size = *preset.size;
+    if (o.time == 0.0f && preset.time) s.time = *preset.time;
   }
   return configureHost(host, o.lab, o.scene, o.sets, o.actions, o.camera);
 }

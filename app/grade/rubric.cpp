@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/contained_path.h"
 #include "util/format.h"
 
 namespace shadelab {
@@ -167,8 +168,11 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
   if (!j.contains("files") || !j["files"].is_array() || j["files"].empty())
     return where + ": \"files\" must list the shader files the student submits";
   for (auto& f : j["files"]) {
-    if (!f.is_string()) return where + ": \"files\" must hold paths relative to a shader folder";
-    out.files.push_back(f.get<std::string>());
+    // Names that stay inside a shader folder: the grader reads them from the student's folder.
+    const fs::path name = f.is_string() ? containedName(f.get<std::string>()) : fs::path();
+    if (name.empty() || name.filename().empty())
+      return where + ": \"files\" must hold paths relative to a shader folder, without \"..\"";
+    out.files.push_back(name.generic_string());
   }
   if (j.contains("pass_mark")) {
     if (!j["pass_mark"].is_number() || j["pass_mark"].get<double>() < 0 || j["pass_mark"].get<double>() > 100)

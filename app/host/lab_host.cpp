@@ -204,24 +204,24 @@ nlohmann::json LabHost::stateJson() {
 }
 
 std::string LabHost::applyStateJson(const nlohmann::json& state) {
-  if (!state.is_object()) return "preset: expected a JSON object with lab, scene, params, camera";
-  if (state.contains("lab") && state["lab"].is_string() && state["lab"].get<std::string>() != lab_->id())
-    if (auto err = selectLab(state["lab"].get<std::string>()); !err.empty()) return err;
-  if (state.contains("scene") && state["scene"].is_string() && state["scene"].get<std::string>() != sceneId_)
-    if (auto err = selectScene(state["scene"].get<std::string>()); !err.empty()) return err;
-  if (state.contains("params")) {
-    if (!state["params"].is_object()) return "preset: 'params' must be an object of key: value";
-    const Settings before = currentSettings();
-    for (auto& [k, v] : state["params"].items()) {
-      const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
-      if (auto err = set(k + "=" + text); !err.empty()) {
-        applySettings(before);  // all or nothing
-        return "preset: " + err;
-      }
+  Preset preset;
+  if (auto err = parsePreset(state, preset); !err.empty()) return "preset: " + err;
+  return applyPreset(preset);
+}
+
+std::string LabHost::applyPreset(const Preset& preset) {
+  if (preset.lab && *preset.lab != lab_->id())
+    if (auto err = selectLab(*preset.lab); !err.empty()) return err;
+  if (preset.scene && *preset.scene != sceneId_)
+    if (auto err = selectScene(*preset.scene); !err.empty()) return err;
+  const Settings before = currentSettings();
+  for (auto& [k, v] : preset.params)
+    if (auto err = set(k + "=" + v); !err.empty()) {
+      applySettings(before);  // all or nothing
+      return "preset: " + err;
     }
-  }
-  if (state.contains("camera") && state["camera"].is_string())
-    if (auto err = camera_.parse(state["camera"].get<std::string>()); !err.empty()) return "preset: " + err;
+  if (preset.camera)
+    if (auto err = camera_.parse(*preset.camera); !err.empty()) return "preset: " + err;
   return {};
 }
 

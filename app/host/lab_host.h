@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/job_runner.h"
+#include "host/preset.h"
 #include "labs/lab.h"
 #include "measure/image.h"
 
@@ -62,6 +63,7 @@ class LabHost {
   // Lab, params, scene, camera: everything a headless run needs to reproduce a frame.
   nlohmann::json stateJson();
   std::string applyStateJson(const nlohmann::json& state);
+  std::string applyPreset(const Preset& preset);  // lab, scene, params (all or none), camera
 
   Lab& lab() { return *lab_; }
   const std::string& sceneId() const { return sceneId_; }

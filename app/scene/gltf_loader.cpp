@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/loaders.h"
+#include "util/contained_path.h"
 
 namespace fs = std::filesystem;
 
@@ -148,12 +149,42 @@ struct Importer {
   }
 };
 
+// A glTF names its buffers and images by URI. They are read only when they are regular files
+// inside the glTF's own folder (symbolic links followed): a model from the web cannot pull in
+// /etc/passwd, a neighbour's folder or an endless device like /dev/zero.
+struct ModelFolder {
+  fs::path folder;
+  bool allows(const std::string& path) const {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec) && realPathInside(folder, path);
+  }
+};
+
+bool modelFileExists(const std::string& path, void* user) { return static_cast<ModelFolder*>(user)->allows(path); }
+
+std::string keepPath(const std::string& path, void*) { return path; }
+
+bool readModelFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  if (!static_cast<ModelFolder*>(user)->allows(path)) {
+    if (err) *err += "'" + path + "' is not a file beside the glTF (a model reads only files in its own folder)\n";
+    return false;
+  }
+  return tinygltf::ReadWholeFile(out, err, path, nullptr);
+}
+
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "ShadeLab never writes through a model\n";
+  return false;
+}
+
 }  // namespace
 
 std::string loadGltf(const fs::path& file, Scene& scene) {
   if (!fs::is_regular_file(file)) return file.string() + ": no such file";
+  ModelFolder folder{fs::absolute(file).parent_path()};
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keepEncoded, nullptr);
+  loader.SetFsCallbacks({modelFileExists, keepPath, readModelFile, refuseWrite, &folder});
   tinygltf::Model model;
   std::string err, warn;
   const bool ok = file.extension() == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())

@@ -5,6 +5,7 @@
 #include <tiny_obj_loader.h>
 
 #include "scene/loaders.h"
+#include "util/contained_path.h"
 
 namespace fs = std::filesystem;
 
@@ -16,41 +17,82 @@ static std::string firstLine(std::string s) {
   return nl == std::string::npos ? s : s.substr(0, nl) + " (and more)";
 }
 
+namespace {
+
+// `name` (an MTL library or a texture) as a file beside the OBJ; empty, with a warning, when the
+// name leaves the OBJ's folder or is not a regular file there (an OBJ from the web cannot make
+// ShadeLab read /etc/passwd, a neighbour's folder or /dev/zero).
+fs::path besideModel(const fs::path& folder, const std::string& name, std::string& warnings) {
+  const fs::path rel = containedName(name);
+  const fs::path file = rel.empty() ? fs::path() : folder / rel;
+  std::error_code ec;
+  if (!file.empty() && !fs::exists(file, ec)) return file;  // missing: reported where it is used
+  if (file.empty() || !fs::is_regular_file(file, ec) || !realPathInside(folder, file)) {
+    warnings += "'" + name + "' is not a file in the OBJ's folder; not read\n";
+    return {};
+  }
+  return file;
+}
+
+// MTL libraries, read only from the OBJ's folder.
+class FolderMaterialReader final : public tinyobj::MaterialReader {
+ public:
+  explicit FolderMaterialReader(fs::path folder) : folder_(std::move(folder)) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* names, std::string* warn, std::string* err) override {
+    const fs::path file = besideModel(folder_, name, *warn);
+    std::ifstream in(file);
+    if (file.empty() || !in) {
+      if (!file.empty()) *warn += "material library '" + name + "' not found\n";
+      return false;
+    }
+    tinyobj::LoadMtl(names, materials, &in, warn, err);
+    return true;
+  }
+
+ private:
+  fs::path folder_;
+};
+
+}  // namespace
+
 std::string loadObj(const fs::path& file, Scene& scene) {
   if (!fs::is_regular_file(file)) return file.string() + ": no such file";
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  config.mtl_search_path = file.parent_path().string();
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(file.string(), config))
-    return file.string() + ": " + firstLine(reader.Error().empty() ? "not a valid OBJ file" : reader.Error());
-  if (!reader.Warning().empty()) scene.warnings.push_back(file.string() + ": " + firstLine(reader.Warning()));
-  const auto& attrib = reader.GetAttrib();
-  const auto& shapes = reader.GetShapes();
+  const fs::path folder = fs::absolute(file).parent_path();
+  std::ifstream in(file);
+  if (!in) return file.string() + ": cannot open";
+  FolderMaterialReader mtl(folder);
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warn, err;
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &mtl, /*triangulate=*/true,
+                        /*default_vcols_fallback=*/false))
+    return file.string() + ": " + firstLine(err.empty() ? "not a valid OBJ file" : err);
 
   // Materials: MTL diffuse colour and map_Kd (recorded, decoded later on demand).
   const int materialBase = int(scene.materials.size());
-  for (auto& m : reader.GetMaterials()) {
+  for (auto& m : materials) {
     Material mat;
     mat.name = m.name;
     mat.baseColor = glm::vec4(m.diffuse[0], m.diffuse[1], m.diffuse[2], 1.0f);
     if (!m.diffuse_texname.empty()) {
       ImageSource img;
       img.name = m.diffuse_texname;
-      img.file = file.parent_path() / m.diffuse_texname;
+      img.file = besideModel(folder, m.diffuse_texname, warn);
       mat.baseColorImage = int(scene.images.size());
       scene.images.push_back(img);
     }
     if (!m.normal_texname.empty() || !m.bump_texname.empty()) {
       ImageSource img;
       img.name = !m.normal_texname.empty() ? m.normal_texname : m.bump_texname;
-      img.file = file.parent_path() / img.name;
+      img.file = besideModel(folder, img.name, warn);
       mat.normalImage = int(scene.images.size());
       scene.images.push_back(img);
     }
     scene.materials.push_back(mat);
   }
+  if (!warn.empty()) scene.warnings.push_back(file.string() + ": " + firstLine(warn));
 
   // OBJ indexes positions, normals and UVs separately; GL wants one index per vertex, so each
   // distinct (v, vt, vn) triple becomes one vertex. UV seams split vertices, as they must.

@@ -1,5 +1,7 @@
 #include "shader/preprocessor.h"
 
+#include "util/contained_path.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -22,12 +24,18 @@ void ShaderSearchPath::overrideFile(std::string relPath, fs::path file) {
   overrides_.emplace_back(std::move(relPath), std::move(file));
 }
 
-fs::path ShaderSearchPath::resolve(const std::string& relPath) const {
+ShaderSearchPath::Lookup ShaderSearchPath::find(const std::string& relPath) const {
   for (auto& [rel, file] : overrides_)
-    if (rel == relPath) return file;
+    if (rel == relPath) return {file, {}};
+  const fs::path name = containedName(relPath);
+  if (name.empty()) return {{}, kSandboxRule};
   std::error_code ec;
-  for (auto& root : roots_)
-    if (fs::is_regular_file(root / relPath, ec)) return root / relPath;
+  for (auto& root : roots_) {
+    const fs::path candidate = root / name;
+    if (!fs::is_regular_file(candidate, ec)) continue;
+    if (!realPathInside(root, candidate)) return {{}, std::string(kSandboxRule) + " (a link leads out of " + root.string() + ")"};
+    return {candidate, {}};
+  }
   return {};
 }
 
@@ -71,9 +79,14 @@ struct Expander {
 
   // Includes resolve next to the including file first ("lighting.glsl" from common/), then
   // from the search roots ("common/lighting.glsl").
+  // A name that leaves the folders from both places stays as written, and find() refuses it.
   std::string resolveInclude(const std::string& from, const std::string& name) const {
+    if (fs::path(name).is_absolute()) return name;
     const std::string sibling = (fs::path(from).parent_path() / name).lexically_normal().string();
-    return path.resolve(sibling).empty() ? name : sibling;
+    const ShaderSearchPath::Lookup near = path.find(sibling);
+    if (!near.file.empty() || !near.refused.empty()) return sibling;
+    const fs::path normal = fs::path(name).lexically_normal();
+    return normal.empty() ? name : normal.string();
   }
 
   bool expand(const std::string& rel, const std::string& text, int fileIndex, bool isMain) {
@@ -111,7 +124,12 @@ struct Expander {
       bool already = false;
       for (auto& r : out.relPaths) already |= r == incRel;
       if (!already) {  // every file is included once per program, like #pragma once
-        const fs::path file = path.resolve(incRel);
+        const ShaderSearchPath::Lookup found = path.find(incRel);
+        if (!found.refused.empty()) {
+          fail(out, file, lineNo, nameColumn, found.refused + ": \"" + target + "\"");
+          return false;
+        }
+        const fs::path file = found.file;
         std::string incText;
         if (file.empty() || !readFile(file, incText)) {
           fail(out, out.files[fileIndex].string(), lineNo, nameColumn, "cannot find include \"" + target + "\"");
@@ -136,8 +154,13 @@ struct Expander {
 PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
                                     const Defines& defines) {
   PreprocessedSource out;
-  const fs::path file = path.resolve(relPath);
+  const ShaderSearchPath::Lookup found = path.find(relPath);
+  const fs::path file = found.file;
   std::string text;
+  if (!found.refused.empty()) {
+    fail(out, relPath, 0, 0, found.refused);
+    return out;
+  }
   if (file.empty() || !readFile(file, text)) {
     fail(out, relPath, 0, 0, "shader file not found in the search path");
     return out;

@@ -29,14 +29,25 @@ inline std::pair<int, int> splitLine(int sourceString, int line) {
 }
 
 // Where shader files are looked up, first match wins: the student's folder(s), then shaders/.
+//
+// The folders are a sandbox: a shader (a student's, graded on a teacher's machine) names files
+// only inside them. A name that is absolute, or whose `..` leaves the folder, is refused before
+// anything is read; a file that is found is refused too when its real path (symbolic links
+// followed, in the file's name or in any folder above it) lies outside the folder that served it.
 class ShaderSearchPath {
  public:
   explicit ShaderSearchPath(std::vector<std::filesystem::path> roots = {}) : roots_(std::move(roots)) {}
   void prepend(std::filesystem::path root) { roots_.insert(roots_.begin(), std::move(root)); }
   // A single file that overrides `relPath` wherever it is asked for (a file dropped on the window).
   void overrideFile(std::string relPath, std::filesystem::path file);
-  // The file that serves `relPath`, or empty if none does.
-  std::filesystem::path resolve(const std::string& relPath) const;
+
+  struct Lookup {
+    std::filesystem::path file;  // the file that serves the name; empty when none does
+    std::string refused;         // why the name may not be read (the sandbox's rule), or ""
+  };
+  Lookup find(const std::string& relPath) const;
+  // The file that serves `relPath`, or empty if none does (or it is refused).
+  std::filesystem::path resolve(const std::string& relPath) const { return find(relPath).file; }
   const std::vector<std::filesystem::path>& roots() const { return roots_; }
   const std::vector<std::pair<std::string, std::filesystem::path>>& overrides() const { return overrides_; }
 
@@ -60,6 +71,9 @@ struct PreprocessedSource {
   int errorLine = 0, errorColumn = 0;
   bool ok() const { return error.empty(); }
 };
+
+// The one-line rule a refused #include is told.
+inline constexpr const char* kSandboxRule = "#include may only name files inside the shader folders";
 
 PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
                                     const Defines& defines);

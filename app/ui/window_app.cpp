@@ -6,6 +6,10 @@
 //   4. draw the UI into the window and swap
 #include "ui/window_app.h"
 
+#include <optional>
+
+#include "host/soak.h"
+
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -219,7 +223,13 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   int exitCode = 0;
   {
     AppState app;
-    LabHost host(shaderSearchPath(options));
+    ShaderSearchPath shaderPath = shaderSearchPath(options);
+    std::optional<SoakDriver> soak;  // --soak: random use of this window, as `shadelab soak` does headless
+    if (wopt.soakMinutes > 0) {
+      soak.emplace(SoakDriver::makeScratch(), wopt.soakSeed);
+      shaderPath.prepend(soak->scratch());
+    }
+    LabHost host(shaderPath);
     host.jobs().setLowPriority(true);  // the window's frames come first
     Measurer measurer(host);
     measurer.onMeasured = [](const Measurement& m) {
@@ -258,6 +268,20 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       // 2. the lab's frame (at the viewport size the last layout gave it)
       const float time = float(glfwGetTime());
       const auto& passes = host.renderFrame(app.viewport, time, dt);
+      if (soak) {
+        soak->afterFrame(host);
+        if (frame % 2 == 0) soak->step(host);
+        if (frame % 97 == 0) app.measure.requested = true;  // Measure pressed now and then; later steps supersede it
+        if (soak->seconds() >= wopt.soakMinutes * 60.0) {
+          bool passed = false;
+          const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
+          soak->writeCsv(csv);
+          std::printf("%ssoak: samples in %s; %s\n", soak->summary(wopt.soakMinutes >= 10.0, passed).c_str(),
+                      csv.string().c_str(), passed ? "passed" : "FAILED");
+          exitCode = passed ? 0 : 1;
+          glfwSetWindowShouldClose(window, GLFW_TRUE);
+        }
+      }
       double gpu = 0;
       for (auto& p : passes) gpu += p.gpuMs;
       app.history.push(dt * 1000.0f, float(gpu));

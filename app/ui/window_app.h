@@ -9,6 +9,8 @@ struct WindowOptions {
   bool cycleLabs = false;   // tests: switch to every lab in turn while running
   std::string screenshot;   // tests: save the whole window (UI included) here before exiting
   bool autoMeasure = false; // start with auto-measure on (where the truth is cheap)
+  double soakMinutes = 0;   // --soak M: random use for M minutes (host/soak.h), then exit 0 or 1
+  unsigned soakSeed = 1;    // --soak-seed N
 };
 
 // Returns the exit code; 2 when no window could be opened (no display), having printed why.

@@ -34,11 +34,9 @@ std::string savePreset(LabHost& host) {
 }
 
 std::string loadPreset(LabHost& host, const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return path + ": cannot open preset";
-  const nlohmann::json state = nlohmann::json::parse(in, nullptr, false);
-  if (state.is_discarded()) return path + ": not valid JSON; nothing changed";
-  if (auto err = host.applyStateJson(state); !err.empty()) return path + ": " + err;
+  Preset preset;
+  if (auto err = readPreset(path, preset); !err.empty()) return err;
+  if (auto err = host.applyPreset(preset); !err.empty()) return path + ": " + err;
   return "loaded " + path;
 }
 

@@ -20,6 +20,16 @@ grep -q "shade.frag:6:[0-9]*: error:" "$out/broken.log"
 "$check" "$out/window_broken.png" --min-stddev 0.05 --min-colors 50
 echo "window test passed"
 
+# A student's include that leaves the shader folders: the window runs on, names the rule, and
+# prints nothing of the file it refused to read.
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --exit-after 4 \
+  --shaders "$(dirname "$0")/../data/escape_shaders" --screenshot "$out/window_escape.png" 2>"$out/escape.log"
+grep -q "shade.frag:4:11: error: #include may only name files inside the shader folders" "$out/escape.log" ||
+  { cat "$out/escape.log"; echo "the window did not refuse the include"; exit 1; }
+if grep -qE "PRETTY_NAME|VERSION_ID" "$out/escape.log"; then echo "the window printed a refused file"; exit 1; fi
+"$check" "$out/window_escape.png" --min-stddev 0.05 --min-colors 50
+echo "include escape in the window passed"
+
 # Measure in the window: with auto-measure on, the error against the truth appears.
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab shading --auto-measure --exit-after 40 \
   --screenshot "$out/window_measure.png" >"$out/measure.log"

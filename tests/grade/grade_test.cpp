@@ -194,6 +194,45 @@ TEST(GradeFailures, ASyntaxErrorIsReportedAtTheStudentsFileAndLine) {
   EXPECT_EQ(g.percent(), 0.0);
 }
 
+// A submission that includes a file outside its folder (a system file, a neighbour's solution by
+// "..", or a link to it) does not build, is told the rule, and the report quotes nothing of it.
+TEST(GradeFailures, AnIncludeLeavingTheStudentsFolderIsRefusedAndNeverQuoted) {
+  const fs::path classDir = scratch("escape");
+  const std::string marker = "NEIGHBOURS_SOLUTION_MARKER";
+  const fs::path bob = classDir / "bob" / "common";
+  fs::create_directories(bob);
+  std::ofstream(bob / "lighting.glsl") << "// " << marker << "\n" << marker << " vec3 broken(\n";
+  const std::vector<std::pair<std::string, std::string>> forms = {
+      {"absolute", "#include \"/etc/os-release\""},
+      {"dotdot", "#include \"../../bob/common/lighting.glsl\""},
+      {"link", "#include \"borrowed/lighting.glsl\""},
+  };
+  for (auto& [form, line] : forms) {
+    const fs::path student = classDir / ("alice_" + form);
+    fs::create_directories(student / "common");
+    std::ifstream in(builtinShaderDir() / "common/lighting.glsl");
+    std::stringstream s;
+    s << in.rdbuf();
+    std::ofstream(student / "common/lighting.glsl") << line << "\n" << s.str();
+    if (form == "link") fs::create_directory_symlink(bob, student / "common" / "borrowed");
+    const Graded g = grade("shading/blinn-phong", student, classDir / ("report_" + form));
+    ASSERT_TRUE(g.report.is_object()) << form << ": " << g.output;
+    EXPECT_NE(g.output.find(kSandboxRule), std::string::npos) << form << ": " << g.output;
+    EXPECT_NE(g.output.find((student / "common/lighting.glsl").string() + ":1:11: error:"), std::string::npos)
+        << form << ": " << g.output;
+    EXPECT_EQ(g.percent(), 0.0) << form;
+    for (const char* leak : {"PRETTY_NAME", "VERSION_ID", marker.c_str()}) {
+      EXPECT_EQ(g.output.find(leak), std::string::npos) << form << " leaked " << leak << ": " << g.output;
+      for (const char* report : {"report.md", "report.html", "report.json"}) {
+        std::ifstream r(classDir / ("report_" + form) / report);
+        std::stringstream text;
+        text << r.rdbuf();
+        EXPECT_EQ(text.str().find(leak), std::string::npos) << form << ": " << report << " leaked " << leak;
+      }
+    }
+  }
+}
+
 TEST(GradeFailures, TheStudentsFolderIsOnlyRead) {
   Exercise ex;
   ASSERT_EQ(loadExercise(exercisesRoot(), "shading/blinn-phong", ex), "");

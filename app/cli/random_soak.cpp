@@ -1,0 +1,106 @@
+// `shadelab random` and `shadelab soak`: configurations nobody wrote by hand.
+#include <cstdio>
+#include <random>
+
+#include "cli/commands.h"
+#include "cli/session.h"
+#include "gl/gl.h"
+#include "host/random_settings.h"
+#include "host/soak.h"
+
+namespace shadelab {
+namespace {
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "shadelab: %s\n", message.c_str());
+  return 1;
+}
+
+// Whether every pixel is black (all colour channels under half an 8-bit step).
+bool allBlack(const ImageF& image) {
+  for (size_t i = 0; i < image.rgba.size(); i += 4)
+    if (image.rgba[i] > 0.002f || image.rgba[i + 1] > 0.002f || image.rgba[i + 2] > 0.002f) return false;
+  return true;
+}
+
+}  // namespace
+
+int runRandom(const Options& o) {
+  Session s;
+  if (auto err = openSession(o, s); !err.empty()) return fail(err);
+  LabHost& host = *s.host;
+  const glm::ivec2 size = o.sizeGiven ? o.size : glm::ivec2(160, 90);
+  std::vector<std::string> labs = o.lab.empty() ? labIds() : std::vector<std::string>{o.lab};
+  std::mt19937 rng(o.seed);
+  int failures = 0, total = 0;
+  for (auto& id : labs) {
+    if (auto err = host.selectLab(id); !err.empty()) return fail(err);
+    int labFailures = 0;
+    for (int i = 0; i < o.count; ++i) {
+      host.resetParams();
+      const Settings drawn = randomSettings(host.lab(), rng);
+      std::string why = host.applySettings(drawn);
+      if (why.empty()) why = host.refreshScene();
+      if (why.empty()) {
+        gl::drainErrors();
+        host.settle();
+        host.renderFrame(size, o.time);
+        const ImageF image = host.readImage();
+        const std::vector<std::string> warnings = host.warnings();
+        if (const std::string err = gl::drainErrors(); !err.empty()) why = "GL error " + err;
+        else if (const size_t bad = countNonFinite(image); bad > 0) why = std::to_string(bad) + " NaN/Inf values";
+        else if (allBlack(image) && warnings.empty()) why = "a black frame and no warning saying why";
+        for (auto& p : host.lab().activePrograms())
+          if (why.empty() && !p->hasGoodProgram()) why = "program " + p->spec().name + " did not build";
+      }
+      ++total;
+      const std::string repro = "--lab " + id + " " + settingsAsArgs(id, drawn);
+      if (!why.empty()) {
+        ++failures, ++labFailures;
+        std::printf("FAIL %s #%d: %s\n  reproduce: shadelab render %s --size %dx%d --out x.png\n", id.c_str(), i,
+                    why.c_str(), repro.c_str(), size.x, size.y);
+      }
+      progress(i + 1, o.count, id);
+    }
+    std::printf("random %s: %d configurations, %d failed (seed %u)\n", id.c_str(), o.count, labFailures, o.seed);
+  }
+  std::printf("random: %d configurations, %d failed\n", total, failures);
+  return failures ? 1 : 0;
+}
+
+int runSoak(const Options& o) {
+  Options with = o;
+  const std::filesystem::path scratch = SoakDriver::makeScratch();
+  with.shaderDirs.insert(with.shaderDirs.begin(), scratch);
+  Session s;
+  if (auto err = openSession(with, s); !err.empty()) return fail(err);
+  LabHost& host = *s.host;
+  host.shaders().onDiagnostic = [](const Diagnostic&) {};  // the driver breaks shaders on purpose
+  const glm::ivec2 size = o.sizeGiven ? o.size : glm::ivec2(320, 180);
+  SoakDriver driver(scratch, o.seed);
+  std::printf("soak: %s for %s min, seed %u, scratch shaders in %s\n", s.context->describe().c_str(),
+              formatNumber(o.minutes).c_str(), o.seed, scratch.string().c_str());
+  const double seconds = o.minutes * 60.0;
+  double nextReport = 60.0;
+  while (driver.seconds() < seconds) {
+    driver.step(host);
+    host.renderFrame(size, o.time);
+    driver.afterFrame(host);
+    if (driver.seconds() >= nextReport) {
+      nextReport += 60.0;
+      const auto& x = driver.samples().back();
+      std::printf("soak: %4.0f s  %7.1f MB  %5d GL objects  %d jobs  %ld frames\n", x.seconds, x.residentMb, x.glObjects,
+                  x.jobs, x.frames);
+      std::fflush(stdout);
+    }
+  }
+  const std::filesystem::path csv = o.out.empty() ? scratch.parent_path() / (scratch.filename().string() + ".csv") : std::filesystem::path(o.out);
+  if (auto err = driver.writeCsv(csv); !err.empty()) return fail(err);
+  bool passed = false;
+  std::printf("%s", driver.summary(o.minutes >= 10.0, passed).c_str());
+  std::printf("soak: samples in %s; %s\n", csv.string().c_str(), passed ? "passed" : "FAILED");
+  std::filesystem::remove_all(scratch);
+  return passed ? 0 : 1;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,230 @@
+#include "host/soak.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "gl/handle.h"
+#include "host/random_settings.h"
+#include "measure/report.h"
+#include "scene/scene_catalog.h"
+#include "util/format.h"
+#include "util/output_files.h"
+
+namespace fs = std::filesystem;
+
+namespace shadelab {
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double residentMb() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return double(resident) * double(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void writeText(const fs::path& file, const std::string& text) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+}
+
+// Meshes a user might drop: the project's test files, and the shared data where it exists.
+std::vector<fs::path> droppableMeshes() {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  for (const fs::path dir : {fs::path(SHADELAB_SOURCE_DIR) / "tests" / "data", dataDirectory() / "meshes"}) {
+    if (dir.empty()) continue;
+    for (auto& e : fs::directory_iterator(dir, ec)) {
+      const std::string ext = e.path().extension().string();
+      if (e.is_regular_file(ec) && (ext == ".gltf" || ext == ".off" || ext == ".obj" || ext == ".ply") &&
+          e.file_size(ec) < (8u << 20))
+        out.push_back(e.path());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+SoakDriver::SoakDriver(fs::path scratch, unsigned seed) : scratch_(std::move(scratch)), rng_(seed), start_(now()) {}
+
+fs::path SoakDriver::makeScratch() {
+  const fs::path dir = freshName("soak", "shaders", "");
+  fs::create_directories(dir);
+  return dir;
+}
+
+double SoakDriver::seconds() const { return now() - start_; }
+
+std::string SoakDriver::step(LabHost& host) {
+  ++steps_;
+  if (!brokenFile_.empty()) {  // a broken file is fixed at the next step, as a student would
+    breakOrFixShader(host);
+    return "fixed " + brokenFile_;
+  }
+  const int dice = std::uniform_int_distribution<int>(0, 99)(rng_);
+  if (dice < 10) {
+    switchLab(host);
+    return "switched to " + std::string(host.lab().id());
+  }
+  if (dice < 20) {
+    breakOrFixShader(host);
+    return brokenFile_.empty() ? "no shader to break" : "broke " + brokenFile_;
+  }
+  if (dice < 30) {
+    loadOrDropMesh(host);
+    return "scene " + host.sceneId();
+  }
+  if (dice < 45) {  // jobs started and superseded: two draws in a row, a frame between them
+    ++supersedes_;
+    host.applySettings(randomSettings(host.lab(), rng_, 0.3));
+    host.renderFrame({160, 90});
+    afterFrame(host, false);
+    host.applySettings(randomSettings(host.lab(), rng_, 0.3));
+    return "superseded";
+  }
+  if (dice < 50) {
+    host.settle();
+    return "settled";
+  }
+  if (dice < 53) {
+    host.resetParams();
+    return "reset";
+  }
+  const std::string err = host.applySettings(randomSettings(host.lab(), rng_, 0.3));
+  return err.empty() ? "random parameters" : "random parameters: " + err;
+}
+
+void SoakDriver::switchLab(LabHost& host) {
+  const auto ids = labIds();
+  const std::string id = ids[std::uniform_int_distribution<size_t>(0, ids.size() - 1)(rng_)];
+  if (auto err = host.selectLab(id); !err.empty()) problems_.push_back("switch to " + id + ": " + err);
+  ++labSwitches_;
+  countAfterSwitch_ = true;  // counted after the new lab's first frame
+}
+
+void SoakDriver::breakOrFixShader(LabHost& host) {
+  if (!brokenFile_.empty()) {
+    fs::remove(scratch_ / brokenFile_);  // the built-in file serves again
+    brokenFile_.clear();
+    return;
+  }
+  const auto programs = host.lab().activePrograms();
+  if (programs.empty()) return;
+  const auto& stages = programs[std::uniform_int_distribution<size_t>(0, programs.size() - 1)(rng_)]->spec().stages;
+  if (stages.empty()) return;
+  const std::string rel = stages[std::uniform_int_distribution<size_t>(0, stages.size() - 1)(rng_)].path;
+  std::string text = readText(builtinShaderDir() / rel);
+  const size_t main = text.find("void main");
+  if (main == std::string::npos) return;
+  text.insert(main, "this is not GLSL;\n");  // a typo a student makes
+  writeText(scratch_ / rel, text);
+  brokenFile_ = rel;
+  ++shaderEdits_;
+}
+
+void SoakDriver::loadOrDropMesh(LabHost& host) {
+  const std::string home(host.lab().defaultScene());
+  if (host.sceneId() != home) {  // drop what was loaded
+    host.selectScene(home);
+    return;
+  }
+  std::vector<std::string> choices;
+  for (auto& s : host.lab().scenes()) choices.push_back(s.id);
+  for (auto& f : droppableMeshes()) choices.push_back(f.string());
+  if (choices.empty()) return;
+  ++meshLoads_;
+  const std::string pick = choices[std::uniform_int_distribution<size_t>(0, choices.size() - 1)(rng_)];
+  host.selectScene(pick);  // a file the lab cannot use is refused with a message and nothing changes
+}
+
+void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
+  ++frames_;
+  if (const std::string err = gl::drainErrors(); !err.empty()) {
+    if (++glErrors_ <= 5) problems_.push_back("GL error " + err + " in " + std::string(host.lab().id()));
+  }
+  if (readPixels) {
+    const ImageF image = host.readImage();
+    if (const size_t bad = countNonFinite(image); bad > 0) {
+      if (++nonFiniteFrames_ <= 5) {
+        const Settings settings = host.currentSettings();
+        problems_.push_back(std::to_string(bad) + " NaN/Inf values: scene " + host.sceneId() + " " +
+                            settingsAsArgs(host.lab().id(), settings));
+      }
+    }
+  }
+  if (countAfterSwitch_) {
+    countAfterSwitch_ = false;
+    glObjectsOnEntry_[std::string(host.lab().id())].push_back(gl::liveObjectsTotal());
+  }
+  const double t = seconds();
+  if (t >= nextSample_) {
+    nextSample_ = t + sampleSeconds_;
+    samples_.push_back({t, residentMb(), gl::liveObjectsTotal(), int(host.jobs().status().size()), frames_, steps_});
+  }
+}
+
+std::string SoakDriver::writeCsv(const fs::path& file) const {
+  std::ostringstream s;
+  s << "seconds,resident_mb,gl_objects,jobs,frames,steps\n";
+  for (auto& x : samples_)
+    s << formatNumber(x.seconds) << "," << formatNumber(x.residentMb) << "," << x.glObjects << "," << x.jobs << ","
+      << x.frames << "," << x.steps << "\n";
+  return writeTextFile(file.string(), s.str());
+}
+
+std::string SoakDriver::summary(bool judgeSlope, bool& passed) const {
+  std::ostringstream s;
+  passed = nonFiniteFrames_ == 0 && glErrors_ == 0;
+  s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_ << " lab switches, "
+    << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, " << supersedes_
+    << " jobs superseded), " << frames_ << " frames\n";
+  s << "soak: " << nonFiniteFrames_ << " frames with NaN/Inf, " << glErrors_ << " GL errors\n";
+  // Memory: least-squares slope of resident memory after the first fifth of the run (warm-up).
+  std::vector<Sample> late;
+  for (auto& x : samples_)
+    if (x.seconds >= seconds() * 0.2) late.push_back(x);
+  if (late.size() >= 3) {
+    double mt = 0, mm = 0;
+    for (auto& x : late) mt += x.seconds, mm += x.residentMb;
+    mt /= double(late.size()), mm /= double(late.size());
+    double num = 0, den = 0, peak = 0;
+    for (auto& x : late) num += (x.seconds - mt) * (x.residentMb - mm), den += (x.seconds - mt) * (x.seconds - mt), peak = std::max(peak, x.residentMb);
+    const double slope = den > 0 ? num / den * 600.0 : 0.0;  // MB per 10 minutes
+    const bool flat = slope < 1.0;
+    s << "soak: resident memory after warm-up " << formatNumber(late.front().residentMb) << " -> "
+      << formatNumber(late.back().residentMb) << " MB (peak " << formatNumber(peak) << "), slope " << formatNumber(slope)
+      << " MB per 10 min" << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (run >= 10 min to judge)")
+      << "\n";
+    if (judgeSlope && !flat) passed = false;
+  }
+  // GL objects: each time a lab is entered (fresh lab, its default scene, one frame) the count
+  // must be what it was the first time.
+  for (auto& [lab, counts] : glObjectsOnEntry_) {
+    const auto [lo, hi] = std::minmax_element(counts.begin(), counts.end());
+    const bool same = *hi - counts.front() <= 0;
+    s << "soak: GL objects on entering " << lab << ": " << counts.size() << " entries, first " << counts.front() << ", min "
+      << *lo << ", max " << *hi << (same ? " (back to baseline)" : " (ABOVE the first entry)") << "\n";
+    if (!same) passed = false;
+  }
+  for (auto& p : problems_) s << "soak: problem: " << p << "\n";
+  return s.str();
+}
+
+}  // namespace shadelab
