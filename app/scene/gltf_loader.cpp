@@ -43,13 +43,18 @@ std::string readAccessor(const tinygltf::Model& m, int index, int comps, std::ve
   const auto& acc = m.accessors[size_t(index)];
   if (acc.bufferView < 0 || size_t(acc.bufferView) >= m.bufferViews.size()) return "accessor without buffer view";
   const auto& view = m.bufferViews[size_t(acc.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size())
+    return "buffer view " + std::to_string(acc.bufferView) + " names no buffer";
   const auto& buffer = m.buffers[size_t(view.buffer)];
   const int compSize = tinygltf::GetComponentSizeInBytes(uint32_t(acc.componentType));
   const int stride = acc.ByteStride(view);
   if (compSize <= 0 || stride <= 0) return "accessor " + std::to_string(index) + " has a bad component type";
+  // Every bound checked without overflow: offsets and counts come from the file.
+  const size_t bytes = buffer.data.size(), element = size_t(compSize * comps);
   const size_t start = view.byteOffset + acc.byteOffset;
-  if (acc.count > 0 && start + size_t(stride) * (acc.count - 1) + size_t(compSize * comps) > buffer.data.size())
-    return "accessor " + std::to_string(index) + " reads past the end of its buffer";
+  const bool fits = view.byteOffset <= bytes && acc.byteOffset <= bytes - view.byteOffset &&
+                    (acc.count == 0 || (element <= bytes - start && (acc.count - 1) <= (bytes - start - element) / size_t(stride)));
+  if (!fits) return "accessor " + std::to_string(index) + " reads past the end of its buffer";
   out.resize(acc.count * size_t(comps));
   for (size_t i = 0; i < acc.count; ++i)
     for (int c = 0; c < comps; ++c)
@@ -130,17 +135,31 @@ struct Importer {
     }
     if (prim.indices >= 0) {
       if (auto e = readAccessor(model, prim.indices, 1, f); !e.empty()) return e;
-      for (float v : f) mesh.indices.push_back(uint32_t(v));
+      for (float v : f) {
+        if (!(v >= 0.0f && v < 4294967296.0f)) return "an index is not a vertex number";
+        mesh.indices.push_back(uint32_t(v));
+      }
     } else {
       for (uint32_t i = 0; i < mesh.positions.size(); ++i) mesh.indices.push_back(i);
     }
-    if (mesh.normals.size() != mesh.positions.size()) computeNormals(mesh);
-    mesh.material = prim.material >= 0 ? materialBase + prim.material : 0;
-    return validateMesh(mesh);
+    mesh.material = prim.material >= 0 && size_t(prim.material) < model.materials.size() ? materialBase + prim.material : 0;
+    // Checked before anything walks the indices; missing or short normals are then computed.
+    const bool ownNormals = mesh.normals.size() == mesh.positions.size();
+    if (!ownNormals) mesh.normals.clear();
+    if (!mesh.sourceTangents.empty() && mesh.sourceTangents.size() != mesh.positions.size()) mesh.sourceTangents.clear();
+    if (auto e = validateMesh(mesh); !e.empty()) return e;
+    if (!ownNormals) computeNormals(mesh);
+    return {};
   }
 
+  // A node graph may list a child many times at every level (a DAG, or a cycle the depth limit
+  // stops): the number of instances it can make grows exponentially, so visits are budgeted.
+  static constexpr int kMaxNodeVisits = 1 << 16;
+  int nodeVisits = 0;
+  bool nodeBudgetSpent() const { return nodeVisits >= kMaxNodeVisits; }
+
   void node(int index, const glm::mat4& parent, int depth) {
-    if (index < 0 || size_t(index) >= model.nodes.size() || depth > 64) return;
+    if (index < 0 || size_t(index) >= model.nodes.size() || depth > 64 || ++nodeVisits > kMaxNodeVisits) return;
     const auto& n = model.nodes[size_t(index)];
     const glm::mat4 world = parent * nodeTransform(n);
     if (n.mesh >= 0 && size_t(n.mesh) < meshPrimitives.size())
@@ -226,6 +245,9 @@ std::string loadGltf(const fs::path& file, Scene& scene) {
   const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (size_t(sceneIndex) < model.scenes.size()) {
     for (int root : model.scenes[size_t(sceneIndex)].nodes) im.node(root, glm::mat4(1.0f), 0);
+    if (im.nodeBudgetSpent())
+      scene.warnings.push_back(file.string() + ": the node graph names more than " + std::to_string(Importer::kMaxNodeVisits) +
+                               " nodes; the rest were left out");
   } else {
     for (size_t i = 0; i < scene.meshes.size(); ++i) scene.instances.push_back({int(i), glm::mat4(1.0f)});
   }

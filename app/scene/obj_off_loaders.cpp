@@ -142,8 +142,8 @@ std::string loadObj(const fs::path& file, Scene& scene) {
       }
     }
     if (mesh.indices.empty()) continue;
-    if (mesh.normals.empty()) computeNormals(mesh);
     if (auto err = validateMesh(mesh); !err.empty()) return file.string() + ": " + err;
+    if (mesh.normals.empty()) computeNormals(mesh);
     scene.instances.push_back({int(scene.meshes.size()), glm::mat4(1.0f)});
     scene.meshes.push_back(std::move(mesh));
   }

@@ -25,7 +25,7 @@ std::string Diagnostic::formatWithCaret() const {
   if (sourceLine.empty()) return s;
   s += "\n    ";
   s += sourceLine;
-  if (column <= 0) return s;
+  if (column <= 0 || size_t(column) > sourceLine.size() + 1) return s;  // no caret past the line's end
   std::string pad(size_t(column - 1), ' ');
   for (size_t i = 0; i < pad.size() && i < sourceLine.size(); ++i)
     if (sourceLine[i] == '\t') pad[i] = '\t';  // the caret lines up whatever the tab width
@@ -41,6 +41,21 @@ std::string trim(std::string s) {
   const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
+
+// A number from a driver's log; anything past int's range (a corrupt log) reads as 0: unknown.
+int logNumber(const std::string& digits) {
+  long long v = 0;
+  for (char c : digits) {
+    if (c < '0' || c > '9') return 0;
+    v = v * 10 + (c - '0');
+    if (v > 2147483647LL) return 0;
+  }
+  return int(v);
+}
+
+// std::regex matches recursively, so a line long enough exhausts the stack: no driver writes
+// a diagnostic this long, and such a line is shown as it is.
+constexpr size_t kLongestParsedLine = 2000;
 
 bool isErrorWord(std::string w) {
   for (auto& c : w) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -59,7 +74,7 @@ std::vector<Diagnostic> parseCompileLog(std::string_view log, const std::vector<
   // The file and line a (source string, line) pair names, with the file index decoded from the
   // line where the driver reported source string 0 (see preprocessor.h).
   auto locate = [&](Diagnostic& d, const std::string& source, const std::string& line) {
-    const auto [k, n] = splitLine(std::stoi(source), std::stoi(line));
+    const auto [k, n] = splitLine(logNumber(source), logNumber(line));
     d.file = size_t(k) < files.size() ? files[size_t(k)].string() : "source-string " + std::to_string(k);
     d.line = n;
   };
@@ -68,9 +83,11 @@ std::vector<Diagnostic> parseCompileLog(std::string_view log, const std::vector<
     Diagnostic d;
     d.raw = line;
     std::smatch m;
-    if (std::regex_match(line, m, mesa)) {
+    if (line.size() > kLongestParsedLine) {
+      d.message = trim(line.substr(0, kLongestParsedLine)) + "...";
+    } else if (std::regex_match(line, m, mesa)) {
       locate(d, m[1], m[2]);
-      d.column = std::stoi(m[3]);
+      d.column = logNumber(m[3]);
       d.isError = isErrorWord(m[4]);
       d.message = trim(m[5]);
     } else if (std::regex_match(line, m, nvidia)) {
