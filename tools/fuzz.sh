@@ -10,7 +10,8 @@
 # crashed, hung or leaked: tests/fuzz/regressions/<TARGET>/ (every one is replayed first). New
 # inputs go to build-fuzz/corpus/<TARGET>/, findings to build-fuzz/findings/<TARGET>/: a finding
 # is fixed, then its input is copied into regressions/. A hang is an input over 1 s; memory is
-# capped at 2 GiB resident and 512 MiB per allocation.
+# capped at 2 GiB resident and 512 MiB per allocation. SHADELAB_FUZZ_RUNS=N also stops after N
+# executions, whichever comes first.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${SHADELAB_FUZZ_BUILD:-$root/build-fuzz}
@@ -27,7 +28,7 @@ build_all() {
 case "${1:-}" in
   --list) echo "$targets"; exit 0 ;;
   --build) build_all; exit 0 ;;
-  ""|-h|--help) sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
+  ""|-h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 2 ;;
 esac
 target=$1 seconds=${2:-}
 ci=false
@@ -75,7 +76,9 @@ dirs=("$corpus")
 for d in "$seeds" "$regressions"; do [ -d "$d" ] && dirs+=("$d"); done
 log=$findings/fuzz-$(date +%Y%m%d-%H%M%S).log
 set +e
-"$bin" "${limits[@]}" "${dict[@]}" -max_total_time="$seconds" -print_final_stats=1 \
+runs=()
+[ -n "${SHADELAB_FUZZ_RUNS:-}" ] && runs=(-runs="$SHADELAB_FUZZ_RUNS")
+"$bin" "${limits[@]}" "${dict[@]}" "${runs[@]}" -max_total_time="$seconds" -print_final_stats=1 \
   -artifact_prefix="$findings/" "${dirs[@]}" >"$log" 2>&1
 rc=$?
 set -e
