@@ -84,7 +84,8 @@ rc=$?
 set -e
 runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
 cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1)
-echo "fuzz $target: ${runs:-?} executions in ${seconds} s, ${cov:-cov: ?}, corpus $(ls "$corpus" | wc -l) inputs (log: $log)"
+took=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
+echo "fuzz $target: ${runs:-?} executions in ${took:-$seconds} s, ${cov:-cov: ?}, corpus $(ls "$corpus" | wc -l) inputs (log: $log)"
 if [ $rc -ne 0 ]; then
   grep -E "ERROR: |SUMMARY: |Test unit written|^==[0-9]+==" "$log" | head -20
   echo "fuzz $target: found a failure; the input is in $findings/" >&2

@@ -1,7 +1,10 @@
 // Stanford PLY, ASCII and binary (either byte order): vertex x y z, optional normals (nx ny nz)
 // and texture coordinates (s t, u v or texture_u texture_v), faces as index lists (fans for
 // polygons). Other elements and properties are read past and ignored.
+#include <algorithm>
 #include <bit>
+#include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -59,6 +62,16 @@ bool readScalar(std::istream& in, Format f, const std::string& t, double& out) {
   else if (t == "float" || t == "float32") { float v; std::memcpy(&v, b, 4); out = v; }
   else { double v; std::memcpy(&v, b, 8); out = v; }
   return true;
+}
+
+// A double from the file as float: values past float's range become infinite (the validator names
+// a position that is), never an out-of-range conversion.
+float toFloat(double v) {
+  constexpr double kMax = 3.4028234663852886e38;
+  return std::isnan(v) ? std::numeric_limits<float>::quiet_NaN()
+         : v > kMax   ? std::numeric_limits<float>::infinity()
+         : v < -kMax  ? -std::numeric_limits<float>::infinity()
+                      : float(v);
 }
 
 }  // namespace
@@ -119,18 +132,21 @@ std::string loadPly(const fs::path& file, Scene& scene) {
       }
       if (e.count > 50'000'000) return where + "too many vertices (" + std::to_string(e.count) + ")";
     }
+    // An element with no properties occupies no bytes: its count, whatever the file says, reads nothing.
+    if (e.properties.empty()) continue;
     for (size_t i = 0; i < e.count; ++i) {
       glm::vec3 p(0.0f), n(0.0f);
       glm::vec2 uv(0.0f);
       for (auto& prop : e.properties) {
         if (prop.list) {
           double count = 0;
-          if (!readScalar(in, format, prop.countType, count) || count < 0 || count > 65536)
+          if (!readScalar(in, format, prop.countType, count) || !(count >= 0 && count <= 65536) || count != std::floor(count))
             return where + e.name + " " + std::to_string(i) + " is missing or malformed";
           std::vector<uint32_t> poly(static_cast<size_t>(count));
           for (auto& index : poly) {
             double v = 0;
-            if (!readScalar(in, format, prop.type, v) || v < 0) return where + e.name + " " + std::to_string(i) + " is malformed";
+            if (!readScalar(in, format, prop.type, v) || !(v >= 0 && v < 4294967296.0) || v != std::floor(v))
+              return where + e.name + " " + std::to_string(i) + " is malformed";
             index = uint32_t(v);
           }
           const bool isIndices = prop.name == "vertex_indices" || prop.name == "vertex_index";
@@ -144,14 +160,14 @@ std::string loadPly(const fs::path& file, Scene& scene) {
         if (!readScalar(in, format, prop.type, v)) return where + e.name + " " + std::to_string(i) + " is missing or malformed";
         if (!vertices) continue;
         const std::string& name = prop.name;
-        if (name == "x") p.x = float(v);
-        else if (name == "y") p.y = float(v);
-        else if (name == "z") p.z = float(v);
-        else if (name == "nx") n.x = float(v);
-        else if (name == "ny") n.y = float(v);
-        else if (name == "nz") n.z = float(v);
-        else if (name == "s" || name == "u" || name == "texture_u") uv.x = float(v);
-        else if (name == "t" || name == "v" || name == "texture_v") uv.y = float(v);
+        if (name == "x") p.x = toFloat(v);
+        else if (name == "y") p.y = toFloat(v);
+        else if (name == "z") p.z = toFloat(v);
+        else if (name == "nx") n.x = toFloat(v);
+        else if (name == "ny") n.y = toFloat(v);
+        else if (name == "nz") n.z = toFloat(v);
+        else if (name == "s" || name == "u" || name == "texture_u") uv.x = toFloat(v);
+        else if (name == "t" || name == "v" || name == "texture_v") uv.y = toFloat(v);
       }
       if (vertices) {
         mesh.positions.push_back(p);
@@ -161,6 +177,22 @@ std::string loadPly(const fs::path& file, Scene& scene) {
     }
   }
   if (mesh.indices.empty()) return where + "no faces in PLY file";
+  // A file's normals or UVs that are not finite would reach the shaders as NaN: normals are then
+  // computed from the faces instead, and such UVs read as 0, each with a warning.
+  auto finite = [](const auto& v) {
+    for (int c = 0; c < v.length(); ++c)
+      if (!std::isfinite(v[c])) return false;
+    return true;
+  };
+  if (!std::all_of(mesh.normals.begin(), mesh.normals.end(), finite)) {
+    mesh.normals.clear();
+    scene.warnings.push_back(where + "some vertex normals are NaN or Inf; normals computed from the faces instead");
+  }
+  if (!std::all_of(mesh.uvs.begin(), mesh.uvs.end(), finite)) {
+    for (auto& uv : mesh.uvs)
+      if (!finite(uv)) uv = glm::vec2(0.0f);
+    scene.warnings.push_back(where + "some texture coordinates are NaN or Inf; read as 0");
+  }
   if (auto err = validateMesh(mesh); !err.empty()) return where + err;
   if (mesh.normals.empty()) computeNormals(mesh);
   scene.instances.push_back({int(scene.meshes.size()), glm::mat4(1.0f)});

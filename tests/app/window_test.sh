@@ -30,6 +30,13 @@ if grep -qE "PRETTY_NAME|VERSION_ID" "$out/escape.log"; then echo "the window pr
 "$check" "$out/window_escape.png" --min-stddev 0.05 --min-colors 50
 echo "include escape in the window passed"
 
+# A short soak in the real window: random labs, parameters, broken and fixed shaders, meshes and
+# Measure for 20 s; no bad frame, no GL error, GL objects back to their count on entering a lab.
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --soak 0.33 --soak-seed 5 >"$out/soak.log" 2>&1 ||
+  { tail -20 "$out/soak.log"; echo "the window soak failed"; exit 1; }
+grep -q "soak: 0 frames with NaN/Inf, 0 GL errors" "$out/soak.log" || { tail -20 "$out/soak.log"; exit 1; }
+echo "soak in the window passed"
+
 # Measure in the window: with auto-measure on, the error against the truth appears.
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab shading --auto-measure --exit-after 40 \
   --screenshot "$out/window_measure.png" >"$out/measure.log"

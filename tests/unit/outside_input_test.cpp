@@ -130,3 +130,20 @@ TEST(Grade, ARubricsFilesStayInsideAShaderFolder) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Loaders, PlyValuesPastFloatOrNotFiniteNeverReachTheMesh) {
+  const fs::path dir = fs::path(SHADELAB_SOURCE_DIR) / "tests" / "fuzz" / "regressions" / "ply";
+  Scene s;
+  // A normal of 1e300 (a double past float's range): normals are computed from the face instead.
+  ASSERT_EQ(loadSceneFile(dir / "double-past-float.ply", s), "");
+  for (auto& n : s.meshes.at(0).normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+  ASSERT_FALSE(s.warnings.empty());
+  EXPECT_NE(s.warnings[0].find("normals computed from the faces"), std::string::npos) << s.warnings[0];
+  // An element of no properties and 2^64-1 entries reads nothing and ends at once.
+  Scene t;
+  EXPECT_EQ(loadSceneFile(dir / "empty-element-huge-count.ply", t), "");
+}
+
+}  // namespace
