@@ -195,39 +195,49 @@ TEST(GradeFailures, ASyntaxErrorIsReportedAtTheStudentsFileAndLine) {
 }
 
 // A submission that includes a file outside its folder (a system file, a neighbour's solution by
-// "..", or a link to it) does not build, is told the rule, and the report quotes nothing of it.
+// "..", through a linked folder, or a submitted file that is itself a link to the neighbour's)
+// does not build, is told the rule, and neither the output nor any report quotes the file.
 TEST(GradeFailures, AnIncludeLeavingTheStudentsFolderIsRefusedAndNeverQuoted) {
   const fs::path classDir = scratch("escape");
   const std::string marker = "NEIGHBOURS_SOLUTION_MARKER";
   const fs::path bob = classDir / "bob" / "common";
   fs::create_directories(bob);
   std::ofstream(bob / "lighting.glsl") << "// " << marker << "\n" << marker << " vec3 broken(\n";
-  const std::vector<std::pair<std::string, std::string>> forms = {
-      {"absolute", "#include \"/etc/os-release\""},
-      {"dotdot", "#include \"../../bob/common/lighting.glsl\""},
-      {"link", "#include \"borrowed/lighting.glsl\""},
+  std::ifstream builtin(builtinShaderDir() / "common/lighting.glsl");
+  std::stringstream lighting;
+  lighting << builtin.rdbuf();
+
+  struct Form {
+    std::string name, includeLine, expected;  // the student's first line; what the output must say
   };
-  for (auto& [form, line] : forms) {
-    const fs::path student = classDir / ("alice_" + form);
+  const std::vector<Form> forms = {
+      {"absolute", "#include \"/etc/os-release\"", ":1:11: error: " + std::string(kSandboxRule)},
+      {"dotdot", "#include \"../../bob/common/lighting.glsl\"", ":1:11: error: " + std::string(kSandboxRule)},
+      {"linkedfolder", "#include \"borrowed/lighting.glsl\"", ":1:11: error: " + std::string(kSandboxRule)},
+      {"linkedfile", "", std::string(kSandboxRule) + " (a link leads out of"},
+  };
+  for (auto& form : forms) {
+    const fs::path student = classDir / ("alice_" + form.name);
     fs::create_directories(student / "common");
-    std::ifstream in(builtinShaderDir() / "common/lighting.glsl");
-    std::stringstream s;
-    s << in.rdbuf();
-    std::ofstream(student / "common/lighting.glsl") << line << "\n" << s.str();
-    if (form == "link") fs::create_directory_symlink(bob, student / "common" / "borrowed");
-    const Graded g = grade("shading/blinn-phong", student, classDir / ("report_" + form));
-    ASSERT_TRUE(g.report.is_object()) << form << ": " << g.output;
-    EXPECT_NE(g.output.find(kSandboxRule), std::string::npos) << form << ": " << g.output;
-    EXPECT_NE(g.output.find((student / "common/lighting.glsl").string() + ":1:11: error:"), std::string::npos)
-        << form << ": " << g.output;
-    EXPECT_EQ(g.percent(), 0.0) << form;
-    for (const char* leak : {"PRETTY_NAME", "VERSION_ID", marker.c_str()}) {
-      EXPECT_EQ(g.output.find(leak), std::string::npos) << form << " leaked " << leak << ": " << g.output;
+    if (form.name == "linkedfile") {
+      fs::create_symlink(bob / "lighting.glsl", student / "common/lighting.glsl");
+    } else {
+      std::ofstream(student / "common/lighting.glsl") << form.includeLine << "\n" << lighting.str();
+      if (form.name == "linkedfolder") fs::create_directory_symlink(bob, student / "common" / "borrowed");
+    }
+    const fs::path reports = classDir / ("report_" + form.name);
+    const Graded g = grade("shading/blinn-phong", student, reports);
+    ASSERT_TRUE(g.report.is_object()) << form.name << ": " << g.output;
+    EXPECT_NE(g.output.find(form.expected), std::string::npos) << form.name << ": " << g.output;
+    EXPECT_EQ(g.percent(), 0.0) << form.name;
+    for (const std::string leak : {"PRETTY_NAME", "VERSION_ID", marker.c_str()}) {
+      EXPECT_EQ(g.output.find(leak), std::string::npos) << form.name << " leaked " << leak << ": " << g.output;
       for (const char* report : {"report.md", "report.html", "report.json"}) {
-        std::ifstream r(classDir / ("report_" + form) / report);
+        std::ifstream r(reports / report);
         std::stringstream text;
         text << r.rdbuf();
-        EXPECT_EQ(text.str().find(leak), std::string::npos) << form << ": " << report << " leaked " << leak;
+        EXPECT_FALSE(text.str().empty()) << form.name << ": no " << report;
+        EXPECT_EQ(text.str().find(leak), std::string::npos) << form.name << ": " << report << " leaked " << leak;
       }
     }
   }
