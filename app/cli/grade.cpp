@@ -14,6 +14,7 @@
 #include "measure/report.h"
 #include "shader/preprocessor.h"
 #include "util/output_files.h"
+#include "util/read_file.h"
 
 namespace shadelab {
 
@@ -33,13 +34,6 @@ std::string slug(const std::string& s) {
   std::string out;
   for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? char(std::tolower(ch)) : '-';
   return out;
-}
-
-std::string readAll(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 double number(const nlohmann::json& values, const std::string& key) {
@@ -130,7 +124,7 @@ std::string gradeExercise(const std::string& id, const Options& o, const fs::pat
   for (auto& file : ex.files) {
     const ShaderSearchPath::Lookup found = submitted.find(file);
     if (found.file.empty() && found.refused.empty()) out.missingFiles.push_back(file);
-    else if (!found.file.empty() && readAll(found.file) == readAll(builtinShaderDir() / file))
+    else if (!found.file.empty() && readWholeFile(found.file) == readWholeFile(builtinShaderDir() / file))
       out.notes.push_back(found.file.string() + " is the lab's own file, unchanged");
   }
   std::vector<std::string> printed;

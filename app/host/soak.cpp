@@ -14,6 +14,7 @@
 #include "scene/scene_catalog.h"
 #include "util/format.h"
 #include "util/output_files.h"
+#include "util/read_file.h"
 
 namespace fs = std::filesystem;
 
@@ -29,13 +30,6 @@ double residentMb() {
   long pages = 0, resident = 0;
   statm >> pages >> resident;
   return double(resident) * double(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 void writeText(const fs::path& file, const std::string& text) {
@@ -130,7 +124,7 @@ void SoakDriver::breakOrFixShader(LabHost& host) {
   const auto& stages = programs[std::uniform_int_distribution<size_t>(0, programs.size() - 1)(rng_)]->spec().stages;
   if (stages.empty()) return;
   const std::string rel = stages[std::uniform_int_distribution<size_t>(0, stages.size() - 1)(rng_)].path;
-  std::string text = readText(builtinShaderDir() / rel);
+  std::string text = readWholeFile(builtinShaderDir() / rel);
   const size_t main = text.find("void main");
   if (main == std::string::npos) return;
   text.insert(main, "this is not GLSL;\n");  // a typo a student makes

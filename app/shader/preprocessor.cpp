@@ -1,6 +1,7 @@
 #include "shader/preprocessor.h"
 
 #include "util/contained_path.h"
+#include "util/read_file.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -40,15 +41,6 @@ ShaderSearchPath::Lookup ShaderSearchPath::find(const std::string& relPath) cons
 }
 
 namespace {
-
-bool readFile(const fs::path& p, std::string& out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
-}
 
 // `#include "name"` -> name; anything else -> empty.
 std::string includeTarget(const std::string& line) {
@@ -131,7 +123,7 @@ struct Expander {
         }
         const fs::path file = found.file;
         std::string incText;
-        if (file.empty() || !readFile(file, incText)) {
+        if (file.empty() || !readWholeFile(file, incText)) {
           fail(out, out.files[fileIndex].string(), lineNo, nameColumn, "cannot find include \"" + target + "\"");
           return false;
         }
@@ -161,7 +153,7 @@ PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::str
     fail(out, relPath, 0, 0, found.refused);
     return out;
   }
-  if (file.empty() || !readFile(file, text)) {
+  if (file.empty() || !readWholeFile(file, text)) {
     fail(out, relPath, 0, 0, "shader file not found in the search path");
     return out;
   }
