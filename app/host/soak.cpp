@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 
 #include "gl/handle.h"
@@ -165,7 +166,9 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
   }
   if (countAfterSwitch_) {
     countAfterSwitch_ = false;
-    glObjectsOnEntry_[std::string(host.lab().id())].push_back(gl::liveObjectsTotal());
+    std::vector<int> kinds;
+    for (int k = 0; k < int(gl::Kind::Count); ++k) kinds.push_back(gl::liveObjects(gl::Kind(k)));
+    glObjectsOnEntry_[std::string(host.lab().id())].push_back(std::move(kinds));
   }
   const double t = seconds();
   if (t >= nextSample_) {
@@ -210,11 +213,23 @@ std::string SoakDriver::summary(bool judgeSlope, bool& passed) const {
   }
   // GL objects: each time a lab is entered (fresh lab, its default scene, one frame) the count
   // must be what it was the first time.
-  for (auto& [lab, counts] : glObjectsOnEntry_) {
-    const auto [lo, hi] = std::minmax_element(counts.begin(), counts.end());
-    const bool same = *hi - counts.front() <= 0;
-    s << "soak: GL objects on entering " << lab << ": " << counts.size() << " entries, first " << counts.front() << ", min "
-      << *lo << ", max " << *hi << (same ? " (back to baseline)" : " (ABOVE the first entry)") << "\n";
+  auto total = [](const std::vector<int>& kinds) { return std::accumulate(kinds.begin(), kinds.end(), 0); };
+  auto describe = [](const std::vector<int>& kinds) {
+    std::string d;
+    for (size_t k = 0; k < kinds.size(); ++k)
+      if (kinds[k]) d += (d.empty() ? "" : ", ") + std::to_string(kinds[k]) + " " + gl::kindName(gl::Kind(k));
+    return d;
+  };
+  for (auto& [lab, entries] : glObjectsOnEntry_) {
+    const auto most = std::max_element(entries.begin(), entries.end(),
+                                       [&](auto& a, auto& b) { return total(a) < total(b); });
+    int least = total(entries.front());
+    for (auto& e : entries) least = std::min(least, total(e));
+    const bool same = total(*most) <= total(entries.front());
+    s << "soak: GL objects on entering " << lab << ": " << entries.size() << " entries, first " << total(entries.front())
+      << ", min " << least << ", max " << total(*most);
+    if (same) s << " (back to baseline)\n";
+    else s << " (ABOVE the first entry: " << describe(*most) << " against " << describe(entries.front()) << ")\n";
     if (!same) passed = false;
   }
   for (auto& p : problems_) s << "soak: problem: " << p << "\n";

@@ -8,6 +8,7 @@
 // The same driver runs headless (`shadelab soak`) and in the real window (`--soak MINUTES`).
 #pragma once
 #include <filesystem>
+#include <array>
 #include <map>
 #include <random>
 #include <string>
@@ -61,7 +62,8 @@ class SoakDriver {
        meshLoads_ = 0, supersedes_ = 0;
   std::string brokenFile_;   // relative path of the scratch file now broken, or ""
   bool countAfterSwitch_ = false;
-  std::map<std::string, std::vector<int>> glObjectsOnEntry_;  // lab -> live GL objects after its first frame
+  // lab -> live GL objects of each kind after the lab's first frame, once per time it is entered
+  std::map<std::string, std::vector<std::vector<int>>> glObjectsOnEntry_;
   std::vector<Sample> samples_;
   std::vector<std::string> problems_;
 };

@@ -1,7 +1,6 @@
 #include "labs/shadows/shadow_map.h"
 
 #include <algorithm>
-#include <stdexcept>
 #include <string>
 
 namespace shadelab {
@@ -30,17 +29,34 @@ void allocateArray(GLuint texture, GLenum internal, GLenum format, int size, int
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
-void checkComplete(int size) {
-  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("shadow map " + std::to_string(size) + "^2 is incomplete (status " + std::to_string(status) + ")");
+// Whether the framebuffer bound now is complete and nothing before it ran out of memory.
+bool complete() {
+  const bool outOfMemory = !gl::drainErrors().empty();
+  return !outOfMemory && glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
 }
 
 }  // namespace
 
-void ShadowMap::ensure(const MapShape& shape) {
-  if (texture_ && shape == shape_) return;
+double ShadowMap::bytesOf(const MapShape& shape) {
+  const double texels = double(shape.size) * shape.size * (shape.cube ? 6 : shape.layers);
+  const double moments = shape.momentFormat == GL_R32F ? 4 : shape.momentFormat == GL_RG32F ? 8 : shape.momentFormat ? 16 : 0;
+  return texels * (4.0 + moments * (shape.momentMips ? 4.0 / 3.0 : 1.0));
+}
+
+int ShadowMap::ensure(const MapShape& shape) {
+  if (texture_ && shape == requested_) return shape_.size;
   release();
+  requested_ = shape;
+  gl::drainErrors();  // errors from before are not this allocation's
+  for (MapShape attempt = shape; attempt.size >= 256; attempt.size /= 2) {
+    if (allocate(attempt)) return attempt.size;
+    release();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return 0;
+}
+
+bool ShadowMap::allocate(const MapShape& shape) {
   shape_ = shape;
   const int size = shape.size;
   texture_ = gl::TextureName::make();
@@ -59,7 +75,7 @@ void ShadowMap::ensure(const MapShape& shape) {
     glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
-    checkComplete(size);
+    if (!complete()) return false;
   }
   if (shape.momentFormat && !shape.cube) {
     moments_ = gl::TextureName::make();
@@ -71,7 +87,7 @@ void ShadowMap::ensure(const MapShape& shape) {
     glBindFramebuffer(GL_FRAMEBUFFER, blurFbo_.get());
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, blurTemp_.get(), 0, 0);
     glDrawBuffer(GL_COLOR_ATTACHMENT0);
-    checkComplete(size);
+    if (!complete()) return false;
     momentSampler_ = gl::Sampler::make();
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MIN_FILTER, shape.momentMips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -86,7 +102,7 @@ void ShadowMap::ensure(const MapShape& shape) {
       if (moments_) glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
       glDrawBuffer(moments_ ? GL_COLOR_ATTACHMENT0 : GL_NONE);
       glReadBuffer(GL_NONE);
-      checkComplete(size);
+      if (!complete()) return false;
     }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
@@ -100,6 +116,7 @@ void ShadowMap::ensure(const MapShape& shape) {
   glSamplerParameteri(compare_.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
   const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
   for (GLuint s : {raw_.get(), compare_.get()}) glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
+  return true;
 }
 
 void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program, const LightFrame& light, int layer,

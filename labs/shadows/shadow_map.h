@@ -33,8 +33,10 @@ struct MapShape {
 
 class ShadowMap {
  public:
-  // (Re)allocates only when the shape changes.
-  void ensure(const MapShape& shape);
+  // (Re)allocates only when the shape changes. Where the driver cannot allocate it (an 8192^2
+  // cube or four cascades of RGBA32F moments are gigabytes), halves the size until it can and
+  // returns the size it got: shape.size, a smaller one, or 0 (not even 256^2; no map then).
+  int ensure(const MapShape& shape);
   // Draws every instance's depth (and moments) from `light` into `layer`. `program` is the depth
   // program variant for this map (CUBE_MAP for a one-pass cube, CUBE_FACE for six passes,
   // MOMENTS for a filtered map).
@@ -56,6 +58,8 @@ class ShadowMap {
   bool hasMoments() const { return bool(moments_); }
   GLuint texture() const { return texture_.get(); }
   explicit operator bool() const { return bool(texture_); }
+  // What `shape` needs in GPU memory, bytes (for the message when it could not be allocated).
+  static double bytesOf(const MapShape& shape);
 
  private:
   gl::TextureName texture_, moments_, blurTemp_;
@@ -63,7 +67,9 @@ class ShadowMap {
   std::vector<gl::FramebufferName> layerFbos_;  // 2D arrays: one per layer, attached once (re-attaching
                                                 // every frame makes drivers revalidate the framebuffer)
   gl::Sampler raw_, compare_, momentSampler_;
-  MapShape shape_;
+  bool allocate(const MapShape& shape);  // false (and a GL error drained) when the driver refuses
+  MapShape requested_;  // what ensure() was last asked for
+  MapShape shape_;      // what was allocated: requested_, perhaps smaller
   int wrapBorder_ = -1;  // the samplers' wrap mode as last set: 1 border, 0 edge
 };
 

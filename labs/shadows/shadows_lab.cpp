@@ -1,5 +1,7 @@
 #include "labs/shadows/shadows_lab.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 
@@ -306,11 +308,11 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   prog.set("u_viewProj", frame.viewProj());
   prog.set("u_eye", frame.camera.eye());
   prog.set("u_ambient", 0.12f);
-  setLight(prog, "u_key", cascades_.empty() ? key : cascades_[0].light, params.mapSize());
+  setLight(prog, "u_key", cascades_.empty() ? key : cascades_[0].light, sizeOf(keyMap_));
   if (cascades_.size() >= 2) {
     for (size_t i = 0; i < cascades_.size(); ++i) {
       const std::string n = "u_cascade[" + std::to_string(i) + "]";
-      setLight(prog, n, cascades_[i].light, params.mapSize(), int(i));
+      setLight(prog, n, cascades_[i].light, sizeOf(keyMap_), int(i));
       prog.set(("u_cascadeFar[" + std::to_string(i) + "]").c_str(), cascades_[i].splitFar);
       prog.set(("u_blendFrom[" + std::to_string(i) + "]").c_str(), cascades_[i].blendFrom);
     }
@@ -355,7 +357,7 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   if (prog.uses("u_noCube") || prog.uses("u_noCmpCube"))
     for (int unit : {kNoCube, kNoCmpCube}) dummies_.bindCube(unit);
   if (fill) {
-    setLight(prog, "u_fill", *fill, params.mapSize());
+    setLight(prog, "u_fill", *fill, sizeOf(fillMap_));
     const float r2 = glm::dot(fill->position - b.center(), fill->position - b.center());
     prog.set("u_fillPower", glm::vec3(0.35f, 0.45f, 0.6f) * r2);
   }
@@ -398,14 +400,30 @@ static ViewVolume viewVolume(const Frame& frame) {
   return v;
 }
 
+bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* which) {
+  const int got = map.ensure(shape);
+  if (got == shape.size) return true;
+  const double mib = ShadowMap::bytesOf(shape) / double(1 << 20);
+  char bytes[32];
+  std::snprintf(bytes, sizeof bytes, mib >= 1024.0 ? "%.1f GiB" : "%.0f MiB", mib >= 1024.0 ? mib / 1024.0 : mib);
+  const std::string asked = std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes + ")";
+  mapWarnings_.push_back(got ? "the driver could not allocate a " + asked + "; drawing at " + std::to_string(got) +
+                                   "^2 instead: pick a smaller map size or fewer layers"
+                             : "the driver could not allocate even a 256^2 " + std::string(which) +
+                                   " shadow map: no shadow from that light");
+  return got > 0;
+}
+
 void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format) {
   const bool cube = params.keyType == LightType::Point;
   const ShadowFilter filter = effectiveFilterOf(params);
   const int layers = std::max<int>(int(cascades_.size()), 1);
-  const std::string size = std::to_string(params.mapSize()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
+  if (!ensureMap(keyMap_, {cube, params.mapSize(), layers, format, cube ? 0u : momentFormat(filter), params.momentMips},
+                 "key"))
+    return;
+  const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
   const std::string kind = std::string(kLightTypes[int(params.keyType)]) +
                            (cascades_.size() >= 2 ? " cascade " : params.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
-  keyMap_.ensure({cube, params.mapSize(), layers, format, cube ? 0u : momentFormat(filter), params.momentMips});
   Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses, filter));
   if (isMomentFilter(filter)) {
     depth.use();
@@ -428,6 +446,7 @@ void ShadowsLab::render(Frame& frame) {
   const Bounds bounds = frame.scene.bounds;
   sceneLight_ = frame.scene.suggestedLight;
   lightWarnings_.clear();
+  mapWarnings_.clear();
   const LightFrame key = buildLight(keySetup(), bounds, lightWarnings_);
   std::vector<std::string> ignored;
   const LightFrame fill = buildLight(fillSetup(), bounds, ignored);
@@ -451,12 +470,11 @@ void ShadowsLab::render(Frame& frame) {
   }
   const bool fillMapNeeded = params.fillLight && params.fillCasts && !gbuffer &&
                              (!viewIsDepthMap(params.view) || params.depthLight == 1);
-  if (fillMapNeeded) {
-    const std::string size = std::to_string(params.mapSize()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
+  if (fillMapNeeded && ensureMap(fillMap_, {false, params.mapSize(), 1, format, momentFormat(filter), params.momentMips}, "fill")) {
+    const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
     {
       auto pass = frame.pass("shadow map: fill spot " + size +
                              (isMomentFilter(filter) ? " + " + std::string(kFilters[int(filter)]) + " moments" : ""));
-      fillMap_.ensure({false, params.mapSize(), 1, format, momentFormat(filter), params.momentMips});
       Program& depth = fetch(kFillDepthSlot, depthSpec(false, false, filter));
       if (isMomentFilter(filter)) {
         depth.use();
@@ -498,7 +516,7 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   const LightFrame& shown = showFill ? fill : cascades_.empty() ? key : cascades_[size_t(layer)].light;
   Program& prog = fetch(kDepthViewSlot, depthViewSpec(params));
   prog.use();
-  setLight(prog, "u_key", shown, params.mapSize(), layer);
+  setLight(prog, "u_key", shown, sizeOf(map), layer);
   prog.set("u_keyMap", int(kKeyMap));
   prog.set("u_keyCube", int(kKeyCube));
   dummies_.bindArray(kKeyMap);
@@ -525,6 +543,7 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
 
 std::vector<std::string> ShadowsLab::warnings() const {
   std::vector<std::string> w = lightWarnings_;
+  w.insert(w.end(), mapWarnings_.begin(), mapWarnings_.end());
   const auto& p = params;
   if (p.keyType != LightType::Point && p.elevationDeg < 10.0f)
     w.push_back("grazing light (" + formatNumber(p.elevationDeg) + " deg above the horizon): texels stretch along the "

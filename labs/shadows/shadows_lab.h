@@ -156,6 +156,12 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   std::vector<int> boundSamplers_;  // units drawLit bound sampler objects to
   glm::vec3 sceneLight_{0.0f};     // the current scene's own light, if it has one
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
+  std::vector<std::string> mapWarnings_;    // maps the driver could only allocate smaller, this frame
+  // Allocates `map` for `shape`; false when no map could be had. A smaller map than asked is
+  // drawn with a warning naming both sizes.
+  bool ensureMap(ShadowMap& map, const MapShape& shape, const char* which);
+  // The size a map was allocated at (the texel size the shaders use), or the asked size if none.
+  int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.mapSize(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;
