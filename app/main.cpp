@@ -10,7 +10,9 @@
 #include "ui/window_app.h"
 #endif
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   using namespace shadelab;
   std::vector<char*> args;
 #ifdef SHADELAB_HAS_WINDOW
@@ -62,4 +64,17 @@ int main(int argc, char** argv) {
     o.out = "out/shadelab.png";
   }
   return runRender(o);
+}
+
+}  // namespace
+
+// What no command could handle (a render target the driver cannot allocate) ends the run with one
+// line and a non-zero exit, never an abort.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadelab: %s\n", e.what());
+    return 1;
+  }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <cstdio>
 #include <stdexcept>
 
 #include <glm/glm.hpp>
@@ -97,9 +98,12 @@ RenderTarget RenderTarget::create(glm::ivec2 size, GLenum colorFormat) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rt.depth_.get());
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("render target " + std::to_string(size.x) + "x" + std::to_string(size.y) +
-                             " is incomplete (status 0x" + std::to_string(status) + ")");
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    char why[160];
+    std::snprintf(why, sizeof why, "render target %dx%d could not be allocated (framebuffer status 0x%04X, %s): pick a smaller size",
+                  size.x, size.y, unsigned(status), gl::drainErrors().empty() ? "no GL error" : "out of memory");
+    throw std::runtime_error(why);
+  }
   return rt;
 }
 
