@@ -42,7 +42,7 @@ void writeText(const fs::path& file, const std::string& text) {
 std::vector<fs::path> droppableMeshes() {
   std::vector<fs::path> out;
   std::error_code ec;
-  for (const fs::path dir : {fs::path(SHADELAB_SOURCE_DIR) / "tests" / "data", dataDirectory() / "meshes"}) {
+  for (const fs::path& dir : {fs::path(SHADELAB_SOURCE_DIR) / "tests" / "data", dataDirectory() / "meshes"}) {
     if (dir.empty()) continue;
     for (auto& e : fs::directory_iterator(dir, ec)) {
       const std::string ext = e.path().extension().string();
