@@ -31,10 +31,10 @@ std::string LabHost::selectLab(std::string_view id) {
   shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
   labReady_ = true;
-  previous_.reset();  // built for another lab's scenes
   const std::string scene = std::string(lab_->defaultScene());
-  if (auto err = rebuildScene(scene, lab_->needs(), true); !err.empty()) return err;
-  return {};
+  const std::string err = rebuildScene(scene, lab_->needs(), true);
+  previous_.reset();  // the old lab's scene, which rebuildScene kept: of no use to this lab
+  return err;
 }
 
 std::string LabHost::selectScene(const std::string& idOrPath) {

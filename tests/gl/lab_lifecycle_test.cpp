@@ -54,6 +54,26 @@ TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
   EXPECT_EQ(gl::liveObjectsTotal(), before);
 }
 
+// Entering a lab leaves nothing of the lab before it: the GL objects after the first frame are
+// the same whichever lab (and scene) came before. (The old lab's scene was once kept as the
+// host's "previous build", found by the soak.)
+TEST(Lifecycle, EnteringALabKeepsNothingOfTheLabBefore) {
+  LabHost host(test::builtinShaders());
+  auto enter = [&](const std::string& id) {
+    EXPECT_EQ(host.selectLab(id), "");
+    host.renderFrame({64, 36});
+    return gl::liveObjectsTotal();
+  };
+  const int fresh = enter("shading");
+  for (auto& before : labIds()) {
+    if (before == "shading") continue;
+    enter(before);
+    host.settle();
+    host.renderFrame({64, 36});
+    EXPECT_EQ(enter("shading"), fresh) << "after " << before;
+  }
+}
+
 TEST(Needs, TexturesDecodedOnlyWhenUsed) {
   LabHost host(test::builtinShaders());
   ASSERT_EQ(host.selectLab("shading"), "");
