@@ -86,8 +86,8 @@ int runSoak(const Options& o) {
     driver.step(host);
     host.renderFrame(size, o.time);
     driver.afterFrame(host);
-    if (driver.seconds() >= nextReport) {
-      nextReport += 60.0;
+    if (driver.seconds() >= nextReport) {  // about once a minute (a long step delays it)
+      nextReport = driver.seconds() + 60.0;
       const auto& x = driver.samples().back();
       std::printf("soak: %4.0f s  %7.1f MB  %5d GL objects  %d jobs  %ld frames\n", x.seconds, x.residentMb, x.glObjects,
                   x.jobs, x.frames);
