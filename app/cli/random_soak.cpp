@@ -1,5 +1,8 @@
 // `shadelab random` and `shadelab soak`: configurations nobody wrote by hand.
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <functional>
 #include <random>
 
 #include "cli/commands.h"
@@ -33,12 +36,14 @@ int runRandom(const Options& o) {
   std::vector<std::string> labs = o.lab.empty() ? labIds() : std::vector<std::string>{o.lab};
   std::mt19937 rng(o.seed);
   int failures = 0, total = 0;
+  std::vector<std::pair<double, std::string>> slowest;  // seconds (settle and one frame), reproduction
   for (auto& id : labs) {
     if (auto err = host.selectLab(id); !err.empty()) return fail(err);
     int labFailures = 0;
     for (int i = 0; i < o.count; ++i) {
       host.resetParams();
       const Settings drawn = randomSettings(host.lab(), rng);
+      const auto start = std::chrono::steady_clock::now();
       std::string why = host.applySettings(drawn);
       if (why.empty()) why = host.refreshScene();
       if (why.empty()) {
@@ -55,6 +60,9 @@ int runRandom(const Options& o) {
       }
       ++total;
       const std::string repro = "--lab " + id + " " + settingsAsArgs(id, drawn);
+      slowest.emplace_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), repro);
+      std::sort(slowest.begin(), slowest.end(), std::greater<>());
+      if (slowest.size() > 3) slowest.pop_back();
       if (!why.empty()) {
         ++failures, ++labFailures;
         std::printf("FAIL %s #%d: %s\n  reproduce: shadelab render %s --size %dx%d --out x.png\n", id.c_str(), i,
@@ -64,6 +72,8 @@ int runRandom(const Options& o) {
     }
     std::printf("random %s: %d configurations, %d failed (seed %u)\n", id.c_str(), o.count, labFailures, o.seed);
   }
+  for (auto& [seconds, repro] : slowest)  // not a failure: where a frame costs the most
+    std::printf("slow: %.1f s for its jobs and one %dx%d frame: %s\n", seconds, size.x, size.y, repro.c_str());
   std::printf("random: %d configurations, %d failed\n", total, failures);
   return failures ? 1 : 0;
 }

@@ -1,5 +1,6 @@
 #include "host/soak.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -53,6 +54,16 @@ std::vector<fs::path> droppableMeshes() {
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+// Least-squares slope of y over x.
+double leastSquaresSlope(const std::vector<std::pair<double, double>>& xy) {
+  double mx = 0, my = 0;
+  for (auto& [x, y] : xy) mx += x, my += y;
+  mx /= double(xy.size()), my /= double(xy.size());
+  double num = 0, den = 0;
+  for (auto& [x, y] : xy) num += (x - mx) * (y - my), den += (x - mx) * (x - mx);
+  return den > 0 ? num / den : 0.0;
 }
 
 }  // namespace
@@ -152,15 +163,17 @@ void SoakDriver::loadOrDropMesh(LabHost& host) {
 void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
   ++frames_;
   if (const std::string err = gl::drainErrors(); !err.empty()) {
-    if (++glErrors_ <= 5) problems_.push_back("GL error " + err + " in " + std::string(host.lab().id()));
+    if (++glErrors_ <= 5)
+      problems_.push_back("GL error " + err + ": scene " + host.sceneId() + " --lab " + std::string(host.lab().id()) + " " +
+                          settingsAsArgs(host.lab().id(), host.currentSettings()));
   }
   if (readPixels) {
     const ImageF image = host.readImage();
     if (const size_t bad = countNonFinite(image); bad > 0) {
       if (++nonFiniteFrames_ <= 5) {
         const Settings settings = host.currentSettings();
-        problems_.push_back(std::to_string(bad) + " NaN/Inf values: scene " + host.sceneId() + " " +
-                            settingsAsArgs(host.lab().id(), settings));
+        problems_.push_back(std::to_string(bad) + " NaN/Inf values: scene " + host.sceneId() + " --lab " +
+                            std::string(host.lab().id()) + " " + settingsAsArgs(host.lab().id(), settings));
       }
     }
   }
@@ -169,6 +182,8 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
     std::vector<int> kinds;
     for (int k = 0; k < int(gl::Kind::Count); ++k) kinds.push_back(gl::liveObjects(gl::Kind(k)));
     glObjectsOnEntry_[std::string(host.lab().id())].push_back(std::move(kinds));
+    ::malloc_trim(0);
+    residentOnEntry_[std::string(host.lab().id())].emplace_back(seconds(), residentMb());
   }
   const double t = seconds();
   if (t >= nextSample_) {
@@ -193,23 +208,37 @@ std::string SoakDriver::summary(bool judgeSlope, bool& passed) const {
     << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, " << supersedes_
     << " jobs superseded), " << frames_ << " frames\n";
   s << "soak: " << nonFiniteFrames_ << " frames with NaN/Inf, " << glErrors_ << " GL errors\n";
-  // Memory: least-squares slope of resident memory after the first fifth of the run (warm-up).
-  std::vector<Sample> late;
-  for (auto& x : samples_)
-    if (x.seconds >= seconds() * 0.2) late.push_back(x);
-  if (late.size() >= 3) {
-    double mt = 0, mm = 0;
-    for (auto& x : late) mt += x.seconds, mm += x.residentMb;
-    mt /= double(late.size()), mm /= double(late.size());
-    double num = 0, den = 0, peak = 0;
-    for (auto& x : late) num += (x.seconds - mt) * (x.residentMb - mm), den += (x.seconds - mt) * (x.seconds - mt), peak = std::max(peak, x.residentMb);
-    const double slope = den > 0 ? num / den * 600.0 : 0.0;  // MB per 10 minutes
+  // Memory, judged where the state is the same each time: on entering a lab (a fresh lab, its
+  // default scene, one frame), after warm-up (the first fifth of the run). Each entry counts as
+  // its growth over that lab's first entry after warm-up; the least-squares slope of those over
+  // time is memory the program keeps.
+  const double warm = seconds() * 0.2;
+  std::vector<std::pair<double, double>> growth;
+  for (auto& [lab, entries] : residentOnEntry_) {
+    double base = -1.0;
+    for (auto& [t, mb] : entries) {
+      if (t < warm) continue;
+      if (base < 0) base = mb;
+      growth.emplace_back(t, mb - base);
+    }
+    if (!entries.empty())
+      s << "soak: resident memory on entering " << lab << ": first " << formatNumber(entries.front().second) << " MB, last "
+        << formatNumber(entries.back().second) << " MB (" << entries.size() << " entries)\n";
+  }
+  if (growth.size() >= 3) {
+    const double slope = leastSquaresSlope(growth) * 600.0;  // MB per 10 minutes
     const bool flat = slope < 1.0;
-    s << "soak: resident memory after warm-up " << formatNumber(late.front().residentMb) << " -> "
-      << formatNumber(late.back().residentMb) << " MB (peak " << formatNumber(peak) << "), slope " << formatNumber(slope)
-      << " MB per 10 min" << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (run >= 10 min to judge)")
-      << "\n";
+    s << "soak: resident memory on lab entries after warm-up: slope " << formatNumber(slope) << " MB per 10 min over "
+      << growth.size() << " entries"
+      << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)") << "\n";
     if (judgeSlope && !flat) passed = false;
+  }
+  // All samples, whatever state they caught: the range the run went through.
+  if (!samples_.empty()) {
+    double peak = 0;
+    for (auto& x : samples_) peak = std::max(peak, x.residentMb);
+    s << "soak: resident memory over the run " << formatNumber(samples_.front().residentMb) << " -> "
+      << formatNumber(samples_.back().residentMb) << " MB, peak " << formatNumber(peak) << " MB\n";
   }
   // GL objects: each time a lab is entered (fresh lab, its default scene, one frame) the count
   // must be what it was the first time.

@@ -64,6 +64,9 @@ class SoakDriver {
   bool countAfterSwitch_ = false;
   // lab -> live GL objects of each kind after the lab's first frame, once per time it is entered
   std::map<std::string, std::vector<std::vector<int>>> glObjectsOnEntry_;
+  // lab -> (seconds, resident MB) at the same moments, after the allocator returned its free pages:
+  // the same state each time, so growth here is memory kept, not the current scene's size.
+  std::map<std::string, std::vector<std::pair<double, double>>> residentOnEntry_;
   std::vector<Sample> samples_;
   std::vector<std::string> problems_;
 };

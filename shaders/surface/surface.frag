@@ -11,7 +11,8 @@
 // Read next: common/tangent_frame.glsl, height.glsl, tutorials/surface.md.
 #include "common/output.glsl"
 #include "common/tangent_frame.glsl"
-#if defined(BUMP) || defined(HEIGHT_NORMALS) || defined(PARALLAX) || defined(STEEP) || defined(POM) || defined(VIEW_HEIGHT)
+// (The truth's self-shadowing marches the height field too, whatever its normals come from.)
+#if defined(BUMP) || defined(HEIGHT_NORMALS) || defined(PARALLAX) || defined(STEEP) || defined(POM) || defined(VIEW_HEIGHT) || defined(TRUE_SHADOW)
 #define USES_HEIGHT 1
 #include "surface/height.glsl"
 #endif
