@@ -22,7 +22,7 @@ enum class PixelFilter {
 };
 
 struct JitterSample {
-  glm::vec2 offset;  // pixels, from the pixel's centre
+  glm::vec2 offset{0.0f};  // pixels, from the pixel's centre
   float weight = 1.0f;
 };
 

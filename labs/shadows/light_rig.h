@@ -32,7 +32,10 @@ struct LightFrame {
   glm::vec3 position{0.0f};  // spot/point (directional: the eye of the ortho box)
   glm::vec3 direction{0, -1, 0};  // unit, from the light into the scene (directional/spot axis)
   glm::mat4 view{1.0f}, proj{1.0f}, viewProj{1.0f};
-  glm::mat4 faceViewProj[6];  // point: +X -X +Y -Y +Z -Z, GL cube-map face order
+  // Point: +X -X +Y -Y +Z -Z, GL cube-map face order. Identity for the others (glm leaves a
+  // default-constructed matrix uninitialised, which the sanitizer build caught being read).
+  glm::mat4 faceViewProj[6]{glm::mat4(1.0f), glm::mat4(1.0f), glm::mat4(1.0f),
+                            glm::mat4(1.0f), glm::mat4(1.0f), glm::mat4(1.0f)};
   float nearPlane = 0.1f, farPlane = 10.0f;
   float orthoHalfExtent = 1.0f;  // directional
   float tanHalfFov = 1.0f;       // spot (point faces: 1)
