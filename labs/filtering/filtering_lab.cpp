@@ -55,6 +55,9 @@ void FilteringLab::visitParams(ParamVisitor& v) {
   if (anisotropyLimit_ > 0.0f && anisotropyLimit_ <= 1.0f && !p.inShader)
     v.unavailable("this driver has no anisotropic filtering (EXT_texture_filter_anisotropic); tick 'Written in the "
                   "shader' to use the shader's version");
+  else if (p.mipmaps == MipSelection::Off)
+    v.unavailable("the probes read smaller mip levels: with mip levels off there are none, so anisotropy is left out "
+                  "(llvmpipe would spend ~15x the time on it for the same picture)");
   v.intParam({"anisotropy", "Anisotropy", "x", "Up to this many probes along the footprint's long axis, each at the "
               "level of the footprint's width over their number (needs mip levels)."}, p.anisotropy, 1, 16);
   v.floatParam({"lod_bias", "LOD bias", "levels", "Added to L: positive reads smaller levels (blur), negative larger "
@@ -245,7 +248,7 @@ void FilteringLab::applySampler() {
   glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_REPEAT);
   glSamplerParameterf(s, GL_TEXTURE_LOD_BIAS, std::clamp(params.lodBias, -maxBias_, maxBias_));
   if (anisotropyLimit_ > 1.0f)
-    glSamplerParameterf(s, GL_TEXTURE_MAX_ANISOTROPY, std::clamp(float(params.anisotropy), 1.0f, anisotropyLimit_));
+    glSamplerParameterf(s, GL_TEXTURE_MAX_ANISOTROPY, std::clamp(float(anisotropy()), 1.0f, anisotropyLimit_));
 }
 
 // What filter.glsl reads texels through: one texel of one level, nothing blended.
@@ -285,14 +288,14 @@ void FilteringLab::render(Frame& frame) {
   {
     auto pass = frame.pass(std::string("texture: ") + std::string(kFilters[int(params.filter)]) + ", mip " +
                            std::string(kMipmaps[int(params.mipmaps)]) + (inShader() ? ", in shader" : "") +
-                           (params.anisotropy > 1 ? ", " + std::to_string(params.anisotropy) + "x" : ""));
+                           (anisotropy() > 1 ? ", " + std::to_string(anisotropy()) + "x" : ""));
     prog.use();
     prog.set("u_viewProj", viewProj);
     prog.set("u_map", kUnit);
     prog.set("u_lodBias", params.lodBias);
     prog.set("u_level", params.level);
-    prog.set("u_maxAnisotropy", inShader() ? float(params.anisotropy)
-                                           : std::min(float(params.anisotropy), std::max(anisotropyLimit_, 1.0f)));
+    prog.set("u_maxAnisotropy", inShader() ? float(anisotropy())
+                                           : std::min(float(anisotropy()), std::max(anisotropyLimit_, 1.0f)));
     const glm::ivec2 probe = probePixel(frame.size());  // from the top-left; gl_FragCoord counts from the bottom
     prog.set("u_probe", glm::vec2(float(probe.x) + 0.5f, float(frame.size().y - 1 - probe.y) + 0.5f));
     for (const Instance& inst : frame.scene.instances) {

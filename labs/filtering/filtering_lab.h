@@ -95,6 +95,8 @@ class FilteringLab final : public LabWithParams<FilteringParams> {
   ProgramSpec programSpec(const FilteringParams& p, bool probePass) const;
   bool inShader() const;  // bicubic exists only written out
   const ChainTexture* chain(const Scene& scene, int image);
+  // Probes along the footprint, as drawn: 1 without mip levels, where every probe would read level 0.
+  int anisotropy() const { return params.mipmaps == MipSelection::Off ? 1 : params.anisotropy; }
   void applySampler();
   void makeTexelSampler();
   void probeFootprint(Frame& frame, const glm::mat4& viewProj);

@@ -72,7 +72,7 @@ std::vector<std::string> FilteringLab::warnings() const {
     w.push_back("bicubic is written in the shader (filter.glsl): texture units have no bicubic filter");
   if (p.anisotropy > 1 && p.mipmaps == MipSelection::Off)
     w.push_back("anisotropic filtering picks finer mip levels for its probes; with mip levels off it has none to "
-                "pick and reads level 0");
+                "pick, so it is left out (every probe would read level 0: the same picture at many times the cost)");
   if (hardware && anisotropyLimit_ > 0.0f && float(p.anisotropy) > std::max(anisotropyLimit_, 1.0f))
     w.push_back("anisotropy " + std::to_string(p.anisotropy) + "x clamped to the driver's limit of " +
                 formatNumber(std::max(anisotropyLimit_, 1.0f)) + "x");
@@ -115,7 +115,7 @@ std::vector<LabPanel> FilteringLab::panels() const {
       const float pmax = std::max(px, py), pmin = std::min(px, py);
       const float ratio = pmax / std::max(pmin, 1e-8f);
       const float lod = std::log2(std::max(pmax, 1e-8f));
-      const int limit = inShader() ? p.anisotropy : std::min(p.anisotropy, int(std::max(anisotropyLimit_, 1.0f)));
+      const int limit = inShader() ? anisotropy() : std::min(anisotropy(), int(std::max(anisotropyLimit_, 1.0f)));
       const int n = std::clamp(int(std::ceil(ratio)), 1, std::max(limit, 1));
       const float anisoLod = std::log2(std::max(pmax, 1e-8f) / float(n));
       panel.items.push_back(PanelTable{
