@@ -184,6 +184,8 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
     glObjectsOnEntry_[std::string(host.lab().id())].push_back(std::move(kinds));
     ::malloc_trim(0);
     residentOnEntry_[std::string(host.lab().id())].emplace_back(seconds(), residentMb());
+    const struct mallinfo2 heap = ::mallinfo2();
+    heapOnEntry_[std::string(host.lab().id())].emplace_back(seconds(), double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0));
   }
   const double t = seconds();
   if (t >= nextSample_) {
@@ -213,24 +215,34 @@ std::string SoakDriver::summary(bool judgeSlope, bool& passed) const {
   // its growth over that lab's first entry after warm-up; the least-squares slope of those over
   // time is memory the program keeps.
   const double warm = seconds() * 0.2;
-  std::vector<std::pair<double, double>> growth;
-  for (auto& [lab, entries] : residentOnEntry_) {
-    double base = -1.0;
-    for (auto& [t, mb] : entries) {
-      if (t < warm) continue;
-      if (base < 0) base = mb;
-      growth.emplace_back(t, mb - base);
+  // Each entry as its growth over that lab's first entry after warm-up; the slope of those over time.
+  auto growthSlope = [&](const std::map<std::string, std::vector<std::pair<double, double>>>& byLab, size_t& n) {
+    std::vector<std::pair<double, double>> growth;
+    for (auto& [lab, entries] : byLab) {
+      double base = -1.0;
+      for (auto& [t, mb] : entries) {
+        if (t < warm) continue;
+        if (base < 0) base = mb;
+        growth.emplace_back(t, mb - base);
+      }
     }
-    if (!entries.empty())
-      s << "soak: resident memory on entering " << lab << ": first " << formatNumber(entries.front().second) << " MB, last "
-        << formatNumber(entries.back().second) << " MB (" << entries.size() << " entries)\n";
+    n = growth.size();
+    return growth.size() >= 3 ? leastSquaresSlope(growth) * 600.0 : 0.0;  // MB per 10 minutes
+  };
+  for (auto& [lab, entries] : residentOnEntry_) {
+    const auto& heap = heapOnEntry_.at(lab);
+    s << "soak: on entering " << lab << " (" << entries.size() << " times): resident " << formatNumber(entries.front().second)
+      << " -> " << formatNumber(entries.back().second) << " MB, heap in use " << formatNumber(heap.front().second) << " -> "
+      << formatNumber(heap.back().second) << " MB\n";
   }
-  if (growth.size() >= 3) {
-    const double slope = leastSquaresSlope(growth) * 600.0;  // MB per 10 minutes
+  size_t n = 0;
+  const double heapSlope = growthSlope(heapOnEntry_, n);
+  const double slope = growthSlope(residentOnEntry_, n);
+  if (n >= 3) {
     const bool flat = slope < 1.0;
-    s << "soak: resident memory on lab entries after warm-up: slope " << formatNumber(slope) << " MB per 10 min over "
-      << growth.size() << " entries"
-      << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)") << "\n";
+    s << "soak: on lab entries after warm-up (" << n << "): resident memory slope " << formatNumber(slope)
+      << " MB per 10 min" << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)")
+      << ", heap in use slope " << formatNumber(heapSlope) << " MB per 10 min\n";
     if (judgeSlope && !flat) passed = false;
   }
   // All samples, whatever state they caught: the range the run went through.

@@ -67,6 +67,9 @@ class SoakDriver {
   // lab -> (seconds, resident MB) at the same moments, after the allocator returned its free pages:
   // the same state each time, so growth here is memory kept, not the current scene's size.
   std::map<std::string, std::vector<std::pair<double, double>>> residentOnEntry_;
+  // The same moments: MB the C/C++ heap holds in use (mallinfo2), to tell memory the program and the
+  // driver keep allocated from pages the allocator or the driver's JIT keeps mapped.
+  std::map<std::string, std::vector<std::pair<double, double>>> heapOnEntry_;
   std::vector<Sample> samples_;
   std::vector<std::string> problems_;
 };

@@ -147,6 +147,9 @@ ProgramRef ShaderLibrary::program(const ProgramSpec& spec) {
     p->builtinOnly_ = builtinOnly_;
     p->fallback_ = fallback_.get();
     rebuild(*p, true);
+    // Programs nobody holds any more leave their entries behind: sweep them before adding one, so
+    // the map stays the size of the live set over any number of variants.
+    std::erase_if(cache_, [](const auto& entry) { return entry.second.expired(); });
     cache_[key] = p;
   }
   std::erase(recent_, p);
