@@ -340,9 +340,11 @@ void SurfaceLab::render(Frame& frame) {
       prog.set("u_layers", params.layers);
       prog.set("u_tessLevel", float(params.tessLevel));
       prog.set("u_angleScale", params.angleScale);
-      d.mesh.draw(tess ? Primitive::Patches : Primitive::Triangles);
+      // A mesh without UVs gets the plain program (programSpec): patches only where tessellation stages are.
+      const bool patches = tess && d.hasUvs;
+      d.mesh.draw(patches ? Primitive::Patches : Primitive::Triangles);
       glBindSampler(kHeightUnit, 0);
-      drawnTriangles_ += tess ? d.triangles * size_t(params.tessLevel) * size_t(params.tessLevel) : d.triangles;
+      drawnTriangles_ += patches ? d.triangles * size_t(params.tessLevel) * size_t(params.tessLevel) : d.triangles;
     }
   }
   if (params.overlay) {

@@ -39,6 +39,23 @@ TEST(Surface, OnlyTheMapsATechniqueReadsAreDecoded) {
   EXPECT_EQ(gl::drainErrors(), "");
 }
 
+// A mesh with no UVs gets the plain program under every technique, tessellation included: it is
+// drawn as triangles (patches sent to a program without tessellation stages were a GL error and
+// drew nothing; found by the soak).
+TEST(Surface, AMeshWithoutUvsIsDrawnUnderEveryTechnique) {
+  const std::string quad = std::string(SHADELAB_SOURCE_DIR) + "/tests/data/quad.off";
+  for (const char* technique : {"tessellation", "pom", "displacement", "normal-map"}) {
+    auto host = surfaceHost({std::string("surface.technique=") + technique}, quad.c_str());
+    gl::drainErrors();
+    host->renderFrame({64, 48});
+    EXPECT_EQ(gl::drainErrors(), "") << technique;
+    const ImageF image = host->readImage();
+    int covered = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) covered += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2] > 0.1f;
+    EXPECT_GT(covered, 64 * 48 / 20) << technique << ": the quad is not on screen";
+  }
+}
+
 TEST(Surface, VertexDisplacementMovesExactlySTimesHAlongTheNormal) {
   // A 4 x 4 height map read at its texel centres (nearest): the value is known exactly there.
   const uint8_t heights[16] = {0, 16, 32, 48, 64, 80, 96, 112, 128, 144, 160, 176, 192, 208, 224, 255};
