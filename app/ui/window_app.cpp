@@ -276,8 +276,8 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
           bool passed = false;
           const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
           soak->writeCsv(csv);
-          std::printf("%ssoak: samples in %s; %s\n", soak->summary(wopt.soakMinutes >= 10.0, passed).c_str(),
-                      csv.string().c_str(), passed ? "passed" : "FAILED");
+          const std::string summary = soak->summary(wopt.soakMinutes >= 10.0, passed);  // sets `passed`
+          std::printf("%ssoak: samples in %s; %s\n", summary.c_str(), csv.string().c_str(), passed ? "passed" : "FAILED");
           exitCode = passed ? 0 : 1;
           glfwSetWindowShouldClose(window, GLFW_TRUE);
         }

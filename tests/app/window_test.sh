@@ -35,6 +35,7 @@ echo "include escape in the window passed"
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --soak 0.33 --soak-seed 5 >"$out/soak.log" 2>&1 ||
   { tail -20 "$out/soak.log"; echo "the window soak failed"; exit 1; }
 grep -q "soak: 0 frames with NaN/Inf, 0 GL errors" "$out/soak.log" || { tail -20 "$out/soak.log"; exit 1; }
+grep -q "soak: samples in .*; passed" "$out/soak.log" || { tail -20 "$out/soak.log"; echo "the soak's verdict is not passed"; exit 1; }
 echo "soak in the window passed"
 
 # Measure in the window: with auto-measure on, the error against the truth appears.
