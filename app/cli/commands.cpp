@@ -10,11 +10,6 @@
 
 namespace shadelab {
 
-static int fail(const std::string& message) {
-  std::fprintf(stderr, "shadelab: %s\n", message.c_str());
-  return 1;
-}
-
 // Programs the frame used that did not build, with their first error: the frame shows the last
 // good program or the fallback, and a headless run must say so and fail.
 static std::vector<std::string> shaderFailures(LabHost& host) {

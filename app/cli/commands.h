@@ -11,8 +11,8 @@ int runCheckShaders(const Options& o);
 int runSweep(const Options& o);
 int runStress(const Options& o);
 int runCompare(const Options& o);  // two PNGs -> rmse, max error; --out writes a diff image
-int runGrade(const Options& o);
+int runGrade(const Options& o);    // exercises/ rubrics against a student's shader folder
 int runRandom(const Options& o);   // random configurations per lab: finite, no GL error, named when black
-int runSoak(const Options& o);     // minutes of random use; memory, GL objects and jobs over time    // exercises/ rubrics against a student's shader folder
+int runSoak(const Options& o);     // minutes of random use; memory, GL objects and jobs over time
 
 }  // namespace shadelab

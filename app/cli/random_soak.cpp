@@ -14,11 +14,6 @@
 namespace shadelab {
 namespace {
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "shadelab: %s\n", message.c_str());
-  return 1;
-}
-
 // Whether every pixel is black (all colour channels under half an 8-bit step).
 bool allBlack(const ImageF& image) {
   for (size_t i = 0; i < image.rgba.size(); i += 4)
@@ -105,12 +100,10 @@ int runSoak(const Options& o) {
     }
   }
   const std::filesystem::path csv = o.out.empty() ? scratch.parent_path() / (scratch.filename().string() + ".csv") : std::filesystem::path(o.out);
-  if (auto err = driver.writeCsv(csv); !err.empty()) return fail(err);
-  bool passed = false;
-  std::printf("%s", driver.summary(o.minutes >= 10.0, passed).c_str());
-  std::printf("soak: samples in %s; %s\n", csv.string().c_str(), passed ? "passed" : "FAILED");
+  const SoakDriver::Verdict verdict = driver.finish(csv, o.minutes >= 10.0);
+  std::printf("%s", verdict.report.c_str());
   std::filesystem::remove_all(scratch);
-  return passed ? 0 : 1;
+  return verdict.passed ? 0 : 1;
 }
 
 }  // namespace shadelab

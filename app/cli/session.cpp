@@ -89,6 +89,11 @@ TimedFrames renderTimed(LabHost& host, glm::ivec2 size, float time, int warmup, 
   return out;
 }
 
+int fail(const std::string& message) {
+  std::fprintf(stderr, "shadelab: %s\n", message.c_str());
+  return 1;
+}
+
 void progress(int done, int total, const std::string& label) {
   const int width = 24, filled = total > 0 ? width * done / total : width;
   std::string bar(size_t(filled), '#');

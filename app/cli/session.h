@@ -38,6 +38,8 @@ TimedFrames renderTimed(LabHost& host, glm::ivec2 size, float time, int warmup, 
 
 // "[#######.......] 7/15 label" on stderr, redrawn in place.
 void progress(int done, int total, const std::string& label);
+// A command's error: "shadelab: message" on stderr; returns the exit code 1.
+int fail(const std::string& message);
 // "smoothing bunny 45% (iteration 4/10)" for the jobs running now, joined by "; ".
 std::string describeJobs(const std::vector<JobStatus>& jobs);
 

@@ -52,10 +52,6 @@ static ImageF thumbnail(const ImageF& image) {
 }
 
 int runSweep(const Options& o) {
-  auto fail = [](const std::string& m) {
-    std::fprintf(stderr, "shadelab: %s\n", m.c_str());
-    return 1;
-  };
   if (o.out.empty()) return fail("sweep: --out DIR is required");
   Session s;
   if (auto err = openSession(o, s); !err.empty()) return fail(err);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -22,10 +21,9 @@ std::string optionalText(const nlohmann::json& state, const char* key, std::opti
 std::string parsePreset(const nlohmann::json& state, Preset& out) {
   out = Preset{};
   if (!state.is_object()) return "expected a JSON object with lab, scene, params, camera";
-  for (const char* key : {"lab", "scene", "camera"}) {
-    std::optional<std::string>& field = key[0] == 'l' ? out.lab : key[0] == 's' ? out.scene : out.camera;
-    if (auto err = optionalText(state, key, field); !err.empty()) return err;
-  }
+  if (auto err = optionalText(state, "lab", out.lab); !err.empty()) return err;
+  if (auto err = optionalText(state, "scene", out.scene); !err.empty()) return err;
+  if (auto err = optionalText(state, "camera", out.camera); !err.empty()) return err;
   if (state.contains("params")) {
     const auto& params = state["params"];
     if (!params.is_object()) return "'params' must be an object of key: value";

@@ -34,11 +34,6 @@ double residentMb() {
   return double(resident) * double(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
-void writeText(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
-}
-
 // Meshes a user might drop: the project's test files, and the shared data where it exists.
 std::vector<fs::path> droppableMeshes() {
   std::vector<fs::path> out;
@@ -66,9 +61,16 @@ double leastSquaresSlope(const std::vector<std::pair<double, double>>& xy) {
   return den > 0 ? num / den : 0.0;
 }
 
+// "scene S --lab L --set ...": where the host is now, as a command line reproduces it.
+std::string describeState(LabHost& host) {
+  return "scene " + host.sceneId() + " --lab " + std::string(host.lab().id()) + " " +
+         settingsAsArgs(host.lab().id(), host.currentSettings());
+}
+
 }  // namespace
 
-SoakDriver::SoakDriver(fs::path scratch, unsigned seed) : scratch_(std::move(scratch)), rng_(seed), start_(now()) {}
+SoakDriver::SoakDriver(fs::path scratch, unsigned seed)
+    : scratch_(std::move(scratch)), rng_(seed), start_(now()), meshes_(droppableMeshes()) {}
 
 fs::path SoakDriver::makeScratch() {
   const fs::path dir = freshName("soak", "shaders", "");
@@ -140,7 +142,8 @@ void SoakDriver::breakOrFixShader(LabHost& host) {
   const size_t main = text.find("void main");
   if (main == std::string::npos) return;
   text.insert(main, "this is not GLSL;\n");  // a typo a student makes
-  writeText(scratch_ / rel, text);
+  fs::create_directories((scratch_ / rel).parent_path());
+  if (!writeTextFile((scratch_ / rel).string(), text).empty()) return;
   brokenFile_ = rel;
   ++shaderEdits_;
 }
@@ -153,7 +156,7 @@ void SoakDriver::loadOrDropMesh(LabHost& host) {
   }
   std::vector<std::string> choices;
   for (auto& s : host.lab().scenes()) choices.push_back(s.id);
-  for (auto& f : droppableMeshes()) choices.push_back(f.string());
+  for (auto& f : meshes_) choices.push_back(f.string());
   if (choices.empty()) return;
   ++meshLoads_;
   const std::string pick = choices[std::uniform_int_distribution<size_t>(0, choices.size() - 1)(rng_)];
@@ -162,30 +165,20 @@ void SoakDriver::loadOrDropMesh(LabHost& host) {
 
 void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
   ++frames_;
-  if (const std::string err = gl::drainErrors(); !err.empty()) {
-    if (++glErrors_ <= 5)
-      problems_.push_back("GL error " + err + ": scene " + host.sceneId() + " --lab " + std::string(host.lab().id()) + " " +
-                          settingsAsArgs(host.lab().id(), host.currentSettings()));
-  }
-  if (readPixels) {
-    const ImageF image = host.readImage();
-    if (const size_t bad = countNonFinite(image); bad > 0) {
-      if (++nonFiniteFrames_ <= 5) {
-        const Settings settings = host.currentSettings();
-        problems_.push_back(std::to_string(bad) + " NaN/Inf values: scene " + host.sceneId() + " --lab " +
-                            std::string(host.lab().id()) + " " + settingsAsArgs(host.lab().id(), settings));
-      }
-    }
-  }
+  if (const std::string err = gl::drainErrors(); !err.empty() && ++glErrors_ <= 5)
+    problems_.push_back("GL error " + err + ": " + describeState(host));
+  if (readPixels)
+    if (const size_t bad = countNonFinite(host.readImage()); bad > 0 && ++nonFiniteFrames_ <= 5)
+      problems_.push_back(std::to_string(bad) + " NaN/Inf values: " + describeState(host));
   if (countAfterSwitch_) {
     countAfterSwitch_ = false;
-    std::vector<int> kinds;
-    for (int k = 0; k < int(gl::Kind::Count); ++k) kinds.push_back(gl::liveObjects(gl::Kind(k)));
-    glObjectsOnEntry_[std::string(host.lab().id())].push_back(std::move(kinds));
+    LabEntry entry{seconds(), 0.0, 0.0, {}};
+    for (int k = 0; k < int(gl::Kind::Count); ++k) entry.glObjects.push_back(gl::liveObjects(gl::Kind(k)));
     ::malloc_trim(0);
-    residentOnEntry_[std::string(host.lab().id())].emplace_back(seconds(), residentMb());
+    entry.residentMb = residentMb();
     const struct mallinfo2 heap = ::mallinfo2();
-    heapOnEntry_[std::string(host.lab().id())].emplace_back(seconds(), double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0));
+    entry.heapMb = double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
+    entries_[std::string(host.lab().id())].push_back(std::move(entry));
   }
   const double t = seconds();
   if (t >= nextSample_) {
@@ -194,56 +187,58 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
   }
 }
 
-std::string SoakDriver::writeCsv(const fs::path& file) const {
-  std::ostringstream s;
-  s << "seconds,resident_mb,gl_objects,jobs,frames,steps\n";
+SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) const {
+  std::ostringstream rows, s;
+  rows << "seconds,resident_mb,gl_objects,jobs,frames,steps\n";
   for (auto& x : samples_)
-    s << formatNumber(x.seconds) << "," << formatNumber(x.residentMb) << "," << x.glObjects << "," << x.jobs << ","
-      << x.frames << "," << x.steps << "\n";
-  return writeTextFile(file.string(), s.str());
-}
+    rows << formatNumber(x.seconds) << "," << formatNumber(x.residentMb) << "," << x.glObjects << "," << x.jobs << ","
+         << x.frames << "," << x.steps << "\n";
+  const std::string written = writeTextFile(csv.string(), rows.str());
 
-std::string SoakDriver::summary(bool judgeSlope, bool& passed) const {
-  std::ostringstream s;
-  passed = nonFiniteFrames_ == 0 && glErrors_ == 0;
+  bool passed = written.empty() && nonFiniteFrames_ == 0 && glErrors_ == 0;
   s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_ << " lab switches, "
     << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, " << supersedes_
     << " jobs superseded), " << frames_ << " frames\n";
   s << "soak: " << nonFiniteFrames_ << " frames with NaN/Inf, " << glErrors_ << " GL errors\n";
-  // Memory, judged where the state is the same each time: on entering a lab (a fresh lab, its
-  // default scene, one frame), after warm-up (the first fifth of the run). Each entry counts as
-  // its growth over that lab's first entry after warm-up; the least-squares slope of those over
-  // time is memory the program keeps.
+
+  // Memory on lab entries after warm-up (the first fifth of the run): each entry as its growth
+  // over that lab's first entry after warm-up, and the least-squares slope of those over time.
   const double warm = seconds() * 0.2;
-  // Each entry as its growth over that lab's first entry after warm-up; the slope of those over time.
-  auto growthSlope = [&](const std::map<std::string, std::vector<std::pair<double, double>>>& byLab, size_t& n) {
+  auto growthSlope = [&](double LabEntry::*mb, size_t& n) {
     std::vector<std::pair<double, double>> growth;
-    for (auto& [lab, entries] : byLab) {
+    for (auto& [lab, entries] : entries_) {
       double base = -1.0;
-      for (auto& [t, mb] : entries) {
-        if (t < warm) continue;
-        if (base < 0) base = mb;
-        growth.emplace_back(t, mb - base);
+      for (auto& e : entries) {
+        if (e.seconds < warm) continue;
+        if (base < 0) base = e.*mb;
+        growth.emplace_back(e.seconds, e.*mb - base);
       }
     }
     n = growth.size();
-    return growth.size() >= 3 ? leastSquaresSlope(growth) * 600.0 : 0.0;  // MB per 10 minutes
+    return n >= 3 ? leastSquaresSlope(growth) * 600.0 : 0.0;  // MB per 10 minutes
   };
-  for (auto& [lab, entries] : residentOnEntry_) {
-    const auto& heap = heapOnEntry_.at(lab);
-    s << "soak: on entering " << lab << " (" << entries.size() << " times): resident " << formatNumber(entries.front().second)
-      << " -> " << formatNumber(entries.back().second) << " MB, heap in use " << formatNumber(heap.front().second) << " -> "
-      << formatNumber(heap.back().second) << " MB\n";
+  auto total = [](const LabEntry& e) { return std::accumulate(e.glObjects.begin(), e.glObjects.end(), 0); };
+  auto kinds = [](const LabEntry& e) {
+    std::string d;
+    for (size_t k = 0; k < e.glObjects.size(); ++k)
+      if (e.glObjects[k]) d += (d.empty() ? "" : ", ") + std::to_string(e.glObjects[k]) + " " + gl::kindName(gl::Kind(k));
+    return d;
+  };
+  for (auto& [lab, entries] : entries_) {
+    const LabEntry &first = entries.front(), &last = entries.back();
+    s << "soak: on entering " << lab << " (" << entries.size() << " times): resident " << formatNumber(first.residentMb)
+      << " -> " << formatNumber(last.residentMb) << " MB, heap in use " << formatNumber(first.heapMb) << " -> "
+      << formatNumber(last.heapMb) << " MB\n";
   }
   size_t n = 0;
-  const double heapSlope = growthSlope(heapOnEntry_, n);
-  const double slope = growthSlope(residentOnEntry_, n);
+  const double heapSlope = growthSlope(&LabEntry::heapMb, n);
+  const double slope = growthSlope(&LabEntry::residentMb, n);
   if (n >= 3) {
     const bool flat = slope < 1.0;
     s << "soak: on lab entries after warm-up (" << n << "): resident memory slope " << formatNumber(slope)
       << " MB per 10 min" << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)")
       << ", heap in use slope " << formatNumber(heapSlope) << " MB per 10 min\n";
-    if (judgeSlope && !flat) passed = false;
+    passed = passed && (flat || !judgeSlope);
   }
   // All samples, whatever state they caught: the range the run went through.
   if (!samples_.empty()) {
@@ -252,29 +247,21 @@ std::string SoakDriver::summary(bool judgeSlope, bool& passed) const {
     s << "soak: resident memory over the run " << formatNumber(samples_.front().residentMb) << " -> "
       << formatNumber(samples_.back().residentMb) << " MB, peak " << formatNumber(peak) << " MB\n";
   }
-  // GL objects: each time a lab is entered (fresh lab, its default scene, one frame) the count
-  // must be what it was the first time.
-  auto total = [](const std::vector<int>& kinds) { return std::accumulate(kinds.begin(), kinds.end(), 0); };
-  auto describe = [](const std::vector<int>& kinds) {
-    std::string d;
-    for (size_t k = 0; k < kinds.size(); ++k)
-      if (kinds[k]) d += (d.empty() ? "" : ", ") + std::to_string(kinds[k]) + " " + gl::kindName(gl::Kind(k));
-    return d;
-  };
-  for (auto& [lab, entries] : glObjectsOnEntry_) {
-    const auto most = std::max_element(entries.begin(), entries.end(),
-                                       [&](auto& a, auto& b) { return total(a) < total(b); });
-    int least = total(entries.front());
-    for (auto& e : entries) least = std::min(least, total(e));
+  // GL objects: every entry into a lab must hold no more than the first did.
+  for (auto& [lab, entries] : entries_) {
+    const auto [least, most] = std::minmax_element(entries.begin(), entries.end(),
+                                                   [&](auto& a, auto& b) { return total(a) < total(b); });
     const bool same = total(*most) <= total(entries.front());
     s << "soak: GL objects on entering " << lab << ": " << entries.size() << " entries, first " << total(entries.front())
-      << ", min " << least << ", max " << total(*most);
+      << ", min " << total(*least) << ", max " << total(*most);
     if (same) s << " (back to baseline)\n";
-    else s << " (ABOVE the first entry: " << describe(*most) << " against " << describe(entries.front()) << ")\n";
-    if (!same) passed = false;
+    else s << " (ABOVE the first entry: " << kinds(*most) << " against " << kinds(entries.front()) << ")\n";
+    passed = passed && same;
   }
   for (auto& p : problems_) s << "soak: problem: " << p << "\n";
-  return s.str();
+  if (!written.empty()) s << "soak: " << written << "\n";
+  s << "soak: samples in " << csv.string() << "; " << (passed ? "passed" : "FAILED") << "\n";
+  return {s.str(), passed};
 }
 
 }  // namespace shadelab

@@ -8,7 +8,6 @@
 // The same driver runs headless (`shadelab soak`) and in the real window (`--soak MINUTES`).
 #pragma once
 #include <filesystem>
-#include <array>
 #include <map>
 #include <random>
 #include <string>
@@ -40,12 +39,16 @@ class SoakDriver {
     long frames, steps;
   };
   const std::vector<Sample>& samples() const { return samples_; }
-  // Bad frames and GL errors, one line each (the first few of each kind).
-  const std::vector<std::string>& problems() const { return problems_; }
-  std::string writeCsv(const std::filesystem::path& file) const;
-  // The summary: steps, frames, memory slope after warm-up, GL objects at each lab's entry.
-  // `judgeSlope`: whether the slope goal (under 1 MB per 10 minutes) decides pass or fail.
-  std::string summary(bool judgeSlope, bool& passed) const;
+
+  // Writes the samples to `csv` (seconds, resident MB, GL objects, jobs, frames, steps) and judges
+  // the run: steps, bad frames and GL errors, memory and GL objects on lab entries, one line each,
+  // then "soak: samples in CSV; passed" or "...; FAILED". `judgeSlope`: whether the memory slope
+  // goal (under 1 MB per 10 minutes) decides, which only a run of 10 minutes or more can tell.
+  struct Verdict {
+    std::string report;
+    bool passed = false;
+  };
+  Verdict finish(const std::filesystem::path& csv, bool judgeSlope) const;
   double seconds() const;
 
  private:
@@ -62,16 +65,18 @@ class SoakDriver {
        meshLoads_ = 0, supersedes_ = 0;
   std::string brokenFile_;   // relative path of the scratch file now broken, or ""
   bool countAfterSwitch_ = false;
-  // lab -> live GL objects of each kind after the lab's first frame, once per time it is entered
-  std::map<std::string, std::vector<std::vector<int>>> glObjectsOnEntry_;
-  // lab -> (seconds, resident MB) at the same moments, after the allocator returned its free pages:
-  // the same state each time, so growth here is memory kept, not the current scene's size.
-  std::map<std::string, std::vector<std::pair<double, double>>> residentOnEntry_;
-  // The same moments: MB the C/C++ heap holds in use (mallinfo2), to tell memory the program and the
-  // driver keep allocated from pages the allocator or the driver's JIT keeps mapped.
-  std::map<std::string, std::vector<std::pair<double, double>>> heapOnEntry_;
+  std::vector<std::filesystem::path> meshes_;  // what loadOrDropMesh picks from besides the lab's scenes
+  // Each time a lab is entered, after its first frame (a fresh lab, its default scene): the same
+  // state every time, so what grows here is kept, not the current scene's size.
+  struct LabEntry {
+    double seconds;
+    double residentMb;           // after the allocator returned its free pages (malloc_trim)
+    double heapMb;               // allocated and in use (mallinfo2): tells memory kept from pages kept
+    std::vector<int> glObjects;  // live GL objects of each gl::Kind
+  };
+  std::map<std::string, std::vector<LabEntry>> entries_;  // lab -> its entries in order
   std::vector<Sample> samples_;
-  std::vector<std::string> problems_;
+  std::vector<std::string> problems_;  // bad frames and GL errors (the first few of each), one line each
 };
 
 }  // namespace shadelab

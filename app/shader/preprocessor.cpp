@@ -70,15 +70,20 @@ struct Expander {
   std::vector<std::string> stack;  // rel paths being expanded, to report cycles
 
   // Includes resolve next to the including file first ("lighting.glsl" from common/), then
-  // from the search roots ("common/lighting.glsl").
-  // A name that leaves the folders from both places stays as written, and find() refuses it.
-  std::string resolveInclude(const std::string& from, const std::string& name) const {
-    if (fs::path(name).is_absolute()) return name;
+  // from the search roots ("common/lighting.glsl"). A name that leaves the folders from both
+  // places stays as written, and find() refuses it.
+  struct Resolved {
+    std::string rel;                // the name as the search path knows it
+    ShaderSearchPath::Lookup found;  // what serves it, or why it may not be read
+  };
+  Resolved resolveInclude(const std::string& from, const std::string& name) const {
+    if (fs::path(name).is_absolute()) return {name, path.find(name)};
     const std::string sibling = (fs::path(from).parent_path() / name).lexically_normal().string();
-    const ShaderSearchPath::Lookup near = path.find(sibling);
-    if (!near.file.empty() || !near.refused.empty()) return sibling;
+    if (ShaderSearchPath::Lookup near = path.find(sibling); !near.file.empty() || !near.refused.empty())
+      return {sibling, std::move(near)};
     const fs::path normal = fs::path(name).lexically_normal();
-    return normal.empty() ? name : normal.string();
+    const std::string rel = normal.empty() ? name : normal.string();
+    return {rel, path.find(rel)};
   }
 
   bool expand(const std::string& rel, const std::string& text, int fileIndex, bool isMain) {
@@ -107,7 +112,7 @@ struct Expander {
         fail(out, file, lineNo, int(line.find('#')) + 1, "#include expects \"file\"");
         return false;
       }
-      const std::string incRel = resolveInclude(rel, target);
+      const auto [incRel, found] = resolveInclude(rel, target);
       for (auto& s : stack)
         if (s == incRel) {
           fail(out, file, lineNo, nameColumn, "#include \"" + target + "\" is circular");
@@ -116,7 +121,6 @@ struct Expander {
       bool already = false;
       for (auto& r : out.relPaths) already |= r == incRel;
       if (!already) {  // every file is included once per program, like #pragma once
-        const ShaderSearchPath::Lookup found = path.find(incRel);
         if (!found.refused.empty()) {
           fail(out, file, lineNo, nameColumn, found.refused + ": \"" + target + "\"");
           return false;

@@ -273,12 +273,10 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
         if (frame % 2 == 0) soak->step(host);
         if (frame % 97 == 0) app.measure.requested = true;  // Measure pressed now and then; later steps supersede it
         if (soak->seconds() >= wopt.soakMinutes * 60.0) {
-          bool passed = false;
           const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
-          soak->writeCsv(csv);
-          const std::string summary = soak->summary(wopt.soakMinutes >= 10.0, passed);  // sets `passed`
-          std::printf("%ssoak: samples in %s; %s\n", summary.c_str(), csv.string().c_str(), passed ? "passed" : "FAILED");
-          exitCode = passed ? 0 : 1;
+          const SoakDriver::Verdict verdict = soak->finish(csv, wopt.soakMinutes >= 10.0);
+          std::printf("%s", verdict.report.c_str());
+          exitCode = verdict.passed ? 0 : 1;
           glfwSetWindowShouldClose(window, GLFW_TRUE);
         }
       }
