@@ -140,7 +140,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     }
   }
   for (auto& dir : o.shaderDirs)
-    if (!std::filesystem::is_directory(dir)) return "--shaders: '" + dir.string() + "' is not a folder";
+    if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) return "--shaders: '" + dir.string() + "' is not a folder";
   return {};
 }
 

@@ -76,7 +76,7 @@ int runSweep(const Options& o) {
 
   std::error_code ec;
   std::filesystem::create_directories(o.out, ec);
-  if (!std::filesystem::is_directory(o.out)) return fail(o.out + ": cannot create the output folder");
+  if (!std::filesystem::is_directory(o.out, ec)) return fail(o.out + ": cannot create the output folder");
 
   size_t total = 1;
   for (auto& a : axes) total *= a.values.size();

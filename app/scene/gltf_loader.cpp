@@ -199,7 +199,7 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
 }  // namespace
 
 std::string loadGltf(const fs::path& file, Scene& scene) {
-  if (!fs::is_regular_file(file)) return file.string() + ": no such file";
+  if (std::error_code ec; !fs::is_regular_file(file, ec)) return file.string() + ": no such file";
   ModelFolder folder{fs::absolute(file).parent_path()};
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keepEncoded, nullptr);

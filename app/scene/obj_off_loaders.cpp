@@ -57,7 +57,7 @@ class FolderMaterialReader final : public tinyobj::MaterialReader {
 }  // namespace
 
 std::string loadObj(const fs::path& file, Scene& scene) {
-  if (!fs::is_regular_file(file)) return file.string() + ": no such file";
+  if (std::error_code ec; !fs::is_regular_file(file, ec)) return file.string() + ": no such file";
   const fs::path folder = fs::absolute(file).parent_path();
   std::ifstream in(file);
   if (!in) return file.string() + ": cannot open";
