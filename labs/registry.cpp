@@ -1,6 +1,6 @@
-// Every lab, listed by hand: static self-registration is silently dropped by linkers when a
-// lab's object file is otherwise unreferenced.
-#include "labs/lab.h"
+// Every lab, listed once. A new lab is one row here; the app, the CLI, the soak and the tests all
+// take their list of labs from this table.
+#include "lab/lab.h"
 #include "labs/denoise/denoise_lab.h"
 #include "labs/filtering/filtering_lab.h"
 #include "labs/shading/shading_lab.h"
@@ -8,15 +8,34 @@
 #include "labs/surface/surface_lab.h"
 
 namespace shadelab {
+namespace {
 
-std::vector<std::string> labIds() { return {"shading", "shadows", "surface", "denoise", "filtering"}; }
+template <typename L>
+std::unique_ptr<Lab> make() {
+  return std::make_unique<L>();
+}
+
+constexpr LabEntry kLabs[] = {
+    {"shading", make<ShadingLab>},
+    {"shadows", make<ShadowsLab>},
+    {"surface", make<SurfaceLab>},
+    {"denoise", make<DenoiseLab>},
+    {"filtering", make<FilteringLab>},
+};
+
+}  // namespace
+
+std::span<const LabEntry> labRegistry() { return kLabs; }
+
+std::vector<std::string> labIds() {
+  std::vector<std::string> ids;
+  for (const LabEntry& entry : kLabs) ids.emplace_back(entry.id);
+  return ids;
+}
 
 std::unique_ptr<Lab> makeLab(std::string_view id) {
-  if (id == "shading") return std::make_unique<ShadingLab>();
-  if (id == "shadows") return std::make_unique<ShadowsLab>();
-  if (id == "surface") return std::make_unique<SurfaceLab>();
-  if (id == "denoise") return std::make_unique<DenoiseLab>();
-  if (id == "filtering") return std::make_unique<FilteringLab>();
+  for (const LabEntry& entry : kLabs)
+    if (entry.id == id) return entry.make();
   return nullptr;
 }
 

@@ -90,7 +90,7 @@ int runList(const Options& o) {
     for (auto& scene : lab->scenes())
       std::printf("  scene %-22s %s\n", scene.id.c_str(), scene.description.c_str());
     std::printf("  stress cases:");
-    for (auto& c : lab->stressCases()) std::printf(" %s", c.name.c_str());
+    for (auto& c : stressCasesOf(*lab)) std::printf(" %s", c.name.c_str());
     std::printf("\n");
   }
   std::printf("\nscenes (or any .gltf/.glb/.obj/.off/.ply file):\n");
@@ -150,7 +150,7 @@ int runStress(const Options& o) {
   LabHost& host = *s.host;
   const Settings defaults = host.currentSettings();
   const std::string defaultScene = host.sceneId();
-  const auto cases = host.lab().stressCases();
+  const auto cases = stressCasesOf(host.lab());
   const glm::ivec2 size = o.sizeGiven ? o.size : glm::ivec2(320, 180);
   int failures = 0, n = 0;
   for (auto& c : cases) {

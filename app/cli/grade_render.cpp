@@ -104,9 +104,10 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   student["vs_solution"] = metricsJson({{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
                                         {"bad_pixel_pct", e.badPixelPct}});
   if (c.needsTruth() && student["errors"].empty()) {
+    const Judge& judge = *host.lab().judge();  // the solution was measured against its truth: the lab judges
     std::vector<ImageF> views;
-    for (auto& view : host.lab().measuredViews()) views.push_back(host.renderView(ex.size, 0.0f, view.settings));
-    student["vs_truth"] = metricsJson(host.lab().viewMetrics(views, truths));
+    for (auto& view : judge.measuredViews()) views.push_back(host.renderView(ex.size, 0.0f, view.settings));
+    student["vs_truth"] = metricsJson(judge.viewMetrics(views, truths));
   }
   writePng((job.dir / (job.stem + "-student.png")).string(), image);
   writePng((job.dir / (job.stem + "-diff.png")).string(), diffImage(image, solution));

@@ -57,6 +57,8 @@ int runSweep(const Options& o) {
   if (auto err = openSession(o, s); !err.empty()) return fail(err);
   LabHost& host = *s.host;
   const std::string labId(host.lab().id());
+  const Judge* judge = host.lab().judge();
+  if (!judge) return fail("sweep: lab " + labId + " has no truth to measure against");
 
   std::vector<SweepAxis> axes;
   for (auto& v : o.varies) {
@@ -64,7 +66,7 @@ int runSweep(const Options& o) {
     if (auto err = parseVary(v, a); !err.empty()) return fail(err);
     axes.push_back(a);
   }
-  if (axes.empty()) axes = host.lab().standardSweep();
+  if (axes.empty()) axes = judge->standardSweep();
   if (axes.empty()) return fail("sweep: lab " + labId + " has no standard sweep; give --vary key=a,b,c");
 
   // Validate every value before rendering anything.
@@ -85,8 +87,8 @@ int runSweep(const Options& o) {
                  std::to_string(o.size.y);
   report.renderer = s.context->describe();
   report.costClock = host.timerClock();
-  report.metricNotes = host.lab().metricNotes();
-  report.plots = host.lab().plots();
+  report.metricNotes = judge->metricNotes();
+  report.plots = judge->plots();
   std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
                     std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
   for (auto& v : o.varies) cmd += " --vary " + v;
@@ -139,7 +141,7 @@ int runSweep(const Options& o) {
     writePng(o.out + name, shown);
     const bool newTruth = std::none_of(report.truths.begin(), report.truths.end(), [&](auto& t) { return t.first == m->truth; });
     if (newTruth) {
-      report.truths.emplace_back(m->truth, host.lab().reference().description);
+      report.truths.emplace_back(m->truth, judge->reference().description);
       if (!m->reference.rgba.empty()) {
         report.referenceThumbnails.emplace_back(m->truth, thumbnail(m->reference));
         writePng(o.out + "/reference_" + slug(m->truth) + ".png", m->reference);

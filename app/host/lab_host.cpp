@@ -144,7 +144,7 @@ TraceWork LabHost::trace(const gl::RenderTarget& target, const OrbitCamera& came
   ensureScene();
   truthTimer_.beginFrame();
   Frame frame{target, built_.scene, built_.gpu, camera, truthTimer_, time};
-  TraceWork work = lab_->traceReference(frame);
+  TraceWork work = lab_->judge() ? lab_->judge()->traceReference(frame) : TraceWork{};
   truthTimer_.endFrame();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
@@ -174,7 +174,9 @@ void LabHost::settle(const std::function<void(const std::vector<JobStatus>&)>& o
   for (auto& e : jobs_.takeErrors()) jobErrors_.push_back(std::move(e));
 }
 
-ImageF LabHost::renderMeasured(glm::ivec2 size, float time) { return renderView(size, time, lab_->measuredView()); }
+ImageF LabHost::renderMeasured(glm::ivec2 size, float time) {
+  return renderView(size, time, lab_->judge() ? lab_->judge()->measuredView() : Settings{});
+}
 
 ImageF LabHost::renderView(glm::ivec2 size, float time, const Settings& view) {
   const Settings saved = currentSettings();

@@ -14,9 +14,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 #include "host/preset.h"
-#include "labs/lab.h"
+#include "lab/lab.h"
 #include "measure/image.h"
 
 namespace shadelab {

@@ -48,10 +48,10 @@ void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const Ima
   Metrics costs = std::move(m.values);
   if (!truths.empty()) {
     for (auto& t : truths) m.references.push_back(*t);
-    m.values = host_.lab().viewMetrics(m.images, m.references);
+    m.values = host_.lab().judge()->viewMetrics(m.images, m.references);
     m.reference = m.references.front();
   } else {
-    m.values = host_.lab().meshMetrics();
+    m.values = host_.lab().judge()->meshMetrics();
   }
   for (auto& c : costs) m.values.push_back(std::move(c));
   if (onMeasured) onMeasured(m);
@@ -66,7 +66,7 @@ void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const Ima
 
 std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
   Lab& lab = host_.lab();
-  const ReferenceSpec spec = lab.reference();
+  const ReferenceSpec spec = referenceOf(lab);
   if (spec.kind == TruthKind::None) return std::string(lab.id()) + ": this configuration has no ground truth to measure against";
   Measurement m;
   m.lab = std::string(lab.id());
@@ -91,7 +91,7 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
 
   // Every measured view of this configuration now (the GL thread), and the truth in each view:
   // from the cache, traced in a CPU job, or accumulated from jittered frames in GL slices.
-  const std::vector<MeasuredView> views = lab.measuredViews();
+  const std::vector<MeasuredView> views = lab.judge()->measuredViews();
   for (auto& view : views) m.images.push_back(host_.renderView(size, time, view.settings));
   m.image = m.images.front();
   std::vector<TruthRequest> requests;

@@ -4,7 +4,7 @@
 #pragma once
 #include <random>
 
-#include "labs/lab.h"
+#include "lab/lab.h"
 
 namespace shadelab {
 

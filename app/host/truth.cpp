@@ -4,7 +4,7 @@ namespace shadelab {
 
 TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Settings& view) {
   TruthRequest req;
-  req.spec = host.lab().reference();
+  req.spec = referenceOf(host.lab());
   req.viewSettings = host.currentSettings();
   host.applySettings(req.spec.overrides);
   host.applySettings(view);

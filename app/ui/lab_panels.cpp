@@ -1,4 +1,4 @@
-// The lab's own panels (labs/lab_panel.h), drawn as ImGui widgets, and the jobs overlay.
+// The lab's own panels (app/lab/lab_panel.h), drawn as ImGui widgets, and the jobs overlay.
 #include <imgui.h>
 
 #include "gl/texture.h"

@@ -13,7 +13,7 @@
 namespace shadelab {
 
 void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now, std::string& message) {
-  const ReferenceSpec spec = host.lab().reference();
+  const ReferenceSpec spec = referenceOf(host.lab());
   if (spec.kind == TruthKind::None) {
     ImGui::TextDisabled("This configuration has no ground truth to measure against.");
     return;
@@ -61,7 +61,7 @@ void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const Me
     ImGui::EndTable();
   }
 
-  const auto plots = host.lab().plots();
+  const auto plots = host.lab().judge()->plots();  // a truth implies a Judge
   if (plots.empty()) return;
   ui.plot = std::clamp(ui.plot, 0, int(plots.size()) - 1);
   if (plots.size() > 1) {

@@ -25,7 +25,7 @@ void drawShaderPanel(LabHost& host, std::string& status);
 
 void drawWarnings(const LabHost& host, const std::string& lastError);
 
-// The lab's own panels (labs/lab_panel.h).
+// The lab's own panels (app/lab/lab_panel.h).
 void drawLabPanels(const Lab& lab);
 // A progress bar with Cancel per running job; returns whether any runs.
 bool drawJobs(JobRunner& jobs);

@@ -13,7 +13,7 @@ class ImGuiParams final : public ParamVisitor {
 
   void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale) override {
     if (!open_) return;
-    Greyed greyed(unavailable_);
+    Greyed greyed(*this, unavailable_);
     const std::string label = withUnits(info);
     changed |= ImGui::SliderFloat(label.c_str(), &value, min, max, logScale ? "%.4g" : "%.3f",
                                   logScale ? ImGuiSliderFlags_Logarithmic : 0);
@@ -22,7 +22,7 @@ class ImGuiParams final : public ParamVisitor {
   }
   void intParam(const ParamInfo& info, int& value, int min, int max) override {
     if (!open_) return;
-    Greyed greyed(unavailable_);
+    Greyed greyed(*this, unavailable_);
     const std::string label = withUnits(info);
     changed |= ImGui::SliderInt(label.c_str(), &value, min, max);
     value = std::clamp(value, min, max);
@@ -30,13 +30,13 @@ class ImGuiParams final : public ParamVisitor {
   }
   void boolParam(const ParamInfo& info, bool& value) override {
     if (!open_) return;
-    Greyed greyed(unavailable_);
+    Greyed greyed(*this, unavailable_);
     changed |= ImGui::Checkbox(std::string(info.label).c_str(), &value);
     tooltip(info);
   }
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override {
     if (!open_) return;
-    Greyed greyed(unavailable_);
+    Greyed greyed(*this, unavailable_);
     const std::string label(info.label);
     if (ImGui::BeginCombo(label.c_str(), std::string(names[size_t(index)]).c_str())) {
       for (size_t i = 0; i < names.size(); ++i)
@@ -51,6 +51,7 @@ class ImGuiParams final : public ParamVisitor {
   // A folding header per section; its parameters are laid out only while it is open.
   void section(std::string_view title) override {
     open_ = ImGui::CollapsingHeader(std::string(title).c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+    unavailable_.clear();  // said for a parameter of a folded section, which drew nothing
   }
   void unavailable(std::string_view reason) override { unavailable_ = reason; }
   void action(const ParamInfo& info, const std::function<void()>& run) override {
@@ -66,8 +67,9 @@ class ImGuiParams final : public ParamVisitor {
   // Greys out one widget that can have no effect here, and says why beside it.
   class Greyed {
    public:
-    explicit Greyed(std::string& reason) : reason_(std::move(reason)) {
-      reason.clear();
+    // `own`: the widget's own reason, used up here; a group's reason comes first.
+    Greyed(const ParamVisitor& v, std::string& own) : reason_(v.unavailableReason(own)) {
+      own.clear();
       if (!reason_.empty()) ImGui::BeginDisabled();
     }
     ~Greyed() {

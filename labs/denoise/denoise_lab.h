@@ -6,11 +6,12 @@
 // Taubin 1995; Desbrun et al. 1999; Zheng et al. 2011; Zhang et al. 2015.
 // Read next: labs/denoise/laplacian.h, shaders/denoise/mesh.vert, tutorials/denoise.md.
 #pragma once
+#include <bit>
 #include <memory>
 #include <optional>
 
 #include "labs/denoise/denoise_pipeline.h"
-#include "labs/lab.h"
+#include "lab/lab.h"
 
 namespace shadelab {
 
@@ -43,9 +44,11 @@ struct DenoiseParams {
   DenoiseShow show = DenoiseShow::Smoothed;
   DenoiseView view = DenoiseView::Shaded;
   float heatScale = 0.5f;          // mean edge lengths at full colour (error, seam gap); offsets: twice that
+
+  static constexpr int mapSizeIndexOf(int size) { return std::countr_zero(unsigned(size / 64)); }
 };
 
-class DenoiseLab final : public LabWithParams<DenoiseParams> {
+class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
  public:
   DenoiseLab();
   ~DenoiseLab() override;
@@ -68,6 +71,8 @@ class DenoiseLab final : public LabWithParams<DenoiseParams> {
   std::vector<std::string> warnings() const override;
   std::vector<LabPanel> panels() const override;
 
+  // Judge: the lab is its own.
+  Judge* judge() override { return this; }
   ReferenceSpec reference() const override;
   Metrics meshMetrics() const override;
   std::vector<PlotSpec> plots() const override;

@@ -178,35 +178,72 @@ std::vector<SweepAxis> DenoiseLab::standardSweep() const {
 }
 
 std::vector<StressCase> DenoiseLab::stressCases() const {
+  const auto edit = [](auto change) { return fromDefaults<DenoiseLab>(change); };
   return {
-      {"explicit-lambda-2", {{"lambda", "2"}, {"iterations", "30"}, {"along_normal", "off"}}, "", "", "diverging"},
-      {"explicit-lambda-2-along-normal", {{"lambda", "2"}, {"iterations", "30"}}, "", "", "diverging"},
-      {"cotangent-beyond-its-limit", {{"weights", "cotangent"}, {"lambda", "1.25"}, {"iterations", "60"},
-                                      {"along_normal", "off"}}, "", "", "diverging"},
-      {"explicit-lambda-huge", {{"lambda", "100000"}, {"iterations", "50"}}, "", "", "stopped at iteration"},
-      {"explicit-lambda-1.5-runs-away", {{"lambda", "1.5"}, {"iterations", "200"}, {"along_normal", "off"}}, "", "",
+      {"explicit-lambda-2", edit([](DenoiseParams& p) { p.lambda = 2.0f, p.iterations = 30, p.alongNormal = false; }),
+       "", "", "diverging"},
+      {"explicit-lambda-2-along-normal", edit([](DenoiseParams& p) { p.lambda = 2.0f, p.iterations = 30; }), "", "",
+       "diverging"},
+      {"cotangent-beyond-its-limit", edit([](DenoiseParams& p) {
+         p.weights = LaplacianWeights::Cotangent, p.lambda = 1.25f, p.iterations = 60, p.alongNormal = false;
+       }),
+       "", "", "diverging"},
+      {"explicit-lambda-huge", edit([](DenoiseParams& p) { p.lambda = 100000.0f, p.iterations = 50; }), "", "",
        "stopped at iteration"},
-      {"implicit-1000x-limit", {{"method", "implicit"}, {"lambda", "1000"}, {"iterations", "20"}}, "", "", ""},
-      {"implicit-lambda-1e5-cotangent", {{"method", "implicit"}, {"weights", "cotangent"}, {"lambda", "100000"}}, "", "", ""},
-      {"taubin-unclamped-cotangent", {{"method", "taubin"}, {"weights", "cotangent"}, {"clamp_cotangent", "off"}}, "", "",
-       "not clamped"},
-      {"slivers-cotangent", {{"weights", "cotangent"}, {"input", "generated"}}, "denoise-degenerate", "", "were negative"},
-      {"slivers-unclamped", {{"weights", "cotangent"}, {"clamp_cotangent", "off"}, {"input", "generated"}},
-       "denoise-degenerate", "", "not clamped"},
-      {"slivers-implicit", {{"method", "implicit"}, {"weights", "cotangent"}, {"input", "generated"}}, "denoise-degenerate",
+      {"explicit-lambda-1.5-runs-away",
+       edit([](DenoiseParams& p) { p.lambda = 1.5f, p.iterations = 200, p.alongNormal = false; }), "", "",
+       "stopped at iteration"},
+      {"implicit-1000x-limit",
+       edit([](DenoiseParams& p) { p.method = DenoiseMethod::Implicit, p.lambda = 1000.0f, p.iterations = 20; }), "",
        "", ""},
-      {"slivers-bilateral", {{"method", "bilateral"}, {"input", "generated"}}, "denoise-degenerate", "", ""},
-      {"noise-level-2", {{"input", "generated"}, {"noise_level", "2"}}, "", "", ""},
-      {"impulsive-everything", {{"input", "generated"}, {"noise", "impulsive"}, {"impulsive_fraction", "1"}}, "", "", ""},
-      {"no-noise", {{"input", "generated"}, {"noise_level", "0"}}, "", "", ""},
-      {"bilateral-sigma-tiny", {{"method", "bilateral"}, {"sigma_r", "0.02"}}, "", "", ""},
-      {"weld-off-cracks", {{"weld", "off"}, {"input", "generated"}, {"show", "attribute"}, {"view", "seam-gap"}},
+      {"implicit-lambda-1e5-cotangent", edit([](DenoiseParams& p) {
+         p.method = DenoiseMethod::Implicit, p.weights = LaplacianWeights::Cotangent, p.lambda = 100000.0f;
+       }),
+       "", "", ""},
+      {"taubin-unclamped-cotangent", edit([](DenoiseParams& p) {
+         p.method = DenoiseMethod::Taubin, p.weights = LaplacianWeights::Cotangent, p.clampCotangent = false;
+       }),
+       "", "", "not clamped"},
+      {"slivers-cotangent",
+       edit([](DenoiseParams& p) { p.weights = LaplacianWeights::Cotangent, p.input = NoiseSource::Generated; }),
+       "denoise-degenerate", "", "were negative"},
+      {"slivers-unclamped", edit([](DenoiseParams& p) {
+         p.weights = LaplacianWeights::Cotangent, p.clampCotangent = false, p.input = NoiseSource::Generated;
+       }),
+       "denoise-degenerate", "", "not clamped"},
+      {"slivers-implicit", edit([](DenoiseParams& p) {
+         p.method = DenoiseMethod::Implicit, p.weights = LaplacianWeights::Cotangent, p.input = NoiseSource::Generated;
+       }),
+       "denoise-degenerate", "", ""},
+      {"slivers-bilateral",
+       edit([](DenoiseParams& p) { p.method = DenoiseMethod::Bilateral, p.input = NoiseSource::Generated; }),
+       "denoise-degenerate", "", ""},
+      {"noise-level-2", edit([](DenoiseParams& p) { p.input = NoiseSource::Generated, p.noiseLevel = 2.0f; }), "", "",
+       ""},
+      {"impulsive-everything", edit([](DenoiseParams& p) {
+         p.input = NoiseSource::Generated, p.noiseKind = NoiseKind::Impulsive, p.impulsiveFraction = 1.0f;
+       }),
+       "", "", ""},
+      {"no-noise", edit([](DenoiseParams& p) { p.input = NoiseSource::Generated, p.noiseLevel = 0.0f; }), "", "", ""},
+      {"bilateral-sigma-tiny", edit([](DenoiseParams& p) { p.method = DenoiseMethod::Bilateral, p.sigmaR = 0.02f; }),
+       "", "", ""},
+      {"weld-off-cracks", edit([](DenoiseParams& p) {
+         p.weld = false, p.input = NoiseSource::Generated, p.show = DenoiseShow::Attribute,
+         p.view = DenoiseView::SeamGap;
+       }),
        "denoise-cube", "", "welding is off"},
-      {"map-4096-nearest", {{"input", "generated"}, {"map_size", "4096"}, {"bake", "nearest-exact"}, {"show", "map"}},
+      {"map-4096-nearest", edit([](DenoiseParams& p) {
+         p.input = NoiseSource::Generated, p.mapSizeIndex = DenoiseParams::mapSizeIndexOf(4096),
+         p.bakeMethod = BakeMethod::NearestExact, p.show = DenoiseShow::Map;
+       }),
        "denoise-cube", "", ""},
-      {"approx-one-check", {{"input", "generated"}, {"bake", "nearest-approx"}, {"checks", "1"}, {"show", "compare"}},
+      {"approx-one-check", edit([](DenoiseParams& p) {
+         p.input = NoiseSource::Generated, p.bakeMethod = BakeMethod::NearestApprox, p.checks = 1,
+         p.show = DenoiseShow::Compare;
+       }),
        "denoise-cube", "", "not the nearest"},
-      {"map-without-uvs", {{"show", "map"}}, "denoise-sphere-no-uvs", "", "no UVs"},
+      {"map-without-uvs", edit([](DenoiseParams& p) { p.show = DenoiseShow::Map; }), "denoise-sphere-no-uvs", "",
+       "no UVs"},
       {"empty-scene", {}, "empty", "", "nothing to denoise"},
   };
 }

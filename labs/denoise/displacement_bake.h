@@ -20,7 +20,7 @@
 
 #include <glm/glm.hpp>
 
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 
 namespace shadelab {
 

@@ -29,7 +29,7 @@
 
 #include <glm/glm.hpp>
 
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 #include "scene/mesh_topology.h"
 
 namespace shadelab {

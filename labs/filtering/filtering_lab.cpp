@@ -3,15 +3,41 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lab/technique.h"
 #include "labs/filtering/filtering_scenes.h"
 
 namespace shadelab {
 namespace {
 
-constexpr std::string_view kFilters[] = {"nearest", "bilinear", "bicubic"};
-constexpr std::string_view kMipmaps[] = {"off", "nearest-level", "linear-level"};
+// The techniques: a new filter is its row here, its branch in filter.glsl (under its define) and its test.
+struct TexelFilterRow {
+  TexelFilter value;
+  std::string_view name;
+  std::string_view define;
+  bool inHardware;  // the sampler can do it; otherwise the shader filters
+};
+constexpr TexelFilterRow kTexelFilters[] = {
+    {TexelFilter::Nearest, "nearest", "FILTER_NEAREST", true},
+    {TexelFilter::Bilinear, "bilinear", "FILTER_BILINEAR", true},
+    {TexelFilter::Bicubic, "bicubic", "FILTER_BICUBIC", false},
+};
+static_assert(coversEnum<TexelFilter>(kTexelFilters));
+
+constexpr NamedDefine<MipSelection> kMipSelections[] = {
+    {MipSelection::Off, "off", "MIP_NONE"},
+    {MipSelection::NearestLevel, "nearest-level", "MIP_NEAREST"},
+    {MipSelection::LinearLevel, "linear-level", "MIP_LINEAR"},
+};
+static_assert(coversEnum<MipSelection>(kMipSelections));
+
+constexpr NamedDefine<FilteringView> kFilteringViews[] = {
+    {FilteringView::Shaded, "shaded", "VIEW_SHADED"},
+    {FilteringView::MipLevel, "mip-level", "VIEW_MIP_LEVEL"},
+    {FilteringView::Anisotropy, "anisotropy", "VIEW_ANISOTROPY"},
+};
+static_assert(coversEnum<FilteringView>(kFilteringViews));
+
 constexpr std::string_view kBuilders[] = {"box", "kaiser", "driver"};
-constexpr std::string_view kViews[] = {"shaded", "mip-level", "anisotropy"};
 constexpr std::string_view kPixelFilters[] = {"box", "gaussian"};
 
 constexpr int kUnit = 0;
@@ -46,10 +72,10 @@ void FilteringLab::visitParams(ParamVisitor& v) {
   v.section("Filter");
   v.enumParam({"filter", "Within a level", "", "nearest: the texel the sample falls in; bilinear: the four nearest "
                "texels, two lerps and a third; bicubic: sixteen texels with Catmull-Rom weights (written in the shader "
-               "only: hardware has no bicubic filter)."}, p.filter, kFilters);
+               "only: hardware has no bicubic filter)."}, p.filter, namesOf<kTexelFilters>());
   v.enumParam({"mipmaps", "Mip levels", "", "off: always level 0 (minification aliases); nearest-level: the level "
                "closest to L = log2(footprint in texels); linear-level: a blend of the two levels around L "
-               "(with bilinear: trilinear filtering)."}, p.mipmaps, kMipmaps);
+               "(with bilinear: trilinear filtering)."}, p.mipmaps, namesOf<kMipSelections>());
   v.boolParam({"in_shader", "Written in the shader", "", "Filter with texelFetch and arithmetic (filter.glsl) instead "
                "of the texture unit: the same filter, made visible and editable."}, p.inShader);
   if (anisotropyLimit_ > 0.0f && anisotropyLimit_ <= 1.0f && !p.inShader)
@@ -73,7 +99,7 @@ void FilteringLab::visitParams(ParamVisitor& v) {
   v.section("View");
   v.enumParam({"view", "View", "", "shaded; mip-level: the level read, one colour per level (red 0, orange 1, yellow 2, "
                "green 3, cyan 4, blue 5, violet 6, pink 7, then again), blended for trilinear; anisotropy: the "
-               "footprint's length over its width, slate 1x to yellow 16x."}, p.view, kViews);
+               "footprint's length over its width, slate 1x to yellow 16x."}, p.view, namesOf<kFilteringViews>());
   v.boolParam({"footprint_probe", "Footprint probe", "", "Read one pixel's footprint back from the GPU and draw it in "
                "texel space (the Footprint panel); the pixel is marked with a ring."}, p.probe);
   v.floatParam({"probe_x", "Probe x", "", "The probe pixel across the frame, 0 left .. 1 right."}, p.probeX, 0.0f, 1.0f);
@@ -88,7 +114,7 @@ void FilteringLab::visitParams(ParamVisitor& v) {
                "shimmer."}, p.animate);
 }
 
-bool FilteringLab::inShader() const { return params.inShader || params.filter == TexelFilter::Bicubic; }
+bool FilteringLab::inShader() const { return params.inShader || !rowOf(kTexelFilters, params.filter).inHardware; }
 
 SceneNeeds FilteringLab::needs() const {
   SceneNeeds n;
@@ -101,22 +127,20 @@ SceneNeeds FilteringLab::needs() const {
 ProgramSpec FilteringLab::programSpec(const FilteringParams& p, bool probePass) const {
   ProgramSpec spec;
   spec.stages = {{GL_VERTEX_SHADER, "filtering/filtering.vert"}, {GL_FRAGMENT_SHADER, "filtering/filtering.frag"}};
-  auto define = [&](const char* name) { spec.defines.emplace_back(name, "1"); };
+  auto define = [&](std::string_view name) { spec.defines.emplace_back(name, "1"); };
   if (probePass) {
     spec.name = "filtering/footprint probe";
     define("PROBE");
     define("MIP_NONE");
     return spec;
   }
-  const bool shader = p.inShader || p.filter == TexelFilter::Bicubic;
-  spec.name = "filtering/" + std::string(kFilters[int(p.filter)]) + " " + std::string(kMipmaps[int(p.mipmaps)]) +
-              (shader ? " (shader)" : "");
-  static const char* filters[] = {"FILTER_NEAREST", "FILTER_BILINEAR", "FILTER_BICUBIC"};
-  static const char* mips[] = {"MIP_NONE", "MIP_NEAREST", "MIP_LINEAR"};
-  static const char* views[] = {"VIEW_SHADED", "VIEW_MIP_LEVEL", "VIEW_ANISOTROPY"};
-  define(filters[int(p.filter)]);
-  define(mips[int(p.mipmaps)]);
-  define(views[int(p.view)]);
+  const TexelFilterRow& filter = rowOf(kTexelFilters, p.filter);
+  const NamedDefine<MipSelection>& mips = rowOf(kMipSelections, p.mipmaps);
+  const bool shader = p.inShader || !filter.inHardware;
+  spec.name = "filtering/" + std::string(filter.name) + " " + std::string(mips.name) + (shader ? " (shader)" : "");
+  define(filter.define);
+  define(mips.define);
+  define(rowOf(kFilteringViews, p.view).define);
   if (shader) define("IN_SHADER");
   if (p.manualLevel) define("MANUAL_LEVEL");
   if (p.probe) define("PROBE_MARKER");
@@ -125,10 +149,10 @@ ProgramSpec FilteringLab::programSpec(const FilteringParams& p, bool probePass) 
 
 std::vector<ProgramSpec> FilteringLab::allPrograms() const {
   std::vector<ProgramSpec> all = {programSpec(FilteringParams{}, true)};
-  for (int f = 0; f < 3; ++f)
-    for (int m = 0; m < 3; ++m)
+  for (int f = 0; f < int(TexelFilter::Count); ++f)
+    for (int m = 0; m < int(MipSelection::Count); ++m)
       for (int shader = 0; shader < 2; ++shader)
-        for (int view = 0; view < 3; ++view) {
+        for (int view = 0; view < int(FilteringView::Count); ++view) {
           FilteringParams p;
           p.filter = TexelFilter(f);
           p.mipmaps = MipSelection(m);
@@ -286,8 +310,8 @@ void FilteringLab::render(Frame& frame) {
   shown_ = -1;
   Program& prog = program_.get(*shaders_, programSpec(params, false));
   {
-    auto pass = frame.pass(std::string("texture: ") + std::string(kFilters[int(params.filter)]) + ", mip " +
-                           std::string(kMipmaps[int(params.mipmaps)]) + (inShader() ? ", in shader" : "") +
+    auto pass = frame.pass(std::string("texture: ") + std::string(rowOf(kTexelFilters, params.filter).name) + ", mip " +
+                           std::string(rowOf(kMipSelections, params.mipmaps).name) + (inShader() ? ", in shader" : "") +
                            (anisotropy() > 1 ? ", " + std::to_string(anisotropy()) + "x" : ""));
     prog.use();
     prog.set("u_viewProj", viewProj);

@@ -14,14 +14,15 @@
 #include <optional>
 
 #include "labs/filtering/mip_chain.h"
-#include "labs/lab.h"
+#include "lab/lab.h"
 
 namespace shadelab {
 
-enum class TexelFilter { Nearest, Bilinear, Bicubic };
-enum class MipSelection { Off, NearestLevel, LinearLevel };
+// Tables of names and defines in filtering_lab.cpp.
+enum class TexelFilter { Nearest, Bilinear, Bicubic, Count };
+enum class MipSelection { Off, NearestLevel, LinearLevel, Count };
 enum class MipBuilder { Box, Kaiser, Driver };
-enum class FilteringView { Shaded, MipLevel, Anisotropy };
+enum class FilteringView { Shaded, MipLevel, Anisotropy, Count };
 
 struct FilteringParams {
   TexelFilter filter = TexelFilter::Bilinear;
@@ -48,7 +49,7 @@ struct Footprint {
   bool covered = false;  // the probe pixel shows the texture at all
 };
 
-class FilteringLab final : public LabWithParams<FilteringParams> {
+class FilteringLab final : public LabWithParams<FilteringParams>, public Judge {
  public:
   static constexpr int kMotionFrames = 3;  // frames of the slow camera move the flicker is measured over
 
@@ -69,6 +70,8 @@ class FilteringLab final : public LabWithParams<FilteringParams> {
   std::vector<std::string> warnings() const override;
   std::vector<LabPanel> panels() const override;
 
+  // Judge: the lab is its own.
+  Judge* judge() override { return this; }
   ReferenceSpec reference() const override;
   std::vector<MeasuredView> measuredViews() const override;
   Metrics viewMetrics(const std::vector<ImageF>& images, const std::vector<ImageF>& references) const override;

@@ -15,10 +15,18 @@ ReferenceSpec FilteringLab::reference() const {
   spec.truth = "supersampled";
   spec.description = "each pixel's footprint integrated over 16 x 16 jittered samples (bilinear lookups of level 0, "
                      "no mip levels, no anisotropy), weighted by the pixel filter, averaged in linear light";
-  spec.overrides = {{"filter", "bilinear"},   {"mipmaps", "off"},      {"in_shader", "off"},
-                    {"anisotropy", "1"},      {"lod_bias", "0"},       {"manual_level", "off"},
-                    {"downsampler", "box"},   {"view", "shaded"},      {"footprint_probe", "off"},
-                    {"animate", "off"}};
+  spec.overrides = edits<FilteringLab>(params, [](FilteringParams& p) {
+    p.filter = TexelFilter::Bilinear;
+    p.mipmaps = MipSelection::Off;
+    p.inShader = false;
+    p.anisotropy = 1;
+    p.lodBias = 0.0f;
+    p.manualLevel = false;
+    p.builder = MipBuilder::Box;
+    p.view = FilteringView::Shaded;
+    p.probe = false;
+    p.animate = false;
+  });
   spec.jitterGrid = 16;
   spec.pixelFilter = params.pixelFilter;
   return spec;
@@ -193,26 +201,44 @@ std::vector<SweepAxis> FilteringLab::standardSweep() const {
 }
 
 std::vector<StressCase> FilteringLab::stressCases() const {
+  const auto edit = [](auto change) { return fromDefaults<FilteringLab>(change); };
   return {
-      {"horizon-nearest", {{"filter", "nearest"}, {"mipmaps", "off"}}, "horizon", "", ""},
-      {"horizon-trilinear-shader", {{"in_shader", "on"}}, "horizon", "", ""},
-      {"horizon-anisotropic-16", {{"anisotropy", "16"}, {"view", "mip-level"}}, "horizon", "", ""},
-      {"horizon-anisotropic-shader", {{"anisotropy", "16"}, {"in_shader", "on"}, {"view", "anisotropy"}}, "horizon", "", ""},
-      {"magnify-10000x", {{"filter", "bicubic"}}, "magnify", "yaw=0,pitch=0,distance=0.0005,target=0.3;0.2;0", ""},
-      {"magnify-nearest-close", {{"filter", "nearest"}, {"in_shader", "on"}}, "magnify", "yaw=0,pitch=0,distance=0.001", ""},
-      {"npot-box", {{"view", "mip-level"}}, "npot", "", "not a power of two"},
-      {"npot-kaiser-shader", {{"downsampler", "kaiser"}, {"in_shader", "on"}, {"filter", "bicubic"}}, "npot", "",
+      {"horizon-nearest",
+       edit([](FilteringParams& p) { p.filter = TexelFilter::Nearest, p.mipmaps = MipSelection::Off; }), "horizon", "",
+       ""},
+      {"horizon-trilinear-shader", edit([](FilteringParams& p) { p.inShader = true; }), "horizon", "", ""},
+      {"horizon-anisotropic-16", edit([](FilteringParams& p) { p.anisotropy = 16, p.view = FilteringView::MipLevel; }),
+       "horizon", "", ""},
+      {"horizon-anisotropic-shader",
+       edit([](FilteringParams& p) { p.anisotropy = 16, p.inShader = true, p.view = FilteringView::Anisotropy; }),
+       "horizon", "", ""},
+      {"magnify-10000x", edit([](FilteringParams& p) { p.filter = TexelFilter::Bicubic; }), "magnify",
+       "yaw=0,pitch=0,distance=0.0005,target=0.3;0.2;0", ""},
+      {"magnify-nearest-close", edit([](FilteringParams& p) { p.filter = TexelFilter::Nearest, p.inShader = true; }),
+       "magnify", "yaw=0,pitch=0,distance=0.001", ""},
+      {"npot-box", edit([](FilteringParams& p) { p.view = FilteringView::MipLevel; }), "npot", "",
        "not a power of two"},
-      {"npot-driver", {{"downsampler", "driver"}}, "npot", "", "not a power of two"},
-      {"one-texel", {{"filter", "bicubic"}, {"anisotropy", "16"}}, "one-texel", "", "1 x 1"},
-      {"one-texel-chosen-level", {{"manual_level", "on"}, {"level", "14"}}, "one-texel", "", "past the last level"},
-      {"constant-uv", {{"in_shader", "on"}, {"view", "mip-level"}}, "constant-uv", "", ""},
-      {"huge-uv", {{"in_shader", "on"}, {"anisotropy", "16"}}, "huge-uv", "", ""},
-      {"huge-uv-hardware", {{"view", "anisotropy"}}, "huge-uv", "", ""},
-      {"bias-plus-16", {{"lod_bias", "16"}}, "", "", "blurs"},
-      {"bias-minus-16-shader", {{"lod_bias", "-16"}, {"in_shader", "on"}}, "", "", "aliases"},
-      {"anisotropy-without-mips", {{"anisotropy", "16"}, {"mipmaps", "off"}}, "", "", "mip levels off"},
-      {"edge-on", {{"in_shader", "on"}, {"view", "anisotropy"}}, "", "yaw=0,pitch=0,distance=6,target=0;0;-4", ""},
+      {"npot-kaiser-shader", edit([](FilteringParams& p) {
+         p.builder = MipBuilder::Kaiser, p.inShader = true, p.filter = TexelFilter::Bicubic;
+       }),
+       "npot", "", "not a power of two"},
+      {"npot-driver", edit([](FilteringParams& p) { p.builder = MipBuilder::Driver; }), "npot", "",
+       "not a power of two"},
+      {"one-texel", edit([](FilteringParams& p) { p.filter = TexelFilter::Bicubic, p.anisotropy = 16; }), "one-texel",
+       "", "1 x 1"},
+      {"one-texel-chosen-level", edit([](FilteringParams& p) { p.manualLevel = true, p.level = 14.0f; }), "one-texel",
+       "", "past the last level"},
+      {"constant-uv", edit([](FilteringParams& p) { p.inShader = true, p.view = FilteringView::MipLevel; }),
+       "constant-uv", "", ""},
+      {"huge-uv", edit([](FilteringParams& p) { p.inShader = true, p.anisotropy = 16; }), "huge-uv", "", ""},
+      {"huge-uv-hardware", edit([](FilteringParams& p) { p.view = FilteringView::Anisotropy; }), "huge-uv", "", ""},
+      {"bias-plus-16", edit([](FilteringParams& p) { p.lodBias = 16.0f; }), "", "", "blurs"},
+      {"bias-minus-16-shader", edit([](FilteringParams& p) { p.lodBias = -16.0f, p.inShader = true; }), "", "",
+       "aliases"},
+      {"anisotropy-without-mips", edit([](FilteringParams& p) { p.anisotropy = 16, p.mipmaps = MipSelection::Off; }),
+       "", "", "mip levels off"},
+      {"edge-on", edit([](FilteringParams& p) { p.inShader = true, p.view = FilteringView::Anisotropy; }), "",
+       "yaw=0,pitch=0,distance=6,target=0;0;-4", ""},
   };
 }
 

@@ -4,10 +4,24 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "lab/technique.h"
+
 namespace shadelab {
 namespace {
 
-constexpr std::string_view kModeNames[] = {"flat", "gouraud", "phong"};
+// Where the lighting is evaluated: a new mode is its row here, its branch in shade.vert/.frag and its test.
+struct ShadingModeRow {
+  ShadingMode value;
+  std::string_view name;
+  std::string_view define;
+  bool perFace;  // a geometry shader hands each triangle's normal to its three corners
+};
+constexpr ShadingModeRow kShadingModes[] = {
+    {ShadingMode::Flat, "flat", "MODE_FLAT", true},
+    {ShadingMode::Gouraud, "gouraud", "MODE_GOURAUD", false},
+    {ShadingMode::Phong, "phong", "MODE_PHONG", false},
+};
+static_assert(coversEnum<ShadingMode>(kShadingModes));
 constexpr std::string_view kSpecularNames[] = {"blinn-phong", "phong"};
 constexpr std::string_view kUvNames[] = {"perspective", "affine"};
 
@@ -29,7 +43,7 @@ void ShadingLab::visitParams(ParamVisitor& v) {
   auto& p = params;
   v.section("Shading");
   v.enumParam({"mode", "Shading frequency", "", "flat: once per triangle (face normal); gouraud: per vertex, "
-               "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, kModeNames);
+               "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, namesOf<kShadingModes>());
   v.enumParam({"specular", "Specular model", "", "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
                "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."}, p.specular, kSpecularNames);
   v.enumParam({"uv_interpolation", "UV interpolation", "", "perspective: correct (divide by w); affine: "
@@ -60,12 +74,12 @@ SceneNeeds ShadingLab::needs() const {
 
 ProgramSpec ShadingLab::programSpec(const ShadingParams& p, bool textured) const {
   ProgramSpec spec;
-  spec.name = "shading/" + std::string(kModeNames[int(p.mode)]) + (textured ? "+texture" : "");
+  const ShadingModeRow& mode = rowOf(kShadingModes, p.mode);
+  spec.name = "shading/" + std::string(mode.name) + (textured ? "+texture" : "");
   spec.stages.push_back({GL_VERTEX_SHADER, "shading/shade.vert"});
-  if (p.mode == ShadingMode::Flat) spec.stages.push_back({GL_GEOMETRY_SHADER, "shading/flat.geom"});
+  if (mode.perFace) spec.stages.push_back({GL_GEOMETRY_SHADER, "shading/flat.geom"});
   spec.stages.push_back({GL_FRAGMENT_SHADER, "shading/shade.frag"});
-  static const char* modeDefine[] = {"MODE_FLAT", "MODE_GOURAUD", "MODE_PHONG"};
-  spec.defines.emplace_back(modeDefine[int(p.mode)], "1");
+  spec.defines.emplace_back(mode.define, "1");
   spec.defines.emplace_back("NUM_LIGHTS", std::to_string(p.lights));
   if (p.specular == SpecularModel::Phong) spec.defines.emplace_back("SPECULAR_PHONG", "1");
   if (p.uvInterpolation == UvInterpolation::Affine) spec.defines.emplace_back("AFFINE_UV", "1");
@@ -76,7 +90,7 @@ ProgramSpec ShadingLab::programSpec(const ShadingParams& p, bool textured) const
 std::vector<ProgramSpec> ShadingLab::allPrograms() const {
   std::vector<ProgramSpec> all;
   ShadingParams p;
-  for (int mode = 0; mode < 3; ++mode)
+  for (int mode = 0; mode < int(ShadingMode::Count); ++mode)
     for (int spec = 0; spec < 2; ++spec)
       for (int uv = 0; uv < 2; ++uv)
         for (int textured = 0; textured < 2; ++textured) {
@@ -177,22 +191,30 @@ ReferenceSpec ShadingLab::reference() const {
   spec.truth = "Phong at 256 segments";
   spec.description = "per-fragment Phong shading on the 256-segment tessellation with perspective-correct UVs, at the "
                      "same resolution (one sample per pixel: the error is shading and geometry, not aliasing)";
-  spec.overrides = {{"mode", "phong"}, {"uv_interpolation", "perspective"},
-                    {"tessellation", std::to_string(kReferenceTessellation)}};
+  spec.overrides = edits<ShadingLab>(params, [](ShadingParams& p) {
+    p.mode = ShadingMode::Phong;
+    p.uvInterpolation = UvInterpolation::Perspective;
+    p.tessellation = kReferenceTessellation;
+  });
   spec.cheap = true;  // one frame, and the host keeps its scene build for the next measurement
   return spec;
 }
 
 std::vector<StressCase> ShadingLab::stressCases() const {
+  const auto edit = [](auto change) { return fromDefaults<ShadingLab>(change); };
   return {
-      {"grazing-light", {{"light_elevation", "0.1"}}, "", "", "grazing light"},
-      {"light-below-horizon", {{"light_elevation", "-10"}}, "", "", ""},
-      {"flat-degenerate-poles", {{"mode", "flat"}, {"tessellation", "3"}}, "sphere", "", ""},
-      {"gouraud-sharp-highlight", {{"mode", "gouraud"}, {"shininess", "1024"}, {"ks", "1"}}, "", "", "highlights narrower"},
-      {"shininess-1", {{"shininess", "1"}, {"ks", "1"}}, "", "", ""},
-      {"no-lights", {{"lights", "0"}}, "", "", "no lights"},
-      {"huge-power", {{"light_power", "100000"}, {"lights", "4"}}, "", "", "saturate"},
-      {"affine-grazing-camera", {{"uv_interpolation", "affine"}}, "checker-plane", "pitch=0.5", ""},
+      {"grazing-light", edit([](ShadingParams& p) { p.lightElevationDeg = 0.1f; }), "", "", "grazing light"},
+      {"light-below-horizon", edit([](ShadingParams& p) { p.lightElevationDeg = -10.0f; }), "", "", ""},
+      {"flat-degenerate-poles", edit([](ShadingParams& p) { p.mode = ShadingMode::Flat, p.tessellation = 3; }),
+       "sphere", "", ""},
+      {"gouraud-sharp-highlight",
+       edit([](ShadingParams& p) { p.mode = ShadingMode::Gouraud, p.shininess = 1024.0f, p.ks = 1.0f; }), "", "",
+       "highlights narrower"},
+      {"shininess-1", edit([](ShadingParams& p) { p.shininess = 1.0f, p.ks = 1.0f; }), "", "", ""},
+      {"no-lights", edit([](ShadingParams& p) { p.lights = 0; }), "", "", "no lights"},
+      {"huge-power", edit([](ShadingParams& p) { p.lightPower = 100000.0f, p.lights = 4; }), "", "", "saturate"},
+      {"affine-grazing-camera", edit([](ShadingParams& p) { p.uvInterpolation = UvInterpolation::Affine; }),
+       "checker-plane", "pitch=0.5", ""},
       {"extreme-depth-range", {}, "", "near=0.000001,far=1000000", ""},
       {"camera-inside-sphere", {}, "sphere", "distance=0.5", ""},
   };

@@ -4,11 +4,11 @@
 // Reference: per-fragment Phong shading on the finest tessellation (true geometry up to
 // 256 segments), with perspective-correct UVs. Read next: shaders/shading/shade.frag.
 #pragma once
-#include "labs/lab.h"
+#include "lab/lab.h"
 
 namespace shadelab {
 
-enum class ShadingMode { Flat, Gouraud, Phong };
+enum class ShadingMode { Flat, Gouraud, Phong, Count };  // a table in shading_lab.cpp
 enum class SpecularModel { BlinnPhong, Phong };
 enum class UvInterpolation { Perspective, Affine };
 
@@ -27,7 +27,7 @@ struct ShadingParams {
   bool textures = true;         // base-colour textures (the checker floor, OBJ/glTF maps)
 };
 
-class ShadingLab final : public LabWithParams<ShadingParams> {
+class ShadingLab final : public LabWithParams<ShadingParams>, public Judge {
  public:
   static constexpr int kReferenceTessellation = 256;
 
@@ -46,6 +46,8 @@ class ShadingLab final : public LabWithParams<ShadingParams> {
   std::vector<ProgramRef> activePrograms() const override;
   std::vector<std::string> warnings() const override;
 
+  // Judge: the lab is its own.
+  Judge* judge() override { return this; }
   ReferenceSpec reference() const override;
   std::vector<StressCase> stressCases() const override;
   std::vector<SweepAxis> standardSweep() const override;

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "labs/params.h"
+#include "lab/params.h"
 
 namespace shadelab {
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <memory>
 
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 #include "labs/shadows/light_rig.h"
 #include "measure/image.h"
 #include "scene/scene.h"

@@ -1,18 +1,63 @@
-// The shadows lab's option names (as the CLI and presets spell them) and the rules that turn its
-// parameters into what is drawn: shared by the lab (shadows_lab.cpp) and its programs
+// The shadows lab's technique tables and option names (as the CLI and presets spell them), and the
+// rules that turn its parameters into what is drawn: shared by the lab (shadows_lab.cpp) and its programs
 // (shadows_programs.cpp).
 #pragma once
 #include <algorithm>
+#include <array>
+#include <string>
 #include <string_view>
 
+#include "lab/technique.h"
 #include "labs/shadows/shadows_lab.h"
 
 namespace shadelab {
 
 inline constexpr std::string_view kLightTypes[] = {"directional", "spot", "point"};
-inline constexpr std::string_view kFilters[] = {"hard", "hardware-pcf", "pcf", "poisson", "pcss", "vsm", "esm", "evsm"};
-inline constexpr std::string_view kViews[] = {"shaded", "visibility", "bias-heat", "texel-density", "pcss-blocker",
-                                              "pcss-penumbra", "cascades", "depth-raw", "depth-linear"};
+
+// A filter's own parameters: each shapes its program, so check-shaders walks their values.
+enum class FilterSettings { None, PcfSize, PoissonDisk, PcssSamples };
+
+// The shadow filters: a new filter is its row here, its branch in shadow_filters.glsl (under its
+// define) and its test.
+struct ShadowFilterRow {
+  ShadowFilter value;
+  std::string_view name;    // --set shadows.filter=NAME
+  std::string_view define;  // what lit.frag tests (and, for a filtered map, moments.frag)
+  GLenum momentFormat = 0;  // a filtered map: the moments texture the depth pass writes; 0: depth only
+  FilterSettings settings = FilterSettings::None;
+  std::array<std::string_view, 2> sweep{};  // the standard sweep's values for it; none given: its name
+};
+inline constexpr ShadowFilterRow kShadowFilters[] = {
+    {ShadowFilter::Hard, "hard", "FILTER_HARD"},
+    {ShadowFilter::HardwarePcf, "hardware-pcf", "FILTER_HW_PCF"},
+    {ShadowFilter::Pcf, "pcf", "FILTER_PCF", 0, FilterSettings::PcfSize, {"pcf:pcf_size=3", "pcf:pcf_size=5"}},
+    {ShadowFilter::Poisson, "poisson", "FILTER_POISSON", 0, FilterSettings::PoissonDisk},
+    {ShadowFilter::Pcss, "pcss", "FILTER_PCSS", 0, FilterSettings::PcssSamples},
+    {ShadowFilter::Vsm, "vsm", "FILTER_VSM", GL_RG32F},
+    {ShadowFilter::Esm, "esm", "FILTER_ESM", GL_R32F},
+    {ShadowFilter::Evsm, "evsm", "FILTER_EVSM", GL_RGBA32F},
+};
+static_assert(coversEnum<ShadowFilter>(kShadowFilters));
+
+inline std::string filterName(ShadowFilter f) { return std::string(rowOf(kShadowFilters, f).name); }
+// Filtered maps (VSM, ESM, EVSM): the depth pass writes moments, blurred and mipmapped.
+inline GLenum momentFormat(ShadowFilter f) { return rowOf(kShadowFilters, f).momentFormat; }
+inline bool isMomentFilter(ShadowFilter f) { return momentFormat(f) != 0; }
+
+// The views. The depth-map views are drawn by their own program: the lit pass under them shades.
+inline constexpr NamedDefine<ShadowView> kShadowViews[] = {
+    {ShadowView::Shaded, "shaded", "VIEW_SHADED"},
+    {ShadowView::Visibility, "visibility", "VIEW_VISIBILITY"},
+    {ShadowView::BiasHeat, "bias-heat", "VIEW_BIAS_HEAT"},
+    {ShadowView::TexelDensity, "texel-density", "VIEW_TEXEL_DENSITY"},
+    {ShadowView::PcssBlocker, "pcss-blocker", "VIEW_PCSS_BLOCKER"},
+    {ShadowView::PcssPenumbra, "pcss-penumbra", "VIEW_PCSS_PENUMBRA"},
+    {ShadowView::Cascades, "cascades", "VIEW_CASCADES"},
+    {ShadowView::DepthRaw, "depth-raw", "VIEW_SHADED"},
+    {ShadowView::DepthLinear, "depth-linear", "VIEW_SHADED"},
+};
+static_assert(coversEnum<ShadowView>(kShadowViews));
+
 inline constexpr std::string_view kFits[] = {"scene", "view", "cascades"};
 inline constexpr std::string_view kCascadeIndices[] = {"1", "2", "3", "4"};
 inline constexpr std::string_view kFormats[] = {"16", "24", "32f"};
@@ -20,10 +65,6 @@ inline constexpr std::string_view kMapSizes[] = {"256", "512", "1024", "2048", "
 inline constexpr std::string_view kSampleCounts[] = {"8", "16", "32", "64"};
 inline constexpr std::string_view kDepthLights[] = {"key", "fill"};
 inline const GLenum kFormatEnums[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
-
-inline GLenum momentFormat(ShadowFilter f) {
-  return f == ShadowFilter::Esm ? GL_R32F : f == ShadowFilter::Vsm ? GL_RG32F : f == ShadowFilter::Evsm ? GL_RGBA32F : 0;
-}
 
 inline ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
   return isMomentFilter(p.filter) && p.keyType == LightType::Point ? ShadowFilter::Pcf : p.filter;

@@ -53,11 +53,13 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.boolParam({"scene_light", "Scene's own light", "", "A scene with a light of its own (learnopengl: from (-2, 4, "
                "-1) towards the origin, as in the chapter) sets the key light's direction; off: the sliders do."},
               p.sceneLight);
-  if (sceneLit) v.unavailable("the scene sets the light's direction (untick 'Scene's own light')");
-  v.floatParam({"light_elevation", "Light elevation", "deg", "Key light above the horizon; 85..89.9 from zenith is "
-                "grazing (elevation 5..0.1)."}, p.elevationDeg, 0.1f, 90.0f);
-  if (sceneLit) v.unavailable("the scene sets the light's direction (untick 'Scene's own light')");
-  v.floatParam({"light_azimuth", "Light azimuth", "deg", "Key light around the vertical axis."}, p.azimuthDeg, -180.0f, 180.0f);
+  {
+    const ParamVisitor::UnavailableGroup direction(v, sceneLit ? "the scene sets the light's direction (untick 'Scene's "
+                                                                 "own light')" : "");
+    v.floatParam({"light_elevation", "Light elevation", "deg", "Key light above the horizon; 85..89.9 from zenith is "
+                  "grazing (elevation 5..0.1)."}, p.elevationDeg, 0.1f, 90.0f);
+    v.floatParam({"light_azimuth", "Light azimuth", "deg", "Key light around the vertical axis."}, p.azimuthDeg, -180.0f, 180.0f);
+  }
   v.floatParam({"light_distance", "Light distance", "radii", "Spot/point light distance from the scene centre, in "
                 "scene radii (below 1 the light is inside the scene)."}, p.lightDistance, 0.0f, 20.0f);
   v.floatParam({"spot_angle", "Spot angle", "deg", "Full cone angle of the spot light (and its map's field of view)."},
@@ -73,28 +75,30 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
                 p.mapSizeIndex, kMapSizes);
   v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, p.depthFormat, kFormats);
   v.boolParam({"auto_fit", "Auto-fit frustum", "", "Fit the light's extent and near/far to the scene bounds."}, p.autoFit);
-  const char* fitReason = p.keyType != LightType::Directional ? "fitting to the view is for directional lights"
-                          : !p.autoFit                      ? "auto-fit is off: the extent is set by hand"
-                                                            : nullptr;
-  if (fitReason) v.unavailable(fitReason);
-  v.enumParam({"fit", "Directional map covers", "", "scene: the whole scene's bounds (texels wasted on what the camera "
-               "never sees); view: what the camera sees (its frustum clipped to the scene); cascades: the view split "
-               "by depth into cascade_count maps of map_size^2 each, near slices getting the finest texels."},
-              p.fit, kFits);
-  if (fitReason || p.fit != MapFit::Cascades) v.unavailable(fitReason ? fitReason : "fit is not 'cascades'");
-  v.intParam({"cascade_count", "Cascades", "maps", "Cascaded shadow maps: 2..4 maps, each map_size^2 (memory "
-              "grows with the count)."}, p.cascadeCount, 2, 4);
-  if (fitReason || p.fit != MapFit::Cascades) v.unavailable(fitReason ? fitReason : "fit is not 'cascades'");
-  v.floatParam({"split_lambda", "Split lambda", "", "Where the cascades split: 0 uniform in depth, 1 logarithmic "
-                "(equal texel-to-pixel ratio), between: the practical split scheme's blend."}, p.splitLambda, 0.0f, 1.0f);
-  if (fitReason || p.fit != MapFit::Cascades) v.unavailable(fitReason ? fitReason : "fit is not 'cascades'");
-  v.floatParam({"cascade_blend", "Cascade blend band", "", "Fraction of each cascade's depth range over which it "
-                "fades into the next (both are filtered there): hides the seam; 0 = hard switch."},
-               p.cascadeBlend, 0.0f, 0.5f);
-  if (fitReason || p.fit == MapFit::Scene) v.unavailable(fitReason ? fitReason : "fit is 'scene': the map never moves");
-  v.boolParam({"snap_texels", "Snap to texels", "", "Fitted maps move in whole texels and grow in 1/8-octave steps, "
-               "so a moving camera does not make shadow edges shimmer. Off: watch the edges crawl while orbiting."},
-              p.snapTexels);
+  const std::string_view fitReason = p.keyType != LightType::Directional ? "fitting to the view is for directional lights"
+                                     : !p.autoFit                      ? "auto-fit is off: the extent is set by hand"
+                                                                       : "";
+  {
+    const ParamVisitor::UnavailableGroup fitted(v, fitReason);
+    v.enumParam({"fit", "Directional map covers", "", "scene: the whole scene's bounds (texels wasted on what the camera "
+                 "never sees); view: what the camera sees (its frustum clipped to the scene); cascades: the view split "
+                 "by depth into cascade_count maps of map_size^2 each, near slices getting the finest texels."},
+                p.fit, kFits);
+    {
+      const ParamVisitor::UnavailableGroup cascaded(v, p.fit != MapFit::Cascades ? "fit is not 'cascades'" : "");
+      v.intParam({"cascade_count", "Cascades", "maps", "Cascaded shadow maps: 2..4 maps, each map_size^2 (memory "
+                  "grows with the count)."}, p.cascadeCount, 2, 4);
+      v.floatParam({"split_lambda", "Split lambda", "", "Where the cascades split: 0 uniform in depth, 1 logarithmic "
+                    "(equal texel-to-pixel ratio), between: the practical split scheme's blend."}, p.splitLambda, 0.0f, 1.0f);
+      v.floatParam({"cascade_blend", "Cascade blend band", "", "Fraction of each cascade's depth range over which it "
+                    "fades into the next (both are filtered there): hides the seam; 0 = hard switch."},
+                   p.cascadeBlend, 0.0f, 0.5f);
+    }
+    if (p.fit == MapFit::Scene) v.unavailable("fit is 'scene': the map never moves");
+    v.boolParam({"snap_texels", "Snap to texels", "", "Fitted maps move in whole texels and grow in 1/8-octave steps, "
+                 "so a moving camera does not make shadow edges shimmer. Off: watch the edges crawl while orbiting."},
+                p.snapTexels);
+  }
   v.floatParam({"ortho_extent", "Ortho extent", "radii", "Directional light box half-width when auto-fit is off."},
                p.orthoExtent, 1e-3f, 1e3f, true);
   v.floatParam({"near", "Light near", "radii", "Light near plane when auto-fit is off."}, p.nearPlane, 1e-6f, 1e3f, true);
@@ -123,7 +127,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.section("Filter");
   v.enumParam({"filter", "Filter", "", "hard: one tap; hardware-pcf: sampler2DShadow, 2x2 bilinear; pcf: N x N taps; "
                "poisson: a Poisson disk; pcss: blocker search + penumbra-sized PCF; vsm, esm, evsm: filtered maps "
-               "(moments of depth, blurred and mipmapped; a point light falls back to pcf)."}, p.filter, kFilters);
+               "(moments of depth, blurred and mipmapped; a point light falls back to pcf)."}, p.filter, namesOf<kShadowFilters>());
   v.intParam({"pcf_size", "PCF kernel N", "taps", "N x N taps; a compile-time loop bound (one program per N)."},
              p.pcfSize, 1, 15);
   v.choiceParam({"poisson_samples", "Poisson samples", "", "Taps of the Poisson-disk filter."}, p.poissonIndex, kSampleCounts);
@@ -131,37 +135,37 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.boolParam({"rotate", "Rotate per pixel", "", "Rotate the Poisson disk per pixel: banding becomes noise."}, p.rotateSamples);
   v.choiceParam({"blocker_samples", "PCSS blocker samples", "", "Taps of the blocker search."}, p.blockerIndex, kSampleCounts);
   v.choiceParam({"pcss_samples", "PCSS filter samples", "", "Taps of the penumbra filter."}, p.pcssIndex, kSampleCounts);
-  const char* momentReason = !isMomentFilter(p.filter)         ? "only for vsm, esm and evsm"
-                             : p.keyType == LightType::Point ? "filtered maps need a 2D map; the point light uses PCF"
-                                                               : nullptr;
-  if (momentReason) v.unavailable(momentReason);
-  v.intParam({"blur_radius", "Moment blur", "texels", "Separable Gaussian blur of the moment map, texels each way "
-              "(sigma = radius / 2); 0 runs no blur pass."}, p.blurRadius, 0, 16);
-  if (momentReason) v.unavailable(momentReason);
-  v.boolParam({"moment_mips", "Mipmapped moments", "", "Build the moment map's mip chain and sample it trilinearly "
-               "(the level chosen per pixel): distant receivers average many texels, not alias."},
-              p.momentMips);
-  if (momentReason || p.filter == ShadowFilter::Esm) v.unavailable(momentReason ? momentReason : "only for vsm and evsm");
-  v.floatParam({"min_variance", "Minimum variance", "", "Floor on the variance (normalised depth squared): too small, "
-                "acne-like noise; too large, contact shadows fade."}, p.minVariance, 0.0f, 1e-2f, true);
-  if (p.filter != ShadowFilter::Vsm) v.unavailable("only for vsm");
-  v.floatParam({"bleed_reduction", "Light-bleeding reduction", "", "VSM: p -> (p - a) / (1 - a) cuts the light that "
-                "bleeds through a second occluder behind the first, at the price of darker penumbrae."},
-               p.bleedReduction, 0.0f, 0.95f);
-  if (p.filter != ShadowFilter::Esm) v.unavailable("only for esm");
-  v.floatParam({"esm_exponent", "ESM exponent c", "", "exp(c t) in 32-bit float: larger c, sharper and less leaky "
-                "contact, until exp(c) nears float's limit at c = 88."}, p.esmExponent, 1.0f, 85.0f);
-  if (p.filter != ShadowFilter::Evsm) v.unavailable("only for evsm");
-  v.floatParam({"evsm_positive", "EVSM positive exponent", "", "exp(c+ t) and its square are stored: c+ <= 42 keeps "
-                "the square finite in 32-bit float."}, p.evsmPositive, 1.0f, 42.0f);
-  if (p.filter != ShadowFilter::Evsm) v.unavailable("only for evsm");
-  v.floatParam({"evsm_negative", "EVSM negative exponent", "", "-exp(-c- t) and its square: the second warp that "
-                "catches what the first lets bleed."}, p.evsmNegative, 1.0f, 42.0f);
+  const std::string_view momentReason = !isMomentFilter(p.filter)       ? "only for vsm, esm and evsm"
+                                        : p.keyType == LightType::Point ? "filtered maps need a 2D map; the point light uses PCF"
+                                                                        : "";
+  {
+    const ParamVisitor::UnavailableGroup filtered(v, momentReason);
+    v.intParam({"blur_radius", "Moment blur", "texels", "Separable Gaussian blur of the moment map, texels each way "
+                "(sigma = radius / 2); 0 runs no blur pass."}, p.blurRadius, 0, 16);
+    v.boolParam({"moment_mips", "Mipmapped moments", "", "Build the moment map's mip chain and sample it trilinearly "
+                 "(the level chosen per pixel): distant receivers average many texels, not alias."},
+                p.momentMips);
+    if (p.filter == ShadowFilter::Esm) v.unavailable("only for vsm and evsm");
+    v.floatParam({"min_variance", "Minimum variance", "", "Floor on the variance (normalised depth squared): too small, "
+                  "acne-like noise; too large, contact shadows fade."}, p.minVariance, 0.0f, 1e-2f, true);
+    if (p.filter != ShadowFilter::Vsm) v.unavailable("only for vsm");
+    v.floatParam({"bleed_reduction", "Light-bleeding reduction", "", "VSM: p -> (p - a) / (1 - a) cuts the light that "
+                  "bleeds through a second occluder behind the first, at the price of darker penumbrae."},
+                 p.bleedReduction, 0.0f, 0.95f);
+    if (p.filter != ShadowFilter::Esm) v.unavailable("only for esm");
+    v.floatParam({"esm_exponent", "ESM exponent c", "", "exp(c t) in 32-bit float: larger c, sharper and less leaky "
+                  "contact, until exp(c) nears float's limit at c = 88."}, p.esmExponent, 1.0f, 85.0f);
+    const ParamVisitor::UnavailableGroup evsm(v, p.filter != ShadowFilter::Evsm ? "only for evsm" : "");
+    v.floatParam({"evsm_positive", "EVSM positive exponent", "", "exp(c+ t) and its square are stored: c+ <= 42 keeps "
+                  "the square finite in 32-bit float."}, p.evsmPositive, 1.0f, 42.0f);
+    v.floatParam({"evsm_negative", "EVSM negative exponent", "", "-exp(-c- t) and its square: the second warp that "
+                  "catches what the first lets bleed."}, p.evsmNegative, 1.0f, 42.0f);
+  }
   v.section("View");
   v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - stored "
                "depth in units of the bias: green = ample margin, orange = nearly acne, red = acne, grey = a real "
                "shadow); texel-density; pcss-blocker; pcss-penumbra; cascades (one colour each, the blend band "
-               "striped, magenta = a gap); depth-raw/-linear (the map; a cube unrolled)."}, p.view, kViews);
+               "striped, magenta = a gap); depth-raw/-linear (the map; a cube unrolled)."}, p.view, namesOf<kShadowViews>());
   v.choiceParam({"depth_light", "Depth view of", "", "Which light's map the depth views show."}, p.depthLight, kDepthLights);
   if (p.fit != MapFit::Cascades || p.depthLight != 0) v.unavailable("the key light has one map");
   v.choiceParam({"depth_cascade", "Depth view cascade", "", "Which cascade's map the depth views show."},
@@ -432,7 +436,7 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
   for (int layer = 0; layer < layers; ++layer) {
     auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
                            size + (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
-                           (keyMap_.hasMoments() ? " + " + std::string(kFilters[int(filter)]) + " moments" : ""));
+                           (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : ""));
     keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer, state);
   }
   if (keyMap_.hasMoments() && (params.blurRadius > 0 || params.momentMips)) {
@@ -474,7 +478,7 @@ void ShadowsLab::render(Frame& frame) {
     const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
     {
       auto pass = frame.pass("shadow map: fill spot " + size +
-                             (isMomentFilter(filter) ? " + " + std::string(kFilters[int(filter)]) + " moments" : ""));
+                             (isMomentFilter(filter) ? " + " + filterName(filter) + " moments" : ""));
       Program& depth = fetch(kFillDepthSlot, depthSpec(false, false, filter));
       if (isMomentFilter(filter)) {
         depth.use();
@@ -568,7 +572,7 @@ std::vector<std::string> ShadowsLab::warnings() const {
   if ((p.view == ShadowView::PcssBlocker || p.view == ShadowView::PcssPenumbra) && p.filter != ShadowFilter::Pcss)
     w.push_back("the PCSS views show data only with filter = pcss");
   if (isMomentFilter(p.filter) && p.keyType == LightType::Point)
-    w.push_back(std::string(kFilters[int(p.filter)]) + " needs a 2D map: the point light's cube map is filtered with "
+    w.push_back(filterName(p.filter) + " needs a 2D map: the point light's cube map is filtered with "
                 "pcf (" + std::to_string(p.pcfSize) + "x" + std::to_string(p.pcfSize) + ") instead");
   if (p.fit != MapFit::Scene && (p.keyType != LightType::Directional || !p.autoFit))
     w.push_back("fit = " + std::string(kFits[int(p.fit)]) + " applies to an auto-fitted directional light only");

@@ -7,10 +7,11 @@
 // (ESM); Lauritzen and McCool 2008 (EVSM).
 // Read next: shaders/shadows/shadow_filters.glsl, tutorials/shadows.md.
 #pragma once
+#include <bit>
 #include <memory>
 #include <optional>
 
-#include "labs/lab.h"
+#include "lab/lab.h"
 #include "labs/shadows/light_rig.h"
 #include "labs/shadows/shadow_map.h"
 
@@ -18,16 +19,13 @@ namespace shadelab {
 
 class RayScene;
 
-enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm };
+// The filters and views, and what each needs, are tables in shadow_options.h.
+enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm, Count };
 enum class ShadowView {
-  Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, Cascades, DepthRaw, DepthLinear
+  Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, Cascades, DepthRaw, DepthLinear, Count
 };
 enum class DepthFormat { D16, D24, D32F };
 enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
-
-inline bool isMomentFilter(ShadowFilter f) {
-  return f == ShadowFilter::Vsm || f == ShadowFilter::Esm || f == ShadowFilter::Evsm;
-}
 
 struct ShadowsParams {
   LightType keyType = LightType::Directional;
@@ -86,9 +84,10 @@ struct ShadowsParams {
   float sceneScale = 1.0f;
 
   int mapSize() const { return 256 << mapSizeIndex; }
+  static constexpr int mapSizeIndexOf(int size) { return std::countr_zero(unsigned(size / 256)); }
 };
 
-class ShadowsLab final : public LabWithParams<ShadowsParams> {
+class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
  public:
   ShadowsLab();
   ~ShadowsLab() override;
@@ -97,6 +96,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   std::string_view title() const override { return "Shadows: maps, bias, PCF, PCSS"; }
   std::string_view summary() const override;
   std::string_view defaultScene() const override { return "shadow-test"; }
+  std::vector<SceneRecipe> scenes() const override;
 
   void visitParams(ParamVisitor& v) override;
   SceneNeeds needs() const override;
@@ -108,6 +108,8 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   std::vector<ProgramRef> activePrograms() const override;
   std::vector<std::string> warnings() const override;
 
+  // Judge: the lab is its own.
+  Judge* judge() override { return this; }
   ReferenceSpec reference() const override;
   TraceWork traceReference(Frame& frame) override;
   Settings measuredView() const override { return {{"view", "visibility"}}; }
@@ -118,7 +120,6 @@ class ShadowsLab final : public LabWithParams<ShadowsParams> {
   Settings metricNotes() const override;
   std::vector<StressCase> stressCases() const override;
   std::vector<SweepAxis> standardSweep() const override;
-  std::vector<SceneRecipe> scenes() const override;
 
   // The filter the programs use: filtered maps need a 2D map, so a point light gets 3x3 PCF.
   ShadowFilter effectiveFilter() const;

@@ -7,6 +7,7 @@
 #include "scene/procedural.h"
 
 #include "labs/shadows/ray_visibility.h"
+#include "labs/shadows/shadow_options.h"
 #include "labs/shadows/shadows_lab.h"
 
 namespace shadelab {
@@ -20,11 +21,22 @@ ReferenceSpec ShadowsLab::reference() const {
   spec.traced = true;
   spec.displayEncoded = false;  // visibility, not colour
   spec.truth = "ray-traced";
-  spec.overrides = {{"filter", "hard"}, {"map_size", "2048"}, {"depth_format", "24"}, {"fit", "scene"},
-                    {"bias", "2.5"}, {"slope_bias", "4"}, {"normal_offset", "0"}, {"offset_factor", "0"},
-                    {"offset_units", "0"}, {"pcf_size", "3"}, {"receiver_plane", "on"}, {"cull_front", "off"},
-                    {"border_clamp", "on"}, {"far_fix", "on"}, {"view", "visibility"}, {"show_frustum", "off"},
-                    {"fill_light", "off"}};
+  spec.overrides = edits<ShadowsLab>(params, [](ShadowsParams& p) {
+    const ShadowsParams defaults;
+    p.filter = ShadowFilter::Hard;
+    p.mapSizeIndex = ShadowsParams::mapSizeIndexOf(2048);
+    p.depthFormat = DepthFormat::D24;
+    p.fit = MapFit::Scene;
+    p.bias = defaults.bias, p.slopeBias = defaults.slopeBias;
+    p.normalOffset = p.offsetFactor = p.offsetUnits = 0.0f;
+    p.pcfSize = 3;
+    p.receiverPlane = true;
+    p.cullFront = false;
+    p.borderClamp = p.farFix = true;
+    p.view = ShadowView::Visibility;
+    p.showFrustum = false;
+    p.fillLight = false;
+  });
   spec.description = "Embree ray-traced visibility of the key light on the same triangles and camera, two truths in "
                      "one image: the point light (one ray per pixel; visibility_rmse_hard, misclassified_pct, acne_pct, "
                      "leak_pct) and the area light of light_radius (8x8 stratified rays over its disk; "
@@ -101,62 +113,122 @@ Settings ShadowsLab::metricNotes() const {
 }
 
 std::vector<SweepAxis> ShadowsLab::standardSweep() const {
-  return {{"filter", {"hard", "hardware-pcf", "pcf:pcf_size=3", "pcf:pcf_size=5", "poisson", "pcss", "vsm", "esm",
-                      "evsm"}},
+  SweepAxis filters{"filter", {}};
+  for (const ShadowFilterRow& row : kShadowFilters) {
+    if (row.sweep[0].empty()) filters.values.emplace_back(row.name);
+    for (std::string_view value : row.sweep)
+      if (!value.empty()) filters.values.emplace_back(value);
+  }
+  return {filters,
           {"map_size", {"512", "1024", "2048", "4096"}},
           {"bias", {"0:slope_bias=0", "2.5:slope_bias=4"}}};  // no bias at all, and the default
 }
 
 std::vector<StressCase> ShadowsLab::stressCases() const {
+  const auto edit = [](auto change) { return fromDefaults<ShadowsLab>(change); };
   return {
-      {"grazing-85", {{"light_elevation", "5"}}, "", "", "grazing light"},
-      {"grazing-89.9", {{"light_elevation", "0.1"}}, "", "", "grazing light"},
-      {"grazing-89.9-pcss", {{"light_elevation", "0.1"}, {"filter", "pcss"}}, "", "", "grazing light"},
-      {"point-light-inside-sphere", {{"light_type", "point"}, {"light_distance", "0"}}, "sphere", "", "inside geometry"},
-      {"spot-light-inside-scene", {{"light_type", "spot"}, {"light_distance", "0.3"}}, "", "", "inside the scene"},
-      {"near-far-ratio-1e4", {{"light_type", "spot"}, {"auto_fit", "off"}, {"near", "0.001"}, {"far", "10"}}, "", "", ""},
-      {"near-far-ratio-1e6", {{"light_type", "spot"}, {"auto_fit", "off"}, {"near", "0.00001"}, {"far", "10"}}, "", "",
-       "far/near ratio"},
-      {"point-near-far-ratio-1e6", {{"light_type", "point"}, {"auto_fit", "off"}, {"near", "0.00001"}, {"far", "10"}},
+      {"grazing-85", edit([](ShadowsParams& p) { p.elevationDeg = 5.0f; }), "", "", "grazing light"},
+      {"grazing-89.9", edit([](ShadowsParams& p) { p.elevationDeg = 0.1f; }), "", "", "grazing light"},
+      {"grazing-89.9-pcss", edit([](ShadowsParams& p) { p.elevationDeg = 0.1f, p.filter = ShadowFilter::Pcss; }), "",
+       "", "grazing light"},
+      {"point-light-inside-sphere",
+       edit([](ShadowsParams& p) { p.keyType = LightType::Point, p.lightDistance = 0.0f; }), "sphere", "",
+       "inside geometry"},
+      {"spot-light-inside-scene", edit([](ShadowsParams& p) { p.keyType = LightType::Spot, p.lightDistance = 0.3f; }),
+       "", "", "inside the scene"},
+      {"near-far-ratio-1e4", edit([](ShadowsParams& p) {
+         p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 0.001f, p.farPlane = 10.0f;
+       }),
+       "", "", ""},
+      {"near-far-ratio-1e6", edit([](ShadowsParams& p) {
+         p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+       }),
        "", "", "far/near ratio"},
-      {"near-beyond-far", {{"auto_fit", "off"}, {"near", "5"}, {"far", "1"}}, "", "", "near plane is beyond"},
-      {"light-radius-0-pcss", {{"filter", "pcss"}, {"light_radius", "0"}}, "", "", "radius 0"},
-      {"light-radius-huge-pcss", {{"filter", "pcss"}, {"light_radius", "10"}}, "", "", "larger than the scene"},
-      {"ortho-extent-tiny", {{"auto_fit", "off"}, {"ortho_extent", "0.001"}}, "", "", "outside the map"},
-      {"ortho-extent-huge", {{"auto_fit", "off"}, {"ortho_extent", "1000"}, {"near", "0.001"}, {"far", "10000"}}, "",
+      {"point-near-far-ratio-1e6", edit([](ShadowsParams& p) {
+         p.keyType = LightType::Point, p.autoFit = false, p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+       }),
+       "", "", "far/near ratio"},
+      {"near-beyond-far", edit([](ShadowsParams& p) { p.autoFit = false, p.nearPlane = 5.0f, p.farPlane = 1.0f; }), "",
+       "", "near plane is beyond"},
+      {"light-radius-0-pcss", edit([](ShadowsParams& p) { p.filter = ShadowFilter::Pcss, p.lightRadius = 0.0f; }), "",
+       "", "radius 0"},
+      {"light-radius-huge-pcss", edit([](ShadowsParams& p) { p.filter = ShadowFilter::Pcss, p.lightRadius = 10.0f; }),
+       "", "", "larger than the scene"},
+      {"ortho-extent-tiny", edit([](ShadowsParams& p) { p.autoFit = false, p.orthoExtent = 0.001f; }), "", "",
+       "outside the map"},
+      {"ortho-extent-huge", edit([](ShadowsParams& p) {
+         p.autoFit = false, p.orthoExtent = 1000.0f, p.nearPlane = 0.001f, p.farPlane = 10000.0f;
+       }),
+       "", "", ""},
+      {"scene-scale-1e-3", edit([](ShadowsParams& p) { p.sceneScale = 0.001f, p.filter = ShadowFilter::Pcss; }), "", "",
+       ""},
+      {"scene-scale-1e4", edit([](ShadowsParams& p) { p.sceneScale = 10000.0f, p.filter = ShadowFilter::Pcss; }), "",
        "", ""},
-      {"scene-scale-1e-3", {{"scene_scale", "0.001"}, {"filter", "pcss"}}, "", "", ""},
-      {"scene-scale-1e4", {{"scene_scale", "10000"}, {"filter", "pcss"}}, "", "", ""},
-      {"point-scale-1e-3", {{"scene_scale", "0.001"}, {"light_type", "point"}}, "", "", ""},
-      {"pcss-blocker-at-receiver", {{"filter", "pcss"}, {"bias", "0"}, {"slope_bias", "0"}}, "", "", "no bias"},
-      {"point-pcss", {{"light_type", "point"}, {"filter", "pcss"}, {"light_radius", "0.3"}}, "", "", ""},
-      {"no-light-casts", {{"key_casts", "off"}}, "", "", "no light casts"},
-      {"empty-scene", {{"fill_light", "on"}}, "empty", "", ""},
-      {"map-8192-d32f", {{"map_size", "8192"}, {"depth_format", "32f"}, {"filter", "pcf"}, {"pcf_size", "15"}}, "",
-       "", ""},
+      {"point-scale-1e-3", edit([](ShadowsParams& p) { p.sceneScale = 0.001f, p.keyType = LightType::Point; }), "", "",
+       ""},
+      {"pcss-blocker-at-receiver",
+       edit([](ShadowsParams& p) { p.filter = ShadowFilter::Pcss, p.bias = 0.0f, p.slopeBias = 0.0f; }), "", "",
+       "no bias"},
+      {"point-pcss", edit([](ShadowsParams& p) {
+         p.keyType = LightType::Point, p.filter = ShadowFilter::Pcss, p.lightRadius = 0.3f;
+       }),
+       "", "", ""},
+      {"no-light-casts", edit([](ShadowsParams& p) { p.keyCasts = false; }), "", "", "no light casts"},
+      {"empty-scene", edit([](ShadowsParams& p) { p.fillLight = true; }), "empty", "", ""},
+      {"map-8192-d32f", edit([](ShadowsParams& p) {
+         p.mapSizeIndex = ShadowsParams::mapSizeIndexOf(8192), p.depthFormat = DepthFormat::D32F,
+         p.filter = ShadowFilter::Pcf, p.pcfSize = 15;
+       }),
+       "", "", ""},
       // Filtered maps: moments of depth in 32-bit float must stay finite however stretched the depth range.
-      {"vsm-near-far-ratio-1e6", {{"filter", "vsm"}, {"light_type", "spot"}, {"auto_fit", "off"}, {"near", "0.00001"},
-                                  {"far", "10"}}, "", "", "far/near ratio"},
-      {"esm-near-far-ratio-1e6", {{"filter", "esm"}, {"esm_exponent", "85"}, {"light_type", "spot"}, {"auto_fit", "off"},
-                                  {"near", "0.00001"}, {"far", "10"}}, "", "", "far/near ratio"},
-      {"evsm-near-far-ratio-1e6", {{"filter", "evsm"}, {"evsm_positive", "42"}, {"evsm_negative", "42"},
-                                   {"light_type", "spot"}, {"auto_fit", "off"}, {"near", "0.00001"}, {"far", "10"}},
+      {"vsm-near-far-ratio-1e6", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Vsm, p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 1e-5f,
+         p.farPlane = 10.0f;
+       }),
        "", "", "far/near ratio"},
-      {"vsm-near-far-ratio-1e-4", {{"filter", "vsm"}, {"light_type", "spot"}, {"auto_fit", "off"}, {"near", "10"},
-                                   {"far", "0.001"}}, "", "", "near plane is beyond"},
-      {"esm-near-far-ratio-1e-4", {{"filter", "esm"}, {"auto_fit", "off"}, {"near", "10"}, {"far", "0.001"}}, "", "",
-       "near plane is beyond"},
-      {"evsm-ortho-huge", {{"filter", "evsm"}, {"auto_fit", "off"}, {"ortho_extent", "1000"}, {"near", "0.001"},
-                           {"far", "10000"}}, "", "", ""},
-      {"vsm-no-blur-no-mips-scale-1e4", {{"filter", "vsm"}, {"blur_radius", "0"}, {"moment_mips", "off"},
-                                         {"min_variance", "0"}, {"scene_scale", "10000"}}, "", "", ""},
-      {"vsm-point-light-falls-back", {{"filter", "vsm"}, {"light_type", "point"}}, "", "", "point light"},
+      {"esm-near-far-ratio-1e6", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Esm, p.esmExponent = 85.0f, p.keyType = LightType::Spot, p.autoFit = false,
+         p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+       }),
+       "", "", "far/near ratio"},
+      {"evsm-near-far-ratio-1e6", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Evsm, p.evsmPositive = 42.0f, p.evsmNegative = 42.0f, p.keyType = LightType::Spot,
+         p.autoFit = false, p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+       }),
+       "", "", "far/near ratio"},
+      {"vsm-near-far-ratio-1e-4", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Vsm, p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 10.0f,
+         p.farPlane = 0.001f;
+       }),
+       "", "", "near plane is beyond"},
+      {"esm-near-far-ratio-1e-4", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Esm, p.autoFit = false, p.nearPlane = 10.0f, p.farPlane = 0.001f;
+       }),
+       "", "", "near plane is beyond"},
+      {"evsm-ortho-huge", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Evsm, p.autoFit = false, p.orthoExtent = 1000.0f, p.nearPlane = 0.001f,
+         p.farPlane = 10000.0f;
+       }),
+       "", "", ""},
+      {"vsm-no-blur-no-mips-scale-1e4", edit([](ShadowsParams& p) {
+         p.filter = ShadowFilter::Vsm, p.blurRadius = 0, p.momentMips = false, p.minVariance = 0.0f,
+         p.sceneScale = 10000.0f;
+       }),
+       "", "", ""},
+      {"vsm-point-light-falls-back",
+       edit([](ShadowsParams& p) { p.filter = ShadowFilter::Vsm, p.keyType = LightType::Point; }), "", "",
+       "point light"},
       // Cascades and view fitting at the edges of what they handle.
-      {"cascades-grazing-0.1", {{"fit", "cascades"}, {"light_elevation", "0.1"}, {"filter", "pcss"}}, "", "",
-       "grazing light"},
-      {"cascades-scale-1e-3", {{"fit", "cascades"}, {"scene_scale", "0.001"}, {"filter", "evsm"}}, "", "", ""},
-      {"view-fit-camera-sees-nothing", {{"fit", "view"}}, "", "yaw=0,pitch=80,distance=5,target=0;300;0", ""},
-      {"cascades-learnopengl-far-100", {{"fit", "cascades"}, {"cascade_count", "4"}, {"split_lambda", "1"}},
+      {"cascades-grazing-0.1",
+       edit([](ShadowsParams& p) { p.fit = MapFit::Cascades, p.elevationDeg = 0.1f, p.filter = ShadowFilter::Pcss; }),
+       "", "", "grazing light"},
+      {"cascades-scale-1e-3",
+       edit([](ShadowsParams& p) { p.fit = MapFit::Cascades, p.sceneScale = 0.001f, p.filter = ShadowFilter::Evsm; }),
+       "", "", ""},
+      {"view-fit-camera-sees-nothing", edit([](ShadowsParams& p) { p.fit = MapFit::View; }), "",
+       "yaw=0,pitch=80,distance=5,target=0;300;0", ""},
+      {"cascades-learnopengl-far-100",
+       edit([](ShadowsParams& p) { p.fit = MapFit::Cascades, p.cascadeCount = 4, p.splitLambda = 1.0f; }),
        "learnopengl", "", ""},
   };
 }

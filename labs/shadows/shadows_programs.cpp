@@ -5,7 +5,7 @@
 
 #include "labs/shadows/shadow_options.h"
 #include "labs/shadows/shadows_lab.h"
-#include "labs/variants.h"
+#include "lab/variants.h"
 
 namespace shadelab {
 
@@ -22,27 +22,25 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) c
   if (p.farFix) spec.defines.emplace_back("FAR_FIX", "1");
   if (p.receiverPlane) spec.defines.emplace_back("RECEIVER_PLANE", "1");
   const ShadowFilter filter = effectiveFilterOf(p);
-  static const char* filterDefine[] = {"FILTER_HARD", "FILTER_HW_PCF", "FILTER_PCF", "FILTER_POISSON",
-                                       "FILTER_PCSS", "FILTER_VSM", "FILTER_ESM", "FILTER_EVSM"};
-  spec.defines.emplace_back(filterDefine[int(filter)], "1");
-  if (filter == ShadowFilter::Pcf) spec.defines.emplace_back("PCF_SIZE", std::to_string(p.pcfSize));
-  if (filter == ShadowFilter::Poisson) {
-    spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.poissonIndex));
-    if (p.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
+  spec.defines.emplace_back(rowOf(kShadowFilters, filter).define, "1");
+  switch (rowOf(kShadowFilters, filter).settings) {
+    case FilterSettings::None: break;
+    case FilterSettings::PcfSize: spec.defines.emplace_back("PCF_SIZE", std::to_string(p.pcfSize)); break;
+    case FilterSettings::PoissonDisk:
+      spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.poissonIndex));
+      if (p.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
+      break;
+    case FilterSettings::PcssSamples:
+      spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.blockerIndex));
+      spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.pcssIndex));
+      break;
   }
   if (const int cascades = cascadeCountOf(p); cascades >= 2 && p.keyCasts && !gbuffer)
     spec.defines.emplace_back("CASCADE_COUNT", std::to_string(cascades));
-  if (filter == ShadowFilter::Pcss) {
-    spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.blockerIndex));
-    spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.pcssIndex));
-  }
-  static const char* viewDefine[] = {"VIEW_SHADED", "VIEW_VISIBILITY", "VIEW_BIAS_HEAT", "VIEW_TEXEL_DENSITY",
-                                     "VIEW_PCSS_BLOCKER", "VIEW_PCSS_PENUMBRA", "VIEW_CASCADES", "VIEW_SHADED",
-                                     "VIEW_SHADED"};
   spec.defines.emplace_back(internal == InternalView::Position ? "VIEW_POSITION"
                             : internal == InternalView::Normal ? "VIEW_NORMAL"
-                                                               : viewDefine[int(p.view)], "1");
-  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.keyType)]) + " " + std::string(kFilters[int(filter)]);
+                                                               : rowOf(kShadowViews, p.view).define, "1");
+  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.keyType)]) + " " + filterName(filter);
   return spec;
 }
 
@@ -56,10 +54,9 @@ ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses, ShadowFilter filter
   spec.stages.push_back({GL_FRAGMENT_SHADER, moments ? "shadows/moments.frag" : "shadows/depth.frag"});
   if (cube) spec.defines.emplace_back(oneCubePass ? "CUBE_MAP" : "CUBE_FACE", "1");
   if (moments) {
-    static const char* filterDefine[] = {"", "", "", "", "", "FILTER_VSM", "FILTER_ESM", "FILTER_EVSM"};
     spec.defines.emplace_back("MOMENTS", "1");
-    spec.defines.emplace_back(filterDefine[int(filter)], "1");
-    spec.name += " " + std::string(kFilters[int(filter)]) + " moments";
+    spec.defines.emplace_back(rowOf(kShadowFilters, filter).define, "1");
+    spec.name += " " + filterName(filter) + " moments";
   }
   return spec;
 }
@@ -91,7 +88,8 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard), depthSpec(true, false, ShadowFilter::Hard),
                                   depthSpec(true, true, ShadowFilter::Hard), linesSpec(), blurSpec()};
-  for (ShadowFilter f : {ShadowFilter::Vsm, ShadowFilter::Esm, ShadowFilter::Evsm}) all.push_back(depthSpec(false, false, f));
+  for (const ShadowFilterRow& row : kShadowFilters)
+    if (isMomentFilter(row.value)) all.push_back(depthSpec(false, false, row.value));
   ShadowsParams p;
   for (int type = 0; type < 3; ++type) {
     p.keyType = LightType(type);
@@ -104,16 +102,29 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   all.push_back(depthViewSpec(p));
 
   // The lit program: every value of every parameter that shapes it, and every pair of values of
-  // any two of them (labs/variants.h). A filter and its own settings form one dimension: pcf_size
+  // any two of them (app/lab/variants.h). A filter and its own settings form one dimension: pcf_size
   // means nothing to pcss.
   struct FilterVariant { ShadowFilter filter; int a = 0, b = 0; };
-  std::vector<FilterVariant> filters = {{ShadowFilter::Hard}, {ShadowFilter::HardwarePcf}, {ShadowFilter::Vsm},
-                                        {ShadowFilter::Esm}, {ShadowFilter::Evsm}};
-  for (int n = 1; n <= 15; ++n) filters.push_back({ShadowFilter::Pcf, n});
-  for (int i = 0; i < 4; ++i)
-    for (int rotate = 0; rotate < 2; ++rotate) filters.push_back({ShadowFilter::Poisson, i, rotate});
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) filters.push_back({ShadowFilter::Pcss, i, j});
+  std::vector<FilterVariant> filters;  // the filters without settings of their own first
+  for (const ShadowFilterRow& row : kShadowFilters)
+    if (row.settings == FilterSettings::None) filters.push_back({row.value});
+  for (const ShadowFilterRow& row : kShadowFilters) {
+    const ShadowFilter f = row.value;
+    switch (row.settings) {
+      case FilterSettings::None: break;
+      case FilterSettings::PcfSize:  // N x N taps
+        for (int n = 1; n <= 15; ++n) filters.push_back({f, n});
+        break;
+      case FilterSettings::PoissonDisk:  // 8 << i taps, rotated or not
+        for (int i = 0; i < 4; ++i)
+          for (int rotate = 0; rotate < 2; ++rotate) filters.push_back({f, i, rotate});
+        break;
+      case FilterSettings::PcssSamples:  // 8 << i blocker-search and 8 << j filter taps
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j) filters.push_back({f, i, j});
+        break;
+    }
+  }
   const ShadowView views[] = {ShadowView::Shaded, ShadowView::Visibility, ShadowView::BiasHeat, ShadowView::TexelDensity,
                               ShadowView::PcssBlocker, ShadowView::PcssPenumbra, ShadowView::Cascades};
   const int viewCount = int(std::size(views)) + 2;  // + the reference's g-buffer views
@@ -123,9 +134,12 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
     q.keyType = LightType(row[0]);
     const FilterVariant& f = filters[size_t(row[1])];
     q.filter = f.filter;
-    q.pcfSize = f.filter == ShadowFilter::Pcf ? f.a : q.pcfSize;
-    if (f.filter == ShadowFilter::Poisson) q.poissonIndex = f.a, q.rotateSamples = f.b == 1;
-    if (f.filter == ShadowFilter::Pcss) q.blockerIndex = f.a, q.pcssIndex = f.b;
+    switch (rowOf(kShadowFilters, f.filter).settings) {
+      case FilterSettings::None: break;
+      case FilterSettings::PcfSize: q.pcfSize = f.a; break;
+      case FilterSettings::PoissonDisk: q.poissonIndex = f.a, q.rotateSamples = f.b == 1; break;
+      case FilterSettings::PcssSamples: q.blockerIndex = f.a, q.pcssIndex = f.b; break;
+    }
     InternalView internal = InternalView::None;
     if (row[2] < int(std::size(views))) q.view = views[row[2]];
     else internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;

@@ -11,8 +11,6 @@
 namespace shadelab {
 namespace {
 
-constexpr std::string_view kTechniques[] = {"none",         "normal-map",     "bump", "displacement", "tessellation",
-                                            "parallax",     "steep-parallax", "pom",  "truth"};
 constexpr std::string_view kSurfaceAt[] = {"top", "bottom"};
 constexpr std::string_view kGreen[] = {"opengl", "directx"};
 constexpr std::string_view kDecoding[] = {"linear", "srgb"};
@@ -20,12 +18,11 @@ constexpr std::string_view kFilters[] = {"nearest", "bilinear", "trilinear", "an
 constexpr std::string_view kBumpForms[] = {"consistent", "games101"};
 constexpr std::string_view kDisplacedNormals[] = {"from-height", "unchanged"};
 constexpr std::string_view kSources[] = {"generated", "mesh", "screen"};
-constexpr std::string_view kViews[] = {"shaded", "normals", "tangent-angle", "height", "uv"};
 
 // Texture units of surface.frag's samplers.
 enum Unit { kColorUnit = 0, kNormalUnit = 1, kHeightUnit = 2 };
 
-bool usesHeight(SurfaceTechnique t) { return t == SurfaceTechnique::Bump || isParallax(t) || isDisplacing(t); }
+bool usesHeight(SurfaceTechnique t) { return rowOf(kSurfaceTechniques, t).needsHeight; }
 
 gl::Texture2D onePixel(const uint8_t rgba[4]) {
   gl::SamplerState s;
@@ -51,7 +48,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.enumParam({"technique", "Technique", "", "none: the mesh's own normal; normal-map; bump: a normal from the height "
                "field's slope; displacement: vertices moved on a subdivided mesh; tessellation: the same on the GPU; "
                "parallax, steep-parallax, pom: texture lookups moved as if the surface had depth; truth: the field on "
-               "a very fine mesh, what the others are judged against."}, p.technique, kTechniques);
+               "a very fine mesh, what the others are judged against."}, p.technique, namesOf<kSurfaceTechniques>());
   v.floatParam({"height_scale", "Height scale", "world", "World units of relief for a height of 1 (negative: dents "
                 "for bumps). The procedural maps are baked for 0.04."}, p.heightScale, -2.0f, 2.0f);
   v.enumParam({"surface_at", "Surface at", "", "top: the polygon is the top of the height field and mortar is recessed "
@@ -108,7 +105,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                 "low angles show relief best."}, p.lightElevationDeg, -10.0f, 90.0f);
   v.floatParam({"light_azimuth", "Light azimuth", "deg", "Around the view axis of the wall."}, p.lightAzimuthDeg, -180.0f, 180.0f);
   v.enumParam({"view", "View", "", "shaded; normals (world, 0.5 +- 0.5); tangent-angle (the tangent against "
-               "compare_with's, 0 slate .. angle_scale yellow, dimmed by the light); height; uv."}, p.view, kViews);
+               "compare_with's, 0 slate .. angle_scale yellow, dimmed by the light); height; uv."}, p.view, namesOf<kSurfaceViews>());
   v.intParam({"tessellation", "Sphere segments", "", "Segments of the brick sphere."}, p.tessellation, 8, 256);
 }
 
@@ -116,8 +113,9 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
 // tangent space with a per-vertex source, the tangent-angle view, or the overlay.
 bool SurfaceLab::needsTangents() const {
   const auto t = params.technique;
-  const bool tangentSpace = t == SurfaceTechnique::NormalMap || t == SurfaceTechnique::Bump || isParallax(t) ||
-                            (isDisplacing(t) && params.displacedNormals == DisplacedNormals::FromHeight);
+  const SurfaceChange changes = rowOf(kSurfaceTechniques, t).changes;
+  const bool tangentSpace = changes == SurfaceChange::Normal || changes == SurfaceChange::Lookup ||
+                            (changes == SurfaceChange::Geometry && params.displacedNormals == DisplacedNormals::FromHeight);
   const bool compared = params.view == SurfaceView::TangentAngle &&
                         (params.tangents != TangentSource::Screen || params.compareWith != TangentSource::Screen);
   return (tangentSpace && params.tangents != TangentSource::Screen) || compared || params.overlay;
@@ -142,7 +140,7 @@ ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
   ProgramSpec spec;
   SurfaceTechnique t = hasUvs ? p.technique : SurfaceTechnique::None;  // no UVs: nothing to map
   if (t == SurfaceTechnique::Tessellation && !gl::hasTessellation()) t = SurfaceTechnique::None;  // a 3.3 context
-  spec.name = "surface/" + std::string(kTechniques[int(t)]);
+  spec.name = "surface/" + std::string(rowOf(kSurfaceTechniques, t).name);
   const bool tess = t == SurfaceTechnique::Tessellation;
   spec.stages.push_back({GL_VERTEX_SHADER, "surface/surface.vert"});
   if (tess) {
@@ -151,26 +149,10 @@ ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
     spec.defines.emplace_back("TESSELLATED", "1");
   }
   spec.stages.push_back({GL_FRAGMENT_SHADER, "surface/surface.frag"});
-  auto define = [&](const char* name) { spec.defines.emplace_back(name, "1"); };
-  switch (t) {
-    case SurfaceTechnique::NormalMap: define("NORMAL_MAP"); break;
-    case SurfaceTechnique::Bump:
-      define("BUMP");
-      if (p.bumpForm == BumpForm::Games101) define("BUMP_GAMES101");
-      break;
-    case SurfaceTechnique::Displacement:
-    case SurfaceTechnique::Truth:
-      define("DISPLACE_VERTEX");
-      if (p.displacedNormals == DisplacedNormals::FromHeight) define("HEIGHT_NORMALS");
-      break;
-    case SurfaceTechnique::Tessellation:
-      if (p.displacedNormals == DisplacedNormals::FromHeight) define("HEIGHT_NORMALS");
-      break;
-    case SurfaceTechnique::Parallax: define("PARALLAX"); break;
-    case SurfaceTechnique::SteepParallax: define("STEEP"); break;
-    case SurfaceTechnique::Pom: define("POM"); break;
-    case SurfaceTechnique::None: break;
-  }
+  auto define = [&](std::string_view name) { spec.defines.emplace_back(name, "1"); };
+  if (const std::string_view own = rowOf(kSurfaceTechniques, t).define; !own.empty()) define(own);
+  if (t == SurfaceTechnique::Bump && p.bumpForm == BumpForm::Games101) define("BUMP_GAMES101");
+  if (isDisplacing(t) && p.displacedNormals == DisplacedNormals::FromHeight) define("HEIGHT_NORMALS");
   if (isParallax(t) && p.selfShadow) define("SELF_SHADOW");
   if (t == SurfaceTechnique::Truth && p.selfShadow) define("TRUE_SHADOW");
   if (p.tangents == TangentSource::Screen) define("TANGENTS_SCREEN");
@@ -178,8 +160,7 @@ ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
   if (p.addToOldNormal) define("WRONG_ADD_TO_NORMAL");
   if (p.noRenormalize) define("WRONG_NO_RENORMALIZE");
   if (p.noOrthogonalize) define("WRONG_NO_ORTHOGONALIZE");
-  static const char* views[] = {"VIEW_SHADED", "VIEW_NORMALS", "VIEW_TANGENT_ANGLE", "VIEW_HEIGHT", "VIEW_UV"};
-  define(views[int(p.view)]);
+  define(rowOf(kSurfaceViews, p.view).define);
   return spec;
 }
 
@@ -193,8 +174,8 @@ ProgramSpec SurfaceLab::overlaySpec() {
 std::vector<ProgramSpec> SurfaceLab::allPrograms() const {
   std::vector<ProgramSpec> all = {overlaySpec()};
   SurfaceParams p;
-  for (int t = 0; t < 9; ++t)
-    for (int view = 0; view < 5; ++view) {
+  for (int t = 0; t < int(SurfaceTechnique::Count); ++t)
+    for (int view = 0; view < int(SurfaceView::Count); ++view) {
       p = SurfaceParams{};
       p.technique = SurfaceTechnique(t);
       p.view = SurfaceView(view);
@@ -298,7 +279,7 @@ void SurfaceLab::render(Frame& frame) {
   if (params.technique == SurfaceTechnique::Tessellation && !tess)
     frameNotes_.push_back("this context has no tessellation stages (OpenGL 4.0): the surface is drawn without "
                           "displacement; pick displacement for the same on a subdivided mesh");
-  std::string what = std::string(kTechniques[int(params.technique)]);
+  std::string what = std::string(rowOf(kSurfaceTechniques, params.technique).name);
   if (params.technique == SurfaceTechnique::Displacement || params.technique == SurfaceTechnique::Truth)
     what += ", subdivision " + std::to_string(key.level);
   if (tess) what += ", level " + std::to_string(params.tessLevel);

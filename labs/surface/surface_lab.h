@@ -8,27 +8,56 @@
 // Tatarchuk 2006 (parallax occlusion mapping); Mikkelsen 2008 (tangent frames).
 // Read next: shaders/surface/surface.frag, shaders/surface/height.glsl, tutorials/surface.md.
 #pragma once
-#include "labs/lab.h"
+#include "lab/lab.h"
+#include "lab/technique.h"
 #include "labs/surface/surface_geometry.h"
 
 namespace shadelab {
 
-enum class SurfaceTechnique { None, NormalMap, Bump, Displacement, Tessellation, Parallax, SteepParallax, Pom, Truth };
-// The techniques that move the texture lookup instead of the geometry.
-inline bool isParallax(SurfaceTechnique t) {
-  return t == SurfaceTechnique::Parallax || t == SurfaceTechnique::SteepParallax || t == SurfaceTechnique::Pom;
-}
-// The techniques that displace the mesh (on the CPU's subdivision, the GPU's, or as the truth).
-inline bool isDisplacing(SurfaceTechnique t) {
-  return t == SurfaceTechnique::Displacement || t == SurfaceTechnique::Tessellation || t == SurfaceTechnique::Truth;
-}
+enum class SurfaceTechnique { None, NormalMap, Bump, Displacement, Tessellation, Parallax, SteepParallax, Pom, Truth, Count };
+
+// What a technique changes: the shading normal, the texture lookup (parallax), or the mesh itself
+// (on the CPU's subdivision, the GPU's, or as the truth).
+enum class SurfaceChange { Nothing, Normal, Lookup, Geometry };
+
+// The techniques: a new one is its row here, its branch in surface.frag (under its define) and its test.
+struct SurfaceTechniqueRow {
+  SurfaceTechnique value;
+  std::string_view name;    // --set surface.technique=NAME
+  std::string_view define;  // what surface.vert/.frag test ("": nothing of its own)
+  SurfaceChange changes;
+  bool needsHeight;         // reads the height map
+};
+inline constexpr SurfaceTechniqueRow kSurfaceTechniques[] = {
+    {SurfaceTechnique::None, "none", "", SurfaceChange::Nothing, false},
+    {SurfaceTechnique::NormalMap, "normal-map", "NORMAL_MAP", SurfaceChange::Normal, false},
+    {SurfaceTechnique::Bump, "bump", "BUMP", SurfaceChange::Normal, true},
+    {SurfaceTechnique::Displacement, "displacement", "DISPLACE_VERTEX", SurfaceChange::Geometry, true},
+    {SurfaceTechnique::Tessellation, "tessellation", "", SurfaceChange::Geometry, true},  // its stages displace
+    {SurfaceTechnique::Parallax, "parallax", "PARALLAX", SurfaceChange::Lookup, true},
+    {SurfaceTechnique::SteepParallax, "steep-parallax", "STEEP", SurfaceChange::Lookup, true},
+    {SurfaceTechnique::Pom, "pom", "POM", SurfaceChange::Lookup, true},
+    {SurfaceTechnique::Truth, "truth", "DISPLACE_VERTEX", SurfaceChange::Geometry, true},
+};
+static_assert(coversEnum<SurfaceTechnique>(kSurfaceTechniques));
+
+inline bool isParallax(SurfaceTechnique t) { return rowOf(kSurfaceTechniques, t).changes == SurfaceChange::Lookup; }
+inline bool isDisplacing(SurfaceTechnique t) { return rowOf(kSurfaceTechniques, t).changes == SurfaceChange::Geometry; }
 enum class SurfaceAt { Top, Bottom };
 enum class GreenConvention { OpenGl, DirectX };
 enum class MapDecoding { Linear, Srgb };
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
 enum class BumpForm { Consistent, Games101 };
 enum class DisplacedNormals { FromHeight, Unchanged };
-enum class SurfaceView { Shaded, Normals, TangentAngle, Height, Uv };
+enum class SurfaceView { Shaded, Normals, TangentAngle, Height, Uv, Count };
+inline constexpr NamedDefine<SurfaceView> kSurfaceViews[] = {
+    {SurfaceView::Shaded, "shaded", "VIEW_SHADED"},
+    {SurfaceView::Normals, "normals", "VIEW_NORMALS"},
+    {SurfaceView::TangentAngle, "tangent-angle", "VIEW_TANGENT_ANGLE"},
+    {SurfaceView::Height, "height", "VIEW_HEIGHT"},
+    {SurfaceView::Uv, "uv", "VIEW_UV"},
+};
+static_assert(coversEnum<SurfaceView>(kSurfaceViews));
 
 struct SurfaceParams {
   SurfaceTechnique technique = SurfaceTechnique::Pom;
@@ -59,7 +88,7 @@ struct SurfaceParams {
   int tessellation = 64;       // segments of the brick sphere
 };
 
-class SurfaceLab final : public LabWithParams<SurfaceParams> {
+class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
  public:
   static constexpr int kMaxTriangles = 2'500'000;  // subdivision stops before this (memory, llvmpipe)
 
@@ -80,6 +109,8 @@ class SurfaceLab final : public LabWithParams<SurfaceParams> {
   std::vector<std::string> warnings() const override;
   std::vector<LabPanel> panels() const override;
 
+  // Judge: the lab is its own.
+  Judge* judge() override { return this; }
   ReferenceSpec reference() const override;
   std::vector<MeasuredView> measuredViews() const override;
   Metrics viewMetrics(const std::vector<ImageF>& images, const std::vector<ImageF>& references) const override;

@@ -14,10 +14,16 @@ ReferenceSpec SurfaceLab::reference() const {
   spec.truth = "true surface";
   spec.description = "the height field applied to the mesh subdivided to about one vertex per texel, normals from the "
                      "field per fragment, Blinn-Phong as every technique; 4 x 4 jittered frames per pixel";
-  spec.overrides = {{"technique", "truth"},       {"displaced_normals", "from-height"}, {"tangents", "generated"},
-                    {"add_to_old_normal", "off"}, {"no_renormalize", "off"},           {"no_orthogonalize", "off"},
-                    {"decoding", "linear"},       {"green", "opengl"},                 {"filter", "trilinear"},
-                    {"overlay", "off"}};
+  spec.overrides = edits<SurfaceLab>(params, [](SurfaceParams& p) {
+    p.technique = SurfaceTechnique::Truth;
+    p.displacedNormals = DisplacedNormals::FromHeight;
+    p.tangents = TangentSource::Generated;
+    p.addToOldNormal = p.noRenormalize = p.noOrthogonalize = false;
+    p.decoding = MapDecoding::Linear;
+    p.green = GreenConvention::OpenGl;
+    p.filter = TextureFilter::Trilinear;
+    p.overlay = false;
+  });
   spec.jitterGrid = 4;
   return spec;
 }
@@ -106,30 +112,64 @@ std::vector<SweepAxis> SurfaceLab::standardSweep() const {
 }
 
 std::vector<StressCase> SurfaceLab::stressCases() const {
+  const auto edit = [](auto change) { return fromDefaults<SurfaceLab>(change); };
   return {
-      {"huge-displacement", {{"technique", "displacement"}, {"height_scale", "2"}}, "", "", "folds"},
-      {"huge-tessellated", {{"technique", "tessellation"}, {"height_scale", "-2"}, {"tess_level", "64"}}, "", "", "dents"},
-      {"negative-pom", {{"technique", "pom"}, {"height_scale", "-0.3"}}, "", "", "dents"},
-      {"spike-displacement", {{"technique", "displacement"}, {"height_scale", "0.5"}}, "spike", "", ""},
-      {"spike-pom", {{"technique", "pom"}, {"layers", "128"}, {"height_scale", "0.8"}}, "spike", "", "folds"},
-      {"spike-bump", {{"technique", "bump"}, {"height_scale", "0.5"}}, "spike", "", ""},
-      {"zero-length-normals", {{"technique", "normal-map"}}, "broken-maps", "", ""},
-      {"zero-length-normals-no-renormalize", {{"technique", "normal-map"}, {"no_renormalize", "on"}}, "broken-maps", "",
-       "no renormalisation"},
-      {"mirrored-uvs", {{"technique", "normal-map"}, {"view", "tangent-angle"}}, "uv-trouble", "", ""},
-      {"degenerate-uvs", {{"technique", "pom"}, {"overlay", "on"}}, "uv-trouble", "", "degenerate UVs"},
-      {"degenerate-uvs-screen-frame", {{"technique", "bump"}, {"tangents", "screen"}}, "uv-trouble", "", ""},
-      {"grazing-pom-128", {{"technique", "pom"}, {"layers", "128"}, {"self_shadow", "on"}}, "bricks-grazing",
-       "pitch=0.5,distance=3", ""},
-      {"grazing-parallax", {{"technique", "parallax"}, {"height_scale", "0.3"}}, "bricks-grazing", "pitch=0.5", ""},
-      {"grazing-screen-tangents", {{"technique", "normal-map"}, {"tangents", "screen"}}, "bricks-grazing", "pitch=0.2", ""},
-      {"no-uvs", {{"technique", "pom"}}, "no-uvs", "", "no UVs"},
-      {"subdivision-capped", {{"technique", "displacement"}, {"subdivision", "10"}}, "bricks-sphere", "", "capped"},
-      {"every-wrong-step", {{"technique", "normal-map"}, {"add_to_old_normal", "on"}, {"no_renormalize", "on"},
-                            {"no_orthogonalize", "on"}, {"decoding", "srgb"}, {"green", "directx"}}, "", "", "wrong step"},
-      {"light-below", {{"technique", "pom"}, {"self_shadow", "on"}, {"light_elevation", "-10"}}, "", "", "below"},
-      {"one-layer", {{"technique", "steep-parallax"}, {"layers", "1"}}, "", "", "fewer than 4 layers"},
-      {"truth-on-the-sphere", {{"technique", "truth"}}, "bricks-sphere", "", ""},
+      {"huge-displacement",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Displacement, p.heightScale = 2.0f; }), "", "",
+       "folds"},
+      {"huge-tessellated", edit([](SurfaceParams& p) {
+         p.technique = SurfaceTechnique::Tessellation, p.heightScale = -2.0f, p.tessLevel = 64;
+       }),
+       "", "", "dents"},
+      {"negative-pom", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Pom, p.heightScale = -0.3f; }), "",
+       "", "dents"},
+      {"spike-displacement",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Displacement, p.heightScale = 0.5f; }), "spike", "",
+       ""},
+      {"spike-pom",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Pom, p.layers = 128, p.heightScale = 0.8f; }),
+       "spike", "", "folds"},
+      {"spike-bump", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Bump, p.heightScale = 0.5f; }),
+       "spike", "", ""},
+      {"zero-length-normals", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::NormalMap; }), "broken-maps",
+       "", ""},
+      {"zero-length-normals-no-renormalize",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::NormalMap, p.noRenormalize = true; }), "broken-maps",
+       "", "no renormalisation"},
+      {"mirrored-uvs",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::NormalMap, p.view = SurfaceView::TangentAngle; }),
+       "uv-trouble", "", ""},
+      {"degenerate-uvs", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Pom, p.overlay = true; }),
+       "uv-trouble", "", "degenerate UVs"},
+      {"degenerate-uvs-screen-frame",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Bump, p.tangents = TangentSource::Screen; }),
+       "uv-trouble", "", ""},
+      {"grazing-pom-128",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Pom, p.layers = 128, p.selfShadow = true; }),
+       "bricks-grazing", "pitch=0.5,distance=3", ""},
+      {"grazing-parallax",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Parallax, p.heightScale = 0.3f; }), "bricks-grazing",
+       "pitch=0.5", ""},
+      {"grazing-screen-tangents",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::NormalMap, p.tangents = TangentSource::Screen; }),
+       "bricks-grazing", "pitch=0.2", ""},
+      {"no-uvs", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Pom; }), "no-uvs", "", "no UVs"},
+      {"subdivision-capped",
+       edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Displacement, p.subdivision = 10; }),
+       "bricks-sphere", "", "capped"},
+      {"every-wrong-step", edit([](SurfaceParams& p) {
+         p.technique = SurfaceTechnique::NormalMap, p.addToOldNormal = true, p.noRenormalize = true,
+         p.noOrthogonalize = true, p.decoding = MapDecoding::Srgb, p.green = GreenConvention::DirectX;
+       }),
+       "", "", "wrong step"},
+      {"light-below", edit([](SurfaceParams& p) {
+         p.technique = SurfaceTechnique::Pom, p.selfShadow = true, p.lightElevationDeg = -10.0f;
+       }),
+       "", "", "below"},
+      {"one-layer", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::SteepParallax, p.layers = 1; }), "", "",
+       "fewer than 4 layers"},
+      {"truth-on-the-sphere", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Truth; }), "bricks-sphere",
+       "", ""},
   };
 }
 

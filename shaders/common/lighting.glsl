@@ -29,6 +29,8 @@ vec3 safeNormalize(vec3 v, vec3 fallback) {
   return len2 > 1e-30 ? v * inversesqrt(len2) : fallback;
 }
 
+#include "common/specular.glsl"  // specularFactor()
+
 struct Reflected {
   vec3 diffuse;   // to be multiplied by the surface albedo
   vec3 specular;  // white highlight
@@ -50,12 +52,7 @@ Reflected reflectLights(vec3 position, vec3 normal, vec3 eye) {
     float NdotL = dot(N, L);
     if (NdotL <= 0.0) continue;  // light behind the surface: no diffuse, no highlight
     r.diffuse += u_kd * NdotL * E;
-#ifdef SPECULAR_PHONG
-    float s = max(dot(reflect(-L, N), V), 0.0);
-#else
-    float s = max(dot(N, safeNormalize(L + V, N)), 0.0);
-#endif
-    r.specular += u_ks * pow(s, u_shininess) * E;
+    r.specular += u_ks * pow(specularFactor(N, L, V), u_shininess) * E;
   }
   return r;
 }

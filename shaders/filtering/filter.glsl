@@ -41,16 +41,7 @@ vec4 nearestLookup(sampler2D s, vec2 uv, int level) {
   return texel(s, ivec2(floor(fract(uv) * vec2(levelSize(s, level)))), level);
 }
 
-vec4 bilinearLookup(sampler2D s, vec2 uv, int level) {
-  vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers
-  ivec2 i = ivec2(floor(p));
-  vec2 f = p - vec2(i);
-  vec4 u00 = texel(s, i, level), u10 = texel(s, i + ivec2(1, 0), level);
-  vec4 u01 = texel(s, i + ivec2(0, 1), level), u11 = texel(s, i + ivec2(1, 1), level);
-  vec4 u0 = mix(u00, u10, f.x);  // lerp along x, below ...
-  vec4 u1 = mix(u01, u11, f.x);  // ... and above
-  return mix(u0, u1, f.y);       // then along y
-}
+#include "filtering/bilinear.glsl"  // bilinearLookup()
 
 // Catmull-Rom (Keys, a = -1/2): interpolates the texels, overshoots a little at hard edges.
 vec4 catmullRom(float t) {

@@ -29,13 +29,7 @@ vec3 bumpNormalGames101(vec2 uv, float kh, float kn) {
   return normalize(vec3(-dU, -dV, 1.0));
 }
 
-vec3 heightNormal(vec2 uv, vec2 scale) {
-  vec2 e = u_heightTexel;
-  float dhdu = (heightAt(uv + vec2(e.x, 0.0)) - heightAt(uv - vec2(e.x, 0.0))) / (2.0 * e.x);
-  float dhdv = (heightAt(uv + vec2(0.0, e.y)) - heightAt(uv - vec2(0.0, e.y))) / (2.0 * e.y);
-  vec2 slope = u_heightScale * vec2(dhdu, dhdv) / max(scale, vec2(1e-8));
-  return normalize(vec3(-slope, 1.0));
-}
+#include "surface/bump.glsl"  // the consistent form: heightNormal()
 
 // The view direction in tangent space, towards the eye; its z is clamped so a grazing ray cannot
 // push the lookup to infinity (beyond about 87 degrees from the normal the shift stops growing).
@@ -53,29 +47,7 @@ vec2 parallaxOffset(vec2 uv, vec3 viewTs, vec2 scale, out float depth) {
   return uv - parallaxDirection(viewTs, scale) * depth;
 }
 
-// Steep parallax and parallax occlusion mapping: march the view ray down through `layers` depth
-// slices until it is under the height field; POM then interpolates between the last two slices.
-// The loop is bounded by `layers` whatever the angle.
-vec2 parallaxMarch(vec2 uv, vec3 viewTs, vec2 scale, int layers, bool occlusion, out float depth) {
-  float layerDepth = 1.0 / float(layers);
-  vec2 step = parallaxDirection(viewTs, scale) * layerDepth;
-  float current = 0.0;
-  vec2 at = uv;
-  float surface = 1.0 - heightAt(at);
-  for (int i = 0; i < layers && current < surface; ++i) {
-    at -= step;
-    current += layerDepth;
-    surface = 1.0 - heightAt(at);
-  }
-  depth = current;
-  if (!occlusion) return at;
-  // Between the layer before (above the surface) and this one (below): where the ray crossed.
-  vec2 before = at + step;
-  float after = surface - current, above = (1.0 - heightAt(before)) - (current - layerDepth);
-  float w = after / min(after - above, -1e-6);
-  depth = mix(current, current - layerDepth, w);
-  return mix(at, before, w);
-}
+#include "surface/parallax_march.glsl"  // steep parallax and POM: parallaxMarch()
 
 // Self-shadowing: from the point found (at `depth`), march towards the light; any height field
 // above the ray shadows it. Returns 1 lit .. 0 shadowed (soft: how far above the ray it rose).

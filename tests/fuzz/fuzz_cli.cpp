@@ -6,7 +6,7 @@
 
 #include "cli/options.h"
 #include "fuzz_files.h"
-#include "labs/lab.h"
+#include "lab/lab.h"
 #include "scene/camera.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -3,7 +3,7 @@
 // camera is parsed, which is everything applying it does short of drawing.
 #include "fuzz_files.h"
 #include "host/preset.h"
-#include "labs/lab.h"
+#include "lab/lab.h"
 #include "scene/camera.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

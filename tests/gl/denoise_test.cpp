@@ -32,14 +32,14 @@ TEST(Denoise, WeldedCopiesGetIdenticalOffsetsAndUnweldedOnesCrack) {
   ASSERT_EQ(host.set("denoise.input=generated"), "");
   host.settle();
   host.renderFrame({160, 120});
-  Metrics m = host.lab().meshMetrics();
+  Metrics m = host.lab().judge()->meshMetrics();
   EXPECT_EQ(test::metric(m, "attribute_gap_max"), 0.0) << "copies of a position must move together";
   EXPECT_GT(test::metric(m, "seam_gap_max"), 0.0) << "the bilinear map path reads different texels across a seam";
   EXPECT_LT(test::metric(m, "angle_error_deg"), test::metric(m, "noisy_angle_deg"));
   ASSERT_EQ(host.set("denoise.weld=off"), "");
   host.settle();
   host.renderFrame({160, 120});
-  m = host.lab().meshMetrics();
+  m = host.lab().judge()->meshMetrics();
   EXPECT_GT(test::metric(m, "attribute_gap_max"), 0.05) << "unwelded, seam copies are smoothed apart";
   EXPECT_EQ(gl::drainErrors(), "");
 }

@@ -67,7 +67,7 @@ TEST(Filtering, ShaderTrilinearIsCloseToHardwareTrilinear) {
 TEST(Filtering, TheReferenceHasConvergedAt16x16Samples) {
   auto host = filteringHost({});
   host->renderFrame({160, 90});
-  const ReferenceSpec spec = host->lab().reference();
+  const ReferenceSpec spec = host->lab().judge()->reference();
   ASSERT_EQ(spec.jitterGrid, 16);
   host->applySettings(spec.overrides);
   const gl::RenderTarget target = gl::RenderTarget::create({160, 90});

@@ -33,7 +33,7 @@ TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
       const Settings defaults = host.currentSettings();
       int afterRound[3] = {0, 0, 0};
       for (int round = 0; round < 3; ++round) {
-        for (auto& stress : host.lab().stressCases()) {
+        for (auto& stress : stressCasesOf(host.lab())) {
           if (!stress.scene.empty()) continue;
           EXPECT_EQ(host.applySettings(stress.settings), "") << stress.name;
           host.settle();

@@ -19,7 +19,7 @@ ShadowsLab& shadowsOf(LabHost& host) { return dynamic_cast<ShadowsLab&>(host.lab
 // The learnopengl scene as the chapter sets it up: 800x600, a 1024^2 map (per cascade: 512^2,
 // the same memory over four).
 double misclassified(LabHost& host, const ImageF& truth) {
-  return test::metric(host.lab().metrics(host.renderMeasured({800, 600}), truth), "misclassified_pct");
+  return test::metric(host.lab().judge()->metrics(host.renderMeasured({800, 600}), truth), "misclassified_pct");
 }
 
 ImageF drawn(LabHost& host, glm::ivec2 size) {
@@ -201,13 +201,13 @@ TEST(ShadowMaps, FilteredMapsSoftenAndEsmAndEvsmImitateTheAreaLight) {
     return 100.0 * soft / std::max(valid, 1);
   };
   const ImageF hardImage = host->renderMeasured({240, 135});
-  const double hard = test::metric(host->lab().metrics(hardImage, truth), "visibility_rmse_area");
+  const double hard = test::metric(host->lab().judge()->metrics(hardImage, truth), "visibility_rmse_area");
   for (const char* f : {"vsm", "esm", "evsm"}) {
     host->set(std::string("shadows.filter=") + f);
     host->set("shadows.blur_radius=4");
     const ImageF img = host->renderMeasured({240, 135});
     ASSERT_EQ(countNonFinite(img), 0u) << f;
-    const double area = test::metric(host->lab().metrics(img, truth), "visibility_rmse_area");
+    const double area = test::metric(host->lab().judge()->metrics(img, truth), "visibility_rmse_area");
     std::printf("%s: visibility_rmse_area %.4f (hard %.4f), penumbra pixels %.2f%% (hard %.2f%%)\n", f, area, hard,
                 penumbraPct(img), penumbraPct(hardImage));
     EXPECT_GT(penumbraPct(img), 2.0 * penumbraPct(hardImage) + 1.0) << f;

@@ -58,7 +58,7 @@ TEST(Shadows, AgreesWithRayTracedTruthWhereTheMapIsTriviallyRight) {
     const ImageF truth = host->renderReference({192, 108});
     const ImageF map = host->renderMeasured({192, 108});
     ASSERT_EQ(countNonFinite(truth) + countNonFinite(map), 0u);
-    const Metrics m = host->lab().metrics(map, truth);
+    const Metrics m = host->lab().judge()->metrics(map, truth);
     EXPECT_GT(metric(m, "valid_pct"), 20.0) << type;
     EXPECT_LT(metric(m, "misclassified_pct"), 0.5) << type;
   }
@@ -67,14 +67,14 @@ TEST(Shadows, AgreesWithRayTracedTruthWhereTheMapIsTriviallyRight) {
 TEST(Shadows, NoBiasMeansAcneAndTheMetricSeesIt) {
   auto host = shadowsHost({"shadows.filter=hard", "shadows.bias=0", "shadows.slope_bias=0"});
   const ImageF truth = host->renderReference({192, 108});
-  const Metrics acne = host->lab().metrics(host->renderMeasured({192, 108}), truth);
+  const Metrics acne = host->lab().judge()->metrics(host->renderMeasured({192, 108}), truth);
   host->set("shadows.bias=2.5");
   host->set("shadows.slope_bias=4");
-  const Metrics biased = host->lab().metrics(host->renderMeasured({192, 108}), truth);
+  const Metrics biased = host->lab().judge()->metrics(host->renderMeasured({192, 108}), truth);
   EXPECT_GT(metric(acne, "acne_pct"), 10.0);
   EXPECT_LT(metric(biased, "acne_pct"), 0.5);
   host->set("shadows.bias=40");  // far too much: shadows detach from their casters
-  const Metrics panned = host->lab().metrics(host->renderMeasured({192, 108}), truth);
+  const Metrics panned = host->lab().judge()->metrics(host->renderMeasured({192, 108}), truth);
   EXPECT_GT(metric(panned, "leak_pct"), metric(biased, "leak_pct"));
 }
 
@@ -123,14 +123,14 @@ TEST(Shadows, DepthViewShowsEitherLightsMap) {
 TEST(Shadows, SoftShadowsApproachTheAreaLight) {
   auto host = shadowsHost({"shadows.filter=pcss", "shadows.light_radius=0.1"});
   const ImageF truth = host->renderReference({160, 90});
-  const double pcss = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
+  const double pcss = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
   host->set("shadows.filter=hard");  // the same area-light truth, judged against a hard shadow
-  const double hard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
+  const double hard = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
   EXPECT_LT(pcss, hard);
   // ... while against the point-light truth, the hard shadow is the closer of the two.
-  const double hardVsHard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
+  const double hardVsHard = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
   host->set("shadows.filter=pcss");
-  const double pcssVsHard = metric(host->lab().metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
+  const double pcssVsHard = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
   EXPECT_LT(hardVsHard, pcssVsHard);
 }
 

@@ -107,7 +107,7 @@ INSTANTIATE_TEST_SUITE_P(Grade, EveryExercise, ::testing::ValuesIn(listExercises
                          [](const auto& info) { return slug(info.param); });
 
 TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
-  const fs::path student = seeded("half-vector", "common/lighting.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)",
+  const fs::path student = seeded("half-vector", "common/specular.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)",
                                   "max(dot(N, L + V), 0.0)");
   const Graded g = grade("shading/blinn-phong", student, reportDir("half-vector"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
@@ -117,7 +117,7 @@ TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
 
 TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
   const fs::path student =
-      seeded("bias-sign", "shadows/shadow_filters.glsl",
+      seeded("bias-sign", "shadows/pcf.glsl",
              "lit += tapCompare(type, L, map, cube, q, vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
              "{\n      vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1);\n"
              "      lit += receiverDepth(type, L, q, o) + q.bias > tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0;\n    }");
@@ -129,7 +129,7 @@ TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
 }
 
 TEST(GradeMistakes, TapsInTextureCoordinatesInsteadOfTexelsFailTheSoftEdge) {
-  const fs::path student = seeded("tap-space", "shadows/shadow_filters.glsl",
+  const fs::path student = seeded("tap-space", "shadows/pcf.glsl",
                                   "vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
                                   "(vec2(i, j) - 0.5 * float(PCF_SIZE - 1)) * q.texel);");
   const Graded g = grade("shadows/pcf", student, reportDir("tap-space"));
@@ -142,7 +142,7 @@ TEST(GradeMistakes, TapsInTextureCoordinatesInsteadOfTexelsFailTheSoftEdge) {
 
 TEST(GradeMistakes, ABumpNormalLeaningWithTheSlopeFailsTheRelief) {
   const fs::path student =
-      seeded("bump-sign", "surface/height.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));");
+      seeded("bump-sign", "surface/bump.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));");
   const Graded g = grade("surface/bump", student, reportDir("bump-sign"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.check("shaded relief")["result"], "FAIL");
@@ -150,7 +150,7 @@ TEST(GradeMistakes, ABumpNormalLeaningWithTheSlopeFailsTheRelief) {
 }
 
 TEST(GradeMistakes, BilinearWithoutTheHalfTexelShiftFailsTheMagnifiedRamps) {
-  const fs::path student = seeded("half-texel", "filtering/filter.glsl",
+  const fs::path student = seeded("half-texel", "filtering/bilinear.glsl",
                                   "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
                                   "vec2 p = fract(uv) * vec2(levelSize(s, level));");
   const Graded g = grade("filtering/bilinear", student, reportDir("half-texel"));
@@ -163,11 +163,11 @@ TEST(GradeFailures, AnEndlessLoopIsStoppedByTheWatchdogAndGradingGoesOn) {
   // llvmpipe stops any one loop after 65535 iterations; 8 transcendental steps per iteration for
   // every fragment of two lights still take far longer than the watchdog's 8 s, while a few
   // hundred vertices take a fraction of a second. On a GPU it would never end.
-  std::string body = "float s = dot(N, L);\n    for (int i = 0; i >= 0; ++i) {  // never ends\n";
-  for (int k = 0; k < 8; ++k) body += "      s = fract(sin(s * 1.37 + " + std::to_string(k) + ".0) * 43758.5);\n";
-  body += "    }";
+  std::string body = "float s = dot(N, L);\n  for (int i = 0; i >= 0; ++i) {  // never ends\n";
+  for (int k = 0; k < 8; ++k) body += "    s = fract(sin(s * 1.37 + " + std::to_string(k) + ".0) * 43758.5);\n";
+  body += "  }\n  return s;";
   const fs::path student =
-      seeded("endless", "common/lighting.glsl", "float s = max(dot(N, safeNormalize(L + V, N)), 0.0);", body);
+      seeded("endless", "common/specular.glsl", "return max(dot(N, safeNormalize(L + V, N)), 0.0);", body);
   // 8 s: the per-fragment configurations need minutes; the per-vertex one a fraction of a second
   // alone, a few on a loaded machine or in the sanitizer build.
   const Graded g = grade("shading/blinn-phong", student, reportDir("endless"), "--watchdog 8");
@@ -182,11 +182,11 @@ TEST(GradeFailures, AnEndlessLoopIsStoppedByTheWatchdogAndGradingGoesOn) {
 }
 
 TEST(GradeFailures, ASyntaxErrorIsReportedAtTheStudentsFileAndLine) {
-  const fs::path student = seeded("syntax", "common/lighting.glsl", "float s = max(dot(N, safeNormalize(L + V, N)), 0.0);",
-                                  "float s = max(dot(N, safeNormalize(L + V, N)), 0.0)");
+  const fs::path student = seeded("syntax", "common/specular.glsl", "return max(dot(N, safeNormalize(L + V, N)), 0.0);",
+                                  "return max(dot(N, safeNormalize(L + V, N)), 0.0)");
   const Graded g = grade("shading/blinn-phong", student, reportDir("syntax"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
-  const std::string where = (student / "common/lighting.glsl").string() + ":";
+  const std::string where = (student / "common/specular.glsl").string() + ":";
   EXPECT_NE(g.output.find(where), std::string::npos) << g.output;
   EXPECT_NE(g.output.find("error"), std::string::npos);
   EXPECT_NE(g.output.find("\n    "), std::string::npos) << "the source line and its caret";
@@ -205,27 +205,27 @@ TEST(GradeFailures, AnIncludeLeavingTheStudentsFolderIsRefusedAndNeverQuoted) {
   const std::string marker = "NEIGHBOURS_SOLUTION_MARKER";
   const fs::path bob = classDir / "bob" / "common";
   fs::create_directories(bob);
-  std::ofstream(bob / "lighting.glsl") << "// " << marker << "\n" << marker << " vec3 broken(\n";
-  std::ifstream builtin(builtinShaderDir() / "common/lighting.glsl");
-  std::stringstream lighting;
-  lighting << builtin.rdbuf();
+  std::ofstream(bob / "specular.glsl") << "// " << marker << "\n" << marker << " vec3 broken(\n";
+  std::ifstream builtin(builtinShaderDir() / "common/specular.glsl");
+  std::stringstream specular;
+  specular << builtin.rdbuf();
 
   struct Form {
     std::string name, includeLine, expected;  // the student's first line; what the output must say
   };
   const std::vector<Form> forms = {
       {"absolute", "#include \"/etc/os-release\"", ":1:11: error: " + std::string(kSandboxRule)},
-      {"dotdot", "#include \"../../bob/common/lighting.glsl\"", ":1:11: error: " + std::string(kSandboxRule)},
-      {"linkedfolder", "#include \"borrowed/lighting.glsl\"", ":1:11: error: " + std::string(kSandboxRule)},
+      {"dotdot", "#include \"../../bob/common/specular.glsl\"", ":1:11: error: " + std::string(kSandboxRule)},
+      {"linkedfolder", "#include \"borrowed/specular.glsl\"", ":1:11: error: " + std::string(kSandboxRule)},
       {"linkedfile", "", std::string(kSandboxRule) + " (a link leads out of"},
   };
   for (auto& form : forms) {
     const fs::path student = classDir / ("alice_" + form.name);
     fs::create_directories(student / "common");
     if (form.name == "linkedfile") {
-      fs::create_symlink(bob / "lighting.glsl", student / "common/lighting.glsl");
+      fs::create_symlink(bob / "specular.glsl", student / "common/specular.glsl");
     } else {
-      std::ofstream(student / "common/lighting.glsl") << form.includeLine << "\n" << lighting.str();
+      std::ofstream(student / "common/specular.glsl") << form.includeLine << "\n" << specular.str();
       if (form.name == "linkedfolder") fs::create_directory_symlink(bob, student / "common" / "borrowed");
     }
     const fs::path reports = classDir / ("report_" + form.name);
@@ -275,6 +275,6 @@ TEST(GradeFailures, AMissingFileIsNotSubmittedAndScoresNothing) {
   const Graded g = grade("surface/bump", empty, reportDir("missing"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.percent(), 0.0);
-  EXPECT_EQ(g.report["exercises"][0]["missing_files"][0], "surface/height.glsl");
+  EXPECT_EQ(g.report["exercises"][0]["missing_files"][0], "surface/bump.glsl");
   EXPECT_NE(g.output.find("not submitted"), std::string::npos);
 }

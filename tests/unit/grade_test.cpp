@@ -110,6 +110,8 @@ TEST(Grade, StartersAreTheLabsShadersOutsideTheirTodoRegion) {
         if (starter[i].find(end) != std::string::npos) e = i, ++markers;
       }
       ASSERT_EQ(markers, 2u) << "one begin and one end marker";
+      // The exercised function alone, in its own include: not a copy of a whole shader of the lab's.
+      EXPECT_LE(starter.size(), 40u);
       ASSERT_LT(b, e);
       const size_t after = starter.size() - e - 1;
       ASSERT_LE(b + after, builtin.size());

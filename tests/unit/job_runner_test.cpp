@@ -7,7 +7,7 @@
 #include <chrono>
 #include <thread>
 
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 
 using namespace shadelab;
 using namespace std::chrono_literals;

@@ -147,3 +147,80 @@ TEST(Params, AnUnavailableParameterSaysWhyOnlyOnItsOwnLine) {
   EXPECT_EQ(set.result(), "");
   EXPECT_EQ(anisotropy, 8);
 }
+
+TEST(Registry, EachRowMakesTheLabItNames) {
+  std::set<std::string_view> seen;
+  for (const LabEntry& entry : labRegistry()) {
+    EXPECT_TRUE(seen.insert(entry.id).second) << entry.id << " is listed twice";
+    const std::unique_ptr<Lab> lab = entry.make();
+    ASSERT_NE(lab, nullptr) << entry.id;
+    EXPECT_EQ(lab->id(), entry.id);
+    EXPECT_EQ(makeLab(entry.id)->id(), entry.id);
+  }
+  EXPECT_EQ(labIds().size(), labRegistry().size());
+  EXPECT_EQ(makeLab("nope"), nullptr);
+}
+
+// The judging half of the contract is optional: a lab that only draws implements none of it, and
+// every front end that asks for a truth or stress cases gets none instead of a crash.
+TEST(Registry, ALabWithoutAJudgeHasNoTruthAndNoStressCases) {
+  struct DrawOnly final : LabWithParams<ShadingParams> {
+    std::string_view id() const override { return "draw-only"; }
+    std::string_view title() const override { return "Draw only"; }
+    std::string_view summary() const override { return ""; }
+    std::string_view defaultScene() const override { return "sphere"; }
+    void visitParams(ParamVisitor&) override {}
+    SceneNeeds needs() const override { return {}; }
+    std::vector<ProgramSpec> allPrograms() const override { return {}; }
+    std::string setup(LabContext&) override { return ""; }
+    void teardown() override {}
+    void render(Frame&) override {}
+    std::vector<ProgramRef> activePrograms() const override { return {}; }
+  } lab;
+  EXPECT_EQ(lab.judge(), nullptr);
+  EXPECT_EQ(referenceOf(lab).kind, TruthKind::None);
+  EXPECT_TRUE(stressCasesOf(lab).empty());
+  ShadingLab judged;
+  EXPECT_EQ(judged.judge(), static_cast<Judge*>(&judged));
+  EXPECT_NE(referenceOf(judged).kind, TruthKind::None);
+}
+
+// A group greys out every parameter inside it with one reason; an outer group's reason wins over an
+// inner one and over a parameter's own, and nothing is greyed once the group is left.
+TEST(Params, AnUnavailableGroupGreysEachOfItsParametersOnce) {
+  int a = 1, b = 1, c = 1, d = 1, e = 1;
+  DescribeParams list("shadows");
+  {
+    const ParamVisitor::UnavailableGroup outer(list, "auto-fit is off");
+    list.intParam({"a", "A", "", "."}, a, 0, 2);
+    const ParamVisitor::UnavailableGroup inner(list, "fit is not 'cascades'");
+    list.unavailable("its own reason");
+    list.intParam({"b", "B", "", "."}, b, 0, 2);
+  }
+  {
+    const ParamVisitor::UnavailableGroup inner(list, "fit is not 'cascades'");
+    list.intParam({"c", "C", "", "."}, c, 0, 2);
+  }
+  const ParamVisitor::UnavailableGroup none(list, "");
+  list.unavailable("its own reason");
+  list.intParam({"d", "D", "", "."}, d, 0, 2);
+  list.intParam({"e", "E", "", "."}, e, 0, 2);
+  ASSERT_EQ(list.lines.size(), 5u);
+  EXPECT_NE(list.lines[0].find("(unavailable: auto-fit is off)"), std::string::npos);
+  EXPECT_NE(list.lines[1].find("(unavailable: auto-fit is off)"), std::string::npos);
+  EXPECT_NE(list.lines[2].find("(unavailable: fit is not 'cascades')"), std::string::npos);
+  EXPECT_NE(list.lines[3].find("(unavailable: its own reason)"), std::string::npos);
+  EXPECT_EQ(list.lines[4].find("unavailable"), std::string::npos);
+}
+
+// Truths' overrides and stress cases are typed edits of the Params struct, turned into the text the
+// host applies: only what the edit changes, spelled as --set takes it.
+TEST(Params, ATypedEditBecomesTheSettingsItChanges) {
+  ShadingLab lab;
+  lab.params.mode = ShadingMode::Flat;
+  const ReferenceSpec truth = lab.reference();
+  EXPECT_EQ(truth.overrides, (Settings{{"mode", "phong"}, {"tessellation", "256"}}));
+  for (auto& [key, value] : truth.overrides) EXPECT_EQ(setParam(lab, key, value), "") << key;
+  EXPECT_EQ(lab.params.mode, ShadingMode::Phong);
+  EXPECT_EQ(lab.params.tessellation, ShadingLab::kReferenceTessellation);
+}

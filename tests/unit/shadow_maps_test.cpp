@@ -11,7 +11,7 @@
 
 #include "labs/shadows/light_rig.h"
 #include "labs/shadows/shadows_lab.h"
-#include "labs/variants.h"
+#include "lab/variants.h"
 
 using namespace shadelab;
 

@@ -36,6 +36,28 @@ class ParamVisitor {
   // it out and shows `reason`, `list` says so. It still holds and accepts a value.
   virtual void unavailable(std::string_view reason) {}
 
+  // Every parameter visited while the guard lives can have no effect here, for one reason ("":
+  // they can): a group greyed out at once. The outermost group's reason is shown, then a
+  // parameter's own unavailable() reason.
+  //   { const ParamVisitor::UnavailableGroup cascadesOnly(v, p.fit != MapFit::Cascades ? "fit is not 'cascades'" : "");
+  //     v.intParam(...); v.floatParam(...); }
+  class UnavailableGroup {
+   public:
+    UnavailableGroup(ParamVisitor& v, std::string_view reason) : v_(v), outer_(v.groupReason_) {
+      if (outer_.empty()) v.groupReason_ = reason;
+    }
+    ~UnavailableGroup() { v_.groupReason_ = outer_; }
+    UnavailableGroup(const UnavailableGroup&) = delete;
+    UnavailableGroup& operator=(const UnavailableGroup&) = delete;
+
+   private:
+    ParamVisitor& v_;
+    std::string_view outer_;
+  };
+  // Why the parameter being visited can have no effect: its group's reason, else `own` (what
+  // unavailable() said for it), else "".
+  std::string_view unavailableReason(std::string_view own) const { return groupReason_.empty() ? own : groupReason_; }
+
   // Enums are stored as enum classes in Params and visited as named choices.
   template <typename E>
   void enumParam(const ParamInfo& info, E& value, std::span<const std::string_view> names) {
@@ -43,6 +65,9 @@ class ParamVisitor {
     choiceParam(info, i, names);
     value = static_cast<E>(i);
   }
+
+ private:
+  std::string_view groupReason_;
 };
 
 // Sets one parameter from text ("0.25", "on", "phong"). Returns "" or a one-line error that

@@ -1,4 +1,4 @@
-#include "labs/params.h"
+#include "lab/params.h"
 
 #include <charconv>
 #include <cmath>
@@ -108,7 +108,8 @@ void DescribeParams::add(const ParamInfo& info, const std::string& type, const s
   std::string line = "  " + labId_ + "." + std::string(info.key) + " = " + value + "  " + type;
   if (!info.units.empty()) line += " " + std::string(info.units);
   line += "\n      " + std::string(info.help);
-  if (!unavailable_.empty()) line += "\n      (unavailable: " + unavailable_ + ")";
+  if (const std::string_view why = unavailableReason(unavailable_); !why.empty())
+    line += "\n      (unavailable: " + std::string(why) + ")";
   unavailable_.clear();
   lines.push_back(line);
 }

@@ -1,4 +1,4 @@
-#include "labs/variants.h"
+#include "lab/variants.h"
 
 #include <cstddef>
 

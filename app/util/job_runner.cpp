@@ -1,4 +1,4 @@
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 
 #include <sys/resource.h>
 #include <sys/syscall.h>

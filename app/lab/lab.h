@@ -1,5 +1,5 @@
-// The Lab interface: one family of rendering techniques, its parameters, what it needs from
-// the scene, how it draws, what it is judged against and how it is stressed.
+// The lab contract: one family of rendering techniques, its parameters, what it needs from the
+// scene and how it draws (Lab), and, where it has a truth, how it is judged and stressed (Judge).
 //
 // Life cycle (driven by app/host/lab_host.cpp):
 //   needs() -> host builds exactly that scene -> setup() -> { update(); render(); }* -> teardown()
@@ -9,6 +9,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -18,10 +19,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/pass_timer.h"
-#include "host/job_runner.h"
+#include "util/job_runner.h"
 #include "gl/texture.h"
-#include "labs/lab_panel.h"
-#include "labs/params.h"
+#include "lab/lab_panel.h"
+#include "lab/params.h"
 #include "measure/accumulator.h"
 #include "measure/image.h"
 #include "measure/report.h"
@@ -107,6 +108,9 @@ struct SweepAxis {
   std::vector<std::string> values;
 };
 
+class Judge;
+
+// Drawing: what every lab implements.
 class Lab {
  public:
   virtual ~Lab() = default;
@@ -133,11 +137,22 @@ class Lab {
   virtual std::vector<ProgramRef> activePrograms() const = 0;
   // What the current configuration clamped, fell back on or cannot do well; shown in the UI.
   virtual std::vector<std::string> warnings() const { return {}; }
-  // Views of the lab's own beside the parameters (labs/lab_panel.h): tables, plots, images.
+  // Views of the lab's own beside the parameters (app/lab/lab_panel.h): tables, plots, images.
   virtual std::vector<LabPanel> panels() const { return {}; }
 
+  // How the lab is judged, or null: a lab without a truth, metrics or stress cases has no Judge
+  // and implements nothing below. A lab that judges usually is its own Judge (returns this).
+  virtual Judge* judge() { return nullptr; }
+  const Judge* judge() const { return const_cast<Lab*>(this)->judge(); }
+};
+
+// Judging: the truth a lab's configurations are measured against, the error numbers, what a
+// sweep varies and plots, and the extreme configurations the stress runner tries.
+class Judge {
+ public:
+  virtual ~Judge() = default;
   // The ground truth of the current configuration (app/host/measurer.h measures against it).
-  virtual ReferenceSpec reference() const { return {}; }
+  virtual ReferenceSpec reference() const = 0;
   // Traced truths: called with the truth's settings applied; does the GL part now (a g-buffer of
   // frame's pixels) and returns the CPU part, which must own everything it reads.
   virtual TraceWork traceReference(Frame& frame) { return {}; }
@@ -165,15 +180,53 @@ class Lab {
   virtual std::vector<SweepAxis> standardSweep() const { return {}; }
 };
 
+// The truth of the lab's current configuration: none for a lab without a Judge.
+ReferenceSpec referenceOf(const Lab& lab);
+// The extreme configurations the stress runner tries: none for a lab without a Judge.
+std::vector<StressCase> stressCasesOf(const Lab& lab);
+
 // Holds the Params struct, so resetting is `params = Params{}` and nothing else.
 template <typename P>
 class LabWithParams : public Lab {
  public:
   void resetParams() override { params = P{}; }
   P params;
+
+ protected:
+  // What `edit` changes in `base`, as the settings text --set, presets and the host take: truths'
+  // overrides, measured views and stress cases written as edits of the Params struct, which the
+  // compiler checks, rather than key/value strings checked only when they run. `LabType` is the
+  // lab's own class (a probe of it lists the parameters); its visitParams must list the same keys
+  // whatever their values.
+  //   spec.overrides = edits<ShadowsLab>(params, [](ShadowsParams& p) { p.filter = ShadowFilter::Hard; });
+  template <typename LabType, typename Edit>
+  static Settings edits(const P& base, Edit&& edit) {
+    LabType probe;
+    probe.params = base;
+    CollectAsText before;
+    probe.visitParams(before);
+    edit(probe.params);
+    CollectAsText after;
+    probe.visitParams(after);
+    Settings changed;
+    for (size_t i = 0; i < after.values.size(); ++i)
+      if (i >= before.values.size() || after.values[i] != before.values[i]) changed.push_back(after.values[i]);
+    return changed;
+  }
+  // The same, from the defaults: stress cases and other configurations applied to a fresh lab.
+  template <typename LabType, typename Edit>
+  static Settings fromDefaults(Edit&& edit) {
+    return edits<LabType>(P{}, std::forward<Edit>(edit));
+  }
 };
 
-// labs/registry.cpp: the explicit list of labs (no static self-registration).
+// The labs, in the order the app lists them: one table in labs/registry.cpp (no static
+// self-registration, which linkers drop when a lab's object file is otherwise unreferenced).
+struct LabEntry {
+  std::string_view id;
+  std::unique_ptr<Lab> (*make)();
+};
+std::span<const LabEntry> labRegistry();
 std::vector<std::string> labIds();
 std::unique_ptr<Lab> makeLab(std::string_view id);  // null if unknown
 

@@ -1,0 +1,60 @@
+#include "bench_common.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "context/gl_context.h"
+
+namespace shadelab {
+
+std::string readFile(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void timeFrames(benchmark::State& state, LabHost& host, glm::ivec2 size) {
+  for (int i = 0; i < 2; ++i) host.renderFrame(size);
+  for (auto _ : state) {
+    double gpu = 0;
+    for (auto& pass : host.renderFrame(size)) gpu += pass.gpuMs;
+    state.SetIterationTime(gpu / 1000.0);
+  }
+}
+
+void timeConfiguration(benchmark::State& state, const char* lab, const std::vector<std::string>& config,
+                       const std::vector<std::string>& extra) {
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
+  host.selectLab(lab);
+  std::string label;
+  for (const std::string& kv : extra) host.set(std::string(lab) + "." + kv);
+  for (const std::string& kv : config) {
+    host.set(std::string(lab) + "." + kv);
+    label += (label.empty() ? "" : " ") + kv;
+  }
+  timeFrames(state, host, {1280, 720});
+  state.SetLabel(label);
+}
+
+}  // namespace shadelab
+
+using namespace shadelab;
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  const char* backend = std::getenv("SHADELAB_BACKEND");
+  std::string err;
+  std::unique_ptr<GlContext> context = createHeadlessContext(backend ? backend : "osmesa", err);
+  if (!context) {
+    std::fprintf(stderr, "shadelab_bench: %s\n", err.c_str());
+    return 1;
+  }
+  std::fprintf(stderr, "renderer: %s\n", context->describe().c_str());
+  benchmark::RunSpecifiedBenchmarks();
+  context.reset();
+  return 0;
+}
