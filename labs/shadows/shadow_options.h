@@ -25,21 +25,41 @@ struct ShadowFilterRow {
   std::string_view define;  // what lit.frag tests (and, for a filtered map, moments.frag)
   GLenum momentFormat = 0;  // a filtered map: the moments texture the depth pass writes; 0: depth only
   FilterSettings settings = FilterSettings::None;
+  std::string_view help;    // what it does, for the panel's tooltip and `shadelab list`
   std::array<std::string_view, 2> sweep{};  // the standard sweep's values for it; none given: its name
 };
 inline constexpr ShadowFilterRow kShadowFilters[] = {
-    {ShadowFilter::Hard, "hard", "FILTER_HARD"},
-    {ShadowFilter::HardwarePcf, "hardware-pcf", "FILTER_HW_PCF"},
-    {ShadowFilter::Pcf, "pcf", "FILTER_PCF", 0, FilterSettings::PcfSize, {"pcf:pcf_size=3", "pcf:pcf_size=5"}},
-    {ShadowFilter::Poisson, "poisson", "FILTER_POISSON", 0, FilterSettings::PoissonDisk},
-    {ShadowFilter::Pcss, "pcss", "FILTER_PCSS", 0, FilterSettings::PcssSamples},
-    {ShadowFilter::Vsm, "vsm", "FILTER_VSM", GL_RG32F},
-    {ShadowFilter::Esm, "esm", "FILTER_ESM", GL_R32F},
-    {ShadowFilter::Evsm, "evsm", "FILTER_EVSM", GL_RGBA32F},
+    {ShadowFilter::Hard, "hard", "FILTER_HARD", 0, FilterSettings::None, "one tap"},
+    {ShadowFilter::HardwarePcf, "hardware-pcf", "FILTER_HW_PCF", 0, FilterSettings::None,
+     "sampler2DShadow, 2x2 bilinear"},
+    {ShadowFilter::Pcf, "pcf", "FILTER_PCF", 0, FilterSettings::PcfSize, "N x N taps",
+     {"pcf:pcf_size=3", "pcf:pcf_size=5"}},
+    {ShadowFilter::Poisson, "poisson", "FILTER_POISSON", 0, FilterSettings::PoissonDisk, "a Poisson disk"},
+    {ShadowFilter::Pcss, "pcss", "FILTER_PCSS", 0, FilterSettings::PcssSamples, "blocker search + penumbra-sized PCF"},
+    {ShadowFilter::Vsm, "vsm", "FILTER_VSM", GL_RG32F, FilterSettings::None, "variance (two moments)"},
+    {ShadowFilter::Esm, "esm", "FILTER_ESM", GL_R32F, FilterSettings::None, "exponential (one warp)"},
+    {ShadowFilter::Evsm, "evsm", "FILTER_EVSM", GL_RGBA32F, FilterSettings::None,
+     "exponential variance (two warps, four moments)"},
+    {ShadowFilter::PcfBilinear, "pcf-bilinear", "FILTER_PCF_BILINEAR", 0, FilterSettings::None,
+     "hardware-pcf written out: four taps, bilinear weights"},
 };
 static_assert(coversEnum<ShadowFilter>(kShadowFilters));
 
 inline std::string filterName(ShadowFilter f) { return std::string(rowOf(kShadowFilters, f).name); }
+
+// The filter parameter's help, from the rows: "hard: one tap; ...", and what filtered maps are.
+inline const std::string& filterHelp() {
+  static const std::string help = [] {
+    std::string text, filtered;
+    for (const ShadowFilterRow& row : kShadowFilters) {
+      text += std::string(text.empty() ? "" : "; ") + std::string(row.name) + ": " + std::string(row.help);
+      if (row.momentFormat) filtered += std::string(filtered.empty() ? "" : ", ") + std::string(row.name);
+    }
+    return text + ". Filtered maps (" + filtered + ") store moments of depth, blurred and mipmapped; a point light "
+                  "falls back to pcf.";
+  }();
+  return help;
+}
 // Filtered maps (VSM, ESM, EVSM): the depth pass writes moments, blurred and mipmapped.
 inline GLenum momentFormat(ShadowFilter f) { return rowOf(kShadowFilters, f).momentFormat; }
 inline bool isMomentFilter(ShadowFilter f) { return momentFormat(f) != 0; }

@@ -125,9 +125,7 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   v.boolParam({"receiver_plane", "Receiver-plane depth", "", "Each filter tap compares against the receiver's plane "
                "at that tap, not the centre depth: wide kernels on slopes need no extra bias."}, p.receiverPlane);
   v.section("Filter");
-  v.enumParam({"filter", "Filter", "", "hard: one tap; hardware-pcf: sampler2DShadow, 2x2 bilinear; pcf: N x N taps; "
-               "poisson: a Poisson disk; pcss: blocker search + penumbra-sized PCF; vsm, esm, evsm: filtered maps "
-               "(moments of depth, blurred and mipmapped; a point light falls back to pcf)."}, p.filter, namesOf<kShadowFilters>());
+  v.enumParam({"filter", "Filter", "", filterHelp()}, p.filter, namesOf<kShadowFilters>());
   v.intParam({"pcf_size", "PCF kernel N", "taps", "N x N taps; a compile-time loop bound (one program per N)."},
              p.pcfSize, 1, 15);
   v.choiceParam({"poisson_samples", "Poisson samples", "", "Taps of the Poisson-disk filter."}, p.poissonIndex, kSampleCounts);

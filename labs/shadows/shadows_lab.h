@@ -20,7 +20,7 @@ namespace shadelab {
 class RayScene;
 
 // The filters and views, and what each needs, are tables in shadow_options.h.
-enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm, Count };
+enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm, PcfBilinear, Count };
 enum class ShadowView {
   Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, Cascades, DepthRaw, DepthLinear, Count
 };

@@ -289,6 +289,13 @@ float visibility(int type, ShadowLight L, sampler2DArray map, samplerCube cube, 
   return type == LIGHT_POINT ? texture(cmpCube, vec4(q.base, ref)) : texture(cmp, vec4(q.base, ref));
 #elif defined(FILTER_PCF)
   return pcf(type, L, map, cube, q);
+#elif defined(FILTER_PCF_BILINEAR)
+  // hardware-pcf written out: the four texels around the lookup, compared one by one and blended
+  // by where the lookup falls between their centres.
+  vec2 f = type == LIGHT_POINT ? vec2(0.5) : fract(q.base.xy * L.mapSize - 0.5);
+  float t00 = tapCompare(type, L, map, cube, q, -f), t10 = tapCompare(type, L, map, cube, q, vec2(1.0, 0.0) - f);
+  float t01 = tapCompare(type, L, map, cube, q, vec2(0.0, 1.0) - f), t11 = tapCompare(type, L, map, cube, q, vec2(1.0) - f);
+  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
 #elif defined(FILTER_POISSON)
 #ifdef ROTATE_SAMPLES
   float angle = pixelAngle();

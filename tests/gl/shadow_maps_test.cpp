@@ -243,3 +243,16 @@ TEST(ShadowMaps, CubeMapsFilterSeamlessly) {
   host->renderFrame({64, 36});
   EXPECT_TRUE(glIsEnabled(GL_TEXTURE_CUBE_MAP_SEAMLESS));
 }
+
+// pcf-bilinear writes out what the hardware-pcf sampler does (one depth for the four texels, so
+// without the receiver plane): the two visibility images agree.
+TEST(ShadowMaps, BilinearPcfInTheShaderMatchesTheSampler) {
+  auto host = test::labHost("shadows", nullptr, {"shadows.filter=hardware-pcf", "shadows.view=visibility", "shadows.receiver_plane=off"});
+  host->renderFrame({320, 180});
+  const ImageF sampler = host->readImage();
+  ASSERT_EQ(host->set("shadows.filter=pcf-bilinear"), "");
+  host->renderFrame({320, 180});
+  const ImageError e = compareImages(host->readImage(), sampler);
+  std::printf("pcf-bilinear against hardware-pcf: rmse %.5f, max %.4f\n", e.rmse, e.maxError);
+  EXPECT_LT(e.rmse, 0.01);
+}
