@@ -12,17 +12,25 @@ namespace shadelab {
 
 enum class LightType { Directional, Spot, Point };
 
-struct LightSetup {
+// Where a light is and how large: the shadows lab's key-light parameters.
+struct LightPlacement {
   LightType type = LightType::Directional;
-  float azimuthDeg = 35.0f;
-  float elevationDeg = 50.0f;   // above the horizon; near 0 the light grazes the ground
+  float elevationDeg = 40.0f;   // above the horizon; near 0 the light grazes the ground
+  float azimuthDeg = 35.0f;     // around the vertical axis
   float distance = 3.0f;        // spot/point: from the scene centre, in scene radii
-  float spotAngleDeg = 60.0f;   // spot: full cone angle
-  float radius = 0.0f;          // area-light radius in scene radii (0 = point-like, hard shadows)
+  float spotAngleDeg = 70.0f;   // spot: full cone angle (and its map's field of view)
+  float radius = 0.08f;         // area-light radius in scene radii (PCSS and its truth; 0: a point)
+};
+
+// What the light's map covers when it is not fitted to the scene.
+struct LightFrustum {
   bool autoFit = true;          // fit extent and near/far to the scene bounds
   float orthoExtent = 1.0f;     // directional, !autoFit: half-width of the box, in scene radii
   float nearPlane = 0.5f;       // !autoFit: in scene radii
   float farPlane = 5.0f;        // !autoFit: in scene radii
+};
+
+struct LightSetup : LightPlacement, LightFrustum {
   glm::vec3 fromPoint{0.0f};    // nonzero: the light shines from this point towards the origin
                                 // (overrides azimuth and elevation; a scene's own light)
 };

@@ -87,13 +87,13 @@ inline constexpr std::string_view kDepthLights[] = {"key", "fill"};
 inline const GLenum kFormatEnums[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
 
 inline ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
-  return isMomentFilter(p.filter) && p.keyType == LightType::Point ? ShadowFilter::Pcf : p.filter;
+  return isMomentFilter(p.filter.type) && p.key.type == LightType::Point ? ShadowFilter::Pcf : p.filter.type;
 }
 
 // The directional key light is split (or fitted to the view) only when auto-fit is on.
 inline int cascadeCountOf(const ShadowsParams& p) {
-  if (p.keyType != LightType::Directional || !p.autoFit) return 0;  // 0: the scene-fitted map
-  return p.fit == MapFit::Cascades ? std::clamp(p.cascadeCount, 2, 4) : p.fit == MapFit::View ? 1 : 0;
+  if (p.key.type != LightType::Directional || !p.map.autoFit) return 0;  // 0: the scene-fitted map
+  return p.map.fit == MapFit::Cascades ? std::clamp(p.map.cascadeCount, 2, 4) : p.map.fit == MapFit::View ? 1 : 0;
 }
 
 }  // namespace shadelab

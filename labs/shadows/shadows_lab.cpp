@@ -20,9 +20,9 @@ enum Slot { kLitSlot = 0, kKeyDepthSlot, kFillDepthSlot, kDepthViewSlot, kLinesS
 // The moments a filtered map holds where nothing was drawn (depth t = 1): warpDepth(1) in
 // shadow_filters.glsl.
 glm::vec4 farMoments(const ShadowsParams& p, ShadowFilter f) {
-  if (f == ShadowFilter::Esm) return glm::vec4(std::exp(p.esmExponent), 0, 0, 0);
+  if (f == ShadowFilter::Esm) return glm::vec4(std::exp(p.filter.esmExponent), 0, 0, 0);
   if (f == ShadowFilter::Evsm) {
-    const float pos = std::exp(p.evsmPositive), neg = -std::exp(-p.evsmNegative);
+    const float pos = std::exp(p.filter.evsmPositive), neg = -std::exp(-p.filter.evsmNegative);
     return {pos, pos * pos, neg, neg * neg};
   }
   return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
@@ -43,170 +43,192 @@ std::string_view ShadowsLab::summary() const {
          "cascades. Every step is measured against ray-traced visibility of a point and of an area light.";
 }
 
-void ShadowsLab::visitParams(ParamVisitor& v) {
-  auto& p = params;
-  v.section("Key light");
+// One function per section of the panel, each given its own part of the parameters (and what of
+// the others decides whether its parameters apply).
+namespace {
+
+void visitKeyLight(ParamVisitor& v, ShadowsParams::KeyLight& key, bool sceneLit) {
   v.enumParam({"light_type", "Key light", "", "directional: orthographic map; spot: perspective map; point: a cube "
-               "map drawn in one pass (geometry shader writes gl_Layer)."}, p.keyType, kLightTypes);
-  v.boolParam({"key_casts", "Key casts shadows", "", "Off: no depth pass runs for the key light."}, p.keyCasts);
-  const bool sceneLit = p.sceneLight && glm::dot(sceneLight_, sceneLight_) > 0.0f;
+               "map drawn in one pass (geometry shader writes gl_Layer)."}, key.type, kLightTypes);
+  v.boolParam({"key_casts", "Key casts shadows", "", "Off: no depth pass runs for the key light."}, key.casts);
   v.boolParam({"scene_light", "Scene's own light", "", "A scene with a light of its own (learnopengl: from (-2, 4, "
                "-1) towards the origin, as in the chapter) sets the key light's direction; off: the sliders do."},
-              p.sceneLight);
+              key.sceneLight);
   {
     const ParamVisitor::UnavailableGroup direction(v, sceneLit ? "the scene sets the light's direction (untick 'Scene's "
                                                                  "own light')" : "");
     v.floatParam({"light_elevation", "Light elevation", "deg", "Key light above the horizon; 85..89.9 from zenith is "
-                  "grazing (elevation 5..0.1)."}, p.elevationDeg, 0.1f, 90.0f);
-    v.floatParam({"light_azimuth", "Light azimuth", "deg", "Key light around the vertical axis."}, p.azimuthDeg, -180.0f, 180.0f);
+                  "grazing (elevation 5..0.1)."}, key.elevationDeg, 0.1f, 90.0f);
+    v.floatParam({"light_azimuth", "Light azimuth", "deg", "Key light around the vertical axis."}, key.azimuthDeg, -180.0f, 180.0f);
   }
   v.floatParam({"light_distance", "Light distance", "radii", "Spot/point light distance from the scene centre, in "
-                "scene radii (below 1 the light is inside the scene)."}, p.lightDistance, 0.0f, 20.0f);
+                "scene radii (below 1 the light is inside the scene)."}, key.distance, 0.0f, 20.0f);
   v.floatParam({"spot_angle", "Spot angle", "deg", "Full cone angle of the spot light (and its map's field of view)."},
-               p.spotAngleDeg, 5.0f, 160.0f);
+               key.spotAngleDeg, 5.0f, 160.0f);
   v.floatParam({"light_radius", "Light radius", "radii", "Area light radius in scene radii, for PCSS and its "
                 "reference; 0 = a point light, hard shadows. Directional: seen from 3 radii away."},
-               p.lightRadius, 0.0f, 10.0f);
-  v.section("Fill light");
-  v.boolParam({"fill_light", "Fill light", "", "A second light (a spot) with its own shadow map."}, p.fillLight);
-  v.boolParam({"fill_casts", "Fill casts shadows", "", "Off: the fill light lights, but no depth pass runs for it."}, p.fillCasts);
-  v.section("Shadow map");
+               key.radius, 0.0f, 10.0f);
+}
+
+void visitFillLight(ParamVisitor& v, ShadowsParams::FillLight& fill) {
+  v.boolParam({"fill_light", "Fill light", "", "A second light (a spot) with its own shadow map."}, fill.on);
+  v.boolParam({"fill_casts", "Fill casts shadows", "", "Off: the fill light lights, but no depth pass runs for it."}, fill.casts);
+}
+
+void visitMap(ParamVisitor& v, ShadowsParams::Map& map, LightType keyType) {
   v.choiceParam({"map_size", "Map size", "texels", "Shadow map resolution (per cube face for a point light)."},
-                p.mapSizeIndex, kMapSizes);
-  v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, p.depthFormat, kFormats);
-  v.boolParam({"auto_fit", "Auto-fit frustum", "", "Fit the light's extent and near/far to the scene bounds."}, p.autoFit);
-  const std::string_view fitReason = p.keyType != LightType::Directional ? "fitting to the view is for directional lights"
-                                     : !p.autoFit                      ? "auto-fit is off: the extent is set by hand"
+                map.sizeIndex, kMapSizes);
+  v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, map.format, kFormats);
+  v.boolParam({"auto_fit", "Auto-fit frustum", "", "Fit the light's extent and near/far to the scene bounds."}, map.autoFit);
+  const std::string_view fitReason = keyType != LightType::Directional ? "fitting to the view is for directional lights"
+                                     : !map.autoFit                    ? "auto-fit is off: the extent is set by hand"
                                                                        : "";
   {
     const ParamVisitor::UnavailableGroup fitted(v, fitReason);
     v.enumParam({"fit", "Directional map covers", "", "scene: the whole scene's bounds (texels wasted on what the camera "
                  "never sees); view: what the camera sees (its frustum clipped to the scene); cascades: the view split "
                  "by depth into cascade_count maps of map_size^2 each, near slices getting the finest texels."},
-                p.fit, kFits);
+                map.fit, kFits);
     {
-      const ParamVisitor::UnavailableGroup cascaded(v, p.fit != MapFit::Cascades ? "fit is not 'cascades'" : "");
+      const ParamVisitor::UnavailableGroup cascaded(v, map.fit != MapFit::Cascades ? "fit is not 'cascades'" : "");
       v.intParam({"cascade_count", "Cascades", "maps", "Cascaded shadow maps: 2..4 maps, each map_size^2 (memory "
-                  "grows with the count)."}, p.cascadeCount, 2, 4);
+                  "grows with the count)."}, map.cascadeCount, 2, 4);
       v.floatParam({"split_lambda", "Split lambda", "", "Where the cascades split: 0 uniform in depth, 1 logarithmic "
-                    "(equal texel-to-pixel ratio), between: the practical split scheme's blend."}, p.splitLambda, 0.0f, 1.0f);
+                    "(equal texel-to-pixel ratio), between: the practical split scheme's blend."}, map.splitLambda, 0.0f, 1.0f);
       v.floatParam({"cascade_blend", "Cascade blend band", "", "Fraction of each cascade's depth range over which it "
                     "fades into the next (both are filtered there): hides the seam; 0 = hard switch."},
-                   p.cascadeBlend, 0.0f, 0.5f);
+                   map.cascadeBlend, 0.0f, 0.5f);
     }
-    if (p.fit == MapFit::Scene) v.unavailable("fit is 'scene': the map never moves");
+    if (map.fit == MapFit::Scene) v.unavailable("fit is 'scene': the map never moves");
     v.boolParam({"snap_texels", "Snap to texels", "", "Fitted maps move in whole texels and grow in 1/8-octave steps, "
                  "so a moving camera does not make shadow edges shimmer. Off: watch the edges crawl while orbiting."},
-                p.snapTexels);
+                map.snapTexels);
   }
   v.floatParam({"ortho_extent", "Ortho extent", "radii", "Directional light box half-width when auto-fit is off."},
-               p.orthoExtent, 1e-3f, 1e3f, true);
-  v.floatParam({"near", "Light near", "radii", "Light near plane when auto-fit is off."}, p.nearPlane, 1e-6f, 1e3f, true);
-  v.floatParam({"far", "Light far", "radii", "Light far plane when auto-fit is off."}, p.farPlane, 1e-3f, 1e4f, true);
+               map.orthoExtent, 1e-3f, 1e3f, true);
+  v.floatParam({"near", "Light near", "radii", "Light near plane when auto-fit is off."}, map.nearPlane, 1e-6f, 1e3f, true);
+  v.floatParam({"far", "Light far", "radii", "Light far plane when auto-fit is off."}, map.farPlane, 1e-3f, 1e4f, true);
   v.boolParam({"border_clamp", "Border clamp", "", "Outside the map reads depth 1 (lit). Off: CLAMP_TO_EDGE repeats "
-               "edge texels, stretching shadows past the map."}, p.borderClamp);
+               "edge texels, stretching shadows past the map."}, map.borderClamp);
   v.boolParam({"far_fix", "Far-plane fix", "", "Receivers beyond the light's far plane are lit. Off: they compare as "
-               "shadowed."}, p.farFix);
+               "shadowed."}, map.farFix);
   v.boolParam({"cull_front", "Cull front faces", "", "Depth pass draws back faces: closed meshes lose acne, thin "
-               "ones leak."}, p.cullFront);
+               "ones leak."}, map.cullFront);
   v.boolParam({"six_cube_passes", "Cube map in six passes", "", "Point light: draw the six faces in six passes "
-               "instead of one geometry-shader pass (compare their cost)."}, p.sixCubePasses);
-  v.section("Bias");
+               "instead of one geometry-shader pass (compare their cost)."}, map.sixCubePasses);
+}
+
+void visitBias(ParamVisitor& v, ShadowsParams::Bias& bias) {
   v.floatParam({"bias", "Constant bias", "texels", "Depth bias floor, in shadow-map texels at the receiver."},
-               p.bias, 0.0f, 50.0f);
+               bias.constant, 0.0f, 50.0f);
   v.floatParam({"slope_bias", "Slope bias k", "texels", "bias = max(k (1 - N.L), constant): more where the light "
-                "grazes."}, p.slopeBias, 0.0f, 50.0f);
+                "grazes."}, bias.slope, 0.0f, 50.0f);
   v.floatParam({"normal_offset", "Normal offset", "texels", "Move the lookup point along the normal before "
-                "projecting."}, p.normalOffset, 0.0f, 20.0f);
+                "projecting."}, bias.normalOffset, 0.0f, 20.0f);
   v.floatParam({"offset_factor", "Polygon offset factor", "", "glPolygonOffset factor in the depth pass (slope)."},
-               p.offsetFactor, 0.0f, 20.0f);
+               bias.offsetFactor, 0.0f, 20.0f);
   v.floatParam({"offset_units", "Polygon offset units", "", "glPolygonOffset units in the depth pass (constant)."},
-               p.offsetUnits, 0.0f, 10000.0f);
+               bias.offsetUnits, 0.0f, 10000.0f);
   v.boolParam({"receiver_plane", "Receiver-plane depth", "", "Each filter tap compares against the receiver's plane "
-               "at that tap, not the centre depth: wide kernels on slopes need no extra bias."}, p.receiverPlane);
-  v.section("Filter");
-  v.enumParam({"filter", "Filter", "", filterHelp()}, p.filter, namesOf<kShadowFilters>());
+               "at that tap, not the centre depth: wide kernels on slopes need no extra bias."}, bias.receiverPlane);
+}
+
+void visitFilter(ParamVisitor& v, ShadowsParams::Filter& filter, LightType keyType) {
+  v.enumParam({"filter", "Filter", "", filterHelp()}, filter.type, namesOf<kShadowFilters>());
   v.intParam({"pcf_size", "PCF kernel N", "taps", "N x N taps; a compile-time loop bound (one program per N)."},
-             p.pcfSize, 1, 15);
-  v.choiceParam({"poisson_samples", "Poisson samples", "", "Taps of the Poisson-disk filter."}, p.poissonIndex, kSampleCounts);
-  v.floatParam({"filter_radius", "Poisson radius", "texels", "Radius of the Poisson-disk filter."}, p.filterRadius, 0.0f, 32.0f);
-  v.boolParam({"rotate", "Rotate per pixel", "", "Rotate the Poisson disk per pixel: banding becomes noise."}, p.rotateSamples);
-  v.choiceParam({"blocker_samples", "PCSS blocker samples", "", "Taps of the blocker search."}, p.blockerIndex, kSampleCounts);
-  v.choiceParam({"pcss_samples", "PCSS filter samples", "", "Taps of the penumbra filter."}, p.pcssIndex, kSampleCounts);
-  const std::string_view momentReason = !isMomentFilter(p.filter)       ? "only for vsm, esm and evsm"
-                                        : p.keyType == LightType::Point ? "filtered maps need a 2D map; the point light uses PCF"
-                                                                        : "";
+             filter.pcfSize, 1, 15);
+  v.choiceParam({"poisson_samples", "Poisson samples", "", "Taps of the Poisson-disk filter."}, filter.poissonIndex, kSampleCounts);
+  v.floatParam({"filter_radius", "Poisson radius", "texels", "Radius of the Poisson-disk filter."}, filter.poissonRadius, 0.0f, 32.0f);
+  v.boolParam({"rotate", "Rotate per pixel", "", "Rotate the Poisson disk per pixel: banding becomes noise."}, filter.rotateSamples);
+  v.choiceParam({"blocker_samples", "PCSS blocker samples", "", "Taps of the blocker search."}, filter.blockerIndex, kSampleCounts);
+  v.choiceParam({"pcss_samples", "PCSS filter samples", "", "Taps of the penumbra filter."}, filter.pcssIndex, kSampleCounts);
+  const std::string_view momentReason = !isMomentFilter(filter.type)  ? "only for vsm, esm and evsm"
+                                        : keyType == LightType::Point ? "filtered maps need a 2D map; the point light uses PCF"
+                                                                      : "";
   {
     const ParamVisitor::UnavailableGroup filtered(v, momentReason);
     v.intParam({"blur_radius", "Moment blur", "texels", "Separable Gaussian blur of the moment map, texels each way "
-                "(sigma = radius / 2); 0 runs no blur pass."}, p.blurRadius, 0, 16);
+                "(sigma = radius / 2); 0 runs no blur pass."}, filter.blurRadius, 0, 16);
     v.boolParam({"moment_mips", "Mipmapped moments", "", "Build the moment map's mip chain and sample it trilinearly "
                  "(the level chosen per pixel): distant receivers average many texels, not alias."},
-                p.momentMips);
-    if (p.filter == ShadowFilter::Esm) v.unavailable("only for vsm and evsm");
+                filter.momentMips);
+    if (filter.type == ShadowFilter::Esm) v.unavailable("only for vsm and evsm");
     v.floatParam({"min_variance", "Minimum variance", "", "Floor on the variance (normalised depth squared): too small, "
-                  "acne-like noise; too large, contact shadows fade."}, p.minVariance, 0.0f, 1e-2f, true);
-    if (p.filter != ShadowFilter::Vsm) v.unavailable("only for vsm");
+                  "acne-like noise; too large, contact shadows fade."}, filter.minVariance, 0.0f, 1e-2f, true);
+    if (filter.type != ShadowFilter::Vsm) v.unavailable("only for vsm");
     v.floatParam({"bleed_reduction", "Light-bleeding reduction", "", "VSM: p -> (p - a) / (1 - a) cuts the light that "
                   "bleeds through a second occluder behind the first, at the price of darker penumbrae."},
-                 p.bleedReduction, 0.0f, 0.95f);
-    if (p.filter != ShadowFilter::Esm) v.unavailable("only for esm");
+                 filter.bleedReduction, 0.0f, 0.95f);
+    if (filter.type != ShadowFilter::Esm) v.unavailable("only for esm");
     v.floatParam({"esm_exponent", "ESM exponent c", "", "exp(c t) in 32-bit float: larger c, sharper and less leaky "
-                  "contact, until exp(c) nears float's limit at c = 88."}, p.esmExponent, 1.0f, 85.0f);
-    const ParamVisitor::UnavailableGroup evsm(v, p.filter != ShadowFilter::Evsm ? "only for evsm" : "");
+                  "contact, until exp(c) nears float's limit at c = 88."}, filter.esmExponent, 1.0f, 85.0f);
+    const ParamVisitor::UnavailableGroup evsm(v, filter.type != ShadowFilter::Evsm ? "only for evsm" : "");
     v.floatParam({"evsm_positive", "EVSM positive exponent", "", "exp(c+ t) and its square are stored: c+ <= 42 keeps "
-                  "the square finite in 32-bit float."}, p.evsmPositive, 1.0f, 42.0f);
+                  "the square finite in 32-bit float."}, filter.evsmPositive, 1.0f, 42.0f);
     v.floatParam({"evsm_negative", "EVSM negative exponent", "", "-exp(-c- t) and its square: the second warp that "
-                  "catches what the first lets bleed."}, p.evsmNegative, 1.0f, 42.0f);
+                  "catches what the first lets bleed."}, filter.evsmNegative, 1.0f, 42.0f);
   }
-  v.section("View");
+}
+
+void visitView(ParamVisitor& v, ShadowsParams::View& view, MapFit fit) {
   v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - stored "
                "depth in units of the bias: green = ample margin, orange = nearly acne, red = acne, grey = a real "
                "shadow); texel-density; pcss-blocker; pcss-penumbra; cascades (one colour each, the blend band "
-               "striped, magenta = a gap); depth-raw/-linear (the map; a cube unrolled)."}, p.view, namesOf<kShadowViews>());
-  v.choiceParam({"depth_light", "Depth view of", "", "Which light's map the depth views show."}, p.depthLight, kDepthLights);
-  if (p.fit != MapFit::Cascades || p.depthLight != 0) v.unavailable("the key light has one map");
+               "striped, magenta = a gap); depth-raw/-linear (the map; a cube unrolled)."}, view.mode, namesOf<kShadowViews>());
+  v.choiceParam({"depth_light", "Depth view of", "", "Which light's map the depth views show."}, view.depthLight, kDepthLights);
+  if (fit != MapFit::Cascades || view.depthLight != 0) v.unavailable("the key light has one map");
   v.choiceParam({"depth_cascade", "Depth view cascade", "", "Which cascade's map the depth views show."},
-                p.depthCascade, kCascadeIndices);
-  v.floatParam({"depth_zoom", "Depth view zoom", "x", "Magnification of the depth views."}, p.depthZoom, 1.0f, 64.0f, true);
+                view.depthCascade, kCascadeIndices);
+  v.floatParam({"depth_zoom", "Depth view zoom", "x", "Magnification of the depth views."}, view.depthZoom, 1.0f, 64.0f, true);
   v.floatParam({"depth_centre_u", "Depth view centre u", "", "Map coordinate at the middle of the view."},
-               p.depthCentreU, 0.0f, 1.0f);
+               view.depthCentreU, 0.0f, 1.0f);
   v.floatParam({"depth_centre_v", "Depth view centre v", "", "Map coordinate at the middle of the view."},
-               p.depthCentreV, 0.0f, 1.0f);
-  v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, p.showFrustum);
-  v.section("Scene");
-  v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, p.tessellation, 3, 256);
+               view.depthCentreV, 0.0f, 1.0f);
+  v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, view.showFrustum);
+}
+
+void visitScene(ParamVisitor& v, ShadowsParams::SceneSettings& scene) {
+  v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, scene.tessellation, 3, 256);
   v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e4); lengths in "
-                "radii and texels follow it."}, p.sceneScale, 1e-3f, 1e4f, true);
+                "radii and texels follow it."}, scene.scale, 1e-3f, 1e4f, true);
+}
+
+}  // namespace
+
+void ShadowsLab::visitParams(ParamVisitor& v) {
+  auto& p = params;
+  v.section("Key light");
+  visitKeyLight(v, p.key, p.key.sceneLight && glm::dot(sceneLight_, sceneLight_) > 0.0f);
+  v.section("Fill light");
+  visitFillLight(v, p.fill);
+  v.section("Shadow map");
+  visitMap(v, p.map, p.key.type);
+  v.section("Bias");
+  visitBias(v, p.bias);
+  v.section("Filter");
+  visitFilter(v, p.filter, p.key.type);
+  v.section("View");
+  visitView(v, p.view, p.map.fit);
+  v.section("Scene");
+  visitScene(v, p.scene);
 }
 
 SceneNeeds ShadowsLab::needs() const {
   SceneNeeds n;
-  n.tessellation = params.tessellation;
-  n.scale = params.sceneScale;
+  n.tessellation = params.scene.tessellation;
+  n.scale = params.scene.scale;
   return n;
 }
 
 LightSetup ShadowsLab::keySetup() const {
-  LightSetup s;
-  s.type = params.keyType;
-  s.azimuthDeg = params.azimuthDeg;
-  s.elevationDeg = params.elevationDeg;
-  s.distance = params.lightDistance;
-  s.spotAngleDeg = params.spotAngleDeg;
-  s.radius = params.lightRadius;
-  s.autoFit = params.autoFit;
-  s.orthoExtent = params.orthoExtent;
-  s.nearPlane = params.nearPlane;
-  s.farPlane = params.farPlane;
-  if (params.sceneLight) s.fromPoint = sceneLight_;
-  return s;
+  // The key light's section is its placement and the map's section its frustum: nothing to copy.
+  return {params.key, params.map, params.key.sceneLight ? sceneLight_ : glm::vec3(0.0f)};
 }
 
 LightSetup ShadowsLab::fillSetup() const {
   LightSetup s;
   s.type = LightType::Spot;
-  s.azimuthDeg = params.azimuthDeg + 150.0f;
+  s.azimuthDeg = params.key.azimuthDeg + 150.0f;
   s.elevationDeg = 35.0f;
   s.distance = 3.0f;
   s.spotAngleDeg = 60.0f;
@@ -285,23 +307,23 @@ static void setLight(Program& prog, const std::string& n, const LightFrame& L, i
 
 void ShadowsLab::setFilterUniforms(Program& prog) const {
   const ShadowFilter filter = effectiveFilterOf(params);
-  prog.set("u_bias", params.bias);
-  prog.set("u_slopeBias", params.slopeBias);
-  prog.set("u_normalOffset", params.normalOffset);
-  prog.set("u_filterRadius", params.filterRadius);
+  prog.set("u_bias", params.bias.constant);
+  prog.set("u_slopeBias", params.bias.slope);
+  prog.set("u_normalOffset", params.bias.normalOffset);
+  prog.set("u_filterRadius", params.filter.poissonRadius);
   // The disks only where the variant samples them (Poisson, PCSS): made on first use, not for PCF.
   if (prog.uses("u_filterDisk")) {
-    const auto& taps = disk(filter == ShadowFilter::Pcss ? 8 << params.pcssIndex : 8 << params.poissonIndex);
+    const auto& taps = disk(filter == ShadowFilter::Pcss ? 8 << params.filter.pcssIndex : 8 << params.filter.poissonIndex);
     prog.setArray("u_filterDisk", taps.data(), int(taps.size()));
   }
   if (prog.uses("u_blockerDisk")) {
-    const auto& taps = disk(8 << params.blockerIndex);
+    const auto& taps = disk(8 << params.filter.blockerIndex);
     prog.setArray("u_blockerDisk", taps.data(), int(taps.size()));
   }
-  prog.set("u_minVariance", params.minVariance);
-  prog.set("u_bleed", params.bleedReduction);
-  prog.set("u_esmExponent", params.esmExponent);
-  prog.set("u_evsmExponents", glm::vec2(params.evsmPositive, params.evsmNegative));
+  prog.set("u_minVariance", params.filter.minVariance);
+  prog.set("u_bleed", params.filter.bleedReduction);
+  prog.set("u_esmExponent", params.filter.esmExponent);
+  prog.set("u_evsmExponents", glm::vec2(params.filter.evsmPositive, params.filter.evsmNegative));
 }
 
 void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill) {
@@ -331,12 +353,12 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   // Each sampler the variant really samples gets a texture of its type on its own unit: the real
   // map, or a 1x1 dummy. Units the variant does not read are left alone (every binding is state
   // the driver checks at the next draw).
-  const bool keyReal = keyMap_ && params.keyCasts, fillReal = fill && fillMap_ && params.fillCasts;
+  const bool keyReal = keyMap_ && params.key.casts, fillReal = fill && fillMap_ && params.fill.casts;
   boundSamplers_.clear();
   auto bindMap = [&](ShadowMap& map, bool real, bool cube, const char* raw, const char* cmp, int rawUnit, int cmpUnit) {
     if (!prog.uses(raw) && !prog.uses(cmp)) return;
     if (real && map.cube() == cube) {
-      map.bind(rawUnit, cmpUnit, params.borderClamp);
+      map.bind(rawUnit, cmpUnit, params.map.borderClamp);
       boundSamplers_.insert(boundSamplers_.end(), {rawUnit, cmpUnit});
     } else {
       for (int unit : {rawUnit, cmpUnit}) cube ? dummies_.bindCube(unit) : dummies_.bindArray(unit);
@@ -417,30 +439,30 @@ bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* wh
 }
 
 void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format) {
-  const bool cube = params.keyType == LightType::Point;
+  const bool cube = params.key.type == LightType::Point;
   const ShadowFilter filter = effectiveFilterOf(params);
   const int layers = std::max<int>(int(cascades_.size()), 1);
-  if (!ensureMap(keyMap_, {cube, params.mapSize(), layers, format, cube ? 0u : momentFormat(filter), params.momentMips},
+  if (!ensureMap(keyMap_, {cube, params.map.size(), layers, format, cube ? 0u : momentFormat(filter), params.filter.momentMips},
                  "key"))
     return;
-  const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
-  const std::string kind = std::string(kLightTypes[int(params.keyType)]) +
-                           (cascades_.size() >= 2 ? " cascade " : params.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
-  Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.sixCubePasses, filter));
+  const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(kFormats[int(params.map.format)]);
+  const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
+                           (cascades_.size() >= 2 ? " cascade " : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
+  Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.map.sixCubePasses, filter));
   if (isMomentFilter(filter)) {
     depth.use();
     setFilterUniforms(depth);  // the moment pass warps depth with the same exponents the lookups use
   }
   for (int layer = 0; layer < layers; ++layer) {
     auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
-                           size + (cube ? (params.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
+                           size + (cube ? (params.map.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
                            (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : ""));
     keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer, state);
   }
-  if (keyMap_.hasMoments() && (params.blurRadius > 0 || params.momentMips)) {
-    auto pass = frame.pass("moment blur " + std::to_string(params.blurRadius) + " texels" +
-                           (params.momentMips ? " + mips" : ""));
-    keyMap_.filterMoments(fetch(kBlurSlot, blurSpec()), params.blurRadius, emptyVao_.get());
+  if (keyMap_.hasMoments() && (params.filter.blurRadius > 0 || params.filter.momentMips)) {
+    auto pass = frame.pass("moment blur " + std::to_string(params.filter.blurRadius) + " texels" +
+                           (params.filter.momentMips ? " + mips" : ""));
+    keyMap_.filterMoments(fetch(kBlurSlot, blurSpec()), params.filter.blurRadius, emptyVao_.get());
   }
 }
 
@@ -452,28 +474,28 @@ void ShadowsLab::render(Frame& frame) {
   const LightFrame key = buildLight(keySetup(), bounds, lightWarnings_);
   std::vector<std::string> ignored;
   const LightFrame fill = buildLight(fillSetup(), bounds, ignored);
-  const GLenum format = kFormatEnums[int(params.depthFormat)];
+  const GLenum format = kFormatEnums[int(params.map.format)];
   const ShadowFilter filter = effectiveFilterOf(params);
-  DepthPassState depthState{params.cullFront, params.offsetFactor, params.offsetUnits, params.sixCubePasses};
+  DepthPassState depthState{params.map.cullFront, params.bias.offsetFactor, params.bias.offsetUnits, params.map.sixCubePasses};
   depthState.momentClear = farMoments(params, filter);
   const bool gbuffer = internalView_ != InternalView::None;
 
   // The key light's maps: the scene-fitted one, or fitted to the view, or one per cascade.
   cascades_.clear();
   if (const int count = cascadeCountOf(params); count > 0)
-    cascades_ = buildCascades(key, {count, params.splitLambda, params.cascadeBlend, params.snapTexels, params.mapSize()},
+    cascades_ = buildCascades(key, {count, params.map.splitLambda, params.map.cascadeBlend, params.map.snapTexels, params.map.size()},
                               viewVolume(frame), bounds, frame.scene.instanceBounds);
 
   // 1. Depth passes, only for lights that cast and only when the view reads their maps.
-  if (params.keyCasts && !gbuffer) {
+  if (params.key.casts && !gbuffer) {
     renderKeyMaps(frame, key, depthState, format);
-  } else if (!params.keyCasts) {
+  } else if (!params.key.casts) {
     keyMap_.release();  // (a g-buffer render keeps it: the next frame needs it again)
   }
-  const bool fillMapNeeded = params.fillLight && params.fillCasts && !gbuffer &&
-                             (!viewIsDepthMap(params.view) || params.depthLight == 1);
-  if (fillMapNeeded && ensureMap(fillMap_, {false, params.mapSize(), 1, format, momentFormat(filter), params.momentMips}, "fill")) {
-    const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(kFormats[int(params.depthFormat)]);
+  const bool fillMapNeeded = params.fill.on && params.fill.casts && !gbuffer &&
+                             (!viewIsDepthMap(params.view.mode) || params.view.depthLight == 1);
+  if (fillMapNeeded && ensureMap(fillMap_, {false, params.map.size(), 1, format, momentFormat(filter), params.filter.momentMips}, "fill")) {
+    const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(kFormats[int(params.map.format)]);
     {
       auto pass = frame.pass("shadow map: fill spot " + size +
                              (isMomentFilter(filter) ? " + " + filterName(filter) + " moments" : ""));
@@ -484,11 +506,11 @@ void ShadowsLab::render(Frame& frame) {
       }
       fillMap_.render(frame.scene, frame.gpu, depth, fill, 0, depthState);
     }
-    if (fillMap_.hasMoments() && (params.blurRadius > 0 || params.momentMips)) {
+    if (fillMap_.hasMoments() && (params.filter.blurRadius > 0 || params.filter.momentMips)) {
       auto pass = frame.pass("moment blur (fill)");
-      fillMap_.filterMoments(fetch(kBlurSlot, blurSpec()), params.blurRadius, emptyVao_.get());
+      fillMap_.filterMoments(fetch(kBlurSlot, blurSpec()), params.filter.blurRadius, emptyVao_.get());
     }
-  } else if (!(params.fillLight && params.fillCasts)) {
+  } else if (!(params.fill.on && params.fill.casts)) {
     fillMap_.release();
   }
 
@@ -498,23 +520,23 @@ void ShadowsLab::render(Frame& frame) {
   glEnable(GL_DEPTH_TEST);
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the metrics
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (viewIsDepthMap(params.view) && !gbuffer) {
+  if (viewIsDepthMap(params.view.mode) && !gbuffer) {
     drawDepthView(frame, key, fill);
     return;
   }
   {
     auto pass = frame.pass(gbuffer ? "reference g-buffer" : "lighting");
-    drawLit(frame, fetch(kLitSlot, litSpec(params, internalView_)), key, params.fillLight && !gbuffer ? &fill : nullptr);
+    drawLit(frame, fetch(kLitSlot, litSpec(params, internalView_)), key, params.fill.on && !gbuffer ? &fill : nullptr);
   }
-  if (params.showFrustum && !gbuffer) drawFrustum(frame, key);
+  if (params.view.showFrustum && !gbuffer) drawFrustum(frame, key);
 }
 
 void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill) {
   auto pass = frame.pass("depth map view");
-  const bool showFill = params.depthLight == 1;
+  const bool showFill = params.view.depthLight == 1;
   ShadowMap& map = showFill ? fillMap_ : keyMap_;
   if (!map) return;  // that light casts no shadow: there is no map to show (warnings() says so)
-  const int layer = showFill ? 0 : std::min(params.depthCascade, map.layers() - 1);
+  const int layer = showFill ? 0 : std::min(params.view.depthCascade, map.layers() - 1);
   const LightFrame& shown = showFill ? fill : cascades_.empty() ? key : cascades_[size_t(layer)].light;
   Program& prog = fetch(kDepthViewSlot, depthViewSpec(params));
   prog.use();
@@ -535,8 +557,8 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   prog.set("u_range", range);
   const float aspect = frame.aspect(), cells = map.cube() ? 4.0f / 3.0f : 1.0f;
   prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
-  prog.set("u_zoom", params.depthZoom);
-  prog.set("u_centre", glm::vec2(params.depthCentreU, params.depthCentreV));
+  prog.set("u_zoom", params.view.depthZoom);
+  prog.set("u_centre", glm::vec2(params.view.depthCentreU, params.view.depthCentreV));
   glDisable(GL_DEPTH_TEST);
   glBindVertexArray(emptyVao_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -547,38 +569,38 @@ std::vector<std::string> ShadowsLab::warnings() const {
   std::vector<std::string> w = lightWarnings_;
   w.insert(w.end(), mapWarnings_.begin(), mapWarnings_.end());
   const auto& p = params;
-  if (p.keyType != LightType::Point && p.elevationDeg < 10.0f)
-    w.push_back("grazing light (" + formatNumber(p.elevationDeg) + " deg above the horizon): texels stretch along the "
+  if (p.key.type != LightType::Point && p.key.elevationDeg < 10.0f)
+    w.push_back("grazing light (" + formatNumber(p.key.elevationDeg) + " deg above the horizon): texels stretch along the "
                 "ground; expect acne unless the slope bias grows");
-  if (p.keyCasts && p.bias == 0 && p.slopeBias == 0 && p.normalOffset == 0 && p.offsetFactor == 0 && p.offsetUnits == 0)
+  if (p.key.casts && p.bias.constant == 0 && p.bias.slope == 0 && p.bias.normalOffset == 0 && p.bias.offsetFactor == 0 && p.bias.offsetUnits == 0)
     w.push_back("no bias at all: lit surfaces shadow themselves (acne)");
-  if (p.bias + p.slopeBias > 12.0f || p.normalOffset > 6.0f)
+  if (p.bias.constant + p.bias.slope > 12.0f || p.bias.normalOffset > 6.0f)
     w.push_back("large bias: shadows detach from their casters (peter-panning)");
-  if (!p.borderClamp) w.push_back("border clamp off: outside the map the edge texels repeat and stretch shadows");
-  if (!p.farFix) w.push_back("far-plane fix off: receivers beyond the light's far plane come out shadowed");
-  if (p.filter == ShadowFilter::Pcss && p.lightRadius == 0.0f)
+  if (!p.map.borderClamp) w.push_back("border clamp off: outside the map the edge texels repeat and stretch shadows");
+  if (!p.map.farFix) w.push_back("far-plane fix off: receivers beyond the light's far plane come out shadowed");
+  if (p.filter.type == ShadowFilter::Pcss && p.key.radius == 0.0f)
     w.push_back("light radius 0: PCSS reduces to a hard shadow");
-  if (p.filter == ShadowFilter::Pcss && p.lightRadius > 1.0f)
-    w.push_back("light radius " + formatNumber(p.lightRadius) + " scene radii: larger than the scene, penumbrae wash out");
-  if (p.keyType == LightType::Point && p.lightDistance < 0.5f)
+  if (p.filter.type == ShadowFilter::Pcss && p.key.radius > 1.0f)
+    w.push_back("light radius " + formatNumber(p.key.radius) + " scene radii: larger than the scene, penumbrae wash out");
+  if (p.key.type == LightType::Point && p.key.distance < 0.5f)
     w.push_back("point light near the scene centre: it may sit inside geometry, which then hides everything");
-  if (!p.keyCasts && !(p.fillLight && p.fillCasts)) w.push_back("no light casts shadows: no depth pass runs");
-  if (viewIsDepthMap(p.view) && p.depthLight == 1 && !(p.fillLight && p.fillCasts))
+  if (!p.key.casts && !(p.fill.on && p.fill.casts)) w.push_back("no light casts shadows: no depth pass runs");
+  if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 1 && !(p.fill.on && p.fill.casts))
     w.push_back("the depth view shows the fill light's map: turn on fill_light and fill_casts");
-  if (viewIsDepthMap(p.view) && p.depthLight == 0 && !p.keyCasts)
+  if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 0 && !p.key.casts)
     w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
-  if ((p.view == ShadowView::PcssBlocker || p.view == ShadowView::PcssPenumbra) && p.filter != ShadowFilter::Pcss)
+  if ((p.view.mode == ShadowView::PcssBlocker || p.view.mode == ShadowView::PcssPenumbra) && p.filter.type != ShadowFilter::Pcss)
     w.push_back("the PCSS views show data only with filter = pcss");
-  if (isMomentFilter(p.filter) && p.keyType == LightType::Point)
-    w.push_back(filterName(p.filter) + " needs a 2D map: the point light's cube map is filtered with "
-                "pcf (" + std::to_string(p.pcfSize) + "x" + std::to_string(p.pcfSize) + ") instead");
-  if (p.fit != MapFit::Scene && (p.keyType != LightType::Directional || !p.autoFit))
-    w.push_back("fit = " + std::string(kFits[int(p.fit)]) + " applies to an auto-fitted directional light only");
-  if (p.view == ShadowView::Cascades && cascadeCountOf(p) < 2)
+  if (isMomentFilter(p.filter.type) && p.key.type == LightType::Point)
+    w.push_back(filterName(p.filter.type) + " needs a 2D map: the point light's cube map is filtered with "
+                "pcf (" + std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");
+  if (p.map.fit != MapFit::Scene && (p.key.type != LightType::Directional || !p.map.autoFit))
+    w.push_back("fit = " + std::string(kFits[int(p.map.fit)]) + " applies to an auto-fitted directional light only");
+  if (p.view.mode == ShadowView::Cascades && cascadeCountOf(p) < 2)
     w.push_back("one map, one colour: the cascades view needs fit = cascades");
-  if (p.filter == ShadowFilter::Esm && p.esmExponent > 80.0f)
-    w.push_back("ESM exponent " + formatNumber(p.esmExponent) + ": exp(c) is within a factor " +
-                formatNumber(std::exp(88.7f - p.esmExponent)) + " of float's limit; a blur of overflowing texels would be inf");
+  if (p.filter.type == ShadowFilter::Esm && p.filter.esmExponent > 80.0f)
+    w.push_back("ESM exponent " + formatNumber(p.filter.esmExponent) + ": exp(c) is within a factor " +
+                formatNumber(std::exp(88.7f - p.filter.esmExponent)) + " of float's limit; a blur of overflowing texels would be inf");
   return w;
 }
 

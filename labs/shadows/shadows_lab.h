@@ -27,65 +27,71 @@ enum class ShadowView {
 enum class DepthFormat { D16, D24, D32F };
 enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
 
+// One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).
 struct ShadowsParams {
-  LightType keyType = LightType::Directional;
-  bool keyCasts = true;
-  bool sceneLight = true;       // a scene with a light of its own (learnopengl) sets the direction
-  float elevationDeg = 40.0f;   // key light above the horizon
-  float azimuthDeg = 35.0f;
-  float lightDistance = 3.0f;   // spot/point, scene radii from the centre
-  float spotAngleDeg = 70.0f;
-  float lightRadius = 0.08f;    // area-light radius, scene radii (PCSS and its reference)
-  bool fillLight = false;       // a second, spot light
-  bool fillCasts = true;
-  int mapSizeIndex = 3;         // 256 << index: 256 .. 8192
-  DepthFormat depthFormat = DepthFormat::D24;
-  bool autoFit = true;
-  MapFit fit = MapFit::Scene;   // directional, auto-fit: the whole scene, the view, or cascades
-  int cascadeCount = 4;         // fit = cascades: 2..4 maps of map_size^2 each
-  float splitLambda = 0.75f;    // 0: uniform splits, 1: logarithmic
-  float cascadeBlend = 0.1f;    // fraction of a cascade's range blended into the next
-  bool snapTexels = true;       // fitted maps move by whole texels: no shimmer as the camera moves
-  float orthoExtent = 1.0f;     // scene radii (directional, auto-fit off)
-  float nearPlane = 0.5f;       // scene radii (auto-fit off)
-  float farPlane = 5.0f;        // scene radii (auto-fit off)
-  bool borderClamp = true;      // outside the map: lit (border depth 1) instead of the edge texel
-  bool farFix = true;           // beyond the far plane: lit instead of shadowed
-  bool cullFront = false;       // depth pass draws back faces only
-  bool sixCubePasses = false;   // point light: six passes instead of one geometry-shader pass
-  float bias = 2.5f;            // texels (the constant floor of the slope-scaled bias)
-  float slopeBias = 4.0f;       // texels, k in max(k (1 - N.L), bias)
-  float normalOffset = 0.0f;    // texels along the normal
-  float offsetFactor = 0.0f;    // glPolygonOffset factor
-  float offsetUnits = 0.0f;     // glPolygonOffset units
-  bool receiverPlane = true;    // filter taps compare against the receiver plane at each tap
-  ShadowFilter filter = ShadowFilter::Pcf;
-  int pcfSize = 3;              // N in N x N (compile-time loop bound)
-  int poissonIndex = 1;         // 8 << index samples: 8, 16, 32, 64
-  float filterRadius = 2.0f;    // texels, Poisson PCF
-  bool rotateSamples = true;    // per-pixel rotation of the Poisson disk
-  int blockerIndex = 1;         // PCSS blocker search samples: 8 << index
-  int pcssIndex = 1;            // PCSS filter samples: 8 << index (16: on the error-cost front)
-  int blurRadius = 2;           // filtered maps: Gaussian blur, texels each way (0: no blur pass)
-  bool momentMips = true;       // filtered maps: mipmapped, sampled trilinear
-  float minVariance = 1e-5f;    // VSM/EVSM: variance floor (in normalised depth squared)
-  float bleedReduction = 0.3f;  // VSM: p -> (p - a) / (1 - a)
-  float esmExponent = 60.0f;    // ESM: c in exp(c t)
-  float evsmPositive = 30.0f;   // EVSM: exponents of the positive and negative warps
-  float evsmNegative = 8.0f;
-  ShadowView view = ShadowView::Shaded;
-  int depthLight = 0;           // the map the depth views show: 0 key, 1 fill
-  int depthCascade = 0;         // ... and which cascade of the key light's
-  float depthZoom = 1.0f;
-  float depthCentreU = 0.5f;
-  float depthCentreV = 0.5f;
-  bool showFrustum = false;
-  int tessellation = 48;
-  float sceneScale = 1.0f;
+  struct KeyLight : LightPlacement {  // where the key light is (light_rig.h), and:
+    bool casts = true;
+    bool sceneLight = true;       // a scene with a light of its own (learnopengl) sets the direction
+  } key;
+  struct FillLight {              // a second, spot light
+    bool on = false;
+    bool casts = true;
+  } fill;
+  struct Map : LightFrustum {     // the frustum when auto-fit is off (light_rig.h), and:
+    int sizeIndex = 3;            // 256 << index: 256 .. 8192
+    DepthFormat format = DepthFormat::D24;
+    MapFit fit = MapFit::Scene;   // directional, auto-fit: the whole scene, the view, or cascades
+    int cascadeCount = 4;         // fit = cascades: 2..4 maps of map_size^2 each
+    float splitLambda = 0.75f;    // 0: uniform splits, 1: logarithmic
+    float cascadeBlend = 0.1f;    // fraction of a cascade's range blended into the next
+    bool snapTexels = true;       // fitted maps move by whole texels: no shimmer as the camera moves
+    bool borderClamp = true;      // outside the map: lit (border depth 1) instead of the edge texel
+    bool farFix = true;           // beyond the far plane: lit instead of shadowed
+    bool cullFront = false;       // depth pass draws back faces only
+    bool sixCubePasses = false;   // point light: six passes instead of one geometry-shader pass
 
-  int mapSize() const { return 256 << mapSizeIndex; }
-  static constexpr int mapSizeIndexOf(int size) { return std::countr_zero(unsigned(size / 256)); }
+    int size() const { return 256 << sizeIndex; }
+    static constexpr int sizeIndexOf(int size) { return std::countr_zero(unsigned(size / 256)); }
+  } map;
+  struct Bias {
+    float constant = 2.5f;        // texels (the floor of the slope-scaled bias)
+    float slope = 4.0f;           // texels, k in max(k (1 - N.L), constant)
+    float normalOffset = 0.0f;    // texels along the normal
+    float offsetFactor = 0.0f;    // glPolygonOffset factor
+    float offsetUnits = 0.0f;     // glPolygonOffset units
+    bool receiverPlane = true;    // filter taps compare against the receiver plane at each tap
+  } bias;
+  struct Filter {
+    ShadowFilter type = ShadowFilter::Pcf;
+    int pcfSize = 3;              // N in N x N (compile-time loop bound)
+    int poissonIndex = 1;         // 8 << index samples: 8, 16, 32, 64
+    float poissonRadius = 2.0f;   // texels
+    bool rotateSamples = true;    // per-pixel rotation of the Poisson disk
+    int blockerIndex = 1;         // PCSS blocker search samples: 8 << index
+    int pcssIndex = 1;            // PCSS filter samples: 8 << index (16: on the error-cost front)
+    int blurRadius = 2;           // filtered maps: Gaussian blur, texels each way (0: no blur pass)
+    bool momentMips = true;       // filtered maps: mipmapped, sampled trilinear
+    float minVariance = 1e-5f;    // VSM/EVSM: variance floor (in normalised depth squared)
+    float bleedReduction = 0.3f;  // VSM: p -> (p - a) / (1 - a)
+    float esmExponent = 60.0f;    // ESM: c in exp(c t)
+    float evsmPositive = 30.0f;   // EVSM: exponents of the positive and negative warps
+    float evsmNegative = 8.0f;
+  } filter;
+  struct View {
+    ShadowView mode = ShadowView::Shaded;
+    int depthLight = 0;           // the map the depth views show: 0 key, 1 fill
+    int depthCascade = 0;         // ... and which cascade of the key light's
+    float depthZoom = 1.0f;
+    float depthCentreU = 0.5f;
+    float depthCentreV = 0.5f;
+    bool showFrustum = false;
+  } view;
+  struct SceneSettings {
+    int tessellation = 48;
+    float scale = 1.0f;
+  } scene;
 };
+
 
 class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
  public:
@@ -162,7 +168,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   // drawn with a warning naming both sizes.
   bool ensureMap(ShadowMap& map, const MapShape& shape, const char* which);
   // The size a map was allocated at (the texel size the shaders use), or the asked size if none.
-  int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.mapSize(); }
+  int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.map.size(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;

@@ -22,20 +22,17 @@ ReferenceSpec ShadowsLab::reference() const {
   spec.displayEncoded = false;  // visibility, not colour
   spec.truth = "ray-traced";
   spec.overrides = edits<ShadowsLab>(params, [](ShadowsParams& p) {
-    const ShadowsParams defaults;
-    p.filter = ShadowFilter::Hard;
-    p.mapSizeIndex = ShadowsParams::mapSizeIndexOf(2048);
-    p.depthFormat = DepthFormat::D24;
-    p.fit = MapFit::Scene;
-    p.bias = defaults.bias, p.slopeBias = defaults.slopeBias;
-    p.normalOffset = p.offsetFactor = p.offsetUnits = 0.0f;
-    p.pcfSize = 3;
-    p.receiverPlane = true;
-    p.cullFront = false;
-    p.borderClamp = p.farFix = true;
-    p.view = ShadowView::Visibility;
-    p.showFrustum = false;
-    p.fillLight = false;
+    p.filter.type = ShadowFilter::Hard;
+    p.filter.pcfSize = 3;
+    p.map.sizeIndex = ShadowsParams::Map::sizeIndexOf(2048);
+    p.map.format = DepthFormat::D24;
+    p.map.fit = MapFit::Scene;
+    p.map.cullFront = false;
+    p.map.borderClamp = p.map.farFix = true;
+    p.bias = {};  // the default bias, all of it
+    p.view.mode = ShadowView::Visibility;
+    p.view.showFrustum = false;
+    p.fill.on = false;
   });
   spec.description = "Embree ray-traced visibility of the key light on the same triangles and camera, two truths in "
                      "one image: the point light (one ray per pixel; visibility_rmse_hard, misclassified_pct, acne_pct, "
@@ -127,108 +124,113 @@ std::vector<SweepAxis> ShadowsLab::standardSweep() const {
 std::vector<StressCase> ShadowsLab::stressCases() const {
   const auto edit = [](auto change) { return fromDefaults<ShadowsLab>(change); };
   return {
-      {"grazing-85", edit([](ShadowsParams& p) { p.elevationDeg = 5.0f; }), "", "", "grazing light"},
-      {"grazing-89.9", edit([](ShadowsParams& p) { p.elevationDeg = 0.1f; }), "", "", "grazing light"},
-      {"grazing-89.9-pcss", edit([](ShadowsParams& p) { p.elevationDeg = 0.1f, p.filter = ShadowFilter::Pcss; }), "",
-       "", "grazing light"},
+      {"grazing-85", edit([](ShadowsParams& p) { p.key.elevationDeg = 5.0f; }), "", "", "grazing light"},
+      {"grazing-89.9", edit([](ShadowsParams& p) { p.key.elevationDeg = 0.1f; }), "", "", "grazing light"},
+      {"grazing-89.9-pcss",
+       edit([](ShadowsParams& p) { p.key.elevationDeg = 0.1f, p.filter.type = ShadowFilter::Pcss; }), "", "",
+       "grazing light"},
       {"point-light-inside-sphere",
-       edit([](ShadowsParams& p) { p.keyType = LightType::Point, p.lightDistance = 0.0f; }), "sphere", "",
+       edit([](ShadowsParams& p) { p.key.type = LightType::Point, p.key.distance = 0.0f; }), "sphere", "",
        "inside geometry"},
-      {"spot-light-inside-scene", edit([](ShadowsParams& p) { p.keyType = LightType::Spot, p.lightDistance = 0.3f; }),
+      {"spot-light-inside-scene", edit([](ShadowsParams& p) { p.key.type = LightType::Spot, p.key.distance = 0.3f; }),
        "", "", "inside the scene"},
       {"near-far-ratio-1e4", edit([](ShadowsParams& p) {
-         p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 0.001f, p.farPlane = 10.0f;
+         p.key.type = LightType::Spot, p.map.autoFit = false, p.map.nearPlane = 0.001f, p.map.farPlane = 10.0f;
        }),
        "", "", ""},
       {"near-far-ratio-1e6", edit([](ShadowsParams& p) {
-         p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+         p.key.type = LightType::Spot, p.map.autoFit = false, p.map.nearPlane = 1e-5f, p.map.farPlane = 10.0f;
        }),
        "", "", "far/near ratio"},
       {"point-near-far-ratio-1e6", edit([](ShadowsParams& p) {
-         p.keyType = LightType::Point, p.autoFit = false, p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+         p.key.type = LightType::Point, p.map.autoFit = false, p.map.nearPlane = 1e-5f, p.map.farPlane = 10.0f;
        }),
        "", "", "far/near ratio"},
-      {"near-beyond-far", edit([](ShadowsParams& p) { p.autoFit = false, p.nearPlane = 5.0f, p.farPlane = 1.0f; }), "",
-       "", "near plane is beyond"},
-      {"light-radius-0-pcss", edit([](ShadowsParams& p) { p.filter = ShadowFilter::Pcss, p.lightRadius = 0.0f; }), "",
-       "", "radius 0"},
-      {"light-radius-huge-pcss", edit([](ShadowsParams& p) { p.filter = ShadowFilter::Pcss, p.lightRadius = 10.0f; }),
-       "", "", "larger than the scene"},
-      {"ortho-extent-tiny", edit([](ShadowsParams& p) { p.autoFit = false, p.orthoExtent = 0.001f; }), "", "",
+      {"near-beyond-far",
+       edit([](ShadowsParams& p) { p.map.autoFit = false, p.map.nearPlane = 5.0f, p.map.farPlane = 1.0f; }), "", "",
+       "near plane is beyond"},
+      {"light-radius-0-pcss", edit([](ShadowsParams& p) { p.filter.type = ShadowFilter::Pcss, p.key.radius = 0.0f; }),
+       "", "", "radius 0"},
+      {"light-radius-huge-pcss",
+       edit([](ShadowsParams& p) { p.filter.type = ShadowFilter::Pcss, p.key.radius = 10.0f; }), "", "",
+       "larger than the scene"},
+      {"ortho-extent-tiny", edit([](ShadowsParams& p) { p.map.autoFit = false, p.map.orthoExtent = 0.001f; }), "", "",
        "outside the map"},
       {"ortho-extent-huge", edit([](ShadowsParams& p) {
-         p.autoFit = false, p.orthoExtent = 1000.0f, p.nearPlane = 0.001f, p.farPlane = 10000.0f;
+         p.map.autoFit = false, p.map.orthoExtent = 1000.0f, p.map.nearPlane = 0.001f, p.map.farPlane = 10000.0f;
        }),
        "", "", ""},
-      {"scene-scale-1e-3", edit([](ShadowsParams& p) { p.sceneScale = 0.001f, p.filter = ShadowFilter::Pcss; }), "", "",
-       ""},
-      {"scene-scale-1e4", edit([](ShadowsParams& p) { p.sceneScale = 10000.0f, p.filter = ShadowFilter::Pcss; }), "",
+      {"scene-scale-1e-3", edit([](ShadowsParams& p) { p.scene.scale = 0.001f, p.filter.type = ShadowFilter::Pcss; }),
+       "", "", ""},
+      {"scene-scale-1e4", edit([](ShadowsParams& p) { p.scene.scale = 10000.0f, p.filter.type = ShadowFilter::Pcss; }),
+       "", "", ""},
+      {"point-scale-1e-3", edit([](ShadowsParams& p) { p.scene.scale = 0.001f, p.key.type = LightType::Point; }), "",
        "", ""},
-      {"point-scale-1e-3", edit([](ShadowsParams& p) { p.sceneScale = 0.001f, p.keyType = LightType::Point; }), "", "",
-       ""},
       {"pcss-blocker-at-receiver",
-       edit([](ShadowsParams& p) { p.filter = ShadowFilter::Pcss, p.bias = 0.0f, p.slopeBias = 0.0f; }), "", "",
-       "no bias"},
+       edit([](ShadowsParams& p) { p.filter.type = ShadowFilter::Pcss, p.bias.constant = 0.0f, p.bias.slope = 0.0f; }),
+       "", "", "no bias"},
       {"point-pcss", edit([](ShadowsParams& p) {
-         p.keyType = LightType::Point, p.filter = ShadowFilter::Pcss, p.lightRadius = 0.3f;
+         p.key.type = LightType::Point, p.filter.type = ShadowFilter::Pcss, p.key.radius = 0.3f;
        }),
        "", "", ""},
-      {"no-light-casts", edit([](ShadowsParams& p) { p.keyCasts = false; }), "", "", "no light casts"},
-      {"empty-scene", edit([](ShadowsParams& p) { p.fillLight = true; }), "empty", "", ""},
+      {"no-light-casts", edit([](ShadowsParams& p) { p.key.casts = false; }), "", "", "no light casts"},
+      {"empty-scene", edit([](ShadowsParams& p) { p.fill.on = true; }), "empty", "", ""},
       {"map-8192-d32f", edit([](ShadowsParams& p) {
-         p.mapSizeIndex = ShadowsParams::mapSizeIndexOf(8192), p.depthFormat = DepthFormat::D32F,
-         p.filter = ShadowFilter::Pcf, p.pcfSize = 15;
+         p.map.sizeIndex = ShadowsParams::Map::sizeIndexOf(8192), p.map.format = DepthFormat::D32F,
+         p.filter.type = ShadowFilter::Pcf, p.filter.pcfSize = 15;
        }),
        "", "", ""},
       // Filtered maps: moments of depth in 32-bit float must stay finite however stretched the depth range.
       {"vsm-near-far-ratio-1e6", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Vsm, p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 1e-5f,
-         p.farPlane = 10.0f;
+         p.filter.type = ShadowFilter::Vsm, p.key.type = LightType::Spot, p.map.autoFit = false,
+         p.map.nearPlane = 1e-5f, p.map.farPlane = 10.0f;
        }),
        "", "", "far/near ratio"},
       {"esm-near-far-ratio-1e6", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Esm, p.esmExponent = 85.0f, p.keyType = LightType::Spot, p.autoFit = false,
-         p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+         p.filter.type = ShadowFilter::Esm, p.filter.esmExponent = 85.0f, p.key.type = LightType::Spot,
+         p.map.autoFit = false, p.map.nearPlane = 1e-5f, p.map.farPlane = 10.0f;
        }),
        "", "", "far/near ratio"},
       {"evsm-near-far-ratio-1e6", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Evsm, p.evsmPositive = 42.0f, p.evsmNegative = 42.0f, p.keyType = LightType::Spot,
-         p.autoFit = false, p.nearPlane = 1e-5f, p.farPlane = 10.0f;
+         p.filter.type = ShadowFilter::Evsm, p.filter.evsmPositive = 42.0f, p.filter.evsmNegative = 42.0f,
+         p.key.type = LightType::Spot, p.map.autoFit = false, p.map.nearPlane = 1e-5f, p.map.farPlane = 10.0f;
        }),
        "", "", "far/near ratio"},
       {"vsm-near-far-ratio-1e-4", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Vsm, p.keyType = LightType::Spot, p.autoFit = false, p.nearPlane = 10.0f,
-         p.farPlane = 0.001f;
+         p.filter.type = ShadowFilter::Vsm, p.key.type = LightType::Spot, p.map.autoFit = false,
+         p.map.nearPlane = 10.0f, p.map.farPlane = 0.001f;
        }),
        "", "", "near plane is beyond"},
       {"esm-near-far-ratio-1e-4", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Esm, p.autoFit = false, p.nearPlane = 10.0f, p.farPlane = 0.001f;
+         p.filter.type = ShadowFilter::Esm, p.map.autoFit = false, p.map.nearPlane = 10.0f, p.map.farPlane = 0.001f;
        }),
        "", "", "near plane is beyond"},
       {"evsm-ortho-huge", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Evsm, p.autoFit = false, p.orthoExtent = 1000.0f, p.nearPlane = 0.001f,
-         p.farPlane = 10000.0f;
+         p.filter.type = ShadowFilter::Evsm, p.map.autoFit = false, p.map.orthoExtent = 1000.0f,
+         p.map.nearPlane = 0.001f, p.map.farPlane = 10000.0f;
        }),
        "", "", ""},
       {"vsm-no-blur-no-mips-scale-1e4", edit([](ShadowsParams& p) {
-         p.filter = ShadowFilter::Vsm, p.blurRadius = 0, p.momentMips = false, p.minVariance = 0.0f,
-         p.sceneScale = 10000.0f;
+         p.filter.type = ShadowFilter::Vsm, p.filter.blurRadius = 0, p.filter.momentMips = false,
+         p.filter.minVariance = 0.0f, p.scene.scale = 10000.0f;
        }),
        "", "", ""},
       {"vsm-point-light-falls-back",
-       edit([](ShadowsParams& p) { p.filter = ShadowFilter::Vsm, p.keyType = LightType::Point; }), "", "",
+       edit([](ShadowsParams& p) { p.filter.type = ShadowFilter::Vsm, p.key.type = LightType::Point; }), "", "",
        "point light"},
       // Cascades and view fitting at the edges of what they handle.
-      {"cascades-grazing-0.1",
-       edit([](ShadowsParams& p) { p.fit = MapFit::Cascades, p.elevationDeg = 0.1f, p.filter = ShadowFilter::Pcss; }),
+      {"cascades-grazing-0.1", edit([](ShadowsParams& p) {
+         p.map.fit = MapFit::Cascades, p.key.elevationDeg = 0.1f, p.filter.type = ShadowFilter::Pcss;
+       }),
        "", "", "grazing light"},
-      {"cascades-scale-1e-3",
-       edit([](ShadowsParams& p) { p.fit = MapFit::Cascades, p.sceneScale = 0.001f, p.filter = ShadowFilter::Evsm; }),
+      {"cascades-scale-1e-3", edit([](ShadowsParams& p) {
+         p.map.fit = MapFit::Cascades, p.scene.scale = 0.001f, p.filter.type = ShadowFilter::Evsm;
+       }),
        "", "", ""},
-      {"view-fit-camera-sees-nothing", edit([](ShadowsParams& p) { p.fit = MapFit::View; }), "",
+      {"view-fit-camera-sees-nothing", edit([](ShadowsParams& p) { p.map.fit = MapFit::View; }), "",
        "yaw=0,pitch=80,distance=5,target=0;300;0", ""},
       {"cascades-learnopengl-far-100",
-       edit([](ShadowsParams& p) { p.fit = MapFit::Cascades, p.cascadeCount = 4, p.splitLambda = 1.0f; }),
+       edit([](ShadowsParams& p) { p.map.fit = MapFit::Cascades, p.map.cascadeCount = 4, p.map.splitLambda = 1.0f; }),
        "learnopengl", "", ""},
   };
 }

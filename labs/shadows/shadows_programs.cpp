@@ -12,35 +12,35 @@ namespace shadelab {
 ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) const {
   ProgramSpec spec;
   spec.stages = {{GL_VERTEX_SHADER, "shadows/lit.vert"}, {GL_FRAGMENT_SHADER, "shadows/lit.frag"}};
-  spec.defines.emplace_back("KEY_TYPE", std::to_string(int(p.keyType)));
+  spec.defines.emplace_back("KEY_TYPE", std::to_string(int(p.key.type)));
   const bool gbuffer = internal != InternalView::None;
-  if (p.keyCasts && !gbuffer) spec.defines.emplace_back("KEY_CASTS", "1");
-  if (p.fillLight && !gbuffer) {
+  if (p.key.casts && !gbuffer) spec.defines.emplace_back("KEY_CASTS", "1");
+  if (p.fill.on && !gbuffer) {
     spec.defines.emplace_back("FILL_LIGHT", "1");
-    if (p.fillCasts) spec.defines.emplace_back("FILL_CASTS", "1");
+    if (p.fill.casts) spec.defines.emplace_back("FILL_CASTS", "1");
   }
-  if (p.farFix) spec.defines.emplace_back("FAR_FIX", "1");
-  if (p.receiverPlane) spec.defines.emplace_back("RECEIVER_PLANE", "1");
+  if (p.map.farFix) spec.defines.emplace_back("FAR_FIX", "1");
+  if (p.bias.receiverPlane) spec.defines.emplace_back("RECEIVER_PLANE", "1");
   const ShadowFilter filter = effectiveFilterOf(p);
   spec.defines.emplace_back(rowOf(kShadowFilters, filter).define, "1");
   switch (rowOf(kShadowFilters, filter).settings) {
     case FilterSettings::None: break;
-    case FilterSettings::PcfSize: spec.defines.emplace_back("PCF_SIZE", std::to_string(p.pcfSize)); break;
+    case FilterSettings::PcfSize: spec.defines.emplace_back("PCF_SIZE", std::to_string(p.filter.pcfSize)); break;
     case FilterSettings::PoissonDisk:
-      spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.poissonIndex));
-      if (p.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
+      spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.filter.poissonIndex));
+      if (p.filter.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
       break;
     case FilterSettings::PcssSamples:
-      spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.blockerIndex));
-      spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.pcssIndex));
+      spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.filter.blockerIndex));
+      spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.filter.pcssIndex));
       break;
   }
-  if (const int cascades = cascadeCountOf(p); cascades >= 2 && p.keyCasts && !gbuffer)
+  if (const int cascades = cascadeCountOf(p); cascades >= 2 && p.key.casts && !gbuffer)
     spec.defines.emplace_back("CASCADE_COUNT", std::to_string(cascades));
   spec.defines.emplace_back(internal == InternalView::Position ? "VIEW_POSITION"
                             : internal == InternalView::Normal ? "VIEW_NORMAL"
-                                                               : rowOf(kShadowViews, p.view).define, "1");
-  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.keyType)]) + " " + filterName(filter);
+                                                               : rowOf(kShadowViews, p.view.mode).define, "1");
+  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.key.type)]) + " " + filterName(filter);
   return spec;
 }
 
@@ -79,9 +79,9 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
   ProgramSpec spec;
   spec.name = "shadows/depth view";
   spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/depth_view.frag"}};
-  const LightType shown = p.depthLight == 1 ? LightType::Spot : p.keyType;  // the fill light is a spot
+  const LightType shown = p.view.depthLight == 1 ? LightType::Spot : p.key.type;  // the fill light is a spot
   spec.defines.emplace_back("KEY_TYPE", std::to_string(int(shown)));
-  if (p.view == ShadowView::DepthLinear) spec.defines.emplace_back("LINEAR_DEPTH", "1");
+  if (p.view.mode == ShadowView::DepthLinear) spec.defines.emplace_back("LINEAR_DEPTH", "1");
   return spec;
 }
 
@@ -92,13 +92,13 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
     if (isMomentFilter(row.value)) all.push_back(depthSpec(false, false, row.value));
   ShadowsParams p;
   for (int type = 0; type < 3; ++type) {
-    p.keyType = LightType(type);
+    p.key.type = LightType(type);
     for (ShadowView view : {ShadowView::DepthRaw, ShadowView::DepthLinear}) {
-      p.view = view;
+      p.view.mode = view;
       all.push_back(depthViewSpec(p));
     }
   }
-  p.depthLight = 1;
+  p.view.depthLight = 1;
   all.push_back(depthViewSpec(p));
 
   // The lit program: every value of every parameter that shapes it, and every pair of values of
@@ -131,25 +131,25 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   const int fits = 5;                               // scene, view, cascades x 2, 3, 4
   for (const auto& row : pairwiseCover({3, int(filters.size()), viewCount, 3, 2, 2, 2, fits})) {
     ShadowsParams q;
-    q.keyType = LightType(row[0]);
+    q.key.type = LightType(row[0]);
     const FilterVariant& f = filters[size_t(row[1])];
-    q.filter = f.filter;
+    q.filter.type = f.filter;
     switch (rowOf(kShadowFilters, f.filter).settings) {
       case FilterSettings::None: break;
-      case FilterSettings::PcfSize: q.pcfSize = f.a; break;
-      case FilterSettings::PoissonDisk: q.poissonIndex = f.a, q.rotateSamples = f.b == 1; break;
-      case FilterSettings::PcssSamples: q.blockerIndex = f.a, q.pcssIndex = f.b; break;
+      case FilterSettings::PcfSize: q.filter.pcfSize = f.a; break;
+      case FilterSettings::PoissonDisk: q.filter.poissonIndex = f.a, q.filter.rotateSamples = f.b == 1; break;
+      case FilterSettings::PcssSamples: q.filter.blockerIndex = f.a, q.filter.pcssIndex = f.b; break;
     }
     InternalView internal = InternalView::None;
-    if (row[2] < int(std::size(views))) q.view = views[row[2]];
+    if (row[2] < int(std::size(views))) q.view.mode = views[row[2]];
     else internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;
-    q.fillLight = row[3] > 0;
-    q.fillCasts = row[3] == 2;
-    q.keyCasts = row[4] == 1;
-    q.farFix = row[5] == 1;
-    q.receiverPlane = row[6] == 1;
-    q.fit = row[7] == 0 ? MapFit::Scene : row[7] == 1 ? MapFit::View : MapFit::Cascades;
-    q.cascadeCount = std::max(row[7], 2);
+    q.fill.on = row[3] > 0;
+    q.fill.casts = row[3] == 2;
+    q.key.casts = row[4] == 1;
+    q.map.farFix = row[5] == 1;
+    q.bias.receiverPlane = row[6] == 1;
+    q.map.fit = row[7] == 0 ? MapFit::Scene : row[7] == 1 ? MapFit::View : MapFit::Cascades;
+    q.map.cascadeCount = std::max(row[7], 2);
     all.push_back(litSpec(q, internal));
   }
 
@@ -191,7 +191,7 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
 std::vector<ProgramSpec> ShadowsLab::currentPrograms() const {
   const ShadowFilter filter = effectiveFilterOf(params);
   std::vector<ProgramSpec> out = {litSpec(params, InternalView::None), litSpec(params, InternalView::Position),
-                                  depthSpec(params.keyType == LightType::Point, params.sixCubePasses, filter),
+                                  depthSpec(params.key.type == LightType::Point, params.map.sixCubePasses, filter),
                                   depthSpec(false, false, filter), depthViewSpec(params)};
   if (isMomentFilter(filter)) out.push_back(blurSpec());
   return out;
