@@ -77,7 +77,7 @@ BilateralResult bilateralNormalFilter(std::span<const glm::dvec3> start, std::sp
         ++pairs;
       }
   const double sigmaS = std::max(s.sigmaSScale * (pairs ? spacing / double(pairs) : 1.0), 1e-300);
-  const double sigmaR = std::max(s.sigmaR, 1e-6);
+  const double sigmaR = std::max(double(s.sigmaR), 1e-6);
   const int total = s.normalIterations + s.vertexIterations;
 
   std::vector<glm::dvec3> filtered(faces);

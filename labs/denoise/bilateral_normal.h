@@ -21,7 +21,7 @@ namespace shadelab {
 struct BilateralSettings {
   int normalIterations = 20;
   int vertexIterations = 10;
-  double sigmaR = 0.35;       // normal difference (|n_i - n_j|, 0..2) that still counts
+  float sigmaR = 0.35f;       // normal difference (|n_i - n_j|, 0..2) that still counts
   double sigmaSScale = 1.0;   // x the mean distance between neighbouring face centroids
 };
 

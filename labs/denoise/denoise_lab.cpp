@@ -55,70 +55,90 @@ std::string_view DenoiseLab::defaultScene() const { return denoiseDefaultScene()
 
 std::vector<SceneRecipe> DenoiseLab::scenes() const { return denoiseScenes(); }
 
-void DenoiseLab::visitParams(ParamVisitor& v) {
-  auto& p = params;
-  v.section("Noisy input");
+// One function per section of the panel, each given its own part of the parameters.
+namespace {
+
+void visitInput(ParamVisitor& v, DenoiseParams::Input& input) {
   v.enumParam({"input", "Input", "", "published: the data set's noisy twin (Guided Mesh Normal Filtering pairs); "
-               "generated: noise added here with the settings below."}, p.input, kInputs);
+               "generated: noise added here with the settings below."}, input.source, kInputs);
   v.enumParam({"noise", "Noise", "", "gaussian: every vertex moves along its normal; impulsive: only a random "
-               "fraction does."}, p.noiseKind, kNoiseKinds);
+               "fraction does."}, input.noise.kind, kNoiseKinds);
   v.floatParam({"noise_level", "Noise level", "edges", "Standard deviation of the move, in mean edge lengths of the "
-                "clean mesh."}, p.noiseLevel, 0.0f, 2.0f);
+                "clean mesh."}, input.noise.level, 0.0f, 2.0f);
   v.floatParam({"impulsive_fraction", "Impulsive fraction", "", "Share of the vertices impulsive noise moves."},
-               p.impulsiveFraction, 0.0f, 1.0f);
+               input.noise.impulsiveFraction, 0.0f, 1.0f);
   v.intParam({"seed", "Seed", "", "Random seed of the generated noise: the same seed, the same noise everywhere."},
-             p.seed, 0, 1000000);
+             input.noise.seed, 0, 1000000);
   v.action({"add_noise", "Add new noise", "", "Draws fresh generated noise (seed + 1) and switches the input to it."},
-           [&p] {
-             ++p.seed;
-             p.input = NoiseSource::Generated;
+           [&input] {
+             ++input.noise.seed;
+             input.source = NoiseSource::Generated;
            });
-  v.section("Smoothing");
+}
+
+void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
   v.enumParam({"method", "Method", "", "explicit: p' = p - lambda <delta,n> n, stable only for small steps; taubin: a "
                "lambda step then a shrink-undoing mu step; implicit: (D + lambda L) x' = D x, stable for any lambda; "
-               "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."}, p.method, kMethods);
+               "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."}, smoothing.method, kMethods);
   v.enumParam({"weights", "Laplacian weights", "", "uniform: every neighbour alike; cotangent: by the angles opposite "
-               "each edge, following the geometry rather than the triangulation."}, p.weights, kWeights);
+               "each edge, following the geometry rather than the triangulation."}, smoothing.laplacian.weights, kWeights);
   v.floatParam({"lambda", "Lambda", "", "Step size. Explicit and Taubin: stable up to 2 / mu_max (the panel shows it, "
-                "about 1); implicit: any value, larger = smoother."}, p.lambda, 1e-3f, 1e5f, true);
-  v.intParam({"iterations", "Iterations", "", "Smoothing steps (bilateral: vertex updates)."}, p.iterations, 1, 200);
+                "about 1); implicit: any value, larger = smoother."}, smoothing.laplacian.lambda, 1e-3f, 1e5f, true);
+  v.intParam({"iterations", "Iterations", "", "Smoothing steps (bilateral: vertex updates)."}, smoothing.laplacian.iterations, 1, 200);
   v.boolParam({"along_normal", "Along the normal", "", "Explicit and Taubin move each vertex along its normal only "
                "(the homework); off: the full umbrella vector, which also slides vertices along the surface."},
-              p.alongNormal);
+              smoothing.laplacian.alongNormal);
   v.boolParam({"clamp_cotangent", "Clamp negative weights", "", "Obtuse triangles make cotangent weights negative; "
-               "clamped to 0, every update stays a convex combination."}, p.clampCotangent);
-  v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."}, p.passBand, 0.01f, 0.3f);
+               "clamped to 0, every update stays a convex combination."}, smoothing.laplacian.clampNegative);
+  v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."}, smoothing.laplacian.passBand, 0.01f, 0.3f);
   v.floatParam({"sigma_r", "Bilateral sigma_r", "", "How different two face normals (|n_i - n_j|) may be and still "
-                "be averaged: small keeps more edges."}, p.sigmaR, 0.02f, 2.0f, true);
+                "be averaged: small keeps more edges."}, smoothing.bilateral.sigmaR, 0.02f, 2.0f, true);
   v.intParam({"normal_iterations", "Bilateral normal passes", "", "Passes of the normal filter before the vertices "
-              "are fitted."}, p.normalIterations, 1, 100);
+              "are fitted."}, smoothing.bilateral.normalIterations, 1, 100);
   v.boolParam({"weld", "Weld seams", "", "Smooth the welded surface (one vertex per position). Off: copies of a "
-               "position split by UV seams are smoothed apart, the homework's crack."}, p.weld);
-  v.section("Displacement map");
-  v.choiceParam({"map_size", "Map size", "texels", "Resolution of the baked map (square)."}, p.mapSizeIndex, kMapSizes);
+               "position split by UV seams are smoothed apart, the homework's crack."}, smoothing.weld);
+}
+
+void visitMap(ParamVisitor& v, DenoiseParams::Map& map, const std::function<void()>& saveMap) {
+  v.choiceParam({"map_size", "Map size", "texels", "Resolution of the baked map (square)."}, map.sizeIndex, kMapSizes);
   v.enumParam({"bake", "Bake", "", "nearest-exact: each texel takes its nearest vertex's offset (FLANN kd-tree): exact "
                "at the vertices, where a vertex shader reads it; nearest-approx: FLANN's randomised trees with a budget "
                "of checks; raster: interpolated inside each UV triangle and dilated into the gutter: smooth between "
                "vertices (what tessellation or a per-fragment read wants), but a bilinear read at a vertex blends it "
-               "with its neighbours."}, p.bakeMethod, kBakeMethods);
+               "with its neighbours."}, map.bake.method, kBakeMethods);
   v.intParam({"checks", "FLANN checks", "", "nearest-approx: leaves visited per query. Fewer: faster, more often "
-              "not the nearest."}, p.checks, 1, 512);
+              "not the nearest."}, map.bake.checks, 1, 512);
   v.intParam({"gutter", "Gutter", "texels", "raster: texels of dilation around each UV chart, so bilinear lookups "
-              "near a seam read their own chart."}, p.gutter, 0, 16);
+              "near a seam read their own chart."}, map.bake.gutter, 0, 16);
   v.enumParam({"map_format", "Map format", "bits", "8 or 16-bit normalised with a bias and scale, or float."},
-              p.mapFormat, kFormats);
+              map.bake.format, kFormats);
   v.boolParam({"bilinear", "Bilinear lookup", "", "The vertex shader samples the map bilinearly (off: nearest "
-               "texel)."}, p.bilinear);
+               "texel)."}, map.bilinear);
   v.action({"bake_files", "Save the map", "", "Writes the map as out/bakes/<scene>-*.png (+ .raw texels, + .json with "
-            "bias, scale and format)."}, [this] { lastAction_ = saveMap(); });
-  v.section("View");
+            "bias, scale and format)."}, saveMap);
+}
+
+void visitView(ParamVisitor& v, DenoiseParams::View& view) {
   v.enumParam({"show", "Show", "", "smoothed: the method's mesh; noisy; clean; map: the noisy mesh displaced by the map "
                "in the vertex shader; attribute: displaced by the same offsets as a vertex attribute; compare: map, "
-               "attribute and smoothed side by side."}, p.show, kShows);
+               "attribute and smoothed side by side."}, view.show, kShows);
   v.enumParam({"view", "View", "", "shaded (flat, so noise shows); error: distance to the clean mesh; offset: the "
-               "signed offset along the normal; seam-gap: how far copies of a position moved apart."}, p.view, kViews);
+               "signed offset along the normal; seam-gap: how far copies of a position moved apart."}, view.mode, kViews);
   v.floatParam({"heat_scale", "Heat scale", "edges", "Mean edge lengths at full colour in the error and seam-gap views "
-                "(offsets: +-2x this)."}, p.heatScale, 1e-3f, 10.0f, true);
+                "(offsets: +-2x this)."}, view.heatScale, 1e-3f, 10.0f, true);
+}
+
+}  // namespace
+
+void DenoiseLab::visitParams(ParamVisitor& v) {
+  v.section("Noisy input");
+  visitInput(v, params.input);
+  v.section("Smoothing");
+  visitSmoothing(v, params.smoothing);
+  v.section("Displacement map");
+  visitMap(v, params.map, [this] { lastAction_ = saveMap(); });
+  v.section("View");
+  visitView(v, params.view);
 }
 
 SceneNeeds DenoiseLab::needs() const {
@@ -130,21 +150,16 @@ SceneNeeds DenoiseLab::needs() const {
 DenoiseConfig DenoiseLab::config() const {
   const auto& p = params;
   DenoiseConfig c;
-  c.publishedInput = p.input == NoiseSource::Published;
-  c.noise = {p.noiseKind, p.noiseLevel, p.impulsiveFraction, uint32_t(p.seed)};
-  c.method = p.method;
-  c.smoothing.weights = p.weights;
-  c.smoothing.lambda = p.lambda;
-  c.smoothing.iterations = p.iterations;
-  c.smoothing.alongNormal = p.alongNormal;
-  c.smoothing.clampNegative = p.clampCotangent;
-  c.smoothing.passBand = p.passBand;
-  c.bilateral.sigmaR = p.sigmaR;
-  c.bilateral.normalIterations = p.normalIterations;
-  c.bilateral.vertexIterations = p.iterations;
-  c.weld = p.weld;
-  c.bake = {p.bakeMethod, 64 << p.mapSizeIndex, p.checks, p.gutter, p.mapFormat};
-  c.bilinear = p.bilinear;
+  c.publishedInput = p.input.source == NoiseSource::Published;
+  c.noise = p.input.noise;
+  c.method = p.smoothing.method;
+  c.smoothing = p.smoothing.laplacian;
+  c.bilateral = p.smoothing.bilateral;
+  c.bilateral.vertexIterations = p.smoothing.laplacian.iterations;  // one iterations slider serves both
+  c.weld = p.smoothing.weld;
+  c.bake = p.map.bake;
+  c.bake.resolution = 64 << p.map.sizeIndex;
+  c.bilinear = p.map.bilinear;
   return c;
 }
 
@@ -155,8 +170,8 @@ ProgramSpec DenoiseLab::programSpec(Path path) const {
   spec.name = std::string("denoise/") + pathNames[int(path)];
   if (path == Path::Map) spec.defines.emplace_back("DISPLACE_MAP", "1");
   if (path == Path::Attribute) spec.defines.emplace_back("DISPLACE_ATTRIBUTE", "1");
-  if (params.view == DenoiseView::Offset) spec.defines.emplace_back("VIEW_SIGNED", "1");
-  else if (params.view != DenoiseView::Shaded) spec.defines.emplace_back("VIEW_HEAT", "1");
+  if (params.view.mode == DenoiseView::Offset) spec.defines.emplace_back("VIEW_SIGNED", "1");
+  else if (params.view.mode != DenoiseView::Shaded) spec.defines.emplace_back("VIEW_HEAT", "1");
   return spec;
 }
 
@@ -165,7 +180,7 @@ std::vector<ProgramSpec> DenoiseLab::allPrograms() const {
   DenoiseLab probe;
   for (int view = 0; view < 4; ++view)
     for (Path path : {Path::Plain, Path::Map, Path::Attribute}) {
-      probe.params.view = DenoiseView(view);
+      probe.params.view.mode = DenoiseView(view);
       all.push_back(probe.programSpec(path));
     }
   return all;
@@ -227,7 +242,7 @@ void DenoiseLab::rebuildModel(const Scene& scene) {
 void DenoiseLab::update(const Scene& scene, float) {
   if (scene.revision != modelRevision_) rebuildModel(scene);
   if (!model_) return;
-  if (result_ && (params.show != uploadedShow_ || params.view != uploadedView_)) uploadViewData();
+  if (result_ && (params.view.show != uploadedShow_ || params.view.mode != uploadedView_)) uploadViewData();
   const DenoiseConfig want = config();
   if (requested_ && *requested_ == want) return;  // computed, or being computed
   requested_ = want;
@@ -284,27 +299,27 @@ void DenoiseLab::upload(DenoiseResult r) {
 void DenoiseLab::uploadViewData() {
   if (!result_) return;
   const DenoiseResult& r = *result_;
-  uploadedShow_ = params.show;
-  uploadedView_ = params.view;
+  uploadedShow_ = params.view.show;
+  uploadedView_ = params.view.mode;
   // The plain mesh draws the smoothed, noisy or clean positions.
-  const std::vector<glm::vec3>& plain = params.show == DenoiseShow::Noisy ? r.noisy
-                                        : params.show == DenoiseShow::Clean ? model_->render.positions
+  const std::vector<glm::vec3>& plain = params.view.show == DenoiseShow::Noisy ? r.noisy
+                                        : params.view.show == DenoiseShow::Clean ? model_->render.positions
                                                                             : r.smoothed;
   plainMesh_.updatePositions(plain);
   // Heat: the distance of what is drawn to the clean mesh, the offset, or the gap between copies.
   std::vector<float> plainHeat(plain.size(), 0.0f);
-  if (params.view == DenoiseView::Offset) {
+  if (params.view.mode == DenoiseView::Offset) {
     plainHeat = r.offsets;
-  } else if (params.view == DenoiseView::Error) {
-    if (params.show == DenoiseShow::Noisy)
+  } else if (params.view.mode == DenoiseView::Error) {
+    if (params.view.show == DenoiseShow::Noisy)
       for (size_t v = 0; v < plain.size(); ++v)
         plainHeat[v] = glm::length(plain[v] - model_->render.positions[v]) / float(model_->meanEdge);
-    else if (params.show != DenoiseShow::Clean)
+    else if (params.view.show != DenoiseShow::Clean)
       plainHeat = r.errorSmoothed;
   }
   plainMesh_.setScalars(kScalar1, plainHeat);
   auto heat = [&](const std::vector<float>& offsets, const std::vector<float>& error, const std::vector<float>& gap) {
-    return params.view == DenoiseView::Offset ? offsets : params.view == DenoiseView::SeamGap ? gap : error;
+    return params.view.mode == DenoiseView::Offset ? offsets : params.view.mode == DenoiseView::SeamGap ? gap : error;
   };
   attributeMesh_.setScalars(kScalar1, heat(r.offsets, r.errorAttribute, r.attributeGap));
   if (mapMesh_ && r.map) mapMesh_.setScalars(kScalar1, heat(r.readBack, r.errorMapped, r.seamGap));
@@ -323,10 +338,10 @@ void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::iv
   const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
   const glm::vec3 back = glm::normalize(frame.camera.eye() - frame.camera.target);
   prog.set("u_keyDir", glm::normalize(-0.55f * right + 0.75f * up + 0.45f * back));
-  prog.set("u_heatScale", params.heatScale);
+  prog.set("u_heatScale", params.view.heatScale);
   if (path == Path::Map && mapTexture_) {
     mapTexture_.bind(0);
-    const GLint filter = params.bilinear ? GL_LINEAR : GL_NEAREST;
+    const GLint filter = params.map.bilinear ? GL_LINEAR : GL_NEAREST;
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     prog.set("u_displacement", 0);
@@ -349,7 +364,7 @@ void DenoiseLab::render(Frame& frame) {
   }
   const glm::ivec2 size = frame.size();
   const bool uvs = model_->hasUvs() && mapMesh_;
-  DenoiseShow show = params.show;
+  DenoiseShow show = params.view.show;
   if ((show == DenoiseShow::Map) && !uvs) show = DenoiseShow::Attribute;  // warnings() says why
   if (show == DenoiseShow::Compare) {
     auto pass = frame.pass(uvs ? "draw: map | attribute | smoothed" : "draw: attribute | smoothed");
@@ -390,7 +405,7 @@ std::vector<ProgramRef> DenoiseLab::activePrograms() const {
 std::string DenoiseLab::saveMap() {
   if (!result_ || !result_->map) return "no map to save: the mesh has no UVs, or no result yet";
   const DisplacementMap& m = *result_->map;
-  const std::string stem = modelScene_ + "-" + std::to_string(m.size.x) + "-" + std::string(kBakeMethods[int(params.bakeMethod)]);
+  const std::string stem = modelScene_ + "-" + std::to_string(m.size.x) + "-" + std::string(kBakeMethods[int(params.map.bake.method)]);
   const auto png = freshName("bakes", stem, ".png");
   ImageF preview;
   preview.size = m.size;
@@ -409,7 +424,7 @@ std::string DenoiseLab::saveMap() {
   if (auto err = writeTextFile(rawPath.string(), std::string(raw.begin(), raw.end())); !err.empty()) return err;
   nlohmann::json meta = {{"width", m.size.x}, {"height", m.size.y}, {"format", std::string(kFormats[int(m.format)])},
                          {"bias", m.bias}, {"scale", m.scale}, {"offset", "stored * scale + bias, along the vertex normal"},
-                         {"rows", "top-down in .png and .raw"}, {"bake", std::string(kBakeMethods[int(params.bakeMethod)])},
+                         {"rows", "top-down in .png and .raw"}, {"bake", std::string(kBakeMethods[int(params.map.bake.method)])},
                          {"raw", m.format == MapFormat::Unorm8 ? "uint8" : m.format == MapFormat::Unorm16 ? "uint16 little-endian" : "float32 little-endian"}};
   auto jsonPath = png;
   jsonPath.replace_extension(".json");

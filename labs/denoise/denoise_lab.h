@@ -19,34 +19,34 @@ enum class NoiseSource { Published, Generated };
 enum class DenoiseShow { Smoothed, Noisy, Clean, Map, Attribute, Compare };
 enum class DenoiseView { Shaded, Error, Offset, SeamGap };
 
+// One nested struct per section of the panel, each visited by its own function (denoise_lab.cpp).
+// Where the pipeline has a settings struct of its own, the section holds it: nothing is copied
+// field by field into the pipeline's configuration.
 struct DenoiseParams {
-  NoiseSource input = NoiseSource::Published;  // the data set's noisy twin, where there is one
-  NoiseKind noiseKind = NoiseKind::Gaussian;
-  float noiseLevel = 0.3f;         // sigma in mean edge lengths
-  float impulsiveFraction = 0.1f;
-  int seed = 1;
-  DenoiseMethod method = DenoiseMethod::Explicit;
-  LaplacianWeights weights = LaplacianWeights::Uniform;
-  float lambda = 0.5f;             // step size; explicit is stable up to about 1 (uniform)
-  int iterations = 10;
-  bool alongNormal = true;         // the homework: move along the normal only
-  bool clampCotangent = true;
-  float passBand = 0.1f;           // Taubin's k_pb
-  float sigmaR = 0.35f;            // bilateral: normal difference that still counts
-  int normalIterations = 20;       // bilateral: normal filtering passes
-  bool weld = true;                // smoothing on the welded surface (off: the seam bug)
-  int mapSizeIndex = 4;            // 64 << index: 64 .. 4096
-  BakeMethod bakeMethod = BakeMethod::Raster;
-  int checks = 32;
-  int gutter = 4;
-  MapFormat mapFormat = MapFormat::Unorm16;
-  bool bilinear = true;            // how the vertex shader samples the map
-  DenoiseShow show = DenoiseShow::Smoothed;
-  DenoiseView view = DenoiseView::Shaded;
-  float heatScale = 0.5f;          // mean edge lengths at full colour (error, seam gap); offsets: twice that
+  struct Input {                   // the noisy input
+    NoiseSource source = NoiseSource::Published;  // the data set's noisy twin, where there is one
+    NoiseSettings noise;           // generated noise (mesh_noise.h)
+  } input;
+  struct Smoothing {
+    DenoiseMethod method = DenoiseMethod::Explicit;
+    SmoothingSettings laplacian;   // explicit, Taubin, implicit (laplacian.h; its method follows `method`)
+    BilateralSettings bilateral;   // sigma_r and the normal passes (its vertex passes are laplacian.iterations)
+    bool weld = true;              // smoothing on the welded surface (off: the seam bug)
+  } smoothing;
+  struct Map {                     // the displacement map
+    int sizeIndex = 4;             // 64 << index: 64 .. 4096
+    BakeSettings bake;             // method, FLANN checks, gutter, format (displacement_bake.h)
+    bool bilinear = true;          // how the vertex shader samples the map
 
-  static constexpr int mapSizeIndexOf(int size) { return std::countr_zero(unsigned(size / 64)); }
+    static constexpr int sizeIndexOf(int size) { return std::countr_zero(unsigned(size / 64)); }
+  } map;
+  struct View {
+    DenoiseShow show = DenoiseShow::Smoothed;
+    DenoiseView mode = DenoiseView::Shaded;
+    float heatScale = 0.5f;        // mean edge lengths at full colour (error, seam gap); offsets: twice that
+  } view;
 };
+
 
 class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
  public:

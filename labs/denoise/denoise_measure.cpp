@@ -64,19 +64,19 @@ std::vector<std::string> DenoiseLab::warnings() const {
     return w;
   }
   const auto& p = params;
-  const bool laplacian = p.method != DenoiseMethod::Bilateral && p.method != DenoiseMethod::Implicit;
+  const bool laplacian = p.smoothing.method != DenoiseMethod::Bilateral && p.smoothing.method != DenoiseMethod::Implicit;
   if (result_) {
     for (auto& n : result_->notes) w.push_back(n);
-    if (laplacian && result_->stabilityLimit > 0 && p.lambda > result_->stabilityLimit && result_->grewAt == 0)
+    if (laplacian && result_->stabilityLimit > 0 && p.smoothing.laplacian.lambda > result_->stabilityLimit && result_->grewAt == 0)
       w.push_back("lambda is above the stable explicit step (about " + formatFixed(result_->stabilityLimit, 2) +
                   "): expect the energy to grow with more iterations");
   }
-  if ((p.show == DenoiseShow::Map || p.show == DenoiseShow::Compare) && !model_->hasUvs())
+  if ((p.view.show == DenoiseShow::Map || p.view.show == DenoiseShow::Compare) && !model_->hasUvs())
     w.push_back("this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
                 "attribute path) instead");
-  if (p.method == DenoiseMethod::Implicit && !p.alongNormal)
+  if (p.smoothing.method == DenoiseMethod::Implicit && !p.smoothing.laplacian.alongNormal)
     w.push_back("implicit smoothing moves all three coordinates; along_normal applies to explicit and Taubin only");
-  if (p.weights == LaplacianWeights::Cotangent && !p.clampCotangent)
+  if (p.smoothing.laplacian.weights == LaplacianWeights::Cotangent && !p.smoothing.laplacian.clampNegative)
     w.push_back("negative cotangent weights are not clamped: updates are no longer convex combinations and may diverge");
   if (!lastAction_.empty()) w.push_back(lastAction_);
   return w;
@@ -161,7 +161,7 @@ std::vector<LabPanel> DenoiseLab::panels() const {
                                 "; grey = its own range; " +
                                 (r.map->repeat ? "repeats (the UVs leave [0, 1])" : "clamps (the UVs stay in [0, 1])");
     map.items.push_back(PanelImage{&mapPreview_, {256, 256}, caption});
-    if (params.show == DenoiseShow::Compare)
+    if (params.view.show == DenoiseShow::Compare)
       map.items.push_back(PanelText{"Compare: the map path, the attribute path, the smoothed mesh (left to right in a wide "
                                     "view, top to bottom in a tall one)."});
     out.push_back(std::move(map));
@@ -180,69 +180,89 @@ std::vector<SweepAxis> DenoiseLab::standardSweep() const {
 std::vector<StressCase> DenoiseLab::stressCases() const {
   const auto edit = [](auto change) { return fromDefaults<DenoiseLab>(change); };
   return {
-      {"explicit-lambda-2", edit([](DenoiseParams& p) { p.lambda = 2.0f, p.iterations = 30, p.alongNormal = false; }),
-       "", "", "diverging"},
-      {"explicit-lambda-2-along-normal", edit([](DenoiseParams& p) { p.lambda = 2.0f, p.iterations = 30; }), "", "",
-       "diverging"},
-      {"cotangent-beyond-its-limit", edit([](DenoiseParams& p) {
-         p.weights = LaplacianWeights::Cotangent, p.lambda = 1.25f, p.iterations = 60, p.alongNormal = false;
+      {"explicit-lambda-2", edit([](DenoiseParams& p) {
+         p.smoothing.laplacian.lambda = 2.0f, p.smoothing.laplacian.iterations = 30,
+         p.smoothing.laplacian.alongNormal = false;
        }),
        "", "", "diverging"},
-      {"explicit-lambda-huge", edit([](DenoiseParams& p) { p.lambda = 100000.0f, p.iterations = 50; }), "", "",
-       "stopped at iteration"},
-      {"explicit-lambda-1.5-runs-away",
-       edit([](DenoiseParams& p) { p.lambda = 1.5f, p.iterations = 200, p.alongNormal = false; }), "", "",
-       "stopped at iteration"},
-      {"implicit-1000x-limit",
-       edit([](DenoiseParams& p) { p.method = DenoiseMethod::Implicit, p.lambda = 1000.0f, p.iterations = 20; }), "",
-       "", ""},
+      {"explicit-lambda-2-along-normal",
+       edit([](DenoiseParams& p) { p.smoothing.laplacian.lambda = 2.0f, p.smoothing.laplacian.iterations = 30; }), "",
+       "", "diverging"},
+      {"cotangent-beyond-its-limit", edit([](DenoiseParams& p) {
+         p.smoothing.laplacian.weights = LaplacianWeights::Cotangent, p.smoothing.laplacian.lambda = 1.25f,
+         p.smoothing.laplacian.iterations = 60, p.smoothing.laplacian.alongNormal = false;
+       }),
+       "", "", "diverging"},
+      {"explicit-lambda-huge",
+       edit([](DenoiseParams& p) { p.smoothing.laplacian.lambda = 100000.0f, p.smoothing.laplacian.iterations = 50; }),
+       "", "", "stopped at iteration"},
+      {"explicit-lambda-1.5-runs-away", edit([](DenoiseParams& p) {
+         p.smoothing.laplacian.lambda = 1.5f, p.smoothing.laplacian.iterations = 200,
+         p.smoothing.laplacian.alongNormal = false;
+       }),
+       "", "", "stopped at iteration"},
+      {"implicit-1000x-limit", edit([](DenoiseParams& p) {
+         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 1000.0f,
+         p.smoothing.laplacian.iterations = 20;
+       }),
+       "", "", ""},
       {"implicit-lambda-1e5-cotangent", edit([](DenoiseParams& p) {
-         p.method = DenoiseMethod::Implicit, p.weights = LaplacianWeights::Cotangent, p.lambda = 100000.0f;
+         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
+         p.smoothing.laplacian.lambda = 100000.0f;
        }),
        "", "", ""},
       {"taubin-unclamped-cotangent", edit([](DenoiseParams& p) {
-         p.method = DenoiseMethod::Taubin, p.weights = LaplacianWeights::Cotangent, p.clampCotangent = false;
+         p.smoothing.method = DenoiseMethod::Taubin, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
+         p.smoothing.laplacian.clampNegative = false;
        }),
        "", "", "not clamped"},
-      {"slivers-cotangent",
-       edit([](DenoiseParams& p) { p.weights = LaplacianWeights::Cotangent, p.input = NoiseSource::Generated; }),
+      {"slivers-cotangent", edit([](DenoiseParams& p) {
+         p.smoothing.laplacian.weights = LaplacianWeights::Cotangent, p.input.source = NoiseSource::Generated;
+       }),
        "denoise-degenerate", "", "were negative"},
       {"slivers-unclamped", edit([](DenoiseParams& p) {
-         p.weights = LaplacianWeights::Cotangent, p.clampCotangent = false, p.input = NoiseSource::Generated;
+         p.smoothing.laplacian.weights = LaplacianWeights::Cotangent, p.smoothing.laplacian.clampNegative = false,
+         p.input.source = NoiseSource::Generated;
        }),
        "denoise-degenerate", "", "not clamped"},
       {"slivers-implicit", edit([](DenoiseParams& p) {
-         p.method = DenoiseMethod::Implicit, p.weights = LaplacianWeights::Cotangent, p.input = NoiseSource::Generated;
+         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
+         p.input.source = NoiseSource::Generated;
        }),
        "denoise-degenerate", "", ""},
-      {"slivers-bilateral",
-       edit([](DenoiseParams& p) { p.method = DenoiseMethod::Bilateral, p.input = NoiseSource::Generated; }),
+      {"slivers-bilateral", edit([](DenoiseParams& p) {
+         p.smoothing.method = DenoiseMethod::Bilateral, p.input.source = NoiseSource::Generated;
+       }),
        "denoise-degenerate", "", ""},
-      {"noise-level-2", edit([](DenoiseParams& p) { p.input = NoiseSource::Generated, p.noiseLevel = 2.0f; }), "", "",
-       ""},
+      {"noise-level-2",
+       edit([](DenoiseParams& p) { p.input.source = NoiseSource::Generated, p.input.noise.level = 2.0f; }), "", "", ""},
       {"impulsive-everything", edit([](DenoiseParams& p) {
-         p.input = NoiseSource::Generated, p.noiseKind = NoiseKind::Impulsive, p.impulsiveFraction = 1.0f;
+         p.input.source = NoiseSource::Generated, p.input.noise.kind = NoiseKind::Impulsive,
+         p.input.noise.impulsiveFraction = 1.0f;
        }),
        "", "", ""},
-      {"no-noise", edit([](DenoiseParams& p) { p.input = NoiseSource::Generated, p.noiseLevel = 0.0f; }), "", "", ""},
-      {"bilateral-sigma-tiny", edit([](DenoiseParams& p) { p.method = DenoiseMethod::Bilateral, p.sigmaR = 0.02f; }),
+      {"no-noise", edit([](DenoiseParams& p) { p.input.source = NoiseSource::Generated, p.input.noise.level = 0.0f; }),
+       "", "", ""},
+      {"bilateral-sigma-tiny", edit([](DenoiseParams& p) {
+         p.smoothing.method = DenoiseMethod::Bilateral, p.smoothing.bilateral.sigmaR = 0.02f;
+       }),
        "", "", ""},
       {"weld-off-cracks", edit([](DenoiseParams& p) {
-         p.weld = false, p.input = NoiseSource::Generated, p.show = DenoiseShow::Attribute,
-         p.view = DenoiseView::SeamGap;
+         p.smoothing.weld = false, p.input.source = NoiseSource::Generated, p.view.show = DenoiseShow::Attribute,
+         p.view.mode = DenoiseView::SeamGap;
        }),
        "denoise-cube", "", "welding is off"},
       {"map-4096-nearest", edit([](DenoiseParams& p) {
-         p.input = NoiseSource::Generated, p.mapSizeIndex = DenoiseParams::mapSizeIndexOf(4096),
-         p.bakeMethod = BakeMethod::NearestExact, p.show = DenoiseShow::Map;
+         p.input.source = NoiseSource::Generated, p.map.sizeIndex = DenoiseParams::Map::sizeIndexOf(4096),
+         p.map.bake.method = BakeMethod::NearestExact, p.view.show = DenoiseShow::Map;
        }),
        "denoise-cube", "", ""},
       {"approx-one-check", edit([](DenoiseParams& p) {
-         p.input = NoiseSource::Generated, p.bakeMethod = BakeMethod::NearestApprox, p.checks = 1,
-         p.show = DenoiseShow::Compare;
+         p.input.source = NoiseSource::Generated, p.map.bake.method = BakeMethod::NearestApprox, p.map.bake.checks = 1,
+         p.view.show = DenoiseShow::Compare;
        }),
        "denoise-cube", "", "not the nearest"},
-      {"map-without-uvs", edit([](DenoiseParams& p) { p.show = DenoiseShow::Map; }), "denoise-sphere-no-uvs", "",
+      {"map-without-uvs", edit([](DenoiseParams& p) { p.view.show = DenoiseShow::Map; }), "denoise-sphere-no-uvs", "",
        "no UVs"},
       {"empty-scene", {}, "empty", "", "nothing to denoise"},
   };

@@ -56,11 +56,11 @@ enum class SmoothingMethod { Explicit, Taubin, Implicit };
 struct SmoothingSettings {
   SmoothingMethod method = SmoothingMethod::Explicit;
   LaplacianWeights weights = LaplacianWeights::Uniform;
-  double lambda = 0.5;
+  float lambda = 0.5f;
   int iterations = 10;
   bool alongNormal = true;  // explicit and Taubin: move along the vertex normal only
   bool clampNegative = true;
-  double passBand = 0.1;  // Taubin's k_pb
+  float passBand = 0.1f;  // Taubin's k_pb
 };
 
 struct SmoothingResult {

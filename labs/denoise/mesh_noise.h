@@ -15,9 +15,9 @@ enum class NoiseKind { Gaussian, Impulsive };
 
 struct NoiseSettings {
   NoiseKind kind = NoiseKind::Gaussian;
-  double level = 0.3;               // sigma in mean edge lengths
-  double impulsiveFraction = 0.1;   // of the vertices, for impulsive noise
-  uint32_t seed = 1;
+  float level = 0.3f;               // sigma in mean edge lengths
+  float impulsiveFraction = 0.1f;   // of the vertices, for impulsive noise
+  int seed = 1;                     // 0 .. 1e6
 };
 
 // Deterministic for a given seed (the same noise on every machine: std::mt19937 and our own
