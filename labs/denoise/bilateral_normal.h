@@ -23,6 +23,7 @@ struct BilateralSettings {
   int vertexIterations = 10;
   float sigmaR = 0.35f;       // normal difference (|n_i - n_j|, 0..2) that still counts
   double sigmaSScale = 1.0;   // x the mean distance between neighbouring face centroids
+  bool operator==(const BilateralSettings&) const = default;
 };
 
 struct BilateralResult {

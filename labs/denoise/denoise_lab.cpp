@@ -97,6 +97,10 @@ void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
               "are fitted."}, smoothing.bilateral.normalIterations, 1, 100);
   v.boolParam({"weld", "Weld seams", "", "Smooth the welded surface (one vertex per position). Off: copies of a "
                "position split by UV seams are smoothed apart, the homework's crack."}, smoothing.weld);
+  v.boolParam({"preserve_volume", "Preserve volume", "", "Every smoothing shrinks a closed mesh (implicit with a large "
+               "lambda, to a point). Implicit fairing's remedy (Desbrun et al. 1999): scale the result about its "
+               "centroid back to the input's volume. The volume % column shows the effect."},
+              smoothing.preserveVolume);
 }
 
 void visitMap(ParamVisitor& v, DenoiseParams::Map& map, const std::function<void()>& saveMap) {
@@ -157,6 +161,7 @@ DenoiseConfig DenoiseLab::config() const {
   c.bilateral = p.smoothing.bilateral;
   c.bilateral.vertexIterations = p.smoothing.laplacian.iterations;  // one iterations slider serves both
   c.weld = p.smoothing.weld;
+  c.preserveVolume = p.smoothing.preserveVolume;
   c.bake = p.map.bake;
   c.bake.resolution = 64 << p.map.sizeIndex;
   c.bilinear = p.map.bilinear;

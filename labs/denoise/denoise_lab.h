@@ -32,6 +32,7 @@ struct DenoiseParams {
     SmoothingSettings laplacian;   // explicit, Taubin, implicit (laplacian.h; its method follows `method`)
     BilateralSettings bilateral;   // sigma_r and the normal passes (its vertex passes are laplacian.iterations)
     bool weld = true;              // smoothing on the welded surface (off: the seam bug)
+    bool preserveVolume = false;   // rescale the result to the input's volume (closed meshes)
   } smoothing;
   struct Map {                     // the displacement map
     int sizeIndex = 4;             // 64 << index: 64 .. 4096

@@ -201,16 +201,28 @@ std::vector<StressCase> DenoiseLab::stressCases() const {
          p.smoothing.laplacian.alongNormal = false;
        }),
        "", "", "stopped at iteration"},
+      // Implicit steps never diverge, but a large lambda pulls a closed mesh to a point: the lab says
+      // so (not "diverging"), and preserve_volume scales it back.
       {"implicit-1000x-limit", edit([](DenoiseParams& p) {
          p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 1000.0f,
          p.smoothing.laplacian.iterations = 20;
        }),
-       "", "", ""},
+       "denoise-cube", "", "stable but shrinks"},
       {"implicit-lambda-1e5-cotangent", edit([](DenoiseParams& p) {
          p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
          p.smoothing.laplacian.lambda = 100000.0f;
        }),
-       "", "", ""},
+       "denoise-cube", "", "stable but shrinks"},
+      {"implicit-lambda-10-volume-preserved", edit([](DenoiseParams& p) {
+         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 10.0f,
+         p.smoothing.preserveVolume = true;
+       }),
+       "denoise-cube", "", "to restore it"},
+      {"implicit-lambda-1e5-collapses-volume-preserved", edit([](DenoiseParams& p) {
+         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 100000.0f,
+         p.smoothing.preserveVolume = true;
+       }),
+       "denoise-cube", "", "collapsed to a point"},
       {"taubin-unclamped-cotangent", edit([](DenoiseParams& p) {
          p.smoothing.method = DenoiseMethod::Taubin, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
          p.smoothing.laplacian.clampNegative = false;

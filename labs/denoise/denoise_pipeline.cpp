@@ -47,20 +47,6 @@ std::string number(double v) {
 
 }  // namespace
 
-bool DenoiseConfig::operator==(const DenoiseConfig& o) const {
-  auto smoothingEq = [](const SmoothingSettings& a, const SmoothingSettings& b) {
-    return a.method == b.method && a.weights == b.weights && a.lambda == b.lambda && a.iterations == b.iterations &&
-           a.alongNormal == b.alongNormal && a.clampNegative == b.clampNegative && a.passBand == b.passBand;
-  };
-  return publishedInput == o.publishedInput && noise.kind == o.noise.kind && noise.level == o.noise.level &&
-         noise.impulsiveFraction == o.noise.impulsiveFraction && noise.seed == o.noise.seed && method == o.method &&
-         smoothingEq(smoothing, o.smoothing) && bilateral.normalIterations == o.bilateral.normalIterations &&
-         bilateral.vertexIterations == o.bilateral.vertexIterations && bilateral.sigmaR == o.bilateral.sigmaR &&
-         bilateral.sigmaSScale == o.bilateral.sigmaSScale && weld == o.weld && bake.method == o.bake.method &&
-         bake.resolution == o.bake.resolution && bake.checks == o.bake.checks && bake.gutter == o.bake.gutter &&
-         bake.format == o.bake.format && bilinear == o.bilinear;
-}
-
 std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, const MeshData* published, std::string& error) {
   if (clean.indices.size() < 3) {
     error = "the scene has no triangles to denoise";
@@ -137,6 +123,24 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
     r.factorMs = sr.factorMs;
     r.weights = std::move(sr.weightsUsed);
   }
+  // Smoothing shrinks a closed mesh (each vertex moves towards its neighbours' average); implicit
+  // fairing's remedy (Desbrun et al. 1999) scales the result about its centroid back to the input's
+  // volume. Measured on the smoothed surface itself, so the note names what happened.
+  if (result.size() == start.size() && m.statistics.boundaryEdges == 0) {
+    glm::dvec3 centroid(0.0);
+    for (const glm::dvec3& p : result) centroid += p;
+    centroid /= double(std::max<size_t>(result.size(), 1));
+    const double before = signedVolume(start, indices, centroid), after = signedVolume(result, indices, centroid);
+    r.smoothingVolumeChangePct = before != 0.0 ? 100.0 * (after - before) / std::abs(before) : 0.0;
+    // Below a millionth of its volume the mesh has collapsed to a point: its shape is rounding
+    // noise, and scaling that up by more than 100 would only enlarge the noise.
+    r.collapsed = !(std::abs(after) >= 1e-6 * std::abs(before));
+    if (c.preserveVolume && before * after > 0.0 && !r.collapsed) {
+      const double scale = std::cbrt(before / after);
+      for (glm::dvec3& p : result) p = centroid + (p - centroid) * scale;
+      r.volumeScale = scale;
+    }
+  }
   r.solveMs = msSince(t0);
   if (job && job->cancelled()) return r;
   if (c.method != DenoiseMethod::Bilateral)
@@ -204,7 +208,21 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   }
 
   // 6. What the student should know.
-  if (r.grewAt > 0)
+  const double shrinkPct = -r.smoothingVolumeChangePct;
+  if (r.volumeScale != 1.0)
+    r.notes.push_back("the smoothed mesh had lost " + number(shrinkPct) + "% of its volume: scaled by " +
+                      number(r.volumeScale) + " about its centroid to restore it (preserve_volume)");
+  else if (r.collapsed)
+    r.notes.push_back(std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: " : "") +
+                      "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
+                      "draw or to rescale; lower lambda or the iterations");
+  else if (shrinkPct >= 10.0)
+    r.notes.push_back(std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: "
+                                                                      : "the smoothing shrank the mesh: ") +
+                      "it lost " + number(shrinkPct) + "% of its volume, pulled towards its centroid (" +
+                      (c.preserveVolume ? "an open mesh has no volume to restore" : "preserve_volume rescales it") +
+                      ")");
+  if (r.grewAt > 0 && c.method != DenoiseMethod::Implicit)  // implicit steps are stable for any lambda
     r.notes.push_back("diverging: the smoothing energy grew at iteration " + std::to_string(r.grewAt) + " (lambda " +
                       number(c.smoothing.lambda) + " is beyond the stable explicit step, about " + number(r.stabilityLimit) +
                       " for these weights)");
@@ -224,6 +242,13 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
     r.notes.push_back("the UV layout overlaps: " + std::to_string(r.overlappingTexels) + " texels (" +
                       number(100.0 * double(r.overlappingTexels) / double(std::max<size_t>(r.map->covered, 1))) +
                       "% of the covered ones) lie in two triangles, and one map cannot hold both offsets there");
+  // A filter whose parameters make it a no-op costs time and changes nothing: say so.
+  if (c.method == DenoiseMethod::Bilateral && r.noisyError.rmsDistance > 0.0 &&
+      r.smoothedError.rmsDistance > 0.98 * r.noisyError.rmsDistance)
+    r.notes.push_back("bilateral filtering changed almost nothing (distance to the clean mesh " +
+                      number(r.smoothedError.rmsDistance) + " against " + number(r.noisyError.rmsDistance) +
+                      " for the noisy mesh): sigma_r " + number(c.bilateral.sigmaR) +
+                      " is below the noise's normal differences, so no neighbour counts; raise sigma_r");
   if (r.wrongNeighbours > 0)
     r.notes.push_back("the approximate nearest-neighbour search gave " + std::to_string(r.wrongNeighbours) +
                       " texels a vertex that is not the nearest (raise checks)");

@@ -48,9 +48,10 @@ struct DenoiseConfig {
   SmoothingSettings smoothing;  // Laplacian methods (method mirrored into it)
   BilateralSettings bilateral;
   bool weld = true;             // smoothing and normals on the welded surface (off: the homework's bug)
+  bool preserveVolume = false;  // rescale the smoothed mesh about its centroid to the input's volume
   BakeSettings bake;
   bool bilinear = true;         // how the vertex shader (and the read-back) samples the map
-  bool operator==(const DenoiseConfig&) const;
+  bool operator==(const DenoiseConfig&) const = default;
 };
 
 struct DenoiseResult {
@@ -76,6 +77,9 @@ struct DenoiseResult {
   std::vector<double> normalChangeDeg;  // bilateral: per normal iteration
   int grewAt = 0, stoppedAt = 0;
   double stabilityLimit = 0;
+  double smoothingVolumeChangePct = 0;  // the smoothed surface against its input, before any rescale (closed meshes)
+  double volumeScale = 1;               // the rescale preserve_volume applied (1: none)
+  bool collapsed = false;               // smoothed to a point: under a millionth of the input's volume
   EdgeWeights weights;
   double noiseMs = 0, solveMs = 0, factorMs = 0, bakeMs = 0;
   std::vector<std::string> notes;  // what the student should know about this result

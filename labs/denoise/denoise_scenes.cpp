@@ -41,15 +41,21 @@ MeshData seamedCube(int n) {
   MeshData m;
   m.name = "seamed cube";
   const MeshData box = makeBox(glm::vec3(1.0f));
+  // Every grid point is a point of one integer lattice, (2 q - n) / n per axis, so the copies of a
+  // point on an edge shared by two faces have the same bits and weld (computed as o + du s + dv t
+  // from each face's corner they differed in the last bit along some edges: a cracked cube).
+  const auto lattice = [n](glm::vec3 p) { return glm::ivec3(glm::round((p + 1.0f) * 0.5f * float(n))); };
   for (int face = 0; face < 6; ++face) {
     const uint32_t base = uint32_t(m.positions.size());
-    const glm::vec3 o = box.positions[size_t(4 * face)];
-    const glm::vec3 du = box.positions[size_t(4 * face + 1)] - o, dv = box.positions[size_t(4 * face + 2)] - o;
+    const glm::ivec3 o = lattice(box.positions[size_t(4 * face)]);
+    const glm::ivec3 du = (lattice(box.positions[size_t(4 * face + 1)]) - o) / n;
+    const glm::ivec3 dv = (lattice(box.positions[size_t(4 * face + 2)]) - o) / n;
     const glm::vec2 chart(float(face % 3) / 3.0f, float(face / 3) / 2.0f);
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) {
+        const glm::ivec3 q = o + du * i + dv * j;
+        m.positions.push_back(glm::vec3(2 * q - n) / float(n));
         const float s = float(i) / float(n), t = float(j) / float(n);
-        m.positions.push_back(o + du * s + dv * t);
         m.uvs.push_back(chart + glm::vec2(0.02f + 0.293f * s, 0.03f + 0.44f * t));
       }
     for (int j = 0; j < n; ++j)

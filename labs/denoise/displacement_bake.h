@@ -38,6 +38,7 @@ struct BakeSettings {
   int gutter = 4;         // Raster: texels of dilation around every chart
   MapFormat format = MapFormat::Unorm16;
   bool repeat = false;    // GL_REPEAT (UVs leave [0, 1]) or GL_CLAMP_TO_EDGE
+  bool operator==(const BakeSettings&) const = default;
 };
 
 // Whether a mesh's UVs ask for a repeating map: any of them outside [0, 1].

@@ -61,6 +61,7 @@ struct SmoothingSettings {
   bool alongNormal = true;  // explicit and Taubin: move along the vertex normal only
   bool clampNegative = true;
   float passBand = 0.1f;  // Taubin's k_pb
+  bool operator==(const SmoothingSettings&) const = default;
 };
 
 struct SmoothingResult {

@@ -18,6 +18,7 @@ struct NoiseSettings {
   float level = 0.3f;               // sigma in mean edge lengths
   float impulsiveFraction = 0.1f;   // of the vertices, for impulsive noise
   int seed = 1;                     // 0 .. 1e6
+  bool operator==(const NoiseSettings&) const = default;
 };
 
 // Deterministic for a given seed (the same noise on every machine: std::mt19937 and our own

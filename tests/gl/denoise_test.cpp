@@ -8,6 +8,7 @@
 #include "gl_test.h"
 #include "labs/denoise/denoise_pipeline.h"
 #include "labs/denoise/denoise_scenes.h"
+#include "scene/mesh_topology.h"
 
 using namespace shadelab;
 
@@ -24,6 +25,20 @@ std::shared_ptr<const DenoiseModel> cubeModel() {
 }
 
 }  // namespace
+
+// The lab that teaches crack-free seams must not crack on its own cube: welded, the 24 x 24 cube is
+// closed, with the (n+1)^3 - (n-1)^3 positions of its surface grid.
+TEST(Denoise, TheBuiltInCubeWeldsClosed) {
+  Scene s;
+  for (auto& r : denoiseScenes())
+    if (r.id == "denoise-cube") ASSERT_EQ(r.build(s, {}), "");
+  const MeshData& cube = s.meshes.at(0);
+  const WeldedMesh welded = weldByPosition(cube);
+  const MeshStatistics stats = meshStatistics(cube, welded, buildAdjacency(welded.positions.size(), welded.indices));
+  EXPECT_EQ(stats.boundaryEdges, 0u);
+  EXPECT_EQ(stats.nonManifoldEdges, 0u);
+  EXPECT_EQ(stats.logicalVertices, 25u * 25u * 25u - 23u * 23u * 23u);
+}
 
 TEST(Denoise, WeldedCopiesGetIdenticalOffsetsAndUnweldedOnesCrack) {
   LabHost host(test::builtinShaders());
