@@ -258,7 +258,7 @@ std::vector<StressCase> DenoiseLab::stressCases() const {
       {"bilateral-sigma-tiny", edit([](DenoiseParams& p) {
          p.smoothing.method = DenoiseMethod::Bilateral, p.smoothing.bilateral.sigmaR = 0.02f;
        }),
-       "", "", ""},
+       "", "", "changed almost nothing"},
       {"weld-off-cracks", edit([](DenoiseParams& p) {
          p.smoothing.weld = false, p.input.source = NoiseSource::Generated, p.view.show = DenoiseShow::Attribute,
          p.view.mode = DenoiseView::SeamGap;
