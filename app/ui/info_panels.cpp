@@ -47,7 +47,9 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
   }
   ImGui::Text("timer: %s", host.timerClock());
   ImGui::Text("UI %.2f ms", uiMs);
-  ImGui::TextWrapped("scene: %zu triangles, %d textures decoded, built %d times", host.scene().triangleCount(),
+  // Material textures the host uploaded for the scene; a lab that builds its own (the filtering lab's mip
+  // chain) shows them in its panels.
+  ImGui::TextWrapped("scene: %zu triangles, %d material textures uploaded, built %d times", host.scene().triangleCount(),
               host.gpuScene().texturesUploaded(), host.sceneBuilds());
   std::vector<float> frame(history.frameMs.begin(), history.frameMs.end()), g(history.gpuMs.begin(), history.gpuMs.end());
   if (frame.size() >= 2) {

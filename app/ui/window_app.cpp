@@ -312,7 +312,12 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
       const ImVec2 avail = ImGui::GetContentRegionAvail();
       app.viewport = glm::max(glm::ivec2(int(avail.x), int(avail.y)), glm::ivec2(16));
       const ImVec2 origin = ImGui::GetCursorScreenPos();
+      // The frame is opaque: its alpha is coverage for the metrics (the filtering lab's sky is 0 there),
+      // not transparency, so it is drawn without blending, as headless images are written.
+      ImDrawList* drawList = ImGui::GetWindowDrawList();
+      drawList->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
       ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(host.target()->color().id())), avail, {0, 1}, {1, 0});
+      drawList->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
       ImGui::SetCursorScreenPos(origin);
       ImGui::InvisibleButton("viewport", avail, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                                     ImGuiButtonFlags_MouseButtonMiddle);

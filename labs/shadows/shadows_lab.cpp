@@ -172,9 +172,11 @@ void visitFilter(ParamVisitor& v, ShadowsParams::Filter& filter, LightType keyTy
 
 void visitView(ParamVisitor& v, ShadowsParams::View& view, MapFit fit) {
   v.enumParam({"view", "View", "", "shaded; visibility (the key light's shadow term); bias-heat (receiver - stored "
-               "depth in units of the bias: green = ample margin, orange = nearly acne, red = acne, grey = a real "
-               "shadow); texel-density; pcss-blocker; pcss-penumbra; cascades (one colour each, the blend band "
-               "striped, magenta = a gap); depth-raw/-linear (the map; a cube unrolled)."}, view.mode, namesOf<kShadowViews>());
+               "depth in units of the bias: blue = the stored depth lies behind the surface, green = on it, a full "
+               "bias of margin, orange = nearly acne, red = acne, grey = a real shadow, near-black = facing away from "
+               "the light); texel-density (green = a texel per pixel, red = coarser, blue = finer); pcss-blocker; "
+               "pcss-penumbra; cascades (one colour each, the blend band striped, magenta = a gap); "
+               "depth-raw/-linear (the map; a cube unrolled)."}, view.mode, namesOf<kShadowViews>());
   v.choiceParam({"depth_light", "Depth view of", "", "Which light's map the depth views show."}, view.depthLight, kDepthLights);
   if (fit != MapFit::Cascades || view.depthLight != 0) v.unavailable("the key light has one map");
   v.choiceParam({"depth_cascade", "Depth view cascade", "", "Which cascade's map the depth views show."},
@@ -591,6 +593,12 @@ std::vector<std::string> ShadowsLab::warnings() const {
     w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
   if ((p.view.mode == ShadowView::PcssBlocker || p.view.mode == ShadowView::PcssPenumbra) && p.filter.type != ShadowFilter::Pcss)
     w.push_back("the PCSS views show data only with filter = pcss");
+  if (p.view.mode == ShadowView::BiasHeat && isMomentFilter(effectiveFilterOf(p)))
+    w.push_back("the bias-heat view shows a depth test's margin, and " + filterName(p.filter.type) +
+                " tests moments of depth instead: there is no margin to show (uniform green); pick hard or pcf");
+  else if (p.view.mode == ShadowView::BiasHeat && p.bias.constant == 0 && p.bias.slope == 0)
+    w.push_back("bias-heat measures the gap in units of the bias, which is 0: every lit texel is red (acne) or blue "
+                "(stored depth behind the surface), with nothing between; raise bias to see the margin");
   if (isMomentFilter(p.filter.type) && p.key.type == LightType::Point)
     w.push_back(filterName(p.filter.type) + " needs a 2D map: the point light's cube map is filtered with "
                 "pcf (" + std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");

@@ -105,7 +105,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                 "low angles show relief best."}, p.lightElevationDeg, -10.0f, 90.0f);
   v.floatParam({"light_azimuth", "Light azimuth", "deg", "Around the view axis of the wall."}, p.lightAzimuthDeg, -180.0f, 180.0f);
   v.enumParam({"view", "View", "", "shaded; normals (world, 0.5 +- 0.5); tangent-angle (the tangent against "
-               "compare_with's, 0 slate .. angle_scale yellow, dimmed by the light); height; uv."}, p.view, namesOf<kSurfaceViews>());
+               "compare_with's: 0 slate, half of angle_scale pink-red, angle_scale yellow; dimmed by the light); height; uv."}, p.view, namesOf<kSurfaceViews>());
   v.intParam({"tessellation", "Sphere segments", "", "Segments of the brick sphere."}, p.tessellation, 8, 256);
 }
 

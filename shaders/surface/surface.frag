@@ -129,7 +129,8 @@ void main() {
 #if defined(VIEW_NORMALS)
   o_color = vec4(N * 0.5 + 0.5, 1.0);  // world normal, 0.5 +- 0.5 per axis (the metrics decode it)
 #elif defined(VIEW_TANGENT_ANGLE)
-  // The angle between this fragment's tangent and the other source's, 0 (slate) .. u_angleScale (yellow).
+  // The angle between this fragment's tangent and the other source's: 0 slate, through pink-red at
+  // half of u_angleScale, to yellow at u_angleScale.
 #ifdef COMPARE_SCREEN
   vec3 other = frame(fin.compareTangent, true)[0];
 #else
