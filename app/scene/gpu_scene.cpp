@@ -48,6 +48,8 @@ std::string GpuScene::upload(const Scene& scene, const SceneNeeds& needs, std::v
         warnings.push_back(err + "; drawing the material untextured");
         continue;
       }
+      if (image == mat.normalImage && mat.normalGreenDown)  // every normal map on the GPU is OpenGL's +Y
+        for (size_t i = 1; i < rgba.size(); i += 4) rgba[i] = uint8_t(255 - rgba[i]);
       gl::SamplerState s = samplerFor(scene.images[size_t(image)], needs);
       if (needs.mipmaps && (s.minFilter == GL_LINEAR || s.minFilter == GL_NEAREST))
         s.minFilter = GL_LINEAR_MIPMAP_LINEAR;  // build the chain; applySampling sets the asked filter

@@ -60,7 +60,8 @@ struct Material {
   float metallic = 0.0f;
   float roughness = 0.5f;
   int baseColorImage = -1;  // index into Scene::images
-  int normalImage = -1;      // tangent space, +Y up (OpenGL convention)
+  int normalImage = -1;      // tangent space, +Y up the image as displayed (OpenGL convention), unless:
+  bool normalGreenDown = false;  // the map's green points down the image (DirectX, Y-): inverted on upload
   int metallicRoughnessImage = -1;
   int heightImage = -1;      // a height field (white = high); its red channel is used
   bool heightIsDepth = false;  // the image stores depth (white = deep): height = 1 - value

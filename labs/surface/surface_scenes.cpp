@@ -71,6 +71,10 @@ std::vector<SceneRecipe> surfaceScenes() {
                        s.images.push_back(img);
                      }
                      m.heightIsDepth = true;  // white is deep: height = 1 - value
+                     // Its green points down the image (DirectX, Y-): against the slopes of its own
+                     // height field, n.y follows -dh/dy with y running down the rows (test). It was
+                     // made for an upload without the row flip, where down the image is +v.
+                     m.normalGreenDown = true;
                      s.materials.push_back(m);
                      addMesh(s, wall(2.0f, 1.0f), int(s.materials.size()) - 1);
                      s.suggestedCamera = "yaw=48,pitch=8,distance=1.6,target=0.3;0;0";

@@ -3,11 +3,14 @@
 // UV shear that separates generated from screen-space tangents.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
+#include "labs/surface/brick_textures.h"
 #include "labs/surface/subdivide.h"
+#include "labs/surface/surface_scenes.h"
 #include "scene/mesh_topology.h"
 #include "scene/procedural.h"
 
@@ -81,4 +84,61 @@ TEST(SurfaceGeometry, UvShearIsTheAngleBetweenTangentAndGradient) {
   ASSERT_EQ(shear.size(), 1u);
   EXPECT_NEAR(shear[0], 0.0f, 1e-3f);
   EXPECT_TRUE(uvShearDegrees(triangle({0, 0}, {1, 1}, {2, 2})).empty()) << "zero area in UV: skipped";
+}
+
+namespace {
+
+// How a normal map's normals agree with the slopes of a height field, per axis, in the frame the
+// shaders read them in (the upload flips rows: +u right, +v up the image; an OpenGL-convention map
+// has its green along +v). Positive: the normals lean against the slopes, as a surface's do.
+glm::dvec2 normalsAgainstSlopes(const ImageSource& normal, bool greenDown, const ImageSource& height, bool depth) {
+  std::vector<unsigned char> n, h;
+  glm::ivec2 ns, hs;
+  EXPECT_EQ(decodeImage(normal, n, ns), "");
+  EXPECT_EQ(decodeImage(height, h, hs), "");
+  if (n.empty() || h.empty()) return glm::dvec2(0.0);
+  auto heightAt = [&](int x, int y) {  // rows top-down; wraps like the sampler
+    x = ((x % hs.x) + hs.x) % hs.x, y = ((y % hs.y) + hs.y) % hs.y;
+    const double v = h[4 * (size_t(y) * size_t(hs.x) + size_t(x))] / 255.0;
+    return depth ? 1.0 - v : v;
+  };
+  glm::dvec2 sum(0.0);
+  for (int y = 0; y < ns.y; ++y)
+    for (int x = 0; x < ns.x; ++x) {
+      const int hx = x * hs.x / ns.x, hy = y * hs.y / ns.y;
+      const double dhdu = heightAt(hx + 1, hy) - heightAt(hx - 1, hy);
+      const double dhdv = heightAt(hx, hy - 1) - heightAt(hx, hy + 1);  // +v runs up the image
+      const unsigned char* p = &n[4 * (size_t(y) * size_t(ns.x) + size_t(x))];
+      const double nx = p[0] / 127.5 - 1.0, ny = (greenDown ? -1.0 : 1.0) * (p[1] / 127.5 - 1.0);
+      sum += glm::dvec2(-dhdu * nx, -dhdv * ny);
+    }
+  return sum;
+}
+
+}  // namespace
+
+// A normal map and the height field of the same material describe one surface: read with the
+// material's convention, the map's normals lean against the field's slopes along both axes. The
+// lab's own bricks are OpenGL's +Y; LearnOpenGL's bricks2 is DirectX's Y- (its green points down
+// the image), which its material says, so green = opengl is right on every scene.
+TEST(NormalMaps, TheMapsNormalsLeanAgainstTheirOwnHeightField) {
+  const BrickTextures bricks = makeBrickTextures(256, 0.04f);
+  const glm::dvec2 own = normalsAgainstSlopes(bricks.normal, false, bricks.height, false);
+  EXPECT_GT(own.x, 0.0);
+  EXPECT_GT(own.y, 0.0);
+
+  Scene s;
+  for (auto& r : surfaceScenes())
+    if (r.id == "bricks-learnopengl") ASSERT_EQ(r.build(s, {}), "");
+  const auto bricks2 = std::find_if(s.materials.begin(), s.materials.end(), [](auto& m) { return m.name == "bricks2"; });
+  ASSERT_NE(bricks2, s.materials.end());
+  const Material& m = *bricks2;
+  if (!std::filesystem::exists(s.images.at(size_t(m.normalImage)).file))
+    GTEST_SKIP() << "bricks-learnopengl needs ../shared/data";
+  const ImageSource &normal = s.images.at(size_t(m.normalImage)), &height = s.images.at(size_t(m.heightImage));
+  const glm::dvec2 learnopengl = normalsAgainstSlopes(normal, m.normalGreenDown, height, m.heightIsDepth);
+  EXPECT_GT(learnopengl.x, 0.0);
+  EXPECT_GT(learnopengl.y, 0.0);
+  EXPECT_LT(normalsAgainstSlopes(normal, !m.normalGreenDown, height, m.heightIsDepth).y, 0.0)
+      << "the other convention must disagree, or the test tells nothing";
 }
