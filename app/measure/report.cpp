@@ -142,6 +142,50 @@ std::vector<double> ticks(double lo, double hi) {
   return t;
 }
 
+// One axis of a plot: linear, or logarithmic where every value is positive and they span more than
+// a decade and a half (a sweep's cheapest and dearest configurations, or its worst and best errors,
+// often differ a hundredfold, and a linear axis squeezes every useful point into a corner).
+struct Axis {
+  double lo = 0, hi = 1;
+  bool log = false;
+
+  // Where v falls, 0 at lo .. 1 at hi.
+  double at(double v) const {
+    return log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+  }
+  std::vector<double> ticks() const {
+    if (!log) return shadelab::ticks(lo, hi);
+    std::vector<double> t;
+    for (int mult : {1, 2, 5})
+      for (int k = int(std::floor(std::log10(lo))); k <= int(std::ceil(std::log10(hi))); ++k) {
+        const double v = mult * std::pow(10.0, k);
+        if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) t.push_back(v);
+      }
+    std::sort(t.begin(), t.end());
+    if (t.size() > 12) std::erase_if(t, [](double v) { return std::abs(std::log10(v) - std::round(std::log10(v))) > 1e-9; });
+    return t;
+  }
+};
+
+// `fromZero`: a linear axis starts at 0 (errors: 0 is the truth itself).
+Axis axisFor(const std::vector<double>& values, bool fromZero) {
+  Axis a;
+  if (values.empty()) return a;
+  const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
+  if (*mn > 0 && *mx / *mn > 30) {
+    a.log = true;
+    a.lo = *mn / 1.25;
+    a.hi = *mx * 1.25;
+    return a;
+  }
+  a.lo = fromZero ? 0.0 : *mn, a.hi = *mx;
+  if (!(a.hi > a.lo)) a.lo -= 0.5, a.hi += 0.5;
+  const double pad = (a.hi - a.lo) * 0.05;
+  if (!fromZero) a.lo = std::max(0.0, a.lo - pad);
+  a.hi += fromZero ? (a.hi - a.lo) * 0.08 : pad;
+  return a;
+}
+
 std::string costAxisLabel(const std::string& cost) {
   if (cost == "gpu_ms") return "gpu_ms (median of the frame's passes, lower is cheaper)";
   if (cost == "cpu_ms") return "cpu_ms (median, lower is cheaper)";
@@ -158,30 +202,22 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
       longest = std::max(longest, row.group.size());
   // The legend column is as wide as its longest name (about 7 px a character at 12 px).
   const double L = 70, R = 40 + 7.0 * double(longest), T = 26, B = 50, W = 470 + R, H = 400;
-  double x0 = INFINITY, x1 = -INFINITY, y0 = 0, y1 = -INFINITY;
+  std::vector<double> costs, errors;
   for (auto& row : r.rows) {
     if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
-    x0 = std::min(x0, row.value(costKey));
-    x1 = std::max(x1, row.value(costKey));
-    y1 = std::max(y1, row.value(errorKey));
+    costs.push_back(row.value(costKey));
+    errors.push_back(row.value(errorKey));
   }
-  if (!std::isfinite(x0)) x0 = x1 = 0;
-  if (!std::isfinite(y1)) y1 = 1;
-  if (!(x1 > x0)) { x0 -= 0.5; x1 += 0.5; }
-  if (!(y1 > y0)) y1 = y0 + 1;
-  const double padX = (x1 - x0) * 0.05;
-  x0 = std::max(0.0, x0 - padX);
-  x1 += padX;
-  y1 *= 1.08;
-  auto sx = [&](double v) { return L + (v - x0) / (x1 - x0) * (W - L - R); };
-  auto sy = [&](double v) { return H - B - (v - y0) / (y1 - y0) * (H - T - B); };
+  const Axis ax = axisFor(costs, false), ay = axisFor(errors, true);
+  auto sx = [&](double v) { return L + ax.at(v) * (W - L - R); };
+  auto sy = [&](double v) { return H - B - ay.at(v) * (H - T - B); };
   std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + formatNumber(W) + "' height='" + formatNumber(H) +
                   "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
-  for (double t : ticks(x0, x1))
+  for (double t : ax.ticks())
     s += "<line x1='" + formatNumber(sx(t)) + "' x2='" + formatNumber(sx(t)) + "' y1='" + formatNumber(T) + "' y2='" +
          formatNumber(H - B) + "' stroke='#eee'/><text x='" + formatNumber(sx(t)) + "' y='" + formatNumber(H - B + 16) +
          "' text-anchor='middle'>" + formatNumber(t) + "</text>\n";
-  for (double t : ticks(y0, y1))
+  for (double t : ay.ticks())
     s += "<line x1='" + formatNumber(L) + "' x2='" + formatNumber(W - R) + "' y1='" + formatNumber(sy(t)) + "' y2='" +
          formatNumber(sy(t)) + "' stroke='#eee'/><text x='" + formatNumber(L - 6) + "' y='" + formatNumber(sy(t) + 4) +
          "' text-anchor='end'>" + formatNumber(t) + "</text>\n";
@@ -191,9 +227,9 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
   s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
        formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
   s += "<text x='" + formatNumber((L + W - R) / 2) + "' y='" + formatNumber(H - 12) + "' text-anchor='middle'>" +
-       htmlEscape(costAxisLabel(costKey)) + "</text>\n";
+       htmlEscape(costAxisLabel(costKey)) + (ax.log ? ", log scale" : "") + "</text>\n";
   s += "<text transform='translate(16," + formatNumber((T + H - B) / 2) + ") rotate(-90)' text-anchor='middle'>" +
-       htmlEscape(errorKey) + " (lower is closer to the reference)</text>\n";
+       htmlEscape(errorKey) + " (lower is closer to the reference" + (ay.log ? ", log scale" : "") + ")</text>\n";
   // Pareto front: the configurations nothing else beats on both axes.
   std::string path;
   for (size_t i : paretoFront(r, spec, truth))

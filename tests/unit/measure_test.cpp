@@ -81,3 +81,33 @@ TEST(Report, EachTruthGetsItsOwnParetoFront) {
   EXPECT_NE(html.find("(truth: area light)"), std::string::npos);
   EXPECT_EQ(sweepPlotSvg(r, r.plots[0], "area light").find("hard"), std::string::npos);
 }
+
+// Where a sweep's values span decades (bias-0 runs at 100x the error, moment maps at 100x the cost),
+// the plot's axes are logarithmic, so the front is not squeezed into a corner; where they do not,
+// they stay linear.
+TEST(Report, AxesAreLogarithmicWhereTheDataSpansDecades) {
+  auto report = [](std::vector<std::pair<double, double>> points) {
+    SweepReport r;
+    r.plots = {{"rmse"}};
+    for (auto [err, ms] : points) {
+      SweepRow s;
+      s.label = s.group = "c" + std::to_string(r.rows.size());
+      s.values = {{"rmse", err}, {"gpu_ms", ms}};
+      r.rows.push_back(s);
+    }
+    return r;
+  };
+  const SweepReport wide = report({{0.001, 2.0}, {0.01, 20.0}, {0.5, 900.0}});
+  const std::string svg = sweepPlotSvg(wide, wide.plots[0], "");
+  EXPECT_NE(svg.find("gpu_ms (median of the frame's passes, lower is cheaper), log scale"), std::string::npos);
+  EXPECT_NE(svg.find("rmse (lower is closer to the reference, log scale)"), std::string::npos);
+  EXPECT_NE(svg.find(">100</text>"), std::string::npos);   // decade ticks
+  EXPECT_NE(svg.find(">0.01</text>"), std::string::npos);
+  const SweepReport narrow = report({{0.02, 10.0}, {0.03, 14.0}, {0.05, 20.0}});
+  EXPECT_EQ(sweepPlotSvg(narrow, narrow.plots[0], "").find("log scale"), std::string::npos);
+  // A zero error has no logarithm: that axis stays linear from 0.
+  const SweepReport exact = report({{0.0, 2.0}, {0.5, 900.0}});
+  const std::string exactSvg = sweepPlotSvg(exact, exact.plots[0], "");
+  EXPECT_EQ(exactSvg.find("reference, log scale"), std::string::npos);
+  EXPECT_NE(exactSvg.find("cheaper), log scale"), std::string::npos);
+}
