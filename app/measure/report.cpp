@@ -221,15 +221,15 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
     s += "<line x1='" + formatNumber(L) + "' x2='" + formatNumber(W - R) + "' y1='" + formatNumber(sy(t)) + "' y2='" +
          formatNumber(sy(t)) + "' stroke='#eee'/><text x='" + formatNumber(L - 6) + "' y='" + formatNumber(sy(t) + 4) +
          "' text-anchor='end'>" + formatNumber(t) + "</text>\n";
-  if (!truth.empty())
-    s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>truth: " +
-         htmlEscape(truth) + "</text>\n";
+  s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>" +
+       (truth.empty() ? std::string() : "truth: " + htmlEscape(truth) + "; ") +
+       "lower is closer to the truth, left is cheaper</text>\n";
   s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
        formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
   s += "<text x='" + formatNumber((L + W - R) / 2) + "' y='" + formatNumber(H - 12) + "' text-anchor='middle'>" +
        htmlEscape(costAxisLabel(costKey)) + (ax.log ? ", log scale" : "") + "</text>\n";
   s += "<text transform='translate(16," + formatNumber((T + H - B) / 2) + ") rotate(-90)' text-anchor='middle'>" +
-       htmlEscape(errorKey) + " (lower is closer to the reference" + (ay.log ? ", log scale" : "") + ")</text>\n";
+       htmlEscape(errorKey) + (ay.log ? " (log scale)" : "") + "</text>\n";
   // Pareto front: the configurations nothing else beats on both axes.
   std::string path;
   for (size_t i : paretoFront(r, spec, truth))
