@@ -35,6 +35,7 @@ struct SceneNeeds {
   TextureSampling sampling;
   int tessellation = 32;          // segments of procedural primitives (ignored by files)
   float scale = 1.0f;             // uniform world scale (stress runs: 1e-3 .. 1e4)
+  bool groundUnderFiles = false;  // a floor under a mesh loaded from a file (a receiver for its shadow)
   bool operator==(const SceneNeeds&) const = default;
   // Equal but for sampling: the uploaded textures serve, re-sampled.
   bool sameButSampling(const SceneNeeds& o) const {

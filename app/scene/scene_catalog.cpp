@@ -1,10 +1,12 @@
 #include "scene/scene_catalog.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/camera.h"
 #include "scene/loaders.h"
 #include "scene/procedural.h"
 
@@ -150,7 +152,16 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
       return "unknown scene '" + idOrPath + "' (valid: " + valid + ", or a .gltf/.glb/.obj/.off/.ply file)";
     }
     if (auto err = loadSceneFile(file, out); !err.empty()) return err;
-    if (ground) addGround(out);
+    if (ground || needs.groundUnderFiles) addGround(out);
+    if (needs.groundUnderFiles && out.suggestedLight == glm::vec3(0.0f)) {
+      // A light that shows the mesh's shadow on the floor from the default view: from the camera's
+      // left, a little behind the mesh and 45 degrees up, so the shadow falls forward and right,
+      // in view (from behind the camera it would hide behind the mesh).
+      const float yaw = glm::radians(OrbitCamera{}.yawDeg);
+      const glm::vec3 toCamera(std::sin(yaw), 0.0f, std::cos(yaw)), right(std::cos(yaw), 0.0f, -std::sin(yaw));
+      const glm::vec3 across = glm::normalize(-right - 0.5f * toCamera);
+      out.suggestedLight = across + glm::vec3(0.0f, 1.0f, 0.0f);  // 45 degrees above the horizon
+    }
     out.name = idOrPath;
     out.suggestedCamera = camera;
   }

@@ -193,6 +193,9 @@ void visitScene(ParamVisitor& v, ShadowsParams::SceneSettings& scene) {
   v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, scene.tessellation, 3, 256);
   v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e4); lengths in "
                 "radii and texels follow it."}, scene.scale, 1e-3f, 1e4f, true);
+  v.boolParam({"floor", "Floor under files", "", "A mesh from a file (dropped or --scene FILE) stands on a floor "
+               "under its bounds, so its shadow has somewhere to fall; off: the file alone, self-shadowing only."},
+              scene.floorUnderFiles);
 }
 
 }  // namespace
@@ -219,6 +222,7 @@ SceneNeeds ShadowsLab::needs() const {
   SceneNeeds n;
   n.tessellation = params.scene.tessellation;
   n.scale = params.scene.scale;
+  n.groundUnderFiles = params.scene.floorUnderFiles;
   return n;
 }
 

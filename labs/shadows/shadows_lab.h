@@ -89,6 +89,7 @@ struct ShadowsParams {
   struct SceneSettings {
     int tessellation = 48;
     float scale = 1.0f;
+    bool floorUnderFiles = true;  // a mesh from a file stands on a floor: its shadow has a receiver
   } scene;
 };
 
