@@ -26,6 +26,16 @@ int run(int argc, char** argv) {
     else if (a == "--auto-measure") window.autoMeasure = true;
     else if (a == "--soak" && i + 1 < argc) window.soakMinutes = std::atof(argv[++i]);
     else if (a == "--soak-seed" && i + 1 < argc) window.soakSeed = unsigned(std::atol(argv[++i]));
+    else if (a == "--present") window.present = true;
+    else if (a == "--ui-scale" && i + 1 < argc) {
+      const std::string text = argv[++i];
+      char* end = nullptr;
+      window.uiScale = std::strtof(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(window.uiScale >= 0.5f && window.uiScale <= 4.0f)) {
+        std::fprintf(stderr, "shadelab: --ui-scale: invalid value '%s' (valid: a number in [0.5, 4])\n", text.c_str());
+        return 1;
+      }
+    }
     else args.push_back(argv[i]);
   }
 #else

@@ -89,6 +89,11 @@ struct AppState {
   MeasureUi measure;
   Responsiveness responsiveness;
   bool screenshotRequested = false;
+  // The layout: side panels the user widens or narrows by their inner edge, or presentation mode
+  // (F11) with the viewport filling the window for a projector; everything scaled by uiScale.
+  float leftW = 380, rightW = 380;
+  bool presenting = false;
+  float uiScale = 1.0f, appliedScale = 0.0f;
 };
 
 void onDrop(GLFWwindow* w, int count, const char** paths) {
@@ -96,11 +101,54 @@ void onDrop(GLFWwindow* w, int count, const char** paths) {
   for (int i = 0; i < count; ++i) app->dropped.emplace_back(paths[i]);
 }
 
-// F12 straight from GLFW: a press and release that land in one poll (a busy frame) would slip
-// past ImGui's per-frame key state. Installed before ImGui's backend, which chains to it.
+// F12 (screenshot), F11 (presentation mode) and Esc (leave it) straight from GLFW: a press and
+// release that land in one poll (a busy frame) would slip past ImGui's per-frame key state.
+// Installed before ImGui's backend, which chains to it.
 void onKey(GLFWwindow* w, int key, int, int action, int) {
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
-  if (app && key == GLFW_KEY_F12 && action == GLFW_PRESS) app->screenshotRequested = true;
+  if (!app || action != GLFW_PRESS) return;
+  if (key == GLFW_KEY_F12) app->screenshotRequested = true;
+  if (key == GLFW_KEY_F11) app->presenting = !app->presenting;
+  if (key == GLFW_KEY_ESCAPE) app->presenting = false;
+}
+
+// Text and every size in the style, uiScale times the defaults (from the defaults each time, so
+// changing the scale back and forth does not compound).
+void applyUiScale(AppState& app) {
+  if (app.uiScale == app.appliedScale || ImGui::IsAnyItemActive()) return;  // not while its slider is dragged
+  ImGuiStyle style;
+  ImGui::StyleColorsDark(&style);
+  style.ScaleAllSizes(app.uiScale);
+  ImGui::GetStyle() = style;
+  ImGui::GetIO().FontGlobalScale = app.uiScale;
+  const float grow = app.uiScale / (app.appliedScale > 0 ? app.appliedScale : 1.0f);  // the panels grow with the text
+  app.leftW *= grow, app.rightW *= grow;
+  app.appliedScale = app.uiScale;
+}
+
+// Presentation mode's overlay: what the class needs to read from the back row (the lab, the
+// frame's cost, the last error numbers), and the parameters folded away for the teacher.
+void presentationOverlay(AppState& app, const std::vector<gl::PassTiming>& passes) {
+  ImGui::SetNextWindowPos({12, 12});
+  ImGui::SetNextWindowBgAlpha(0.72f);
+  ImGui::Begin("Presenting", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
+  ImGui::TextUnformatted(std::string(app.host->lab().title()).c_str());
+  double gpu = 0;
+  for (auto& p : passes) gpu += p.gpuMs;
+  ImGui::Text("frame %.1f ms, GPU %.1f ms", app.history.frameMs.empty() ? 0.0f : app.history.frameMs.back(), gpu);
+  if (const auto& measured = app.measurer->history(); !measured.empty()) {
+    int shown = 0;
+    for (auto& [key, value] : measured.back().values)
+      if (shown++ < 3) ImGui::Text("%s %s", key.c_str(), formatNumber(value).c_str());
+  }
+  if (ImGui::CollapsingHeader("Parameters")) {
+    ImGui::PushItemWidth(220 * app.uiScale);
+    drawParamWidgets(app.host->lab());
+    ImGui::PopItemWidth();
+  }
+  ImGui::TextDisabled("F11 or Esc: panels");
+  ImGui::End();
 }
 
 void handleDrops(AppState& app) {
@@ -135,6 +183,26 @@ void viewportControls(AppState& app) {
     const auto px = app.host->target()->readPixel(x, y);
     ImGui::SetTooltip("pixel %d, %d\nR %.6g  G %.6g\nB %.6g  A %.6g", x, y, px[0], px[1], px[2], px[3]);
   }
+}
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+constexpr ImGuiWindowFlags kSidePanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+
+// The lab's frame filling the current window, and the camera controls over it.
+void viewportImage(AppState& app) {
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  app.viewport = glm::max(glm::ivec2(int(avail.x), int(avail.y)), glm::ivec2(16));
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  // The frame is opaque: its alpha is coverage for the metrics (the filtering lab's sky is 0 there),
+  // not transparency, so it is drawn without blending, as headless images are written.
+  ImDrawList* drawList = ImGui::GetWindowDrawList();
+  drawList->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
+  ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(app.host->target()->color().id())), avail, {0, 1}, {1, 0});
+  drawList->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+  ImGui::SetCursorScreenPos(origin);
+  ImGui::InvisibleButton("viewport", avail, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                                ImGuiButtonFlags_MouseButtonMiddle);
+  viewportControls(app);
 }
 
 void leftPanel(AppState& app) {
@@ -177,6 +245,11 @@ void leftPanel(AppState& app) {
   ImGui::SameLine();
   if (ImGui::Button("Reset view")) host.resetCamera();
   ImGui::Separator();
+  if (ImGui::Button("Present (F11)")) app.presenting = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120 * app.uiScale);
+  ImGui::SliderFloat("UI scale", &app.uiScale, 0.5f, 4.0f, "%.2f");
+  if (ImGui::IsItemDeactivatedAfterEdit()) app.uiScale = std::clamp(app.uiScale, 0.5f, 4.0f);
   if (ImGui::Button("Screenshot (F12)")) app.screenshotRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Save preset")) app.message = savePreset(host);
@@ -242,6 +315,14 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
     app.measurer = &measurer;
     app.measure.autoMeasure = wopt.autoMeasure;
     app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
+    app.presenting = wopt.present;
+    if (wopt.uiScale > 0) {
+      app.uiScale = wopt.uiScale;
+    } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen
+      float sx = 1.0f, sy = 1.0f;
+      glfwGetWindowContentScale(window, &sx, &sy);
+      app.uiScale = std::clamp(std::max(sx, sy), 0.5f, 4.0f);
+    }
     glfwSetWindowUserPointer(window, &app);
     glfwSetDropCallback(window, onDrop);
     if (!options.preset.empty()) app.message = loadPreset(host, options.preset);
@@ -292,64 +373,73 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
 
       // 3. UI layout
       const auto uiStart = std::chrono::steady_clock::now();
+      applyUiScale(app);
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       int fbw = 0, fbh = 0;
       glfwGetFramebufferSize(window, &fbw, &fbh);
-      const float leftW = 380, rightW = 380;
-      const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
-      ImGui::SetNextWindowPos({0, 0});
-      ImGui::SetNextWindowSize({leftW, float(fbh)});
-      ImGui::Begin("Lab", nullptr, fixed);
-      leftPanel(app);
-      ImGui::End();
-
-      ImGui::SetNextWindowPos({leftW, 0});
-      ImGui::SetNextWindowSize({float(fbw) - leftW - rightW, float(fbh)});
-      ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-      ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
-      const ImVec2 avail = ImGui::GetContentRegionAvail();
-      app.viewport = glm::max(glm::ivec2(int(avail.x), int(avail.y)), glm::ivec2(16));
-      const ImVec2 origin = ImGui::GetCursorScreenPos();
-      // The frame is opaque: its alpha is coverage for the metrics (the filtering lab's sky is 0 there),
-      // not transparency, so it is drawn without blending, as headless images are written.
-      ImDrawList* drawList = ImGui::GetWindowDrawList();
-      drawList->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
-      ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(host.target()->color().id())), avail, {0, 1}, {1, 0});
-      drawList->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
-      ImGui::SetCursorScreenPos(origin);
-      ImGui::InvisibleButton("viewport", avail, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                                                    ImGuiButtonFlags_MouseButtonMiddle);
-      viewportControls(app);
-      ImGui::End();
-      ImGui::PopStyleVar();
-
-      // Running jobs over the bottom of the viewport: progress, what they do, Cancel.
-      if (host.jobs().busy()) {
-        ImGui::SetNextWindowPos({leftW + 10, float(fbh) - 10}, ImGuiCond_Always, {0, 1});
-        ImGui::SetNextWindowSize({float(fbw) - leftW - rightW - 20, 0});
-        ImGui::SetNextWindowBgAlpha(0.85f);
-        ImGui::Begin("Jobs", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-        drawJobs(host.jobs());
+      if (app.presenting) {
+        // The viewport fills the window; the overlay carries what the class reads.
+        ImGui::SetNextWindowPos({0, 0});
+        ImGui::SetNextWindowSize({float(fbw), float(fbh)});
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+        ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar);
+        viewportImage(app);
         ImGui::End();
-      }
+        ImGui::PopStyleVar();
+        presentationOverlay(app, passes);
+      } else {
+        // Side panels keep their width and are resized by their inner edge, each at most 35 % of
+        // the window, so the viewport always has 30 % or more; it takes the rest.
+        const float maxW = 0.35f * float(fbw), minW = std::min(220 * app.uiScale, maxW);
+        app.leftW = std::clamp(app.leftW, minW, maxW);
+        app.rightW = std::clamp(app.rightW, minW, maxW);
+        ImGui::SetNextWindowPos({0, 0});
+        ImGui::SetNextWindowSize({app.leftW, float(fbh)});
+        ImGui::SetNextWindowSizeConstraints({minW, float(fbh)}, {maxW, float(fbh)});
+        ImGui::Begin("Lab", nullptr, kSidePanel);
+        leftPanel(app);
+        app.leftW = ImGui::GetWindowWidth();
+        ImGui::End();
 
-      ImGui::SetNextWindowPos({float(fbw) - rightW, 0});
-      ImGui::SetNextWindowSize({rightW, float(fbh)});
-      ImGui::Begin("Inspect", nullptr, fixed);
-      if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
-      if (ImGui::CollapsingHeader("Error against the truth", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const MeasureRequest now{app.costs.signature,
-                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(),
-                                 app.costs.costs(), app.viewport, time};
-        drawMeasurePanel(host, measurer, app.measure, now, app.message);
+        ImGui::SetNextWindowPos({float(fbw) - app.rightW, 0});
+        ImGui::SetNextWindowSize({app.rightW, float(fbh)});
+        ImGui::SetNextWindowSizeConstraints({minW, float(fbh)}, {maxW, float(fbh)});
+        ImGui::Begin("Inspect", nullptr, kSidePanel);
+        if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
+        if (ImGui::CollapsingHeader("Error against the truth", ImGuiTreeNodeFlags_DefaultOpen)) {
+          const MeasureRequest now{app.costs.signature,
+                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(),
+                                   app.costs.costs(), app.viewport, time};
+          drawMeasurePanel(host, measurer, app.measure, now, app.message);
+        }
+        drawLabPanels(host.lab());
+        if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
+        if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
+        app.rightW = ImGui::GetWindowWidth();
+        ImGui::End();
+
+        const float viewW = std::max(float(fbw) - app.leftW - app.rightW, 16.0f);
+        ImGui::SetNextWindowPos({app.leftW, 0});
+        ImGui::SetNextWindowSize({viewW, float(fbh)});
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+        ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
+        viewportImage(app);
+        ImGui::End();
+        ImGui::PopStyleVar();
+
+        // Running jobs over the bottom of the viewport: progress, what they do, Cancel.
+        if (host.jobs().busy()) {
+          ImGui::SetNextWindowPos({app.leftW + 10, float(fbh) - 10}, ImGuiCond_Always, {0, 1});
+          ImGui::SetNextWindowSize({viewW - 20, 0});
+          ImGui::SetNextWindowBgAlpha(0.85f);
+          ImGui::Begin("Jobs", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+          drawJobs(host.jobs());
+          ImGui::End();
+        }
       }
-      drawLabPanels(host.lab());
-      if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
-      if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
-      ImGui::End();
 
       // 4. draw the UI
       ImGui::Render();

@@ -11,6 +11,8 @@ struct WindowOptions {
   bool autoMeasure = false; // start with auto-measure on (where the truth is cheap)
   double soakMinutes = 0;   // --soak M: random use for M minutes (host/soak.h), then exit 0 or 1
   unsigned soakSeed = 1;    // --soak-seed N
+  float uiScale = 0;        // --ui-scale S: text and widgets (0: the monitor's content scale)
+  bool present = false;     // --present: start in presentation mode (F11)
 };
 
 // Returns the exit code; 2 when no window could be opened (no display), having printed why.
