@@ -38,6 +38,13 @@ grep -q "soak: 0 frames with NaN/Inf, 0 GL errors" "$out/soak.log" || { tail -20
 grep -q "soak: samples in .*; passed" "$out/soak.log" || { tail -20 "$out/soak.log"; echo "the soak's verdict is not passed"; exit 1; }
 echo "soak in the window passed"
 
+# Presentation mode on the filtering lab: the viewport fills the window (over 100,000 pixels of its
+# sky), and the sky is drawn opaque (its alpha is 0, coverage for the metrics: blended, it was black).
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab filtering --present --exit-after 4 \
+  --screenshot "$out/window_present.png" >/dev/null
+"$check" "$out/window_present.png" --color 140,173,209 --min-pixels 100000
+echo "presentation mode passed"
+
 # Measure in the window: with auto-measure on, the error against the truth appears.
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab shading --auto-measure --exit-after 40 \
   --screenshot "$out/window_measure.png" >"$out/measure.log"
