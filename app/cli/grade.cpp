@@ -147,11 +147,17 @@ std::string gradeExercise(const std::string& id, const Options& o, const fs::pat
       if (auto e = scoreConfiguration(job, run, o.watchdog, solution, student, result); !e.empty()) return e;
       if (renderer.empty()) renderer = solution.value("renderer", "");
     }
-    for (auto& err : result.errors)  // each error once per exercise: every configuration compiles the same file
-      if (std::find(printed.begin(), printed.end(), err) == printed.end()) {
+    // Each error once per exercise: every configuration and every program variant ("shading/phong:
+    // ...", "shading/gouraud: ...") compiles the same file, so an error is known by what follows
+    // the program's name.
+    for (auto& err : result.errors) {
+      const size_t name = err.find(": ");
+      const std::string where = name == std::string::npos ? err : err.substr(name + 2);
+      if (std::find(printed.begin(), printed.end(), where) == printed.end()) {
         std::printf("  %s\n", err.c_str());
-        printed.push_back(err);
+        printed.push_back(where);
       }
+    }
     for (auto& r : result.checks) {
       std::printf("%s\n", checkLine(result, r).c_str());
       if (!r.message.empty() && result.errors.empty()) std::printf("          %s\n", r.message.c_str());

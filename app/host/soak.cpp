@@ -193,7 +193,20 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   for (auto& x : samples_)
     rows << formatNumber(x.seconds) << "," << formatNumber(x.residentMb) << "," << x.glObjects << "," << x.jobs << ","
          << x.frames << "," << x.steps << "\n";
-  const std::string written = writeTextFile(csv.string(), rows.str());
+  std::string written = writeTextFile(csv.string(), rows.str());
+  // Every lab entry beside it: a step (memory taken once and kept) and a ramp (taken again and
+  // again) give the same slope over a short run, and only the series tells them apart.
+  std::vector<std::pair<std::string, const LabEntry*>> byTime;
+  for (auto& [lab, entries] : entries_)
+    for (auto& e : entries) byTime.emplace_back(lab, &e);
+  std::sort(byTime.begin(), byTime.end(), [](auto& a, auto& b) { return a.second->seconds < b.second->seconds; });
+  std::ostringstream entryRows;
+  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects\n";
+  for (auto& [lab, e] : byTime)
+    entryRows << formatNumber(e->seconds) << "," << lab << "," << formatNumber(e->residentMb) << ","
+              << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << "\n";
+  const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
+  if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
   bool passed = written.empty() && nonFiniteFrames_ == 0 && glErrors_ == 0;
   s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_ << " lab switches, "
@@ -260,7 +273,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   }
   for (auto& p : problems_) s << "soak: problem: " << p << "\n";
   if (!written.empty()) s << "soak: " << written << "\n";
-  s << "soak: samples in " << csv.string() << "; " << (passed ? "passed" : "FAILED") << "\n";
+  s << "soak: samples in " << csv.string() << ", lab entries in " << entriesCsv.string() << "; "
+    << (passed ? "passed" : "FAILED") << "\n";
   return {s.str(), passed};
 }
 

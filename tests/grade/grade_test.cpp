@@ -191,6 +191,9 @@ TEST(GradeFailures, ASyntaxErrorIsReportedAtTheStudentsFileAndLine) {
   EXPECT_NE(g.output.find("error"), std::string::npos);
   EXPECT_NE(g.output.find("\n    "), std::string::npos) << "the source line and its caret";
   EXPECT_NE(g.output.find('^'), std::string::npos);
+  // Printed once, though the per-fragment and per-vertex programs both fail on it.
+  const size_t first = g.output.find(where);
+  EXPECT_EQ(g.output.find(where, first + 1), std::string::npos) << g.output;
   const auto& c = g.check("highlight");
   EXPECT_EQ(c["result"], "FAIL");
   EXPECT_NE(c["message"].get<std::string>().find("did not build: shading/phong: " + where), std::string::npos) << c;
