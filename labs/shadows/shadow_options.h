@@ -80,11 +80,21 @@ static_assert(coversEnum<ShadowView>(kShadowViews));
 
 inline constexpr std::string_view kFits[] = {"scene", "view", "cascades"};
 inline constexpr std::string_view kCascadeIndices[] = {"1", "2", "3", "4"};
-inline constexpr std::string_view kFormats[] = {"16", "24", "32f"};
+// The depth formats: the name --set takes and the texture format the map is made with.
+struct DepthFormatRow {
+  DepthFormat value;
+  std::string_view name;
+  GLenum internalFormat;
+};
+inline constexpr DepthFormatRow kDepthFormats[] = {
+    {DepthFormat::D16, "16", GL_DEPTH_COMPONENT16},
+    {DepthFormat::D24, "24", GL_DEPTH_COMPONENT24},
+    {DepthFormat::D32F, "32f", GL_DEPTH_COMPONENT32F},
+};
+static_assert(coversEnum<DepthFormat>(kDepthFormats));
 inline constexpr std::string_view kMapSizes[] = {"256", "512", "1024", "2048", "4096", "8192"};
 inline constexpr std::string_view kSampleCounts[] = {"8", "16", "32", "64"};
 inline constexpr std::string_view kDepthLights[] = {"key", "fill"};
-inline const GLenum kFormatEnums[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F};
 
 inline ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
   return isMomentFilter(p.filter.type) && p.key.type == LightType::Point ? ShadowFilter::Pcf : p.filter.type;

@@ -78,7 +78,7 @@ void visitFillLight(ParamVisitor& v, ShadowsParams::FillLight& fill) {
 void visitMap(ParamVisitor& v, ShadowsParams::Map& map, LightType keyType) {
   v.choiceParam({"map_size", "Map size", "texels", "Shadow map resolution (per cube face for a point light)."},
                 map.sizeIndex, kMapSizes);
-  v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, map.format, kFormats);
+  v.enumParam({"depth_format", "Depth format", "bits", "16, 24-bit fixed point or 32-bit float depth."}, map.format, namesOf<kDepthFormats>());
   v.boolParam({"auto_fit", "Auto-fit frustum", "", "Fit the light's extent and near/far to the scene bounds."}, map.autoFit);
   const std::string_view fitReason = keyType != LightType::Directional ? "fitting to the view is for directional lights"
                                      : !map.autoFit                    ? "auto-fit is off: the extent is set by hand"
@@ -451,7 +451,7 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
   if (!ensureMap(keyMap_, {cube, params.map.size(), layers, format, cube ? 0u : momentFormat(filter), params.filter.momentMips},
                  "key"))
     return;
-  const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(kFormats[int(params.map.format)]);
+  const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
                            (cascades_.size() >= 2 ? " cascade " : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
   Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.map.sixCubePasses, filter));
@@ -480,7 +480,7 @@ void ShadowsLab::render(Frame& frame) {
   const LightFrame key = buildLight(keySetup(), bounds, lightWarnings_);
   std::vector<std::string> ignored;
   const LightFrame fill = buildLight(fillSetup(), bounds, ignored);
-  const GLenum format = kFormatEnums[int(params.map.format)];
+  const GLenum format = rowOf(kDepthFormats, params.map.format).internalFormat;
   const ShadowFilter filter = effectiveFilterOf(params);
   DepthPassState depthState{params.map.cullFront, params.bias.offsetFactor, params.bias.offsetUnits, params.map.sixCubePasses};
   depthState.momentClear = farMoments(params, filter);
@@ -501,7 +501,7 @@ void ShadowsLab::render(Frame& frame) {
   const bool fillMapNeeded = params.fill.on && params.fill.casts && !gbuffer &&
                              (!viewIsDepthMap(params.view.mode) || params.view.depthLight == 1);
   if (fillMapNeeded && ensureMap(fillMap_, {false, params.map.size(), 1, format, momentFormat(filter), params.filter.momentMips}, "fill")) {
-    const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(kFormats[int(params.map.format)]);
+    const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
     {
       auto pass = frame.pass("shadow map: fill spot " + size +
                              (isMomentFilter(filter) ? " + " + filterName(filter) + " moments" : ""));

@@ -24,7 +24,7 @@ enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm,
 enum class ShadowView {
   Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, Cascades, DepthRaw, DepthLinear, Count
 };
-enum class DepthFormat { D16, D24, D32F };
+enum class DepthFormat { D16, D24, D32F, Count };
 enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
 
 // One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).

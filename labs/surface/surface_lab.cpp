@@ -14,7 +14,20 @@ namespace {
 constexpr std::string_view kSurfaceAt[] = {"top", "bottom"};
 constexpr std::string_view kGreen[] = {"opengl", "directx"};
 constexpr std::string_view kDecoding[] = {"linear", "srgb"};
-constexpr std::string_view kFilters[] = {"nearest", "bilinear", "trilinear", "anisotropic"};
+// How the colour and normal maps are sampled.
+struct TextureFilterRow {
+  TextureFilter value;
+  std::string_view name;
+  GLenum minFilter, magFilter;
+  float anisotropy;
+};
+constexpr TextureFilterRow kTextureFilters[] = {
+    {TextureFilter::Nearest, "nearest", GL_NEAREST, GL_NEAREST, 1.0f},
+    {TextureFilter::Bilinear, "bilinear", GL_LINEAR, GL_LINEAR, 1.0f},
+    {TextureFilter::Trilinear, "trilinear", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 1.0f},
+    {TextureFilter::Anisotropic, "anisotropic", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 16.0f},
+};
+static_assert(coversEnum<TextureFilter>(kTextureFilters));
 constexpr std::string_view kBumpForms[] = {"consistent", "games101"};
 constexpr std::string_view kDisplacedNormals[] = {"from-height", "unchanged"};
 constexpr std::string_view kSources[] = {"generated", "mesh", "screen"};
@@ -61,7 +74,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.enumParam({"decoding", "Decoding", "", "linear: the map's numbers as they are; srgb: decoded as a colour (a "
                "wrong step: vectors bend towards the tangent plane)."}, p.decoding, kDecoding);
   v.enumParam({"filter", "Texture filter", "", "nearest, bilinear, trilinear (mipmapped) or 16x anisotropic, for the "
-               "colour and normal maps (the height field, being geometry, is always trilinear)."}, p.filter, kFilters);
+               "colour and normal maps (the height field, being geometry, is always trilinear)."}, p.filter, namesOf<kTextureFilters>());
   v.section("Bump");
   v.enumParam({"bump_form", "Bump form", "", "consistent: the slope in world units from the height scale and the mesh's "
                "UV scale, agreeing with displacement; games101: dU = kh kn (h(u + 1/w, v) - h(u, v)), as in the "
@@ -128,10 +141,9 @@ SceneNeeds SurfaceLab::needs() const {
   n.normalTextures = params.technique == SurfaceTechnique::NormalMap;
   n.heightTextures = usesHeight(params.technique) || params.view == SurfaceView::Height;
   n.normalMapsAsSrgb = params.decoding == MapDecoding::Srgb;
-  static const GLenum minFilter[] = {GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
-  n.sampling.minFilter = minFilter[int(params.filter)];
-  n.sampling.magFilter = params.filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR;
-  n.sampling.anisotropy = params.filter == TextureFilter::Anisotropic ? 16.0f : 1.0f;
+  n.sampling.minFilter = rowOf(kTextureFilters, params.filter).minFilter;
+  n.sampling.magFilter = rowOf(kTextureFilters, params.filter).magFilter;
+  n.sampling.anisotropy = rowOf(kTextureFilters, params.filter).anisotropy;
   n.tessellation = params.tessellation;
   return n;
 }

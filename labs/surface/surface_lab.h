@@ -46,7 +46,7 @@ inline bool isDisplacing(SurfaceTechnique t) { return rowOf(kSurfaceTechniques, 
 enum class SurfaceAt { Top, Bottom };
 enum class GreenConvention { OpenGl, DirectX };
 enum class MapDecoding { Linear, Srgb };
-enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic };
+enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic, Count };  // kTextureFilters in surface_lab.cpp
 enum class BumpForm { Consistent, Games101 };
 enum class DisplacedNormals { FromHeight, Unchanged };
 enum class SurfaceView { Shaded, Normals, TangentAngle, Height, Uv, Count };
