@@ -2,20 +2,11 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "context/gl_context.h"
 
 namespace shadelab {
-
-std::string readFile(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 void timeFrames(benchmark::State& state, LabHost& host, glm::ivec2 size) {
   for (int i = 0; i < 2; ++i) host.renderFrame(size);

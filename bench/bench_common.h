@@ -14,8 +14,6 @@
 
 namespace shadelab {
 
-std::string readFile(const std::filesystem::path& p);
-
 // Each iteration is one frame, timed by the sum of its passes' GPU time (after two warm-up frames).
 void timeFrames(benchmark::State& state, LabHost& host, glm::ivec2 size);
 

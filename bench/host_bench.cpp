@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "bench_common.h"
+#include "util/read_file.h"
 
 namespace fs = std::filesystem;
 using namespace shadelab;
@@ -23,7 +24,7 @@ void BM_ReloadLatency(benchmark::State& state) {
   const fs::path student = fs::temp_directory_path() / ("shadelab_bench_" + std::to_string(::getpid()));
   fs::create_directories(student / "shading");
   const fs::path frag = student / "shading" / "shade.frag";
-  const std::string original = readFile(builtin / "shading" / "shade.frag");
+  const std::string original = readWholeFile(builtin / "shading" / "shade.frag");
   std::ofstream(frag) << original;
   LabHost host(ShaderSearchPath({student, builtin}));
   const glm::ivec2 size(640, 360);

@@ -126,7 +126,7 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   // Smoothing shrinks a closed mesh (each vertex moves towards its neighbours' average); implicit
   // fairing's remedy (Desbrun et al. 1999) scales the result about its centroid back to the input's
   // volume. Measured on the smoothed surface itself, so the note names what happened.
-  if (result.size() == start.size() && m.statistics.boundaryEdges == 0) {
+  if (m.statistics.boundaryEdges == 0) {
     glm::dvec3 centroid(0.0);
     for (const glm::dvec3& p : result) centroid += p;
     centroid /= double(std::max<size_t>(result.size(), 1));
