@@ -1,7 +1,9 @@
 #include "lab/params.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 
 namespace shadelab {
 
@@ -63,6 +65,30 @@ void SetFromString::choiceParam(const ParamInfo& info, int& index, std::span<con
   fail(info, joined(names));
 }
 
+void SetFromString::fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) {
+  keys_.emplace_back(info.key);
+  if (info.key != key_) return;
+  found_ = true;
+  const std::string valid = "a " + joined(extensions) + " file, or '' for none";
+  if (text_.empty()) {
+    path.clear();
+    return;
+  }
+  const std::filesystem::path file(text_);
+  const std::string ext = file.extension().string();
+  if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) {
+    fail(info, valid);
+    return;
+  }
+  // The error_code forms: a name longer than the file system allows is an answer, not a throw.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    error_ = labId_ + "." + std::string(info.key) + ": no such file '" + text_ + "' (valid: " + valid + ")";
+    return;
+  }
+  path = text_;
+}
+
 void SetFromString::action(const ParamInfo& info, const std::function<void()>&) {
   if (info.key != key_) return;
   found_ = true;
@@ -100,6 +126,9 @@ void CollectAsText::intParam(const ParamInfo& info, int& value, int, int) {
 void CollectAsText::boolParam(const ParamInfo& info, bool& value) {
   values.emplace_back(info.key, value ? "on" : "off");
 }
+void CollectAsText::fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view>) {
+  values.emplace_back(info.key, path);
+}
 void CollectAsText::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
   values.emplace_back(info.key, std::string(names[size_t(index)]));
 }
@@ -124,6 +153,9 @@ void DescribeParams::section(std::string_view title) { lines.push_back("  [" + s
 void DescribeParams::action(const ParamInfo& info, const std::function<void()>&) {
   lines.push_back("  " + labId_ + "." + std::string(info.key) + "  action (--do " + labId_ + "." + std::string(info.key) +
                   ")\n      " + std::string(info.help));
+}
+void DescribeParams::fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) {
+  add(info, "file (" + joined(extensions) + ", or '' for none)", path.empty() ? "''" : path);
 }
 void DescribeParams::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
   add(info, "one of " + joined(names), std::string(names[size_t(index)]));

@@ -26,6 +26,9 @@ class ParamVisitor {
   virtual void intParam(const ParamInfo& info, int& value, int min, int max) = 0;
   virtual void boolParam(const ParamInfo& info, bool& value) = 0;
   virtual void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) = 0;
+  // A file the lab reads (a clean reference mesh): a path, "" for none, with the extensions it
+  // may have (".obj"). Presets and --set carry it; a visitor that has no use for it ignores it.
+  virtual void fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) {}
   // A heading over the parameters that follow ("Light", "Bias"): the panel folds the group, `list`
   // prints it. Parameters before the first section stand on their own.
   virtual void section(std::string_view title) {}
@@ -80,6 +83,7 @@ class SetFromString final : public ParamVisitor {
   void intParam(const ParamInfo& info, int& value, int min, int max) override;
   void boolParam(const ParamInfo& info, bool& value) override;
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  void fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) override;
   void action(const ParamInfo& info, const std::function<void()>&) override;
   // Call after visiting: the error, including "unknown key" with the valid keys.
   std::string result() const;
@@ -115,6 +119,7 @@ class CollectAsText final : public ParamVisitor {
   void intParam(const ParamInfo& info, int& value, int, int) override;
   void boolParam(const ParamInfo& info, bool& value) override;
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  void fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view>) override;
   std::vector<std::pair<std::string, std::string>> values;
 };
 
@@ -126,6 +131,7 @@ class DescribeParams final : public ParamVisitor {
   void intParam(const ParamInfo& info, int& value, int min, int max) override;
   void boolParam(const ParamInfo& info, bool& value) override;
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override;
+  void fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) override;
   void section(std::string_view title) override;
   void action(const ParamInfo& info, const std::function<void()>&) override;
   void unavailable(std::string_view reason) override { unavailable_ = reason; }

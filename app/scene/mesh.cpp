@@ -57,6 +57,7 @@ TangentReport computeTangents(MeshData& mesh) {
           mesh.normals.push_back(mesh.normals[v]);
           mesh.uvs.push_back(mesh.uvs[v]);
           if (!mesh.sourceTangents.empty()) mesh.sourceTangents.push_back(mesh.sourceTangents[v]);
+          if (!mesh.sourceVertex.empty()) mesh.sourceVertex.push_back(mesh.sourceVertex[v]);
           ++report.mirrorSplits;
         }
         v = copyOf[v];

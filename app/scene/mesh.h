@@ -31,6 +31,10 @@ struct MeshData {
   std::vector<glm::vec4> tangents;  // xyz tangent, w = handedness; built only on request
   std::vector<glm::vec4> sourceTangents;  // the file's own (glTF TANGENT), in our UV convention, or empty
   std::vector<uint32_t> indices;    // triangles
+  // The vertex of the file each vertex came from, where loading split or reordered them (OBJ
+  // indexes positions, UVs and normals apart); empty: vertex i is the file's vertex i. Pairs two
+  // files' vertices (a noisy scan and its clean mesh) by the order the files list them.
+  std::vector<uint32_t> sourceVertex;
   int material = 0;
 
   size_t triangleCount() const { return indices.size() / 3; }

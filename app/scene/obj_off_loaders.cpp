@@ -125,6 +125,7 @@ std::string loadObj(const fs::path& file, Scene& scene) {
         if (added) {
           const float* p = &attrib.vertices[size_t(3 * idx.vertex_index)];
           mesh.positions.emplace_back(p[0], p[1], p[2]);
+          mesh.sourceVertex.push_back(uint32_t(idx.vertex_index));
           if (hasNormals && idx.normal_index >= 0) {
             const float* n = &attrib.normals[size_t(3 * idx.normal_index)];
             mesh.normals.emplace_back(n[0], n[1], n[2]);

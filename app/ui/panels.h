@@ -9,8 +9,10 @@
 
 namespace shadelab {
 
-// Widgets for a lab's parameter list; returns true when any value changed.
-bool drawParamWidgets(Lab& lab);
+// Widgets for a lab's parameter list; returns true when any value changed. `fileUnderMouse`, when
+// given, receives the key of the file parameter the mouse is over ("" if none): a file dropped
+// on the window then goes to that parameter rather than becoming the scene.
+bool drawParamWidgets(Lab& lab, std::string* fileUnderMouse = nullptr);
 
 struct FrameHistory {
   std::deque<float> frameMs;  // wall time between frames

@@ -1,6 +1,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "ui/panels.h"
 
@@ -10,6 +11,7 @@ namespace {
 class ImGuiParams final : public ParamVisitor {
  public:
   bool changed = false;
+  std::string fileUnderMouse;
 
   void floatParam(const ParamInfo& info, float& value, float min, float max, bool logScale) override {
     if (!open_) return;
@@ -47,6 +49,37 @@ class ImGuiParams final : public ParamVisitor {
       ImGui::EndCombo();
     }
     tooltip(info);
+  }
+  // The file's name (the whole path on hover), a drop target for another, and Clear.
+  void fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) override {
+    if (!open_) return;
+    Greyed greyed(*this, unavailable_);
+    std::string kinds;
+    for (auto e : extensions) kinds += (kinds.empty() ? "" : "/") + std::string(e);
+    const std::string shown = path.empty() ? "none: drop a " + kinds + " file here"
+                                           : std::filesystem::path(path).filename().string();
+    ImGui::BeginGroup();
+    ImGui::TextUnformatted(std::string(info.label).c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", shown.c_str());
+    if (!path.empty()) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(("Clear##" + std::string(info.key)).c_str())) {
+        path.clear();
+        changed = true;
+      }
+    }
+    ImGui::EndGroup();
+    if (ImGui::IsItemHovered()) fileUnderMouse = info.key;
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+      if (!path.empty()) ImGui::TextUnformatted(path.c_str());
+      ImGui::TextUnformatted(std::string(info.help).c_str());
+      ImGui::TextDisabled("drop a %s file on this line, or --set %s=FILE", kinds.c_str(), std::string(info.key).c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
   }
   // A folding header per section; its parameters are laid out only while it is open.
   void section(std::string_view title) override {
@@ -103,11 +136,12 @@ class ImGuiParams final : public ParamVisitor {
 
 }  // namespace
 
-bool drawParamWidgets(Lab& lab) {
+bool drawParamWidgets(Lab& lab, std::string* fileUnderMouse) {
   ImGuiParams v;
   ImGui::PushItemWidth(-175);
   lab.visitParams(v);
   ImGui::PopItemWidth();
+  if (fileUnderMouse) *fileUnderMouse = v.fileUnderMouse;
   return v.changed;
 }
 

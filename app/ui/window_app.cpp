@@ -83,6 +83,7 @@ struct AppState {
   Measurer* measurer = nullptr;
   std::string message;          // last error or confirmation, shown in the UI
   std::vector<std::string> dropped;
+  std::string fileParamUnderMouse;  // a file parameter's key, as of the last frame: drops go there
   glm::ivec2 viewport{960, 600};
   FrameHistory history;
   ConfigurationCosts costs;
@@ -160,6 +161,10 @@ void handleDrops(AppState& app) {
       app.message = !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;
     } else if (ext == ".json") {
       app.message = loadPreset(*app.host, path);
+    } else if (!app.fileParamUnderMouse.empty()) {
+      const std::string key = std::string(app.host->lab().id()) + "." + app.fileParamUnderMouse;
+      const std::string err = app.host->set(key + "=" + path);
+      app.message = err.empty() ? key + " = " + path : err;
     } else {
       const std::string err = app.host->selectScene(path);
       app.message = err.empty() ? "loaded scene " + path : err;
@@ -239,7 +244,7 @@ void leftPanel(AppState& app) {
   }
   ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window.");
   ImGui::Separator();
-  drawParamWidgets(host.lab());
+  drawParamWidgets(host.lab(), &app.fileParamUnderMouse);
   for (auto& e : host.jobs().takeErrors()) app.message = e;
   if (ImGui::Button("Reset parameters")) host.resetParams();
   ImGui::SameLine();

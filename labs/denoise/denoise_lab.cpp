@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "labs/denoise/denoise_scenes.h"
+#include "labs/denoise/mesh_pair.h"
+#include "scene/loaders.h"
 #include "measure/report.h"
 #include "util/output_files.h"
 
@@ -13,6 +15,7 @@ namespace shadelab {
 namespace {
 
 constexpr std::string_view kInputs[] = {"published", "generated"};
+constexpr std::string_view kMeshFiles[] = {".obj", ".off", ".ply"};
 constexpr std::string_view kNoiseKinds[] = {"gaussian", "impulsive"};
 constexpr std::string_view kMethods[] = {"explicit", "taubin", "implicit", "bilateral"};
 constexpr std::string_view kWeights[] = {"uniform", "cotangent"};
@@ -26,13 +29,17 @@ constexpr std::string_view kViews[] = {"shaded", "error", "offset", "seam-gap"};
 MeshData mergeInstances(const Scene& scene) {
   MeshData out;
   out.name = scene.name;
-  bool uvs = !scene.instances.empty();
-  for (auto& inst : scene.instances) uvs &= !scene.meshes[size_t(inst.mesh)].uvs.empty();
+  bool uvs = !scene.instances.empty(), numbered = !scene.instances.empty();
+  for (auto& inst : scene.instances) {
+    uvs &= !scene.meshes[size_t(inst.mesh)].uvs.empty();
+    numbered &= !scene.meshes[size_t(inst.mesh)].sourceVertex.empty();  // OBJ: numbers across the file
+  }
   for (auto& inst : scene.instances) {
     const MeshData& m = scene.meshes[size_t(inst.mesh)];
     const uint32_t base = uint32_t(out.positions.size());
     for (auto& p : m.positions) out.positions.push_back(glm::vec3(inst.model * glm::vec4(p, 1.0f)));
     if (uvs) out.uvs.insert(out.uvs.end(), m.uvs.begin(), m.uvs.end());
+    if (numbered) out.sourceVertex.insert(out.sourceVertex.end(), m.sourceVertex.begin(), m.sourceVertex.end());
     for (uint32_t i : m.indices) out.indices.push_back(base + i);
   }
   return out;
@@ -59,8 +66,12 @@ std::vector<SceneRecipe> DenoiseLab::scenes() const { return denoiseScenes(); }
 namespace {
 
 void visitInput(ParamVisitor& v, DenoiseParams::Input& input) {
-  v.enumParam({"input", "Input", "", "published: the data set's noisy twin (Guided Mesh Normal Filtering pairs); "
-               "generated: noise added here with the settings below."}, input.source, kInputs);
+  v.enumParam({"input", "Input", "", "published: the mesh's own noise (the data set's noisy twin, or the scene's file "
+               "when a clean reference is given); generated: noise added to the clean mesh here with the settings "
+               "below."}, input.source, kInputs);
+  v.fileParam({"clean", "Clean reference", "", "Your own pair: the scene (--scene NOISY) is the noisy mesh and this file "
+               "its clean reference, with the same vertices in the same order or the same faces in the same order. "
+               "Every error is then against it."}, input.clean, kMeshFiles);
   v.enumParam({"noise", "Noise", "", "gaussian: every vertex moves along its normal; impulsive: only a random "
                "fraction does."}, input.noise.kind, kNoiseKinds);
   v.floatParam({"noise_level", "Noise level", "edges", "Standard deviation of the move, in mean edge lengths of the "
@@ -221,11 +232,39 @@ void DenoiseLab::rebuildModel(const Scene& scene) {
   plainMesh_ = GpuMesh();
   mapMesh_ = GpuMesh();
   attributeMesh_ = GpuMesh();
-  const MeshData clean = mergeInstances(scene);
+  modelClean_ = params.input.clean;
+  const auto builtIn = scenes();
+  sceneIsFile_ = std::none_of(builtIn.begin(), builtIn.end(), [&](const SceneRecipe& r) { return r.id == scene.name; });
+  pairNote_.clear();
+  pairMoveEdges_ = 0.0;
+  MeshData clean = mergeInstances(scene);
   MeshData twin;
-  std::string twinError;
-  const bool hasTwin = loadPublishedTwin(scene.name, twin, twinError);
-  if (!twinError.empty()) modelNote_ = twinError;
+  bool hasTwin = false;
+  if (!modelClean_.empty()) {
+    // A user's pair: the scene is the noisy mesh, the file its clean reference.
+    Scene reference;
+    MeshPair pair;
+    MeshData referenceMesh;
+    std::string err = loadSceneFile(modelClean_, reference);
+    if (err.empty()) {
+      referenceMesh = mergeInstances(reference);
+      err = pairWithClean(clean, referenceMesh, scene.name, modelClean_, pair);
+    }
+    if (!err.empty()) {
+      modelNote_ = "denoise.clean: " + err + "; the scene is taken as the clean mesh instead";
+    } else {
+      pairNote_ = std::filesystem::path(scene.name).filename().string() + " paired with " +
+                  std::filesystem::path(modelClean_).filename().string() + " (" + pair.how + ")";
+      pairMoveEdges_ = pair.meanMoveEdges;
+      clean = std::move(referenceMesh);
+      twin = std::move(pair.twin);
+      hasTwin = true;
+    }
+  } else {
+    std::string twinError;
+    hasTwin = loadPublishedTwin(scene.name, twin, twinError);
+    if (!twinError.empty()) modelNote_ = twinError;
+  }
   std::string error;
   model_ = buildDenoiseModel(clean, hasTwin ? &twin : nullptr, error);
   if (!error.empty()) modelNote_ = error;
@@ -245,7 +284,7 @@ void DenoiseLab::rebuildModel(const Scene& scene) {
 }
 
 void DenoiseLab::update(const Scene& scene, float) {
-  if (scene.revision != modelRevision_) rebuildModel(scene);
+  if (scene.revision != modelRevision_ || params.input.clean != modelClean_) rebuildModel(scene);
   if (!model_) return;
   if (result_ && (params.view.show != uploadedShow_ || params.view.mode != uploadedView_)) uploadViewData();
   const DenoiseConfig want = config();

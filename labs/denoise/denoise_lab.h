@@ -25,6 +25,7 @@ enum class DenoiseView { Shaded, Error, Offset, SeamGap };
 struct DenoiseParams {
   struct Input {                   // the noisy input
     NoiseSource source = NoiseSource::Published;  // the data set's noisy twin, where there is one
+    std::string clean;             // a user's clean reference for the scene's (noisy) mesh; "": none
     NoiseSettings noise;           // generated noise (mesh_noise.h)
   } input;
   struct Smoothing {
@@ -95,6 +96,10 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   ProgramSlot programs_[3];  // by Path
   int modelRevision_ = -1;   // scene revision the model was built from
   std::string modelScene_;
+  bool sceneIsFile_ = false;  // a user's file, not one of the lab's scenes
+  std::string modelClean_;   // the clean file it was built with ("" : the scene is the clean mesh)
+  std::string pairNote_;     // how the scene and the clean file were paired, or ""
+  double pairMoveEdges_ = 0.0;
   std::shared_ptr<const DenoiseModel> model_;
   std::string modelNote_;
   std::optional<DenoiseConfig> requested_;  // what the job in flight (or the last one) computes

@@ -2,6 +2,7 @@
 // student is warned about, the standard sweep and the stress cases.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "labs/denoise/denoise_lab.h"
 #include "util/format.h"
@@ -64,6 +65,22 @@ std::vector<std::string> DenoiseLab::warnings() const {
     return w;
   }
   const auto& p = params;
+  // Whose noise is on screen: a warning whenever it is not the file's own.
+  const bool ownNoise = p.input.source == NoiseSource::Published && !model_->published.empty();
+  const std::string generated = "generated " + std::string(p.input.noise.kind == NoiseKind::Gaussian ? "gaussian" : "impulsive") + " noise (level " +
+                                formatFixed(p.input.noise.level, 2) + ", seed " + std::to_string(p.input.noise.seed) + ")";
+  if (!ownNoise && !model_->published.empty())
+    w.push_back("the noise shown is " + generated + ", not the mesh's own: input = published shows " +
+                (pairNote_.empty() ? "the data set's noisy twin" : "the scene file's own noise"));
+  else if (!ownNoise && p.input.source == NoiseSource::Published)
+    w.push_back("this scene has no noisy twin, so the noise shown is " + generated + "; for a noisy mesh of your own "
+                "with its clean reference: --scene NOISY --set denoise.clean=CLEAN");
+  if (!ownNoise && sceneIsFile_ && p.input.clean.empty())
+    w.push_back(std::filesystem::path(modelScene_).filename().string() + " is taken as the clean mesh and noise is "
+                "generated on it; if it is a noisy mesh, give its clean reference with denoise.clean=CLEAN");
+  if (!pairNote_.empty() && pairMoveEdges_ > 2.0)
+    w.push_back("the paired vertices lie " + formatFixed(pairMoveEdges_, 1) + " mean edges apart on average (noise "
+                "is usually well under one): check that the clean file is this mesh's reference");
   const bool laplacian = p.smoothing.method != DenoiseMethod::Bilateral && p.smoothing.method != DenoiseMethod::Implicit;
   if (result_) {
     for (auto& n : result_->notes) w.push_back(n);
@@ -104,7 +121,7 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   LabPanel result{"Against the clean mesh", {}};
   const bool published = r.config.publishedInput && !model_->published.empty();
   result.items.push_back(PanelText{
-      (published ? std::string("Input: the published noisy twin. ")
+      (published ? (pairNote_.empty() ? std::string("Input: the published noisy twin. ") : "Input: " + pairNote_ + ". ")
                  : "Input: generated " + std::string(r.config.noise.kind == NoiseKind::Gaussian ? "Gaussian" : "impulsive") +
                        " noise, level " + formatFixed(r.config.noise.level, 2) +
                        ", seed " + std::to_string(r.config.noise.seed) +

@@ -8,6 +8,7 @@ namespace shadelab {
 
 MeshData subdivide(const MeshData& in, int levels) {
   MeshData m = in;
+  m.sourceVertex.clear();  // new vertices come from no file vertex
   for (int level = 0; level < levels; ++level) {
     std::unordered_map<uint64_t, uint32_t> midpoint;
     midpoint.reserve(m.indices.size());

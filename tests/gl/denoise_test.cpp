@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "gl_test.h"
 #include "labs/denoise/denoise_pipeline.h"
 #include "labs/denoise/denoise_scenes.h"
 #include "scene/mesh_topology.h"
+#include "scene/scene_catalog.h"
 
 using namespace shadelab;
 
@@ -109,4 +112,64 @@ TEST(Denoise, AttributePathIsTheOffsetAlongTheNormal) {
                                              [](GLuint) {});
   for (size_t v = 0; v < gpu.size(); ++v)
     ASSERT_LT(glm::length(gpu[v] - (r.noisy[v] + r.noisyNormals[v] * r.offsets[v])), 1e-5f) << v;
+}
+
+namespace {
+
+bool anyWarning(const Lab& lab, const std::string& words) {
+  for (auto& w : lab.warnings())
+    if (w.find(words) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+// A user's own pair: the scene is the noisy file, denoise.clean its reference. On the published
+// Fandisk pair loaded as two files, the noisy input's error is the paper's 28.421 degrees.
+TEST(Denoise, AUsersNoisyMeshIsJudgedAgainstTheCleanFileItNames) {
+  const auto folder = dataDirectory() / "denoise" / "guided_zhang2015" / "Fandisk0.3";
+  if (!std::filesystem::exists(folder / "Noisy.obj")) GTEST_SKIP() << "no " << folder;
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectLab("denoise"), "");
+  ASSERT_EQ(host.selectScene((folder / "Noisy.obj").string()), "");
+  host.settle();
+  host.renderFrame({160, 120});
+  EXPECT_TRUE(anyWarning(host.lab(), "is taken as the clean mesh and noise is generated on it"));
+  ASSERT_EQ(host.set("denoise.clean=" + (folder / "Original.obj").string()), "");
+  host.settle();
+  host.renderFrame({160, 120});
+  const Metrics m = host.lab().judge()->meshMetrics();
+  EXPECT_NEAR(test::metric(m, "noisy_angle_deg"), 28.421, 5e-3);
+  EXPECT_LT(test::metric(m, "angle_error_deg"), test::metric(m, "noisy_angle_deg"));
+  EXPECT_FALSE(anyWarning(host.lab(), "the noise shown is"));
+  EXPECT_FALSE(anyWarning(host.lab(), "is taken as the clean mesh"));
+  // Generated noise on the pair's clean mesh is not the file's own: said so.
+  ASSERT_EQ(host.set("denoise.input=generated"), "");
+  host.settle();
+  host.renderFrame({160, 120});
+  EXPECT_TRUE(anyWarning(host.lab(), "not the mesh's own: input = published shows the scene file's own noise"));
+}
+
+// The built-in cube has no noisy twin: input = published shows generated noise, and says so.
+TEST(Denoise, GeneratedNoiseInPlaceOfAMissingTwinIsNamed) {
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectLab("denoise"), "");
+  ASSERT_EQ(host.selectScene("denoise-cube"), "");
+  host.settle();
+  host.renderFrame({160, 120});
+  EXPECT_TRUE(anyWarning(host.lab(), "this scene has no noisy twin, so the noise shown is generated gaussian noise"));
+  // A clean file that is no pair for the scene: one line naming both, and the scene stays the clean mesh.
+  auto off = std::filesystem::temp_directory_path() / "shadelab_not_a_pair.off";
+  {
+    std::ofstream(off) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  }
+  ASSERT_EQ(host.set("denoise.clean=" + off.string()), "");
+  host.settle();
+  host.renderFrame({160, 120});
+  EXPECT_TRUE(anyWarning(host.lab(), "are not a pair")) << "a mesh of 3 vertices cannot be the cube's reference";
+  EXPECT_TRUE(host.lab().judge()->meshMetrics().size() > 0);
+  std::filesystem::remove(off);
+  EXPECT_NE(host.set("denoise.clean=/no/such/mesh.obj"), "");
+  EXPECT_NE(host.set("denoise.clean=" + off.replace_extension(".png").string()).find("valid: a .obj, .off, .ply file"),
+            std::string::npos);
 }

@@ -4,11 +4,15 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 #include "labs/denoise/bilateral_normal.h"
 #include "labs/denoise/displacement_bake.h"
 #include "labs/denoise/laplacian.h"
 #include "labs/denoise/mesh_metrics.h"
+#include "labs/denoise/mesh_pair.h"
 #include "labs/denoise/mesh_noise.h"
 #include "scene/loaders.h"
 #include "scene/mesh_topology.h"
@@ -16,6 +20,7 @@
 #include "scene/scene_catalog.h"
 
 using namespace shadelab;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -256,4 +261,72 @@ TEST(Bake, UvsOutsideTheUnitSquareWrapLikeTheTexture) {
     for (auto& uv : uvs) EXPECT_NEAR(sampleDisplacement(r.map, uv, true), 1.0f, 1e-5f) << int(method);
     EXPECT_NEAR(sampleDisplacement(r.map, {0.9f, 0.25f}, false), 1.0f, 1e-5f) << "the wrapped part was not drawn";
   }
+}
+
+// A user's noisy mesh and its clean reference come as two files: paired by the order of their
+// vertices (OFF, PLY, OBJ with the faces listed differently) or by the order of their faces
+// (vertices renumbered); anything else is refused, naming both meshes' counts.
+namespace {
+
+fs::path writeMeshFile(const std::string& name, const std::string& text) {
+  const fs::path p = fs::temp_directory_path() / ("shadelab_pair_" + std::to_string(::getpid())) / name;
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+  return p;
+}
+
+MeshData loadOne(const fs::path& file) {
+  Scene s;
+  EXPECT_EQ(loadSceneFile(file, s), "");
+  return s.meshes.at(0);
+}
+
+}  // namespace
+
+TEST(MeshPair, ObjFilesWithTheSameVerticesPairByVertexNumberWhateverTheFaceOrder) {
+  // Two triangles over four vertices; the noisy file lists the faces in the other order and with
+  // rotated corners, so the loader meets its vertices in another order than the clean file's.
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  const MeshData clean = loadOne(writeMeshFile("clean.obj", v + "f 1 2 3\nf 1 3 4\n"));
+  const MeshData noisy = loadOne(writeMeshFile(
+      "noisy.obj", "v 0 0 0.1\nv 1 0 -0.1\nv 1 1 0.2\nv 0 1 -0.2\nf 4 1 3\nf 3 1 2\n"));
+  ASSERT_NE(noisy.positions[0], glm::vec3(0, 0, 0.1f)) << "the test needs the loader to reorder the noisy vertices";
+  MeshPair pair;
+  ASSERT_EQ(pairWithClean(noisy, clean, "noisy.obj", "clean.obj", pair), "");
+  EXPECT_EQ(pair.how, "vertices in the same order");
+  EXPECT_EQ(pair.twin.indices, clean.indices) << "the twin has the clean mesh's faces";
+  for (size_t i = 0; i < clean.positions.size(); ++i) {
+    const glm::vec3 c = clean.positions[i], n = pair.twin.positions[i];
+    EXPECT_EQ(glm::vec2(c), glm::vec2(n)) << "vertex " << i << " paired with another vertex";
+    EXPECT_NE(c.z, n.z);
+  }
+}
+
+TEST(MeshPair, RenumberedVerticesPairByFaceOrder) {
+  MeshData clean;
+  clean.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
+  clean.indices = {0, 1, 2, 0, 2, 3};  // vertex 4 is in no face
+  MeshData noisy;  // the same four vertices, numbered backwards, with noise in z; one fewer vertex
+  noisy.positions = {{0, 1, 0.4f}, {1, 1, 0.3f}, {1, 0, 0.2f}, {0, 0, 0.1f}};
+  noisy.indices = {3, 2, 1, 3, 1, 0};
+  MeshPair pair;
+  ASSERT_EQ(pairWithClean(noisy, clean, "noisy", "clean", pair), "");
+  EXPECT_EQ(pair.how, "faces in the same order");
+  EXPECT_EQ(pair.twin.positions[0], glm::vec3(0, 0, 0.1f));
+  EXPECT_EQ(pair.twin.positions[3], glm::vec3(0, 1, 0.4f));
+  EXPECT_EQ(pair.twin.positions[4], clean.positions[4]) << "a vertex in no face keeps its place";
+  EXPECT_NEAR(pair.meanMoveEdges, (0.1 + 0.2 + 0.3 + 0.4) / 5.0 / ((4 + 2 * std::sqrt(2.0)) / 6.0), 1e-6);
+}
+
+TEST(MeshPair, MeshesThatAreNoPairAreRefusedWithTheirCounts) {
+  MeshData clean = makeUvSphere(1.0f, 8), other = makeUvSphere(1.0f, 12);
+  MeshPair pair;
+  const std::string err = pairWithClean(other, clean, "scan.ply", "truth.off", pair);
+  EXPECT_NE(err.find("scan.ply ("), std::string::npos) << err;
+  EXPECT_NE(err.find("are not a pair"), std::string::npos) << err;
+  // The same face count, but the faces of another mesh: corners disagree.
+  MeshData shuffled = clean;
+  std::swap(shuffled.indices[0], shuffled.indices[5]);
+  shuffled.positions.push_back({9, 9, 9});  // one more vertex: pairing by vertices is out
+  EXPECT_NE(pairWithClean(shuffled, clean, "a", "b", pair).find("not in the same order"), std::string::npos);
 }
