@@ -55,7 +55,11 @@ int runRender(const Options& o) {
     Measurer measurer(host);
     auto m = measurer.measureNow(s.size, s.time, {{"gpu_ms", t.gpuMs}, {"cpu_ms", t.cpuMs}},
                                  [](const std::vector<JobStatus>& jobs) { progress(0, 1, describeJobs(jobs)); });
-    if (!m) return fail(std::string(host.lab().id()) + ": this configuration has no ground truth to measure against");
+    if (!m) {
+      const std::string why = referenceOf(host.lab()).description;
+      return fail(std::string(host.lab().id()) + ": this configuration has no ground truth to measure against" +
+                  (why.empty() ? "" : " (" + why + ")"));
+    }
     nlohmann::json values = nlohmann::json::object();
     std::string line;
     for (auto& [k, v] : m->values) {

@@ -29,6 +29,7 @@ commands:
 options:
   --lab ID            lab to run (see `shadelab list`)
   --scene NAME|FILE   procedural scene name, or a .gltf/.glb/.obj/.off/.ply file
+  --height-map IMAGE  the scene's height map (every material's; white = high): relief for a mesh of your own
   --set LAB.KEY=VAL   set a parameter (repeatable)
   --do LAB.KEY        run one of the lab's actions after the --set values, e.g. --do denoise.add_noise
   --preset FILE.json  load lab, scene, params and camera saved by the app or by render
@@ -103,6 +104,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     const std::string v = argv[++i];
     if (arg == "--lab") o.lab = v;
     else if (arg == "--scene") o.scene = v;
+    else if (arg == "--height-map") o.heightMap = v;
     else if (arg == "--set") o.sets.push_back(v);
     else if (arg == "--do") o.actions.push_back(v);
     else if (arg == "--vary") o.varies.push_back(v);
@@ -137,7 +139,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       else o.frames = int(d);
     } else {
       return "unknown option '" + arg +
-             "' (valid: --lab, --scene, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
+             "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
              "--backend, --out, --measure, --exercise, --all, --watchdog, --count, --seed, --minutes)";
     }
   }

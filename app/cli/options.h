@@ -18,6 +18,7 @@ struct Options {
   std::vector<std::string> varies;               // --vary key=a,b,c (sweep)
   std::vector<std::filesystem::path> shaderDirs; // --shaders DIR (student folders, searched first)
   std::string camera;                            // --camera yaw=..,pitch=..
+  std::string heightMap;                         // --height-map image.png
   std::string preset;                            // --preset file.json (as written by the app)
   std::string backend = "osmesa";                // --backend osmesa|egl
   std::string out;                               // --out file.png (render) or DIR (sweep)

@@ -39,7 +39,10 @@ std::string openSession(const Options& o, Session& s) {
     if (!o.sizeGiven && preset.size) s.size = *preset.size;
     if (o.time == 0.0f && preset.time) s.time = *preset.time;
   }
-  return configureHost(host, o.lab, o.scene, o.sets, o.actions, o.camera);
+  if (auto e = configureHost(host, o.lab, o.scene, o.sets, o.actions, o.camera); !e.empty()) return e;
+  if (!o.heightMap.empty())
+    if (auto e = host.setHeightMap(o.heightMap); !e.empty()) return "--height-map: " + e;
+  return {};
 }
 
 std::string configureHost(LabHost& host, const std::string& lab, const std::string& scene,

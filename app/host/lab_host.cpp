@@ -32,20 +32,52 @@ std::string LabHost::selectLab(std::string_view id) {
   lab_ = std::move(next);
   labReady_ = true;
   const std::string scene = std::string(lab_->defaultScene());
+  heightMap_.clear();
   const std::string err = rebuildScene(scene, lab_->needs(), true);
   previous_.reset();  // the old lab's scene, which rebuildScene kept: of no use to this lab
   return err;
 }
 
 std::string LabHost::selectScene(const std::string& idOrPath) {
+  std::string kept;
+  std::swap(kept, heightMap_);  // a height map belongs to the scene it was given for
   const std::string err = rebuildScene(idOrPath, lab_->needs(), true);
   if (err.empty()) previous_.reset();  // another scene: the old builds are of no further use
+  else heightMap_ = kept;
+  return err;
+}
+
+std::string LabHost::setHeightMap(const std::string& imageFile) {
+  if (!imageFile.empty()) {
+    ImageSource probe;
+    probe.name = imageFile;
+    probe.file = imageFile;
+    std::vector<unsigned char> rgba;
+    glm::ivec2 size;
+    if (std::error_code ec; !std::filesystem::is_regular_file(probe.file, ec)) return imageFile + ": no such file";
+    if (auto err = decodeImage(probe, rgba, size); !err.empty()) return err;
+  }
+  const std::string before = heightMap_;
+  heightMap_ = imageFile;
+  const std::string err = rebuildScene(sceneId_, lab_->needs(), false);
+  if (!err.empty()) heightMap_ = before;
+  previous_.reset();  // built with the other height map
   return err;
 }
 
 std::string LabHost::rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe) {
   Built next;
   if (auto err = buildScene(id, needs, next.scene, lab_->scenes()); !err.empty()) return err;
+  if (!heightMap_.empty()) {
+    ImageSource image;
+    image.name = std::filesystem::path(heightMap_).filename().string();
+    image.file = heightMap_;
+    next.scene.images.push_back(std::move(image));
+    for (Material& m : next.scene.materials) {
+      m.heightImage = int(next.scene.images.size()) - 1;
+      m.heightIsDepth = false;
+    }
+  }
   next.warnings = next.scene.warnings;
   next.gpu.upload(next.scene, needs, next.warnings);
   next.scene.revision = ++sceneBuilds_;

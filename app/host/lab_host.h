@@ -29,6 +29,11 @@ class LabHost {
 
   std::string selectLab(std::string_view id);
   std::string selectScene(const std::string& idOrPath);
+  // An image (PNG, JPEG, ...) as the height map of every material of the current scene, white =
+  // high (a lab may read it as depth): a user's own relief for a mesh whose file has none. Kept
+  // until another scene or lab is picked; "" drops it. Returns "" or a one-line error naming the file.
+  std::string setHeightMap(const std::string& imageFile);
+  const std::string& heightMap() const { return heightMap_; }
   // Rebuilds the scene now if the lab's needs changed since it was built (else at the next frame).
   std::string refreshScene() { return ensureScene(); }
   // "lab.key=value" or "key=value" (the current lab); errors name the valid keys.
@@ -94,6 +99,7 @@ class LabHost {
   std::vector<gl::PassTiming> draw(gl::PassTimer& timer, const gl::RenderTarget& target, const OrbitCamera& camera,
                                    float time, glm::vec2 jitter);
   std::string rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe);
+  std::string heightMap_;  // setHeightMap's image, applied to every build of the current scene
 
   std::unique_ptr<ShaderLibrary> shaders_;
   JobRunner jobs_;  // before lab_: jobs are cancelled before a lab goes

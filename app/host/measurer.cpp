@@ -67,7 +67,9 @@ void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const Ima
 std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
   Lab& lab = host_.lab();
   const ReferenceSpec spec = referenceOf(lab);
-  if (spec.kind == TruthKind::None) return std::string(lab.id()) + ": this configuration has no ground truth to measure against";
+  if (spec.kind == TruthKind::None)
+    return std::string(lab.id()) + ": this configuration has no ground truth to measure against" +
+           (spec.description.empty() ? "" : " (" + spec.description + ")");
   Measurement m;
   m.lab = std::string(lab.id());
   m.settings = host_.currentSettings();

@@ -64,8 +64,10 @@ std::string GpuScene::upload(const Scene& scene, const SceneNeeds& needs, std::v
       warnings.push_back(err + "; the material has no height map");
       continue;
     }
+    const bool depth = needs.heightConvention == HeightConvention::Depth ||
+                       (needs.heightConvention == HeightConvention::AsLoaded && mat.heightIsDepth);
     std::vector<unsigned char> red(size_t(size.x) * size_t(size.y));
-    for (size_t i = 0; i < red.size(); ++i) red[i] = mat.heightIsDepth ? 255 - rgba[4 * i] : rgba[4 * i];
+    for (size_t i = 0; i < red.size(); ++i) red[i] = depth ? 255 - rgba[4 * i] : rgba[4 * i];
     gl::SamplerState s = samplerFor(scene.images[size_t(h)], needs);
     const gl::SamplerState asked = s;
     if (needs.mipmaps && (s.minFilter == GL_LINEAR || s.minFilter == GL_NEAREST)) s.minFilter = GL_LINEAR_MIPMAP_LINEAR;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -18,6 +19,21 @@ static std::string firstLine(std::string s) {
 }
 
 namespace {
+
+// A height field is grey; a tangent-space normal map is blue-violet. True when at most 1% of the
+// texels have channels more than 12 of 255 apart (JPEG leaves some chroma on grey pictures).
+// An image that cannot be decoded is not called grey (the loader's warnings name it).
+bool isGreyImage(const ImageSource& image) {
+  std::vector<unsigned char> rgba;
+  glm::ivec2 size;
+  if (image.file.empty() || !decodeImage(image, rgba, size).empty()) return false;
+  size_t coloured = 0;
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+    const int r = rgba[i], g = rgba[i + 1], b = rgba[i + 2];
+    coloured += std::max({r, g, b}) - std::min({r, g, b}) > 12;
+  }
+  return coloured * 100 <= rgba.size() / 4;
+}
 
 // `name` (an MTL library or a texture) as a file beside the OBJ; empty, with a warning, when the
 // name leaves the OBJ's folder or is not a regular file there (an OBJ from the web cannot make
@@ -83,12 +99,22 @@ std::string loadObj(const fs::path& file, Scene& scene) {
       mat.baseColorImage = int(scene.images.size());
       scene.images.push_back(img);
     }
-    if (!m.normal_texname.empty() || !m.bump_texname.empty()) {
+    // A height field from `disp`; `bump` is one too by the MTL spec, but many exporters write their
+    // normal maps there: with a `norm` map beside it, or grey texels, it is read as a height field.
+    auto add = [&](const std::string& name) {
       ImageSource img;
-      img.name = !m.normal_texname.empty() ? m.normal_texname : m.bump_texname;
-      img.file = besideModel(folder, img.name, warn);
-      mat.normalImage = int(scene.images.size());
+      img.name = name;
+      img.file = besideModel(folder, name, warn);
       scene.images.push_back(img);
+      return int(scene.images.size()) - 1;
+    };
+    if (!m.displacement_texname.empty()) mat.heightImage = add(m.displacement_texname);
+    if (!m.normal_texname.empty()) mat.normalImage = add(m.normal_texname);
+    if (!m.bump_texname.empty()) {
+      const int bump = add(m.bump_texname);
+      const bool height = !m.normal_texname.empty() || isGreyImage(scene.images[size_t(bump)]);
+      if (height && mat.heightImage < 0) mat.heightImage = bump;
+      else if (!height) mat.normalImage = bump;
     }
     scene.materials.push_back(mat);
   }

@@ -24,12 +24,17 @@ struct TextureSampling {
 };
 
 // What a configuration requires. The host builds exactly this, and nothing else.
+// How a height map's values read: as the material says (a file's disp map is a height; LearnOpenGL's
+// *_disp images are depths), or as heights or depths (white = deep: height = 1 - value) whatever it says.
+enum class HeightConvention { AsLoaded, Height, Depth };
+
 struct SceneNeeds {
   bool uvs = false;               // texture coordinates (else dropped before upload)
   bool tangents = false;          // only a normal map needs them
   bool baseColorTextures = false; // decode and upload base-colour images (sRGB)
   bool normalTextures = false;    // decode and upload normal-map images (linear)
   bool heightTextures = false;    // decode and upload height maps (one channel, linear; depth maps inverted)
+  HeightConvention heightConvention = HeightConvention::AsLoaded;
   bool normalMapsAsSrgb = false;  // decode normal maps as sRGB instead: a mistake a lab can show
   bool mipmaps = true;            // build a mip chain for every texture uploaded
   TextureSampling sampling;

@@ -16,6 +16,7 @@ void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const Me
   const ReferenceSpec spec = referenceOf(host.lab());
   if (spec.kind == TruthKind::None) {
     ImGui::TextDisabled("This configuration has no ground truth to measure against.");
+    if (!spec.description.empty()) ImGui::TextWrapped("%s.", spec.description.c_str());
     return;
   }
   ImGui::TextWrapped("Truth: %s.", spec.description.c_str());

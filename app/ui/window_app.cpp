@@ -161,6 +161,9 @@ void handleDrops(AppState& app) {
       app.message = !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;
     } else if (ext == ".json") {
       app.message = loadPreset(*app.host, path);
+    } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".tga" || ext == ".bmp") {
+      const std::string err = app.host->setHeightMap(path);
+      app.message = err.empty() ? "height map of the scene's materials: " + path : err;
     } else if (!app.fileParamUnderMouse.empty()) {
       const std::string key = std::string(app.host->lab().id()) + "." + app.fileParamUnderMouse;
       const std::string err = app.host->set(key + "=" + path);
@@ -242,7 +245,7 @@ void leftPanel(AppState& app) {
       }
     ImGui::EndCombo();
   }
-  ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window.");
+  ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window (an image: the scene's height map).");
   ImGui::Separator();
   drawParamWidgets(host.lab(), &app.fileParamUnderMouse);
   for (auto& e : host.jobs().takeErrors()) app.message = e;

@@ -12,6 +12,7 @@ namespace shadelab {
 namespace {
 
 constexpr std::string_view kSurfaceAt[] = {"top", "bottom"};
+constexpr std::string_view kHeightConventions[] = {"as-loaded", "height", "depth"};
 constexpr std::string_view kGreen[] = {"opengl", "directx"};
 constexpr std::string_view kDecoding[] = {"linear", "srgb"};
 // How the colour and normal maps are sampled.
@@ -67,6 +68,9 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.enumParam({"surface_at", "Surface at", "", "top: the polygon is the top of the height field and mortar is recessed "
                "(parallax mapping's convention); bottom: p' = p + n s h, bricks stand out (the GAMES101 form)."},
               p.surfaceAt, kSurfaceAt);
+  v.enumParam({"height_map", "Height map reads", "", "as-loaded: as the material says (an MTL disp map is a height, "
+               "white = high; LearnOpenGL's bricks2_disp is a depth map); height; depth: white = deep, height = 1 - "
+               "value (LearnOpenGL's convention, for its maps in your own MTL)."}, p.heightMap, kHeightConventions);
   v.section("Normal map");
   v.floatParam({"normal_strength", "Strength", "", "Scales the map's x and y: 1 as baked."}, p.normalStrength, 0.0f, 4.0f);
   v.enumParam({"green", "Green channel", "", "opengl: +Y along +v (how these maps are made); directx: +Y along -v. The "
@@ -140,6 +144,7 @@ SceneNeeds SurfaceLab::needs() const {
   n.baseColorTextures = true;
   n.normalTextures = params.technique == SurfaceTechnique::NormalMap;
   n.heightTextures = usesHeight(params.technique) || params.view == SurfaceView::Height;
+  n.heightConvention = params.heightMap;
   n.normalMapsAsSrgb = params.decoding == MapDecoding::Srgb;
   n.sampling.minFilter = rowOf(kTextureFilters, params.filter).minFilter;
   n.sampling.magFilter = rowOf(kTextureFilters, params.filter).magFilter;
@@ -281,6 +286,17 @@ void SurfaceLab::render(Frame& frame) {
   }
   drawnLevel_ = key.level;
   drawnTriangles_ = 0;
+  heightless_.clear();
+  for (const SurfaceDraw& d : draws) {
+    const Material& mat = frame.scene.materials[size_t(d.material)];
+    if (d.hasUvs && heightless_.empty() && (mat.heightImage < 0 || (needs().heightTextures && !frame.gpu.heightTexture(mat))))
+      heightless_ = mat.name;
+  }
+  if (!heightless_.empty() && (usesHeight(params.technique) || params.view == SurfaceView::Height))
+    frameNotes_.push_back("material '" + heightless_ + "' has no height map: " +
+                          std::string(rowOf(kSurfaceTechniques, params.technique).name) +
+                          " has nothing to read and draws it flat; give its MTL a disp map (height_map = depth for "
+                          "LearnOpenGL's depth maps), or drop a height image on the window");
   const Bounds b = frame.scene.bounds;
   // The light: elevation above the wall's plane (its normal is +z) or the ground's (+y).
   const float el = glm::radians(params.lightElevationDeg), az = glm::radians(params.lightAzimuthDeg);

@@ -63,6 +63,7 @@ struct SurfaceParams {
   SurfaceTechnique technique = SurfaceTechnique::Pom;
   float heightScale = 0.04f;  // world units for a height of 1 (the procedural maps are baked for 0.04)
   SurfaceAt surfaceAt = SurfaceAt::Top;
+  HeightConvention heightMap = HeightConvention::AsLoaded;
   float normalStrength = 1.0f;
   GreenConvention green = GreenConvention::OpenGl;
   MapDecoding decoding = MapDecoding::Linear;
@@ -133,6 +134,7 @@ class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
   gl::Sampler heightSampler_;
   // From the last frame: what was drawn and what the student should know about it.
   std::vector<std::string> frameNotes_;
+  std::string heightless_;  // a drawn material with UVs but no height field ("" : none): no truth exists
   size_t drawnTriangles_ = 0;
   int drawnLevel_ = 0;
   // The scene's UV shear (where generated and screen-space tangents part), per scene build.

@@ -10,6 +10,10 @@
 namespace shadelab {
 ReferenceSpec SurfaceLab::reference() const {
   ReferenceSpec spec;
+  if (!heightless_.empty()) {  // the truth is the height field as geometry: without one there is none
+    spec.description = "material '" + heightless_ + "' has no height map, so there is no true surface to measure against";
+    return spec;
+  }
   spec.kind = TruthKind::Image;
   spec.truth = "true surface";
   spec.description = "the height field applied to the mesh subdivided to about one vertex per texel, normals from the "

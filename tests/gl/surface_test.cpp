@@ -6,9 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 #include "gl_test.h"
 #include "host/measurer.h"
+#include "measure/image.h"
+#include "scene/loaders.h"
 
 using namespace shadelab;
 
@@ -187,3 +193,77 @@ INSTANTIATE_TEST_SUITE_P(
                       SurfaceGolden{"surface_steep_parallax", {"surface.technique=steep-parallax"}},
                       SurfaceGolden{"surface_pom_shadowed", {"surface.technique=pom", "surface.self_shadow=on"}}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// A user's own material: an MTL's height map (disp, or bump when it is grey) is read; a material
+// without one gets no truth and a warning instead of a flat frame judged against a "true surface";
+// a height image given to the host brings the relief and the truth back; depth maps read inverted.
+namespace {
+
+struct UsersQuad {
+  std::filesystem::path folder = std::filesystem::temp_directory_path() / ("shadelab_users_quad_" + std::to_string(::getpid()));
+  explicit UsersQuad(const std::string& mtl) {
+    std::filesystem::create_directories(folder);
+    ImageF bumps{{64, 64}, {}}, normals{{8, 8}, {}};
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const float h = 0.5f + 0.5f * std::sin(x * 0.4f) * std::sin(y * 0.4f);
+        bumps.rgba.insert(bumps.rgba.end(), {h, h, h, 1.0f});
+      }
+    for (int i = 0; i < 64; ++i) normals.rgba.insert(normals.rgba.end(), {0.5f, 0.5f, 1.0f, 1.0f});
+    EXPECT_EQ(writePng((folder / "bumps.png").string(), bumps), "");
+    EXPECT_EQ(writePng((folder / "normals.png").string(), normals), "");
+    std::ofstream(folder / "quad.mtl") << "newmtl wall\nKd 0.8 0.7 0.6\n" << mtl;
+    std::ofstream(folder / "quad.obj") << "mtllib quad.mtl\nusemtl wall\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                          "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+  }
+  ~UsersQuad() { std::filesystem::remove_all(folder); }
+  std::string obj() const { return (folder / "quad.obj").string(); }
+};
+
+bool warns(const Lab& lab, const std::string& words) {
+  for (auto& w : lab.warnings())
+    if (w.find(words) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(Surface, AnMtlHeightMapIsReadFromDispOrAGreyBump) {
+  for (const char* line : {"disp bumps.png\n", "bump bumps.png\n", "map_Bump bumps.png\nnorm normals.png\n"}) {
+    UsersQuad quad(line);
+    Scene s;
+    ASSERT_EQ(loadSceneFile(quad.obj(), s), "");
+    const Material& m = s.materials.back();
+    ASSERT_GE(m.heightImage, 0) << line;
+    EXPECT_EQ(s.images[size_t(m.heightImage)].name, "bumps.png") << line;
+  }
+  UsersQuad normalInBump("bump normals.png\n");  // the exporters' habit: a normal map in bump
+  Scene s;
+  ASSERT_EQ(loadSceneFile(normalInBump.obj(), s), "");
+  EXPECT_LT(s.materials.back().heightImage, 0);
+  EXPECT_GE(s.materials.back().normalImage, 0);
+}
+
+TEST(Surface, AMaterialWithoutAHeightMapHasNoTruthUntilOneIsGiven) {
+  UsersQuad quad("");
+  auto host = surfaceHost({"surface.technique=pom"}, quad.obj().c_str());
+  host->renderFrame({64, 48});
+  EXPECT_EQ(referenceOf(host->lab()).kind, TruthKind::None);
+  EXPECT_TRUE(warns(host->lab(), "material 'wall' has no height map: pom has nothing to read"));
+  ASSERT_EQ(host->setHeightMap((quad.folder / "bumps.png").string()), "");
+  host->renderFrame({64, 48});
+  EXPECT_EQ(referenceOf(host->lab()).kind, TruthKind::Image);
+  EXPECT_FALSE(warns(host->lab(), "has no height map"));
+  EXPECT_NE(host->setHeightMap((quad.folder / "quad.mtl").string()), "") << "not an image";
+  // The height view shows h; read as a depth map it shows 1 - h (no parallax: the same texel).
+  ASSERT_EQ(host->set("surface.technique=none"), "");
+  ASSERT_EQ(host->set("surface.view=height"), "");
+  host->renderFrame({64, 48});
+  const float asHeight = host->readImage().at(32, 24)[0];
+  ASSERT_EQ(host->set("surface.height_map=depth"), "");
+  host->renderFrame({64, 48});
+  const float asDepth = host->readImage().at(32, 24)[0];
+  EXPECT_NEAR(asHeight + asDepth, 1.0f, 2.0f / 255.0f);
+  EXPECT_GT(std::abs(asHeight - asDepth), 0.05f) << "the test needs a pixel away from mid-grey";
+  EXPECT_EQ(gl::drainErrors(), "");
+}
