@@ -381,9 +381,22 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   // The distances the map's content occupies from this light: what the linear view stretches to
   // white (a cascade holds a thin slice of the scene; the whole scene's range would show it grey).
   const Bounds& b = frame.scene.bounds;
-  const float centre = shown.type == LightType::Point ? glm::length(b.center() - shown.position)
-                                                      : glm::dot(b.center() - shown.position, shown.direction);
-  glm::vec2 range(std::max(centre - b.radius(), shown.nearPlane), centre + b.radius());
+  glm::vec2 range;
+  if (shown.type == LightType::Point) {
+    // A cube sees all around: from the nearest point of any instance's box to its farthest corner
+    // (the scene's bounding sphere, seen from a light beside it, spans several times that).
+    range = glm::vec2(INFINITY, 0.0f);
+    for (const Bounds& box : frame.scene.instanceBounds) {
+      if (box.empty()) continue;
+      range.x = std::min(range.x, glm::length(glm::clamp(shown.position, box.min, box.max) - shown.position));
+      for (int c = 0; c < 8; ++c) range.y = std::max(range.y, glm::length(box.corner(c) - shown.position));
+    }
+    if (!(range.y > range.x)) range = glm::vec2(0.0f, glm::length(b.center() - shown.position) + b.radius());
+    range.x = std::max(range.x, shown.nearPlane);
+  } else {
+    const float centre = glm::dot(b.center() - shown.position, shown.direction);
+    range = glm::vec2(std::max(centre - b.radius(), shown.nearPlane), centre + b.radius());
+  }
   if (!showFill && !cascades_.empty()) range = cascades_[size_t(layer)].contentDepth;
   prog.set("u_range", range);
   const float aspect = frame.aspect(), cells = map.cube() ? 4.0f / 3.0f : 1.0f;
