@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ShadeLab needs, if any are missing. Nothing else is downloaded.
-# usage: tools/install_deps.sh [build|test|fuzz]
+# usage: tools/install_deps.sh [build|test|fuzz|data]
 set -euo pipefail
 build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libbenchmark-dev libembree-dev libeigen3-dev libflann-dev liblz4-dev libopenmesh-dev)
 test_pkgs=(xvfb xauth xdotool)
 fuzz_pkgs=(clang-14 libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes for clang
+data_pkgs=(curl ca-certificates)          # tools/get_data.sh
 want=("${build_pkgs[@]}")
 case "${1:-build}" in
   build) ;;
-  test) want+=("${test_pkgs[@]}" "${fuzz_pkgs[@]}") ;;
+  test) want+=("${test_pkgs[@]}" "${fuzz_pkgs[@]}" "${data_pkgs[@]}") ;;
+  data) want=("${data_pkgs[@]}") ;;
   fuzz) want+=("${fuzz_pkgs[@]}") ;;
-  *) echo "install_deps: unknown set '$1' (valid: build, test, fuzz)" >&2; exit 2 ;;
+  *) echo "install_deps: unknown set '$1' (valid: build, test, fuzz, data)" >&2; exit 2 ;;
 esac
 
 missing=()

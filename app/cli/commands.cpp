@@ -99,6 +99,11 @@ int runList(const Options& o) {
   }
   std::printf("\nscenes (or any .gltf/.glb/.obj/.off/.ply file):\n");
   for (auto& s : listScenes()) std::printf("  %-14s %s\n", s.id.c_str(), s.description.c_str());
+  if (const auto missing = missingDataScenes(); !missing.empty()) {
+    std::string ids;
+    for (auto& id : missing) ids += (ids.empty() ? "" : ", ") + id;
+    std::printf("  not here (their files are not downloaded; %s fetches them): %s\n", kGetDataCommand, ids.c_str());
+  }
   std::printf("\nexercises (shadelab grade --exercise ID --shaders DIR; %s):\n", exercisesRoot().c_str());
   for (auto& id : listExercises(exercisesRoot())) {
     Exercise ex;

@@ -106,7 +106,18 @@ fs::path dataDirectory() {
   if (const char* env = std::getenv("SHADELAB_DATA"); env && *env) return fs::path(env);
   std::error_code ec;
   const fs::path beside = fs::path(SHADELAB_SOURCE_DIR).parent_path() / "shared" / "data";
-  return fs::is_directory(beside, ec) ? beside : fs::path();
+  if (fs::is_directory(beside, ec)) return beside;
+  const fs::path fetched = fs::path(SHADELAB_SOURCE_DIR) / "data";
+  return fs::is_directory(fetched, ec) ? fetched : fs::path();
+}
+
+std::vector<std::string> missingDataScenes() {
+  const fs::path data = dataDirectory();
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (auto& d : kDataScenes)
+    if (data.empty() || !fs::is_regular_file(data / d.relPath, ec)) out.push_back(d.id);
+  return out;
 }
 
 std::vector<SceneEntry> listScenes(std::span<const SceneRecipe> labScenes) {
@@ -141,6 +152,9 @@ std::string buildScene(const std::string& idOrPath, const SceneNeeds& needs, Sce
     const char* camera = "";
     for (auto& d : kDataScenes)
       if (idOrPath == d.id) {
+        if (std::error_code ec; !fs::is_regular_file(dataDirectory() / d.relPath, ec))
+          return "scene '" + idOrPath + "' needs " + d.relPath + ", which is not here: " + kGetDataCommand +
+                 " fetches it (or set SHADELAB_DATA to a folder that has it)";
         file = dataDirectory() / d.relPath;
         ground = d.ground;
         camera = d.camera;

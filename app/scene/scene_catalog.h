@@ -26,8 +26,12 @@ struct SceneRecipe {
   std::function<std::string(Scene& out, const SceneNeeds& needs)> build;
 };
 
-// ../shared/data beside the source tree, or $SHADELAB_DATA; empty if neither exists.
+// $SHADELAB_DATA, else ../shared/data beside the source tree, else data/ in it (where
+// tools/get_data.sh puts the files); empty if none exists.
 std::filesystem::path dataDirectory();
+// The project's scenes whose files are not in dataDirectory(), and the one command that gets them.
+std::vector<std::string> missingDataScenes();
+inline constexpr const char* kGetDataCommand = "tools/get_data.sh";
 
 // The current lab's scenes first, then the project's.
 std::vector<SceneEntry> listScenes(std::span<const SceneRecipe> labScenes = {});

@@ -53,9 +53,11 @@ DenoiseLab::~DenoiseLab() = default;
 std::string_view DenoiseLab::summary() const {
   return "Noise moves vertices along their normals; Laplacian smoothing moves each one back towards the mean of its "
          "neighbours, p' = p - lambda <delta, n> n. Drag lambda past the stable step and watch the energy plot; "
-         "switch to implicit and it never diverges; switch to bilateral and the sharp edges survive. On Spot, the "
-         "offsets are baked into a displacement map: show 'compare' and the seam-gap view to see where a map cracks "
-         "and the attribute path does not. Every number is against the clean mesh.";
+         "switch to implicit and it never diverges (a large lambda shrinks the mesh instead: preserve_volume); "
+         "switch to bilateral and the sharp edges survive. On a mesh with UVs (the cube's six charts) the offsets "
+         "are baked into a displacement map: show 'compare' and the seam-gap view to see where a map cracks and "
+         "the attribute path does not. Every number is against the clean mesh: a data set's (fandisk-0.3 and the "
+         "other published pairs, from tools/get_data.sh) or your own (--scene NOISY --set denoise.clean=CLEAN).";
 }
 
 std::string_view DenoiseLab::defaultScene() const { return denoiseDefaultScene(); }

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "labs/denoise/denoise_lab.h"
+#include "labs/denoise/denoise_scenes.h"
 #include "util/format.h"
 
 namespace shadelab {
@@ -60,6 +61,11 @@ std::vector<PlotSpec> DenoiseLab::plots() const {
 std::vector<std::string> DenoiseLab::warnings() const {
   std::vector<std::string> w;
   if (!modelNote_.empty()) w.push_back(modelNote_);
+  if (const auto missing = missingDenoisePairs(); !missing.empty()) {
+    std::string ids;
+    for (auto& id : missing) ids += (ids.empty() ? "" : ", ") + id;
+    w.push_back("the published noisy/clean pairs are not here (" + ids + "): " + kGetDataCommand + " fetches them");
+  }
   if (!model_) {
     w.push_back("nothing to denoise: the scene has no triangles");
     return w;

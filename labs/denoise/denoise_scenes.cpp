@@ -123,6 +123,15 @@ std::vector<SceneRecipe> denoiseScenes() {
   return out;
 }
 
+std::vector<std::string> missingDenoisePairs() {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (auto& p : kPairs)
+    if (!fs::is_regular_file(pairFolder(p) / "Original.obj", ec) || !fs::is_regular_file(pairFolder(p) / "Noisy.obj", ec))
+      out.push_back(p.id);
+  return out;
+}
+
 std::string_view denoiseDefaultScene() {
   std::error_code ec;
   return fs::is_regular_file(pairFolder(kPairs[0]) / "Original.obj", ec) ? kPairs[0].id : "denoise-cube";

@@ -12,6 +12,8 @@ namespace shadelab {
 
 std::vector<SceneRecipe> denoiseScenes();
 std::string_view denoiseDefaultScene();  // fandisk-0.3 with the data, else denoise-cube
+// The published pairs whose files are not in dataDirectory() (a fresh clone: all of them).
+std::vector<std::string> missingDenoisePairs();
 // The published noisy twin of a data-set scene. False (error empty) when the scene has none.
 bool loadPublishedTwin(const std::string& sceneId, MeshData& twin, std::string& error);
 
