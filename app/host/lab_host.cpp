@@ -234,7 +234,9 @@ std::vector<std::string> LabHost::warnings() const {
 nlohmann::json LabHost::stateJson() {
   nlohmann::json params = nlohmann::json::object();
   for (auto& [k, v] : currentSettings()) params[k] = v;
-  return {{"lab", lab_->id()}, {"scene", sceneId_}, {"params", params}, {"camera", camera_.toString()}};
+  nlohmann::json state = {{"lab", lab_->id()}, {"scene", sceneId_}, {"params", params}, {"camera", camera_.toString()}};
+  if (!heightMap_.empty()) state["height_map"] = heightMap_;
+  return state;
 }
 
 std::string LabHost::applyStateJson(const nlohmann::json& state) {
@@ -248,6 +250,8 @@ std::string LabHost::applyPreset(const Preset& preset) {
     if (auto err = selectLab(*preset.lab); !err.empty()) return err;
   if (preset.scene && *preset.scene != sceneId_)
     if (auto err = selectScene(*preset.scene); !err.empty()) return err;
+  if (preset.heightMap && *preset.heightMap != heightMap_)
+    if (auto err = setHeightMap(*preset.heightMap); !err.empty()) return "height_map: " + err;
   const Settings before = currentSettings();
   for (auto& [k, v] : preset.params)
     if (auto err = set(k + "=" + v); !err.empty()) {

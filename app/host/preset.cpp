@@ -24,6 +24,7 @@ std::string parsePreset(const nlohmann::json& state, Preset& out) {
   if (auto err = optionalText(state, "lab", out.lab); !err.empty()) return err;
   if (auto err = optionalText(state, "scene", out.scene); !err.empty()) return err;
   if (auto err = optionalText(state, "camera", out.camera); !err.empty()) return err;
+  if (auto err = optionalText(state, "height_map", out.heightMap); !err.empty()) return err;
   if (state.contains("params")) {
     const auto& params = state["params"];
     if (!params.is_object()) return "'params' must be an object of key: value";

@@ -255,6 +255,11 @@ TEST(Surface, AMaterialWithoutAHeightMapHasNoTruthUntilOneIsGiven) {
   EXPECT_EQ(referenceOf(host->lab()).kind, TruthKind::Image);
   EXPECT_FALSE(warns(host->lab(), "has no height map"));
   EXPECT_NE(host->setHeightMap((quad.folder / "quad.mtl").string()), "") << "not an image";
+  // A screenshot's preset reproduces the frame: it carries the height map.
+  const nlohmann::json state = host->stateJson();
+  auto again = surfaceHost({});
+  ASSERT_EQ(again->applyStateJson(state), "");
+  EXPECT_EQ(again->heightMap(), (quad.folder / "bumps.png").string());
   // The height view shows h; read as a depth map it shows 1 - h (no parallax: the same texel).
   ASSERT_EQ(host->set("surface.technique=none"), "");
   ASSERT_EQ(host->set("surface.view=height"), "");

@@ -90,6 +90,9 @@ TEST(Presets, EveryFieldIsCheckedBeforeAnythingIsApplied) {
   EXPECT_EQ(p.params[2], (std::pair<std::string, std::string>("textures", "true")));
   EXPECT_EQ(*p.size, glm::ivec2(640, 480));
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"lab": 3})"), p), "'lab' must be a string");
+  EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"height_map": ["a.png"]})"), p), "'height_map' must be a string");
+  EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"height_map": "bumps.png"})"), p), "");
+  EXPECT_EQ(p.heightMap, std::optional<std::string>("bumps.png"));
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"params": [1]})"), p), "'params' must be an object of key: value");
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"params": {"mode": {"a": 1}}})"), p),
             "params.mode: must be a number, a string or true/false");
