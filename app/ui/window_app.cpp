@@ -245,14 +245,14 @@ void leftPanel(AppState& app) {
       }
     ImGui::EndCombo();
   }
+  ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window (an image: the scene's height map).");
   if (const auto missing = missingDataScenes(); !missing.empty()) {
     std::string ids;
     for (auto& id : missing) ids += (ids.empty() ? "" : ", ") + id;
-    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("Not downloaded: %s. Run %s to fetch them.", ids.c_str(), kGetDataCommand);
-    ImGui::PopTextWrapPos();
   }
+  ImGui::PopTextWrapPos();
   ImGui::Separator();
   drawParamWidgets(host.lab(), &app.fileParamUnderMouse);
   for (auto& e : host.jobs().takeErrors()) app.message = e;

@@ -114,16 +114,6 @@ TEST(Denoise, AttributePathIsTheOffsetAlongTheNormal) {
     ASSERT_LT(glm::length(gpu[v] - (r.noisy[v] + r.noisyNormals[v] * r.offsets[v])), 1e-5f) << v;
 }
 
-namespace {
-
-bool anyWarning(const Lab& lab, const std::string& words) {
-  for (auto& w : lab.warnings())
-    if (w.find(words) != std::string::npos) return true;
-  return false;
-}
-
-}  // namespace
-
 // A user's own pair: the scene is the noisy file, denoise.clean its reference. On the published
 // Fandisk pair loaded as two files, the noisy input's error is the paper's 28.421 degrees.
 TEST(Denoise, AUsersNoisyMeshIsJudgedAgainstTheCleanFileItNames) {
@@ -134,20 +124,20 @@ TEST(Denoise, AUsersNoisyMeshIsJudgedAgainstTheCleanFileItNames) {
   ASSERT_EQ(host.selectScene((folder / "Noisy.obj").string()), "");
   host.settle();
   host.renderFrame({160, 120});
-  EXPECT_TRUE(anyWarning(host.lab(), "is taken as the clean mesh and noise is generated on it"));
+  EXPECT_TRUE(test::warns(host.lab(), "is taken as the clean mesh and noise is generated on it"));
   ASSERT_EQ(host.set("denoise.clean=" + (folder / "Original.obj").string()), "");
   host.settle();
   host.renderFrame({160, 120});
   const Metrics m = host.lab().judge()->meshMetrics();
   EXPECT_NEAR(test::metric(m, "noisy_angle_deg"), 28.421, 5e-3);
   EXPECT_LT(test::metric(m, "angle_error_deg"), test::metric(m, "noisy_angle_deg"));
-  EXPECT_FALSE(anyWarning(host.lab(), "the noise shown is"));
-  EXPECT_FALSE(anyWarning(host.lab(), "is taken as the clean mesh"));
+  EXPECT_FALSE(test::warns(host.lab(), "the noise shown is"));
+  EXPECT_FALSE(test::warns(host.lab(), "is taken as the clean mesh"));
   // Generated noise on the pair's clean mesh is not the file's own: said so.
   ASSERT_EQ(host.set("denoise.input=generated"), "");
   host.settle();
   host.renderFrame({160, 120});
-  EXPECT_TRUE(anyWarning(host.lab(), "not the mesh's own: input = published shows the scene file's own noise"));
+  EXPECT_TRUE(test::warns(host.lab(), "not the mesh's own: input = published shows the scene file's own noise"));
 }
 
 // The built-in cube has no noisy twin: input = published shows generated noise, and says so.
@@ -157,7 +147,7 @@ TEST(Denoise, GeneratedNoiseInPlaceOfAMissingTwinIsNamed) {
   ASSERT_EQ(host.selectScene("denoise-cube"), "");
   host.settle();
   host.renderFrame({160, 120});
-  EXPECT_TRUE(anyWarning(host.lab(), "this scene has no noisy twin, so the noise shown is generated gaussian noise"));
+  EXPECT_TRUE(test::warns(host.lab(), "this scene has no noisy twin, so the noise shown is generated gaussian noise"));
   // A clean file that is no pair for the scene: one line naming both, and the scene stays the clean mesh.
   auto off = std::filesystem::temp_directory_path() / "shadelab_not_a_pair.off";
   {
@@ -166,7 +156,7 @@ TEST(Denoise, GeneratedNoiseInPlaceOfAMissingTwinIsNamed) {
   ASSERT_EQ(host.set("denoise.clean=" + off.string()), "");
   host.settle();
   host.renderFrame({160, 120});
-  EXPECT_TRUE(anyWarning(host.lab(), "are not a pair")) << "a mesh of 3 vertices cannot be the cube's reference";
+  EXPECT_TRUE(test::warns(host.lab(), "are not a pair")) << "a mesh of 3 vertices cannot be the cube's reference";
   EXPECT_TRUE(host.lab().judge()->meshMetrics().size() > 0);
   std::filesystem::remove(off);
   EXPECT_NE(host.set("denoise.clean=/no/such/mesh.obj"), "");

@@ -37,6 +37,13 @@ inline double metric(const Metrics& m, const char* key) {
   return NAN;
 }
 
+// Whether any of the lab's warnings contains `words`.
+inline bool warns(const Lab& lab, const std::string& words) {
+  for (auto& w : lab.warnings())
+    if (w.find(words) != std::string::npos) return true;
+  return false;
+}
+
 inline std::filesystem::path testOutput(const std::string& name) {
   const std::filesystem::path dir = std::filesystem::path(SHADELAB_TEST_OUT) / "gl";
   std::filesystem::create_directories(dir);

@@ -220,12 +220,6 @@ struct UsersQuad {
   std::string obj() const { return (folder / "quad.obj").string(); }
 };
 
-bool warns(const Lab& lab, const std::string& words) {
-  for (auto& w : lab.warnings())
-    if (w.find(words) != std::string::npos) return true;
-  return false;
-}
-
 }  // namespace
 
 TEST(Surface, AnMtlHeightMapIsReadFromDispOrAGreyBump) {
@@ -249,11 +243,11 @@ TEST(Surface, AMaterialWithoutAHeightMapHasNoTruthUntilOneIsGiven) {
   auto host = surfaceHost({"surface.technique=pom"}, quad.obj().c_str());
   host->renderFrame({64, 48});
   EXPECT_EQ(referenceOf(host->lab()).kind, TruthKind::None);
-  EXPECT_TRUE(warns(host->lab(), "material 'wall' has no height map: pom has nothing to read"));
+  EXPECT_TRUE(test::warns(host->lab(), "material 'wall' has no height map: pom has nothing to read"));
   ASSERT_EQ(host->setHeightMap((quad.folder / "bumps.png").string()), "");
   host->renderFrame({64, 48});
   EXPECT_EQ(referenceOf(host->lab()).kind, TruthKind::Image);
-  EXPECT_FALSE(warns(host->lab(), "has no height map"));
+  EXPECT_FALSE(test::warns(host->lab(), "has no height map"));
   EXPECT_NE(host->setHeightMap((quad.folder / "quad.mtl").string()), "") << "not an image";
   // A screenshot's preset reproduces the frame: it carries the height map.
   const nlohmann::json state = host->stateJson();
