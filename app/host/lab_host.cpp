@@ -155,11 +155,12 @@ Settings LabHost::currentSettings() {
 void LabHost::resetParams() { lab_->resetParams(); }
 
 std::vector<gl::PassTiming> LabHost::draw(gl::PassTimer& timer, const gl::RenderTarget& target,
-                                          const OrbitCamera& camera, float time, glm::vec2 jitter) {
+                                          const OrbitCamera& camera, float time, glm::vec2 jitter, int slice,
+                                          int slices) {
   ensureScene();  // on failure the last good scene stays; warnings() tells why
   timer.beginFrame();
   target.bind();
-  Frame frame{target, built_.scene, built_.gpu, camera, timer, time, jitter};
+  Frame frame{target, built_.scene, built_.gpu, camera, timer, time, jitter, slice, std::max(slices, 1)};
   lab_->render(frame);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
@@ -168,8 +169,8 @@ std::vector<gl::PassTiming> LabHost::draw(gl::PassTimer& timer, const gl::Render
 }
 
 std::vector<gl::PassTiming> LabHost::drawInto(const gl::RenderTarget& target, const OrbitCamera& camera, float time,
-                                              glm::vec2 jitter) {
-  return draw(truthTimer_, target, camera, time, jitter);
+                                              glm::vec2 jitter, int slice, int slices) {
+  return draw(truthTimer_, target, camera, time, jitter, slice, slices);
 }
 
 TraceWork LabHost::trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time) {

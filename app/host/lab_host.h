@@ -50,9 +50,10 @@ class LabHost {
   const std::vector<gl::PassTiming>& renderFrame(glm::ivec2 size, float time = 0.0f, float dt = 0.0f);
   ImageF readImage() const { return {target_->size(), target_->readRgba()}; }
   // One frame of the current settings into `target` as `camera` sees it, shifted by `jitter`
-  // pixels: no reload, no job delivery. For references; the view's target is left alone.
+  // pixels: no reload, no job delivery. For references; the view's target is left alone. With
+  // `slices` > 1, part `slice` of the frame (Frame::slice): all of them in order make the frame.
   std::vector<gl::PassTiming> drawInto(const gl::RenderTarget& target, const OrbitCamera& camera, float time,
-                                       glm::vec2 jitter = glm::vec2(0.0f));
+                                       glm::vec2 jitter = glm::vec2(0.0f), int slice = 0, int slices = 1);
   // Traced truths: the lab's GL part (a g-buffer of `target`'s pixels as `camera` sees them);
   // returns the CPU part for a job. Settings as they are now: apply the truth's first.
   TraceWork trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time);
@@ -97,7 +98,7 @@ class LabHost {
   std::string ownKey(const std::string& key) const;
   std::string ensureScene();
   std::vector<gl::PassTiming> draw(gl::PassTimer& timer, const gl::RenderTarget& target, const OrbitCamera& camera,
-                                   float time, glm::vec2 jitter);
+                                   float time, glm::vec2 jitter, int slice = 0, int slices = 1);
   std::string rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe);
   std::string heightMap_;  // setHeightMap's image, applied to every build of the current scene
 

@@ -123,6 +123,7 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
   struct Accumulation {
     std::vector<JitterSample> samples;
     size_t view = 0, next = 0;
+    int slice = 0;  // of the frame of samples[next] (ReferenceSpec::slices)
     std::optional<ImageAccumulator> sum;
     std::optional<gl::RenderTarget> target;
     std::vector<std::shared_ptr<const ImageF>> truths;
@@ -141,10 +142,15 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
     if (!acc->target) acc->target = gl::RenderTarget::create(req.size);
     if (!acc->sum) acc->sum.emplace(views[acc->view].displayEncoded);
     const size_t n = acc->samples.size();
+    const int slices = std::max(req.spec.slices, 1);
+    const size_t done = acc->view * n + acc->next + 1, total = requests.size() * n;
+    drawTruthSlice(host_, req, *acc->target, acc->samples[acc->next].offset, acc->slice);
+    job.progress((float(done - 1) + float(acc->slice + 1) / float(slices)) / float(total),
+                 "truth frame " + std::to_string(done) + " of " + std::to_string(total));
+    if (++acc->slice < slices) return GlStep::More;  // the rest of this frame in the next steps
+    acc->slice = 0;
     const JitterSample s = acc->samples[acc->next++];
-    ImageF frame = drawTruthFrame(host_, req, *acc->target, s.offset);
-    const size_t done = acc->view * n + acc->next, total = requests.size() * n;
-    job.progress(float(done) / float(total), "truth frame " + std::to_string(done) + " of " + std::to_string(total));
+    ImageF frame{acc->target->size(), acc->target->readRgba()};
     if (n == 1) {
       acc->truths[acc->view] = std::make_shared<const ImageF>(std::move(frame));
     } else {

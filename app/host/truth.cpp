@@ -1,5 +1,7 @@
 #include "host/truth.h"
 
+#include <algorithm>
+
 namespace shadelab {
 
 TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Settings& view) {
@@ -22,14 +24,17 @@ TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Set
 
 // The settings current now (a slider may have moved since the request) come back afterwards. A
 // truth is drawn with the built-in shaders: a student's file must not be judged against itself.
-ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter) {
+void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice) {
   const ShaderLibrary::BuiltinOnly builtin(host.shaders());
   const Settings now = host.currentSettings();
   host.applySettings(req.truthSettings);
-  host.drawInto(target, req.camera, req.time, jitter);
-  ImageF frame{target.size(), target.readRgba()};
+  host.drawInto(target, req.camera, req.time, jitter, slice, req.spec.slices);
   host.applySettings(now);
-  return frame;
+}
+
+ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter) {
+  for (int slice = 0; slice < std::max(req.spec.slices, 1); ++slice) drawTruthSlice(host, req, target, jitter, slice);
+  return {target.size(), target.readRgba()};
 }
 
 TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target) {

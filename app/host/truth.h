@@ -25,6 +25,9 @@ struct TruthRequest {
 TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Settings& view = {});
 // One frame of the truth shifted by `jitter` pixels, drawn into `target` (of req.size) and read back.
 ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter);
+// Part `slice` of that frame (of req.spec.slices), not read back: the window's measurer draws one
+// part per GL step; after the last, target holds the frame drawTruthFrame would have read.
+void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice);
 // Traced truths: the GL part now, under the truth's settings; returns the CPU part.
 TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target);
 // Everything at once (tests, LabHost::renderReference).

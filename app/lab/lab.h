@@ -49,6 +49,10 @@ struct Frame {
   gl::PassTimer& timer;
   float time = 0.0f;  // seconds; fixed on the command line for repeatable frames
   glm::vec2 jitter{0.0f};  // sub-pixel shift of the image, in pixels (accumulated references)
+  // A heavy truth frame is drawn in `slices` calls, so the window draws its own frames between
+  // them (ReferenceSpec::slices): call `slice` clears only if it is the first and draws its share
+  // of the triangles, which the depth test composes into the one frame a single call would draw.
+  int slice = 0, slices = 1;
 
   glm::ivec2 size() const { return target.size(); }
   float aspect() const { return float(target.size().x) / float(std::max(target.size().y, 1)); }
@@ -81,6 +85,9 @@ struct ReferenceSpec {
   // ... or traced by the lab (traceReference) when that is what the truth is.
   bool traced = false;
   bool cheap = false;  // quick enough to measure after every change: the app offers auto-measure
+  // An image truth's frames are drawn in this many parts (Frame::slice), each a GL step of its own
+  // in the window: a lab whose truth draws millions of triangles keeps the window's frame time.
+  int slices = 1;
 };
 
 // The CPU part of a traced truth: runs in a job, reports progress, stops when cancelled.

@@ -1,5 +1,7 @@
 #include "scene/gpu_mesh.h"
 
+#include <algorithm>
+
 namespace shadelab {
 
 GpuMesh GpuMesh::upload(const MeshData& m) {
@@ -61,6 +63,20 @@ bool GpuMesh::setAttribute(GLuint location, int components, std::span<const floa
   }
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   return true;
+}
+
+void GpuMesh::drawTriangles(Primitive primitive, size_t first, size_t count) const {
+  first = std::min(first, triangleCount());
+  count = std::min(count, triangleCount() - first);
+  if (count == 0) return;
+  glBindVertexArray(vao_.get());
+  const auto offset = reinterpret_cast<const void*>(first * 3 * sizeof(uint32_t));
+  if (primitive == Primitive::Patches) {
+    glPatchParameteri(GL_PATCH_VERTICES, 3);
+    glDrawElements(GL_PATCHES, GLsizei(count * 3), GL_UNSIGNED_INT, offset);
+  } else {
+    glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT, offset);
+  }
 }
 
 void GpuMesh::draw(Primitive primitive) const {

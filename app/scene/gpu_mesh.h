@@ -42,6 +42,9 @@ class GpuMesh {
   bool setScalars(GLuint location, std::span<const float> values) { return setAttribute(location, 1, values); }
 
   void draw(Primitive primitive = Primitive::Triangles) const;
+  // Triangles (or patches) [first, first + count) of the index buffer, clamped to what there is.
+  void drawTriangles(Primitive primitive, size_t first, size_t count) const;
+  size_t triangleCount() const { return size_t(indexCount_) / 3; }
   explicit operator bool() const { return bool(vao_); }
   size_t vertexCount() const { return vertexCount_; }
   GLsizei indexCount() const { return indexCount_; }

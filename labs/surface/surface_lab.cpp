@@ -263,7 +263,7 @@ void SurfaceLab::render(Frame& frame) {
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the silhouette metric
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (frame.slice == 0) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   SurfaceGeometryKey key;
   key.revision = frame.scene.revision;
   key.level = levelFor(frame.scene);
@@ -350,13 +350,16 @@ void SurfaceLab::render(Frame& frame) {
       prog.set("u_tessLevel", float(params.tessLevel));
       prog.set("u_angleScale", params.angleScale);
       // A mesh without UVs gets the plain program (programSpec): patches only where tessellation stages are.
+      // A sliced frame (a truth drawn in parts) draws its share of the triangles.
       const bool patches = tess && d.hasUvs;
-      d.mesh.draw(patches ? Primitive::Patches : Primitive::Triangles);
+      const size_t first = d.triangles * size_t(frame.slice) / size_t(frame.slices);
+      const size_t last = d.triangles * size_t(frame.slice + 1) / size_t(frame.slices);
+      d.mesh.drawTriangles(patches ? Primitive::Patches : Primitive::Triangles, first, last - first);
       glBindSampler(kHeightUnit, 0);
       drawnTriangles_ += patches ? d.triangles * size_t(params.tessLevel) * size_t(params.tessLevel) : d.triangles;
     }
   }
-  if (params.overlay) {
+  if (params.overlay && frame.slice + 1 == frame.slices) {
     auto pass = frame.pass("tangent frames");
     Program& prog = overlay_.get(*shaders_, overlaySpec());
     prog.use();

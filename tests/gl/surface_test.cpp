@@ -266,3 +266,32 @@ TEST(Surface, AMaterialWithoutAHeightMapHasNoTruthUntilOneIsGiven) {
   EXPECT_GT(std::abs(asHeight - asDepth), 0.05f) << "the test needs a pixel away from mid-grey";
   EXPECT_EQ(gl::drainErrors(), "");
 }
+
+// The truth's two million triangles are drawn in eight parts, one per window frame: the parts,
+// composed by the depth test, are the frame one call draws, to the last bit.
+TEST(Surface, ATruthDrawnInPartsIsTheFrameDrawnAtOnce) {
+  auto host = surfaceHost({"surface.technique=truth", "surface.self_shadow=on"});
+  ASSERT_GT(referenceOf(host->lab()).slices, 1);
+  const gl::RenderTarget target = gl::RenderTarget::create({96, 72});
+  host->renderFrame({96, 72});
+  host->drawInto(target, host->camera(), 0.0f, {0.25f, -0.25f});
+  const ImageF whole{target.size(), target.readRgba()};
+  host->drawInto(target, host->camera(), 0.0f, {0.25f, -0.25f}, 0, 8);
+  const ImageF first{target.size(), target.readRgba()};
+  for (int slice = 1; slice < 8; ++slice) host->drawInto(target, host->camera(), 0.0f, {0.25f, -0.25f}, slice, 8);
+  const ImageF parts{target.size(), target.readRgba()};
+  size_t firstCovered = 0, wholeCovered = 0;
+  for (size_t i = 3; i < whole.rgba.size(); i += 4) {
+    firstCovered += first.rgba[i] > 0.5f;
+    wholeCovered += whole.rgba[i] > 0.5f;
+  }
+  EXPECT_LT(firstCovered, wholeCovered * 3 / 4) << "the first part draws only its share of the triangles";
+  ASSERT_EQ(whole.rgba.size(), parts.rgba.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < whole.rgba.size(); ++i) differ += whole.rgba[i] != parts.rgba[i];
+  EXPECT_EQ(differ, 0u);
+  double covered = 0;
+  for (size_t i = 3; i < parts.rgba.size(); i += 4) covered += parts.rgba[i];
+  EXPECT_GT(covered, 0.5 * double(parts.rgba.size() / 4)) << "the test needs the wall to fill the frame";
+  EXPECT_EQ(gl::drainErrors(), "");
+}
