@@ -1,0 +1,158 @@
+// The BVH a GPU truth traces: every triangle in exactly one leaf, every box holding what is under
+// it, a depth the shader's stack can hold, and the same first hit as testing every triangle, on
+// random soups, on a mesh of one huge and many tiny triangles, and on degenerate input.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <random>
+
+#include "labs/shadows/ray_visibility.h"
+#include "measure/bvh.h"
+#include "scene/scene_catalog.h"
+
+using namespace shadelab;
+
+namespace {
+
+std::vector<BvhTriangle> randomSoup(size_t n, unsigned seed, float size) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> pos(-1.0f, 1.0f), off(-size, size);
+  std::vector<BvhTriangle> out;
+  for (size_t i = 0; i < n; ++i) {
+    const glm::vec3 c(pos(rng), pos(rng), pos(rng));
+    out.push_back({c + glm::vec3(off(rng), off(rng), off(rng)), c + glm::vec3(off(rng), off(rng), off(rng)),
+                   c + glm::vec3(off(rng), off(rng), off(rng))});
+  }
+  return out;
+}
+
+std::optional<BvhHit> bruteForce(const std::vector<BvhTriangle>& tris, glm::vec3 o, glm::vec3 d, float tMin, float tMax) {
+  std::optional<BvhHit> best;
+  for (uint32_t i = 0; i < tris.size(); ++i) {
+    auto hit = intersectTriangle(tris[i], o, d);
+    if (hit && hit->t > tMin && hit->t < tMax) {
+      tMax = hit->t;
+      best = *hit;
+      best->triangle = i;
+    }
+  }
+  return best;
+}
+
+bool contains(const BvhNode& n, glm::vec3 p) { return glm::all(glm::lessThanEqual(n.min, p)) && glm::all(glm::lessThanEqual(p, n.max)); }
+
+// The structure: each triangle in one leaf, boxes holding their triangles and children.
+void checkStructure(const Bvh& bvh, size_t triangles) {
+  std::vector<int> seen(triangles, 0);
+  const auto& nodes = bvh.nodes();
+  for (const BvhNode& n : nodes) {
+    if (n.count > 0) {
+      for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+        ++seen.at(bvh.originalIndex().at(i));
+        const BvhTriangle& t = bvh.triangles()[i];
+        EXPECT_TRUE(contains(n, t.a) && contains(n, t.b) && contains(n, t.c));
+      }
+    } else {
+      for (uint32_t c : {n.first, n.first + 1}) {
+        ASSERT_LT(c, nodes.size());
+        EXPECT_TRUE(contains(n, nodes[c].min) && contains(n, nodes[c].max));
+      }
+    }
+  }
+  for (size_t i = 0; i < triangles; ++i) EXPECT_EQ(seen[i], 1) << "triangle " << i;
+  EXPECT_LE(bvh.depth(), Bvh::kMaxDepth);
+}
+
+void checkAgainstBruteForce(const std::vector<BvhTriangle>& tris, const Bvh& bvh, unsigned seed, int rays) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1.5f, 1.5f);
+  int hits = 0;
+  for (int r = 0; r < rays; ++r) {
+    const glm::vec3 o(u(rng), u(rng), u(rng)), d = glm::vec3(u(rng), u(rng), u(rng)) - o;
+    const auto want = bruteForce(tris, o, d, 1e-4f, 1.0f), got = bvh.closestHit(o, d, 1e-4f, 1.0f);
+    ASSERT_EQ(bool(want), bool(got)) << "ray " << r;
+    EXPECT_EQ(bvh.anyHit(o, d, 1e-4f, 1.0f), bool(want)) << "ray " << r;
+    if (!want) continue;
+    ++hits;
+    EXPECT_EQ(got->t, want->t) << "ray " << r;  // the same test on the same triangle: the same float
+    if (got->triangle != want->triangle) EXPECT_EQ(got->t, want->t) << "a tie between two triangles at one distance";
+  }
+  EXPECT_GT(hits, rays / 10) << "the test needs rays that hit";
+}
+
+}  // namespace
+
+TEST(Bvh, EveryTriangleIsInOneLeafAndTheBoxesHoldTheirContents) {
+  const auto tris = randomSoup(5000, 1, 0.05f);
+  const Bvh bvh(tris);
+  checkStructure(bvh, tris.size());
+  EXPECT_LT(bvh.nodes().size(), 2 * tris.size());
+  size_t leaves = 0, inLeaves = 0;
+  for (auto& n : bvh.nodes())
+    if (n.count > 0) ++leaves, inLeaves += n.count;
+  EXPECT_LE(double(inLeaves) / double(leaves), 4.0);
+}
+
+TEST(Bvh, FindsTheSameFirstHitAsTestingEveryTriangle) {
+  const auto tris = randomSoup(2000, 2, 0.1f);
+  checkAgainstBruteForce(tris, Bvh(tris), 3, 4000);
+}
+
+// One triangle spanning the scene over a thousand tiny ones, coplanar sheets and zero-area
+// triangles: the split heuristic's hard cases.
+TEST(Bvh, OneHugeAndManyTinyTrianglesAndDegenerateOnes) {
+  auto tris = randomSoup(1000, 4, 0.002f);
+  tris.push_back({{-10, -10, 0.01f}, {10, -10, 0.01f}, {0, 10, 0.01f}});
+  for (int i = 0; i < 50; ++i) tris.push_back({{-1, -1, 0.3f}, {1, -1, 0.3f}, {-1, 1, 0.3f}});  // the same triangle 50 times
+  tris.push_back({{0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}});                     // a point
+  tris.push_back({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}});                                                 // a line
+  const Bvh bvh(tris);
+  checkStructure(bvh, tris.size());
+  checkAgainstBruteForce(tris, bvh, 5, 3000);
+}
+
+TEST(Bvh, TexelsCarryTheTreeForAShader) {
+  const auto tris = randomSoup(100, 6, 0.1f);
+  const Bvh bvh(tris);
+  const auto nodes = bvh.nodeTexels(), triangles = bvh.triangleTexels();
+  ASSERT_EQ(nodes.size(), 2 * bvh.nodes().size());
+  ASSERT_EQ(triangles.size(), 3 * tris.size());
+  for (size_t i = 0; i < bvh.nodes().size(); ++i) {
+    EXPECT_EQ(std::bit_cast<uint32_t>(nodes[2 * i].w), bvh.nodes()[i].first);
+    EXPECT_EQ(std::bit_cast<uint32_t>(nodes[2 * i + 1].w), bvh.nodes()[i].count);
+  }
+  EXPECT_EQ(std::bit_cast<uint32_t>(triangles[0].w), bvh.originalIndex()[0]);
+  EXPECT_FALSE(Bvh(std::vector<BvhTriangle>{}).anyHit({0, 0, 0}, {1, 0, 0}, 0.0f, 1.0f)) << "an empty scene hits nothing";
+}
+
+// Against Embree on the shadows lab's own scene: shadow rays from points over the scene towards
+// a light above it agree but for rays that graze an edge (the two round the hit test differently).
+TEST(Bvh, AgreesWithEmbreeOnTheShadowScene) {
+  Scene scene;
+  ASSERT_EQ(buildScene("shadow-test", {}, scene), "");
+  std::vector<BvhTriangle> tris;
+  for (auto& inst : scene.instances) {
+    const MeshData& m = scene.meshes[size_t(inst.mesh)];
+    auto world = [&](uint32_t i) { return glm::vec3(inst.model * glm::vec4(m.positions[i], 1.0f)); };
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+      tris.push_back({world(m.indices[t]), world(m.indices[t + 1]), world(m.indices[t + 2])});
+  }
+  const Bvh bvh(tris);
+  const RayScene embree(scene);
+  const Bounds b = scene.computeBounds();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const glm::vec3 light = b.center() + glm::vec3(0.3f, 2.0f, 0.2f) * b.radius();
+  int differ = 0, blocked = 0;
+  const int rays = 20000;
+  for (int r = 0; r < rays; ++r) {
+    const glm::vec3 p = glm::mix(b.min, b.max, glm::vec3(u(rng), u(rng), u(rng)));
+    const glm::vec3 d = light - p;
+    const bool a = bvh.anyHit(p, d, 0.0f, 1.0f), e = embree.occluded(p, d, 1.0f);  // Embree: t in [0, 1]
+    differ += a != e;
+    blocked += e;
+  }
+  EXPECT_GT(blocked, rays / 20) << "the test needs rays that are blocked";
+  RecordProperty("disagree", differ);
+  EXPECT_LE(differ, rays * 5 / 10000) << differ << " of " << rays << " shadow rays disagree";
+}
