@@ -185,6 +185,18 @@ TraceWork LabHost::trace(const gl::RenderTarget& target, const OrbitCamera& came
   return work;
 }
 
+GlTraceStep LabHost::traceOnGl(const gl::RenderTarget& target, const OrbitCamera& camera, float time) {
+  ensureScene();
+  truthTimer_.beginFrame();
+  Frame frame{target, built_.scene, built_.gpu, camera, truthTimer_, time};
+  GlTraceStep step = lab_->judge() ? lab_->judge()->traceReferenceOnGl(frame) : GlTraceStep{};
+  truthTimer_.endFrame();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindVertexArray(0);
+  glUseProgram(0);
+  return step;
+}
+
 const std::vector<gl::PassTiming>& LabHost::renderFrame(glm::ivec2 size, float time, float dt) {
   shaders_->reloadChanged();
   jobs_.deliver();

@@ -57,6 +57,7 @@ class LabHost {
   // Traced truths: the lab's GL part (a g-buffer of `target`'s pixels as `camera` sees them);
   // returns the CPU part for a job. Settings as they are now: apply the truth's first.
   TraceWork trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time);
+  GlTraceStep traceOnGl(const gl::RenderTarget& target, const OrbitCamera& camera, float time);
   // Headless runs and tests: lets the lab submit what the current settings need, then waits for
   // every job and delivers it, until none is left. onProgress sees the running jobs.
   void settle(const std::function<void(const std::vector<JobStatus>&)>& onProgress = {});

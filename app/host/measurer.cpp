@@ -108,6 +108,20 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
     return {};
   }
   const std::string label = "truth for " + m.label;
+  if (spec.traced && spec.tracedOnGl) {  // traced on the GPU: a pass per GL step, between frames
+    const gl::RenderTarget target = gl::RenderTarget::create(size);
+    GlTraceStep step = beginGlTrace(host_, requests.front(), target);
+    if (!step) return std::string(lab.id()) + ": the lab traced no reference";
+    jobs.submitGlSteps(kJobKey, label, [this, m, step, key = requests.front().key](JobContext& job) mutable {
+      std::optional<ImageF> truth = step(job);
+      if (!truth) return GlStep::More;
+      auto image = std::make_shared<const ImageF>(std::move(*truth));
+      cacheTruth(key, image);
+      finish(std::move(m), {image});
+      return GlStep::Done;
+    });
+    return {};
+  }
   if (spec.traced) {  // traced truths have one view: the lab's trace is that view
     const gl::RenderTarget target = gl::RenderTarget::create(size);
     TraceWork work = beginTrace(host_, requests.front(), target);

@@ -46,8 +46,24 @@ TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTar
   return work;
 }
 
+GlTraceStep beginGlTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target) {
+  const ShaderLibrary::BuiltinOnly builtin(host.shaders());
+  const Settings now = host.currentSettings();
+  host.applySettings(req.truthSettings);
+  GlTraceStep step = host.traceOnGl(target, req.camera, req.time);
+  host.applySettings(now);
+  return step;
+}
+
 ImageF renderTruthNow(LabHost& host, const TruthRequest& req) {
   const gl::RenderTarget target = gl::RenderTarget::create(req.size);
+  if (req.spec.traced && req.spec.tracedOnGl) {
+    GlTraceStep step = beginGlTrace(host, req, target);
+    JobContext ctx;
+    while (step)
+      if (auto image = step(ctx)) return std::move(*image);
+    return {};
+  }
   if (req.spec.traced) {
     TraceWork work = beginTrace(host, req, target);
     JobContext ctx;

@@ -30,6 +30,8 @@ ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTa
 void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice);
 // Traced truths: the GL part now, under the truth's settings; returns the CPU part.
 TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target);
+// Truths traced on the GPU: the g-buffer now, under the truth's settings; returns the GL steps.
+GlTraceStep beginGlTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target);
 // Everything at once (tests, LabHost::renderReference).
 ImageF renderTruthNow(LabHost& host, const TruthRequest& req);
 

@@ -82,8 +82,10 @@ struct ReferenceSpec {
   int jitterGrid = 1;
   PixelFilter pixelFilter = PixelFilter::Box;
   bool displayEncoded = true;  // the frames are sRGB colour (averaged in linear light), not data
-  // ... or traced by the lab (traceReference) when that is what the truth is.
+  // ... or traced by the lab (traceReference) when that is what the truth is; on the GPU in GL
+  // steps (traceReferenceOnGl) rather than in a CPU job when `tracedOnGl`.
   bool traced = false;
+  bool tracedOnGl = false;
   bool cheap = false;  // quick enough to measure after every change: the app offers auto-measure
   // An image truth's frames are drawn in this many parts (Frame::slice), each a GL step of its own
   // in the window: a lab whose truth draws millions of triangles keeps the window's frame time.
@@ -92,6 +94,9 @@ struct ReferenceSpec {
 
 // The CPU part of a traced truth: runs in a job, reports progress, stops when cancelled.
 using TraceWork = std::function<ImageF(JobContext&)>;
+// A truth traced on the GPU a pass at a time: each call (on the GL thread, between the window's
+// frames) adds a pass, reports progress, and returns the image once it is complete.
+using GlTraceStep = std::function<std::optional<ImageF>(JobContext&)>;
 
 // One view a lab's metrics compare: the lab under `settings`, against the truth drawn in it.
 struct MeasuredView {
@@ -163,6 +168,8 @@ class Judge {
   // Traced truths: called with the truth's settings applied; does the GL part now (a g-buffer of
   // frame's pixels) and returns the CPU part, which must own everything it reads.
   virtual TraceWork traceReference(Frame& frame) { return {}; }
+  // The same for a truth traced on the GPU: the g-buffer now, then one GL step per pass.
+  virtual GlTraceStep traceReferenceOnGl(Frame& frame) { return {}; }
   // Settings applied for the image that is compared with an image truth (the shadows lab outputs
   // its visibility term); the cost is always timed on the normal view.
   virtual Settings measuredView() const { return {}; }

@@ -68,8 +68,14 @@ bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float maxDistanc
 
 namespace {
 
-// Stratified point in the unit disk (Shirley-Chiu concentric map of cell (i, j) of n x n).
-glm::vec2 diskSample(int i, int j, int n) {
+void basis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
+  t = glm::normalize(glm::cross(std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0), n));
+  b = glm::cross(n, t);
+}
+
+}  // namespace
+
+glm::vec2 stratifiedDiskSample(int i, int j, int n) {
   const float a = 2.0f * (i + 0.5f) / float(n) - 1.0f, b = 2.0f * (j + 0.5f) / float(n) - 1.0f;
   if (a == 0.0f && b == 0.0f) return glm::vec2(0.0f);
   float r, phi;
@@ -82,13 +88,6 @@ glm::vec2 diskSample(int i, int j, int n) {
   }
   return r * glm::vec2(std::cos(phi), std::sin(phi));
 }
-
-void basis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
-  t = glm::normalize(glm::cross(std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0), n));
-  b = glm::cross(n, t);
-}
-
-}  // namespace
 
 ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const ImageF& positions,
                            const ImageF& normals, int samplesPerAxis, float epsilon, JobContext* job) {
@@ -132,7 +131,7 @@ ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const
         if (n > 1) {
           int lit = 0;
           for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) lit += reaches(diskSample(i, j, n));
+            for (int j = 0; j < n; ++j) lit += reaches(stratifiedDiskSample(i, j, n));
           area = float(lit) / float(n * n);
         }
         o[0] = hard;

@@ -27,6 +27,10 @@ class RayScene {
   size_t triangles_ = 0;
 };
 
+// The centre of cell (i, j) of an n x n grid mapped into the unit disk (Shirley and Chiu's
+// concentric map): the area light's stratified samples, the same for Embree and the GPU tracer.
+glm::vec2 stratifiedDiskSample(int i, int j, int n);
+
 // positions: xyz = world position, w > 0.5 where a surface was drawn that faces the light;
 // normals: xyz = its normal. Returns the visibility of the light's centre (a point light: one
 // ray) in R, of its whole disk (samplesPerAxis^2 stratified rays; the centre's again when the

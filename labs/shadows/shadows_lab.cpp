@@ -99,6 +99,8 @@ void ShadowsLab::teardown() {
   frustumVbo_.reset();
   rayScene_.reset();
   rayRevision_ = -1;
+  tracer_.reset();
+  traceProgram_.reset();
   cascades_.clear();
   shaders_ = nullptr;
 }

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "lab/lab.h"
+#include "labs/shadows/gpu_tracer.h"
 #include "labs/shadows/light_rig.h"
 #include "labs/shadows/shadow_map.h"
 
@@ -26,6 +27,7 @@ enum class ShadowView {
 };
 enum class DepthFormat { D16, D24, D32F, Count };
 enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
+enum class TruthTracer { Embree, Gpu };       // who traces the ray-traced truth
 
 // One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).
 struct ShadowsParams {
@@ -86,6 +88,9 @@ struct ShadowsParams {
     float depthCentreV = 0.5f;
     bool showFrustum = false;
   } view;
+  struct Truth {
+    TruthTracer tracer = TruthTracer::Embree;
+  } truth;
   struct SceneSettings {
     int tessellation = 48;
     float scale = 1.0f;
@@ -119,6 +124,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   Judge* judge() override { return this; }
   ReferenceSpec reference() const override;
   TraceWork traceReference(Frame& frame) override;
+  GlTraceStep traceReferenceOnGl(Frame& frame) override;
   Settings measuredView() const override { return {{"view", "visibility"}}; }
   Metrics metrics(const ImageF& image, const ImageF& reference) const override;
   std::vector<PlotSpec> plots() const override {
@@ -171,6 +177,8 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   // The size a map was allocated at (the texel size the shaders use), or the asked size if none.
   int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.map.size(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
+  std::unique_ptr<GpuShadowTracer> tracer_;   // truth_tracer = gpu
+  ProgramSlot traceProgram_;
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;
 };

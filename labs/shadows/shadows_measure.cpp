@@ -34,7 +34,9 @@ ReferenceSpec ShadowsLab::reference() const {
     p.view.showFrustum = false;
     p.fill.on = false;
   });
-  spec.description = "Embree ray-traced visibility of the key light on the same triangles and camera, two truths in "
+  spec.tracedOnGl = params.truth.tracer == TruthTracer::Gpu;
+  spec.description = std::string(spec.tracedOnGl ? "GPU ray-traced (a BVH in a fragment shader)" : "Embree ray-traced") +
+                     " visibility of the key light on the same triangles and camera, two truths in "
                      "one image: the point light (one ray per pixel; visibility_rmse_hard, misclassified_pct, acne_pct, "
                      "leak_pct) and the area light of light_radius (8x8 stratified rays over its disk; "
                      "visibility_rmse_area)";
@@ -66,6 +68,36 @@ TraceWork ShadowsLab::traceReference(Frame& frame) {
   // The rays are the slow part (seconds for an area light): a job, which owns all it reads.
   return [scene = rayScene_, key, positions = std::move(positions), normals = std::move(normals),
           epsilon](JobContext& job) { return rayTracedVisibility(*scene, key, positions, normals, 8, epsilon, &job); };
+}
+
+GlTraceStep ShadowsLab::traceReferenceOnGl(Frame& frame) {
+  if (!tracer_) tracer_ = std::make_unique<GpuShadowTracer>();
+  tracer_->prepare(frame.scene);
+  sceneLight_ = frame.scene.suggestedLight;
+  // The g-buffer as the Embree truth reads it, kept on the GPU for the tracer's passes.
+  gl::RenderTarget positions = gl::RenderTarget::create(frame.size(), GL_RGBA32F);
+  gl::RenderTarget normals = gl::RenderTarget::create(frame.size(), GL_RGBA32F);
+  for (auto [target, view] : {std::pair{&positions, InternalView::Position}, std::pair{&normals, InternalView::Normal}}) {
+    Frame g{*target, frame.scene, frame.gpu, frame.camera, frame.timer, frame.time};
+    internalView_ = view;
+    render(g);
+  }
+  internalView_ = InternalView::None;
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  const Bounds bounds = frame.scene.bounds;
+  std::vector<std::string> ignored;
+  const LightFrame key = buildLight(keySetup(), bounds, ignored);
+  tracer_->begin(std::move(positions), std::move(normals), key, 8, 2e-4f * bounds.radius());
+  GpuShadowTracer* tracer = tracer_.get();
+  return [this, tracer](JobContext& job) -> std::optional<ImageF> {
+    if (tracer_.get() != tracer || !shaders_) return ImageF{};  // the lab was torn down: nothing to trace with
+    const bool more = tracer->step(*shaders_, traceProgram_);
+    job.progress(float(tracer->samplesDone()) / float(tracer->samplesWanted()),
+                 "GPU trace: " + std::to_string(tracer->samplesDone()) + " of " + std::to_string(tracer->samplesWanted()) +
+                     " samples of the light");
+    if (more && !job.cancelled()) return std::nullopt;
+    return tracer->result();
+  };
 }
 
 Metrics ShadowsLab::metrics(const ImageF& image, const ImageF& reference) const {

@@ -150,6 +150,15 @@ void visitView(ParamVisitor& v, ShadowsParams::View& view, MapFit fit) {
   v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, view.showFrustum);
 }
 
+constexpr std::string_view kTracers[] = {"embree", "gpu"};
+
+void visitTruth(ParamVisitor& v, ShadowsParams::Truth& truth) {
+  v.enumParam({"truth_tracer", "Truth traced by", "", "embree: Intel Embree on the CPU, the whole truth at once; gpu: a "
+               "BVH walked by a fragment shader, one sample of the light's disk per pass, so the area truth converges "
+               "while the window keeps drawing (and where there is no Embree). Both trace the same rays."},
+               truth.tracer, kTracers);
+}
+
 void visitScene(ParamVisitor& v, ShadowsParams::SceneSettings& scene) {
   v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, scene.tessellation, 3, 256);
   v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e4); lengths in "
@@ -177,6 +186,8 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   visitView(v, p.view, p.map.fit);
   v.section("Scene");
   visitScene(v, p.scene);
+  v.section("Truth");
+  visitTruth(v, p.truth);
 }
 
 }  // namespace shadelab

@@ -1,0 +1,127 @@
+#include "labs/shadows/gpu_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "labs/shadows/ray_visibility.h"
+
+namespace shadelab {
+namespace {
+
+constexpr int kTextureWidth = 1024;  // texels per row of the BVH textures (within every GL 3.3 and WebGL2 limit)
+
+gl::Texture2D floatTexture(const std::vector<glm::vec4>& texels, int width) {
+  const int rows = std::max(1, int((texels.size() + size_t(width) - 1) / size_t(width)));
+  std::vector<glm::vec4> padded(size_t(width) * size_t(rows), glm::vec4(0.0f));
+  std::copy(texels.begin(), texels.end(), padded.begin());
+  gl::SamplerState s;
+  s.minFilter = s.magFilter = GL_NEAREST;
+  return gl::Texture2D::fromData({width, rows}, GL_RGBA32F, GL_RGBA, GL_FLOAT, padded.data(), s);
+}
+
+// The n x n disk samples in an order that spreads every prefix over the disk: k -> 37 k mod n^2
+// (37 is prime to every power of two, and to most other n^2 the lab uses).
+glm::vec2 diskSampleAt(int pass, int perAxis) {
+  const int cells = perAxis * perAxis;
+  int k = (pass * 37) % cells;
+  if (std::gcd(37, cells) != 1) k = pass % cells;
+  return stratifiedDiskSample(k / perAxis, k % perAxis, perAxis);
+}
+
+}  // namespace
+
+ProgramSpec GpuShadowTracer::programSpec() {
+  ProgramSpec spec;
+  spec.name = "shadows/trace";
+  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace.frag"}};
+  return spec;
+}
+
+void GpuShadowTracer::prepare(const Scene& scene) {
+  if (bvh_ && revision_ == scene.revision) return;
+  std::vector<BvhTriangle> tris;
+  for (auto& inst : scene.instances) {
+    const MeshData& m = scene.meshes[size_t(inst.mesh)];
+    auto world = [&](uint32_t i) { return glm::vec3(inst.model * glm::vec4(m.positions[i], 1.0f)); };
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+      tris.push_back({world(m.indices[t]), world(m.indices[t + 1]), world(m.indices[t + 2])});
+  }
+  bvh_ = std::make_shared<const Bvh>(std::move(tris));
+  width_ = kTextureWidth;
+  nodes_ = floatTexture(bvh_->nodeTexels(), width_);
+  triangles_ = floatTexture(bvh_->triangleTexels(), width_);
+  revision_ = scene.revision;
+}
+
+void GpuShadowTracer::begin(gl::RenderTarget positions, gl::RenderTarget normals, const LightFrame& light,
+                            int samplesPerAxis, float epsilon) {
+  light_ = light;
+  perAxis_ = light.radiusWorld > 0.0f ? std::max(samplesPerAxis, 1) : 1;
+  samples_ = perAxis_ * perAxis_;
+  pass_ = 0;
+  epsilon_ = epsilon;
+  sum_.emplace(gl::RenderTarget::create(positions.size(), GL_RGBA32F));
+  positions_.emplace(std::move(positions));
+  normals_.emplace(std::move(normals));
+  sum_->bind();
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (!vao_) vao_ = gl::VertexArray::make();
+}
+
+bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot) {
+  if (!sum_ || pass_ >= samples_ || !bvh_) return false;
+  Program& prog = slot.get(shaders, programSpec());
+  sum_->bind();
+  glViewport(0, 0, sum_->size().x, sum_->size().y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);  // a float target: the passes add up exactly (sums of 0 and 1)
+  prog.use();
+  positions_->color().bind(0);
+  normals_->color().bind(1);
+  nodes_.bind(2);
+  triangles_.bind(3);
+  prog.set("u_positions", 0);
+  prog.set("u_normals", 1);
+  prog.set("u_bvhNodes", 2);
+  prog.set("u_bvhTriangles", 3);
+  prog.set("u_bvhWidth", width_);
+  prog.set("u_lightType", light_.type == LightType::Directional ? 0 : 1);
+  prog.set("u_lightPosition", light_.position);
+  prog.set("u_lightDirection", light_.direction);
+  prog.set("u_lightRadius", light_.radiusWorld);
+  prog.set("u_disk", diskSampleAt(pass_, perAxis_));
+  prog.set("u_pass", pass_);
+  prog.set("u_epsilon", epsilon_);
+  glBindVertexArray(vao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  ++pass_;
+  return pass_ < samples_;
+}
+
+ImageF GpuShadowTracer::result(double* standardError) const {
+  if (!sum_) return {};
+  ImageF out{sum_->size(), sum_->readRgba()};
+  const float n = float(std::max(pass_, 1));
+  double seSum = 0.0, covered = 0.0;
+  for (size_t i = 0; i + 3 < out.rgba.size(); i += 4) {
+    float* px = &out.rgba[i];
+    const float mean = px[1] / n, meanSq = px[2] / n;
+    if (px[3] > 0.5f && pass_ > 1) {
+      seSum += std::sqrt(std::max(0.0f, meanSq - mean * mean) / (n - 1.0f));
+      covered += 1.0;
+    }
+    px[1] = px[2] = mean;
+    px[3] = px[3] > 0.5f ? 1.0f : 0.0f;
+  }
+  if (standardError) *standardError = covered > 0 ? seSum / covered : 0.0;
+  return out;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,50 @@
+// The shadows lab's truth on the GPU: the same question as Embree's (is the key light's centre
+// visible from this pixel's surface, and what fraction of its disk), asked by a fragment shader
+// that walks a BVH of the scene's triangles (shaders/shadows/trace.frag). One pass adds one
+// sample of the disk to every pixel, so the area truth converges pass by pass, in the window
+// between frames, while its standard error shrinks; after samplesPerAxis^2 passes it is the
+// Embree truth's estimator, sample for sample. Needs no Embree: the browser's truth too.
+#pragma once
+#include <memory>
+#include <optional>
+
+#include "gl/texture.h"
+#include "labs/shadows/light_rig.h"
+#include "measure/bvh.h"
+#include "measure/image.h"
+#include "scene/scene.h"
+#include "shader/shader_library.h"
+
+namespace shadelab {
+
+class GpuShadowTracer {
+ public:
+  // The BVH of the scene's triangles, built and uploaded when the scene's revision changes.
+  void prepare(const Scene& scene);
+  // A new accumulation over `positions`/`normals` (the lab's g-buffer, RGBA32F, as the Embree
+  // truth reads them) for `light`: samplesPerAxis^2 disk samples (1 when the light has no radius).
+  void begin(gl::RenderTarget positions, gl::RenderTarget normals, const LightFrame& light, int samplesPerAxis,
+             float epsilon);
+  // One pass: every pixel gets the next sample. Returns false once all are in.
+  bool step(ShaderLibrary& shaders, ProgramSlot& program);
+  int samplesDone() const { return pass_; }
+  int samplesWanted() const { return samples_; }
+  // R the hard truth, G = B the mean of the area samples so far, A coverage: the Embree truth's
+  // layout. `standardError`, if given, receives the mean standard error of G over covered pixels.
+  ImageF result(double* standardError = nullptr) const;
+  size_t triangleCount() const { return bvh_ ? bvh_->triangles().size() : 0; }
+  static ProgramSpec programSpec();
+
+ private:
+  int revision_ = -1;
+  std::shared_ptr<const Bvh> bvh_;
+  gl::Texture2D nodes_, triangles_;
+  int width_ = 1;
+  std::optional<gl::RenderTarget> positions_, normals_, sum_;
+  gl::VertexArray vao_;
+  LightFrame light_;
+  int perAxis_ = 1, samples_ = 1, pass_ = 0;
+  float epsilon_ = 0.0f;
+};
+
+}  // namespace shadelab

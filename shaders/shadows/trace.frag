@@ -1,0 +1,102 @@
+#version 330 core
+// Shadows lab's GPU truth: one shadow ray per pixel per pass through a BVH of the scene's
+// triangles (app/measure/bvh.h, flattened into two float textures), added into an accumulator.
+// Pass 0 also traces the hard ray to the light's centre; every pass traces one stratified point
+// of the light's disk, the same points, in another order, as the Embree truth's 8 x 8.
+//   out: R the hard visibility (pass 0 only), G the area sample, B its square, A coverage (pass 0)
+uniform sampler2D u_positions;  // xyz world, w > 0.5 where a surface faces the light
+uniform sampler2D u_normals;
+uniform sampler2D u_bvhNodes;      // two texels a node: (min, first), (max, count); ints as float bits
+uniform sampler2D u_bvhTriangles;  // three texels a triangle: a, b, c
+uniform int u_bvhWidth;            // texels per row of both
+uniform int u_lightType;           // 0 directional, else a position (spot, point)
+uniform vec3 u_lightPosition;
+uniform vec3 u_lightDirection;     // from the light into the scene
+uniform float u_lightRadius;       // world units (directional: tangent of the angular radius)
+uniform vec2 u_disk;               // this pass's point of the unit disk
+uniform int u_pass;
+uniform float u_epsilon;           // lifts ray origins off their surface along the normal
+out vec4 o_sum;
+
+const int kStack = 49;  // Bvh::kMaxDepth + 1
+
+vec4 texelAt(sampler2D s, int i) { return texelFetch(s, ivec2(i % u_bvhWidth, i / u_bvhWidth), 0); }
+
+bool entersBox(vec3 lo, vec3 hi, vec3 origin, vec3 invDir, float tMax) {
+  vec3 t0 = (lo - origin) * invDir, t1 = (hi - origin) * invDir;
+  vec3 near = min(t0, t1), far = max(t0, t1);
+  float enter = max(max(near.x, near.y), max(near.z, 0.0));
+  float exit = min(min(far.x, far.y), min(far.z, tMax));
+  return enter <= exit;
+}
+
+// Moller-Trumbore, as intersectTriangle() on the CPU.
+bool hitsTriangle(int t, vec3 origin, vec3 dir, float tMax) {
+  vec3 a = texelAt(u_bvhTriangles, 3 * t).xyz, b = texelAt(u_bvhTriangles, 3 * t + 1).xyz,
+       c = texelAt(u_bvhTriangles, 3 * t + 2).xyz;
+  vec3 e1 = b - a, e2 = c - a, p = cross(dir, e2);
+  float det = dot(e1, p);
+  if (!(abs(det) > 1e-30)) return false;
+  float inv = 1.0 / det;
+  vec3 s = origin - a;
+  float u = dot(s, p) * inv;
+  if (u < 0.0 || u > 1.0) return false;
+  vec3 q = cross(s, e1);
+  float v = dot(dir, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return false;
+  float hit = dot(e2, q) * inv;
+  return hit > 0.0 && hit < tMax;
+}
+
+// Anything between origin and origin + dir * tMax.
+bool occluded(vec3 origin, vec3 dir, float tMax) {
+  vec3 invDir = 1.0 / dir;
+  int stack[kStack];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    int node = stack[--top];
+    vec4 lo = texelAt(u_bvhNodes, 2 * node), hi = texelAt(u_bvhNodes, 2 * node + 1);
+    if (!entersBox(lo.xyz, hi.xyz, origin, invDir, tMax)) continue;
+    int first = int(floatBitsToUint(lo.w)), count = int(floatBitsToUint(hi.w));
+    if (count == 0) {
+      if (top + 2 > kStack) return false;  // deeper than the build allows: cannot happen
+      stack[top++] = first;
+      stack[top++] = first + 1;
+      continue;
+    }
+    for (int i = first; i < first + count; ++i)
+      if (hitsTriangle(i, origin, dir, tMax)) return true;
+  }
+  return false;
+}
+
+void basis(vec3 n, out vec3 t, out vec3 b) {
+  t = normalize(cross(abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0), n));
+  b = cross(n, t);
+}
+
+// 1 when the ray from `origin` to the point `d` of the light's unit disk gets through.
+float reaches(vec3 origin, vec2 d) {
+  vec3 t, b;
+  if (u_lightType == 0) {
+    basis(-u_lightDirection, t, b);
+    return occluded(origin, normalize(-u_lightDirection + (t * d.x + b * d.y) * u_lightRadius), 1e30) ? 0.0 : 1.0;
+  }
+  basis(normalize(u_lightPosition - origin), t, b);
+  vec3 target = u_lightPosition + (t * d.x + b * d.y) * u_lightRadius;
+  return occluded(origin, target - origin, 1.0) ? 0.0 : 1.0;  // stop at the light
+}
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 position = texelFetch(u_positions, p, 0);
+  if (position.w <= 0.5) {
+    o_sum = vec4(0.0);
+    return;
+  }
+  vec3 origin = position.xyz + texelFetch(u_normals, p, 0).xyz * u_epsilon;
+  float hard = u_pass == 0 ? reaches(origin, vec2(0.0)) : 0.0;
+  float area = u_lightRadius > 0.0 ? reaches(origin, u_disk) : (u_pass == 0 ? hard : reaches(origin, vec2(0.0)));
+  o_sum = vec4(hard, area, area * area, u_pass == 0 ? 1.0 : 0.0);
+}
