@@ -1,6 +1,7 @@
 #include "labs/shadows/gpu_tracer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 
@@ -60,6 +61,7 @@ void GpuShadowTracer::begin(gl::RenderTarget positions, gl::RenderTarget normals
   perAxis_ = light.radiusWorld > 0.0f ? std::max(samplesPerAxis, 1) : 1;
   samples_ = perAxis_ * perAxis_;
   pass_ = 0;
+  bandStart_ = 0;
   epsilon_ = epsilon;
   sum_.emplace(gl::RenderTarget::create(positions.size(), GL_RGBA32F));
   positions_.emplace(std::move(positions));
@@ -71,8 +73,9 @@ void GpuShadowTracer::begin(gl::RenderTarget positions, gl::RenderTarget normals
   if (!vao_) vao_ = gl::VertexArray::make();
 }
 
-bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot) {
+bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double budgetMs) {
   if (!sum_ || pass_ >= samples_ || !bvh_) return false;
+  const auto start = std::chrono::steady_clock::now();
   Program& prog = slot.get(shaders, programSpec());
   sum_->bind();
   glViewport(0, 0, sum_->size().x, sum_->size().y);
@@ -97,11 +100,23 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot) {
   prog.set("u_disk", diskSampleAt(pass_, perAxis_));
   prog.set("u_pass", pass_);
   prog.set("u_epsilon", epsilon_);
+  const int height = sum_->size().y, rows = std::min(bandRows_, height - bandStart_);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, bandStart_, sum_->size().x, rows);
   glBindVertexArray(vao_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  ++pass_;
+  glFinish();
+  // The next band's height from this one's time: about budgetMs a step.
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  bandRows_ = std::clamp(int(double(rows) * budgetMs / std::max(ms, 0.1)), 4, height);
+  bandStart_ += rows;
+  if (bandStart_ >= height) {
+    bandStart_ = 0;
+    ++pass_;
+  }
   return pass_ < samples_;
 }
 

@@ -25,8 +25,10 @@ class GpuShadowTracer {
   // truth reads them) for `light`: samplesPerAxis^2 disk samples (1 when the light has no radius).
   void begin(gl::RenderTarget positions, gl::RenderTarget normals, const LightFrame& light, int samplesPerAxis,
              float epsilon);
-  // One pass: every pixel gets the next sample. Returns false once all are in.
-  bool step(ShaderLibrary& shaders, ProgramSlot& program);
+  // A band of rows of the current pass, sized to take about `budgetMs` (the GPU finishes it
+  // before this returns: a driver that defers its work, as llvmpipe does, would otherwise queue
+  // every pass into one frame). Returns false once every sample of every pixel is in.
+  bool step(ShaderLibrary& shaders, ProgramSlot& program, double budgetMs = 25.0);
   int samplesDone() const { return pass_; }
   int samplesWanted() const { return samples_; }
   // R the hard truth, G = B the mean of the area samples so far, A coverage: the Embree truth's
@@ -44,6 +46,7 @@ class GpuShadowTracer {
   gl::VertexArray vao_;
   LightFrame light_;
   int perAxis_ = 1, samples_ = 1, pass_ = 0;
+  int bandStart_ = 0, bandRows_ = 16;  // the next band of the current pass, and its height
   float epsilon_ = 0.0f;
 };
 

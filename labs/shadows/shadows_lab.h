@@ -179,6 +179,8 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   std::unique_ptr<GpuShadowTracer> tracer_;   // truth_tracer = gpu
   ProgramSlot traceProgram_;
+  double standardError_ = 0.0;
+  int errorAt_ = -1;  // the sample count standardError_ was read at  // of the GPU trace's area truth, mean over its pixels, as of its last read-back
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;
 };

@@ -92,9 +92,15 @@ GlTraceStep ShadowsLab::traceReferenceOnGl(Frame& frame) {
   return [this, tracer](JobContext& job) -> std::optional<ImageF> {
     if (tracer_.get() != tracer || !shaders_) return ImageF{};  // the lab was torn down: nothing to trace with
     const bool more = tracer->step(*shaders_, traceProgram_);
-    job.progress(float(tracer->samplesDone()) / float(tracer->samplesWanted()),
-                 "GPU trace: " + std::to_string(tracer->samplesDone()) + " of " + std::to_string(tracer->samplesWanted()) +
-                     " samples of the light");
+    // The error bar of the area truth so far (a read-back: at every eighth pass).
+    const int done = tracer->samplesDone();
+    if (done != errorAt_ && (done % 8 == 0 || !more)) {
+      tracer->result(&standardError_);
+      errorAt_ = done;
+    }
+    job.progress(float(done) / float(tracer->samplesWanted()),
+                 "GPU trace " + std::to_string(done) + "/" + std::to_string(tracer->samplesWanted()) +
+                     ", mean std. error " + formatFixed(standardError_, 4));
     if (more && !job.cancelled()) return std::nullopt;
     return tracer->result();
   };
