@@ -100,6 +100,7 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
   prog.set("u_disk", diskSampleAt(pass_, perAxis_));
   prog.set("u_pass", pass_);
   prog.set("u_epsilon", epsilon_);
+  prog.set("u_maxSteps", int(bvh_->nodes().size()) + 1);
   const int height = sum_->size().y, rows = std::min(bandRows_, height - bandStart_);
   glEnable(GL_SCISSOR_TEST);
   glScissor(0, bandStart_, sum_->size().x, rows);
@@ -122,6 +123,7 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
 
 ImageF GpuShadowTracer::result(double* standardError) const {
   if (!sum_) return {};
+  gaveUp_ = 0;
   ImageF out{sum_->size(), sum_->readRgba()};
   const float n = float(std::max(pass_, 1));
   double seSum = 0.0, covered = 0.0;
@@ -132,8 +134,10 @@ ImageF GpuShadowTracer::result(double* standardError) const {
       seSum += std::sqrt(std::max(0.0f, meanSq - mean * mean) / (n - 1.0f));
       covered += 1.0;
     }
+    const float gaveUp = std::floor(px[3] / 1024.0f);
+    gaveUp_ += gaveUp > 0.0f;
     px[1] = px[2] = mean;
-    px[3] = px[3] > 0.5f ? 1.0f : 0.0f;
+    px[3] = px[3] - 1024.0f * gaveUp > 0.5f ? 1.0f : 0.0f;
   }
   if (standardError) *standardError = covered > 0 ? seSum / covered : 0.0;
   return out;

@@ -35,6 +35,9 @@ class GpuShadowTracer {
   // layout. `standardError`, if given, receives the mean standard error of G over covered pixels.
   ImageF result(double* standardError = nullptr) const;
   size_t triangleCount() const { return bvh_ ? bvh_->triangles().size() : 0; }
+  // Pixels where a ray visited more nodes than the tree has (as of the last result()): a broken
+  // tree or driver; the traversal stops there instead of hanging, and the lab says so.
+  size_t gaveUp() const { return gaveUp_; }
   static ProgramSpec programSpec();
 
  private:
@@ -48,6 +51,7 @@ class GpuShadowTracer {
   int perAxis_ = 1, samples_ = 1, pass_ = 0;
   int bandStart_ = 0, bandRows_ = 16;  // the next band of the current pass, and its height
   float epsilon_ = 0.0f;
+  mutable size_t gaveUp_ = 0;
 };
 
 }  // namespace shadelab

@@ -414,6 +414,10 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
 std::vector<std::string> ShadowsLab::warnings() const {
   std::vector<std::string> w = lightWarnings_;
   w.insert(w.end(), mapWarnings_.begin(), mapWarnings_.end());
+  if (tracer_ && tracer_->gaveUp() > 0)
+    w.push_back("the GPU tracer stopped the rays of " + std::to_string(tracer_->gaveUp()) + " pixels after visiting "
+                "more nodes than its tree has (a broken tree or driver): they count as lit in the truth; "
+                "truth_tracer = embree is the check");
   const auto& p = params;
   if (p.key.type != LightType::Point && p.key.elevationDeg < 10.0f)
     w.push_back("grazing light (" + formatNumber(p.key.elevationDeg) + " deg above the horizon): texels stretch along the "

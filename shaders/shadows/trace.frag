@@ -3,7 +3,8 @@
 // triangles (app/measure/bvh.h, flattened into two float textures), added into an accumulator.
 // Pass 0 also traces the hard ray to the light's centre; every pass traces one stratified point
 // of the light's disk, the same points, in another order, as the Embree truth's 8 x 8.
-//   out: R the hard visibility (pass 0 only), G the area sample, B its square, A coverage (pass 0)
+//   out: R the hard visibility (pass 0 only), G the area sample, B its square, A coverage (pass 0),
+//        plus 1024 where a ray gave up (a traversal past u_maxSteps: a bound that cannot hang)
 uniform sampler2D u_positions;  // xyz world, w > 0.5 where a surface faces the light
 uniform sampler2D u_normals;
 uniform sampler2D u_bvhNodes;      // two texels a node: (min, first), (max, count); ints as float bits
@@ -16,7 +17,10 @@ uniform float u_lightRadius;       // world units (directional: tangent of the a
 uniform vec2 u_disk;               // this pass's point of the unit disk
 uniform int u_pass;
 uniform float u_epsilon;           // lifts ray origins off their surface along the normal
+uniform int u_maxSteps;            // nodes a ray may visit: the node count (each is visited once at most)
 out vec4 o_sum;
+
+bool g_gaveUp = false;  // a ray ran out of steps: counted as lit, and the pixel is flagged (A += 1024)
 
 const int kStack = 49;  // Bvh::kMaxDepth + 1
 
@@ -54,7 +58,11 @@ bool occluded(vec3 origin, vec3 dir, float tMax) {
   int stack[kStack];
   int top = 0;
   stack[top++] = 0;
-  while (top > 0) {
+  for (int steps = 0; top > 0; ++steps) {
+    if (steps >= u_maxSteps) {
+      g_gaveUp = true;
+      return false;
+    }
     int node = stack[--top];
     vec4 lo = texelAt(u_bvhNodes, 2 * node), hi = texelAt(u_bvhNodes, 2 * node + 1);
     if (!entersBox(lo.xyz, hi.xyz, origin, invDir, tMax)) continue;
@@ -98,5 +106,5 @@ void main() {
   vec3 origin = position.xyz + texelFetch(u_normals, p, 0).xyz * u_epsilon;
   float hard = u_pass == 0 ? reaches(origin, vec2(0.0)) : 0.0;
   float area = u_lightRadius > 0.0 ? reaches(origin, u_disk) : (u_pass == 0 ? hard : reaches(origin, vec2(0.0)));
-  o_sum = vec4(hard, area, area * area, u_pass == 0 ? 1.0 : 0.0);
+  o_sum = vec4(hard, area, area * area, (u_pass == 0 ? 1.0 : 0.0) + (g_gaveUp ? 1024.0 : 0.0));
 }
