@@ -307,10 +307,23 @@ void SurfaceLab::render(Frame& frame) {
   if (params.technique == SurfaceTechnique::Tessellation && !tess)
     frameNotes_.push_back("this context has no tessellation stages (OpenGL 4.0): the surface is drawn without "
                           "displacement; pick displacement for the same on a subdivided mesh");
+  // Tessellation makes level^2 triangles of every patch: held to the subdivision's triangle cap,
+  // or the brick sphere's 65,536 patches at level 64 would be a quarter of a billion triangles a frame.
+  int tessLevel = params.tessLevel;
+  if (tess) {
+    size_t patches = 0;
+    for (const SurfaceDraw& d : draws) patches += d.hasUvs ? d.triangles : 0;
+    while (tessLevel > 1 && patches * size_t(tessLevel) * size_t(tessLevel) > size_t(kMaxTriangles)) --tessLevel;
+    if (tessLevel < params.tessLevel)
+      frameNotes_.push_back("tessellation level " + std::to_string(params.tessLevel) + " on " + std::to_string(patches) +
+                            " patches would make " + std::to_string(patches * size_t(params.tessLevel) * size_t(params.tessLevel)) +
+                            " triangles; drawn at level " + std::to_string(tessLevel) + " (at most " +
+                            std::to_string(kMaxTriangles) + ", as subdivision)");
+  }
   std::string what = std::string(rowOf(kSurfaceTechniques, params.technique).name);
   if (params.technique == SurfaceTechnique::Displacement || params.technique == SurfaceTechnique::Truth)
     what += ", subdivision " + std::to_string(key.level);
-  if (tess) what += ", level " + std::to_string(params.tessLevel);
+  if (tess) what += ", level " + std::to_string(tessLevel);
   {
     auto pass = frame.pass("surface: " + what);
     for (const SurfaceDraw& d : draws) {
@@ -347,7 +360,7 @@ void SurfaceLab::render(Frame& frame) {
       prog.set("u_kh", params.kh);
       prog.set("u_kn", params.kn);
       prog.set("u_layers", params.layers);
-      prog.set("u_tessLevel", float(params.tessLevel));
+      prog.set("u_tessLevel", float(tessLevel));
       prog.set("u_angleScale", params.angleScale);
       // A mesh without UVs gets the plain program (programSpec): patches only where tessellation stages are.
       // A sliced frame (a truth drawn in parts) draws its share of the triangles.
@@ -356,7 +369,7 @@ void SurfaceLab::render(Frame& frame) {
       const size_t last = d.triangles * size_t(frame.slice + 1) / size_t(frame.slices);
       d.mesh.drawTriangles(patches ? Primitive::Patches : Primitive::Triangles, first, last - first);
       glBindSampler(kHeightUnit, 0);
-      drawnTriangles_ += patches ? d.triangles * size_t(params.tessLevel) * size_t(params.tessLevel) : d.triangles;
+      drawnTriangles_ += patches ? d.triangles * size_t(tessLevel) * size_t(tessLevel) : d.triangles;
     }
   }
   if (params.overlay && frame.slice + 1 == frame.slices) {

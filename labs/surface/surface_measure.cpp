@@ -129,6 +129,11 @@ std::vector<StressCase> SurfaceLab::stressCases() const {
          p.technique = SurfaceTechnique::Tessellation, p.heightScale = -2.0f, p.tessLevel = 64;
        }),
        "", "", "dents"},
+      // 65,536 patches at level 64: 268 M triangles (minutes a frame on llvmpipe) unless held
+      {"tessellated-dense-sphere", edit([](SurfaceParams& p) {
+         p.technique = SurfaceTechnique::Tessellation, p.tessLevel = 64, p.tessellation = 256;
+       }),
+       "bricks-sphere", "", "drawn at level"},
       {"negative-pom", edit([](SurfaceParams& p) { p.technique = SurfaceTechnique::Pom, p.heightScale = -0.3f; }), "",
        "", "dents"},
       {"spike-displacement",
