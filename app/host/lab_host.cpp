@@ -173,27 +173,27 @@ std::vector<gl::PassTiming> LabHost::drawInto(const gl::RenderTarget& target, co
   return draw(truthTimer_, target, camera, time, jitter, slice, slices);
 }
 
-TraceWork LabHost::trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time) {
+void LabHost::traceFrame(const gl::RenderTarget& target, const OrbitCamera& camera, float time,
+                         const std::function<void(Judge&, Frame&)>& begin) {
   ensureScene();
   truthTimer_.beginFrame();
   Frame frame{target, built_.scene, built_.gpu, camera, truthTimer_, time};
-  TraceWork work = lab_->judge() ? lab_->judge()->traceReference(frame) : TraceWork{};
+  if (Judge* judge = lab_->judge()) begin(*judge, frame);
   truthTimer_.endFrame();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindVertexArray(0);
   glUseProgram(0);
+}
+
+TraceWork LabHost::trace(const gl::RenderTarget& target, const OrbitCamera& camera, float time) {
+  TraceWork work;
+  traceFrame(target, camera, time, [&](Judge& judge, Frame& frame) { work = judge.traceReference(frame); });
   return work;
 }
 
 GlTraceStep LabHost::traceOnGl(const gl::RenderTarget& target, const OrbitCamera& camera, float time) {
-  ensureScene();
-  truthTimer_.beginFrame();
-  Frame frame{target, built_.scene, built_.gpu, camera, truthTimer_, time};
-  GlTraceStep step = lab_->judge() ? lab_->judge()->traceReferenceOnGl(frame) : GlTraceStep{};
-  truthTimer_.endFrame();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glBindVertexArray(0);
-  glUseProgram(0);
+  GlTraceStep step;
+  traceFrame(target, camera, time, [&](Judge& judge, Frame& frame) { step = judge.traceReferenceOnGl(frame); });
   return step;
 }
 

@@ -101,6 +101,9 @@ class LabHost {
   std::vector<gl::PassTiming> draw(gl::PassTimer& timer, const gl::RenderTarget& target, const OrbitCamera& camera,
                                    float time, glm::vec2 jitter, int slice = 0, int slices = 1);
   std::string rebuildScene(const std::string& id, const SceneNeeds& needs, bool reframe);
+  // The GL part of a traced truth: `begin` gets the lab's judge and a frame on the truth's timer.
+  void traceFrame(const gl::RenderTarget& target, const OrbitCamera& camera, float time,
+                  const std::function<void(Judge&, Frame&)>& begin);
   std::string heightMap_;  // setHeightMap's image, applied to every build of the current scene
 
   std::unique_ptr<ShaderLibrary> shaders_;

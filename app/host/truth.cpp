@@ -22,14 +22,24 @@ TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Set
   return req;
 }
 
-// The settings current now (a slider may have moved since the request) come back afterwards. A
-// truth is drawn with the built-in shaders: a student's file must not be judged against itself.
-void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice) {
+namespace {
+
+// `draw` under the truth's settings and the built-in shaders (a student's file must not be judged
+// against itself); the settings current before (a slider may have moved since the request) come back.
+template <typename Draw>
+auto underTruthSettings(LabHost& host, const TruthRequest& req, Draw&& draw) {
   const ShaderLibrary::BuiltinOnly builtin(host.shaders());
   const Settings now = host.currentSettings();
   host.applySettings(req.truthSettings);
-  host.drawInto(target, req.camera, req.time, jitter, slice, req.spec.slices);
+  auto result = draw();
   host.applySettings(now);
+  return result;
+}
+
+}  // namespace
+
+void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice) {
+  underTruthSettings(host, req, [&] { return host.drawInto(target, req.camera, req.time, jitter, slice, req.spec.slices); });
 }
 
 ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter) {
@@ -38,21 +48,11 @@ ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTa
 }
 
 TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target) {
-  const ShaderLibrary::BuiltinOnly builtin(host.shaders());
-  const Settings now = host.currentSettings();
-  host.applySettings(req.truthSettings);
-  TraceWork work = host.trace(target, req.camera, req.time);
-  host.applySettings(now);
-  return work;
+  return underTruthSettings(host, req, [&] { return host.trace(target, req.camera, req.time); });
 }
 
 GlTraceStep beginGlTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target) {
-  const ShaderLibrary::BuiltinOnly builtin(host.shaders());
-  const Settings now = host.currentSettings();
-  host.applySettings(req.truthSettings);
-  GlTraceStep step = host.traceOnGl(target, req.camera, req.time);
-  host.applySettings(now);
-  return step;
+  return underTruthSettings(host, req, [&] { return host.traceOnGl(target, req.camera, req.time); });
 }
 
 ImageF renderTruthNow(LabHost& host, const TruthRequest& req) {

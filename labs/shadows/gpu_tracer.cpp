@@ -39,8 +39,7 @@ ProgramSpec GpuShadowTracer::programSpec() {
   return spec;
 }
 
-void GpuShadowTracer::prepare(const Scene& scene) {
-  if (bvh_ && revision_ == scene.revision) return;
+std::vector<BvhTriangle> sceneTriangles(const Scene& scene) {
   std::vector<BvhTriangle> tris;
   for (auto& inst : scene.instances) {
     const MeshData& m = scene.meshes[size_t(inst.mesh)];
@@ -48,7 +47,12 @@ void GpuShadowTracer::prepare(const Scene& scene) {
     for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
       tris.push_back({world(m.indices[t]), world(m.indices[t + 1]), world(m.indices[t + 2])});
   }
-  bvh_ = std::make_shared<const Bvh>(std::move(tris));
+  return tris;
+}
+
+void GpuShadowTracer::prepare(const Scene& scene) {
+  if (bvh_ && revision_ == scene.revision) return;
+  bvh_ = std::make_shared<const Bvh>(sceneTriangles(scene));
   width_ = kTextureWidth;
   nodes_ = floatTexture(bvh_->nodeTexels(), width_);
   triangles_ = floatTexture(bvh_->triangleTexels(), width_);

@@ -17,6 +17,9 @@
 
 namespace shadelab {
 
+// Every instance's triangles in world space: what the tracer (and Embree's RayScene) trace.
+std::vector<BvhTriangle> sceneTriangles(const Scene& scene);
+
 class GpuShadowTracer {
  public:
   // The BVH of the scene's triangles, built and uploaded when the scene's revision changes.

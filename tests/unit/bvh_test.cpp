@@ -6,6 +6,7 @@
 #include <bit>
 #include <random>
 
+#include "labs/shadows/gpu_tracer.h"
 #include "labs/shadows/ray_visibility.h"
 #include "measure/bvh.h"
 #include "scene/scene_catalog.h"
@@ -130,14 +131,7 @@ TEST(Bvh, TexelsCarryTheTreeForAShader) {
 TEST(Bvh, AgreesWithEmbreeOnTheShadowScene) {
   Scene scene;
   ASSERT_EQ(buildScene("shadow-test", {}, scene), "");
-  std::vector<BvhTriangle> tris;
-  for (auto& inst : scene.instances) {
-    const MeshData& m = scene.meshes[size_t(inst.mesh)];
-    auto world = [&](uint32_t i) { return glm::vec3(inst.model * glm::vec4(m.positions[i], 1.0f)); };
-    for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
-      tris.push_back({world(m.indices[t]), world(m.indices[t + 1]), world(m.indices[t + 2])});
-  }
-  const Bvh bvh(tris);
+  const Bvh bvh(sceneTriangles(scene));
   const RayScene embree(scene);
   const Bounds b = scene.computeBounds();
   std::mt19937 rng(7);
