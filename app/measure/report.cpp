@@ -202,15 +202,31 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
       longest = std::max(longest, row.group.size());
   // The legend column is as wide as its longest name (about 7 px a character at 12 px).
   const double L = 70, R = 40 + 7.0 * double(longest), T = 26, B = 50, W = 470 + R, H = 400;
+  // The frame: the Pareto front and what lies near it. A configuration more than three times the
+  // front's dearest cost or worst error (a bias-0 run, a moment map ten times slower) is drawn on
+  // the frame's edge, hollow, with its values on hover, so it does not squeeze the front into a corner.
+  const std::vector<size_t> front = paretoFront(r, spec, truth);
+  double costLimit = INFINITY, errorLimit = INFINITY;
+  if (front.size() >= 2) {
+    costLimit = errorLimit = 0.0;
+    for (size_t i : front) {
+      costLimit = std::max(costLimit, 3.0 * r.rows[i].value(costKey));
+      errorLimit = std::max(errorLimit, 3.0 * r.rows[i].value(errorKey));
+    }
+    if (!(costLimit > 0.0)) costLimit = INFINITY;
+    if (!(errorLimit > 0.0)) errorLimit = INFINITY;
+  }
+  auto beyond = [&](const SweepRow& row) { return row.value(costKey) > costLimit || row.value(errorKey) > errorLimit; };
   std::vector<double> costs, errors;
   for (auto& row : r.rows) {
-    if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
+    if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey)) || beyond(row))
+      continue;
     costs.push_back(row.value(costKey));
     errors.push_back(row.value(errorKey));
   }
   const Axis ax = axisFor(costs, false), ay = axisFor(errors, true);
-  auto sx = [&](double v) { return L + ax.at(v) * (W - L - R); };
-  auto sy = [&](double v) { return H - B - ay.at(v) * (H - T - B); };
+  auto sx = [&](double v) { return L + ax.at(std::clamp(v, ax.lo, ax.hi)) * (W - L - R); };
+  auto sy = [&](double v) { return H - B - ay.at(std::clamp(v, ay.lo, ay.hi)) * (H - T - B); };
   std::string s = "<svg xmlns='http://www.w3.org/2000/svg' width='" + formatNumber(W) + "' height='" + formatNumber(H) +
                   "' font-family='sans-serif' font-size='12'>\n<rect width='100%' height='100%' fill='white'/>\n";
   for (double t : ax.ticks())
@@ -232,17 +248,21 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
        htmlEscape(errorKey) + (ay.log ? " (log scale)" : "") + "</text>\n";
   // Pareto front: the configurations nothing else beats on both axes.
   std::string path;
-  for (size_t i : paretoFront(r, spec, truth))
+  int outside = 0;
+  for (size_t i : front)
     path += (path.empty() ? "M" : " L") + formatNumber(sx(r.rows[i].value(costKey))) + "," +
             formatNumber(sy(r.rows[i].value(errorKey)));
   s += "<path d='" + path + "' fill='none' stroke='#999' stroke-dasharray='4 3'/>\n";
   for (auto& row : r.rows) {
     if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey))) continue;
     const char* color = kPalette[groups[row.group] % 8];
+    const bool out = beyond(row);
+    outside += out;
     s += "<circle cx='" + formatNumber(sx(row.value(costKey))) + "' cy='" + formatNumber(sy(row.value(errorKey))) +
-         "' r='5' fill='" + color + "' fill-opacity='0.8'><title>" + htmlEscape(row.label) + ": " + errorKey + " " +
-         formatNumber(row.value(errorKey)) + ", " + costKey + " " + formatNumber(row.value(costKey)) +
-         "</title></circle>\n";
+         "' r='5' " + (out ? std::string("fill='white' stroke='") + color + "' stroke-width='2'" :
+                             std::string("fill='") + color + "' fill-opacity='0.8'") +
+         "><title>" + htmlEscape(row.label) + ": " + errorKey + " " + formatNumber(row.value(errorKey)) + ", " +
+         costKey + " " + formatNumber(row.value(costKey)) + (out ? " (beyond the frame)" : "") + "</title></circle>\n";
   }
   int k = 0;
   for (auto& [name, index] : groups) {
@@ -252,7 +272,13 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
          htmlEscape(name) + "</text>\n";
   }
   s += "<text x='" + formatNumber(W - R + 10) + "' y='" + formatNumber(T + 14 + 18 * k + 6) +
-       "' fill='#777'>- - Pareto front</text>\n</svg>\n";
+       "' fill='#777'>- - Pareto front</text>\n";
+  if (outside > 0)
+    s += "<circle cx='" + formatNumber(W - R + 16) + "' cy='" + formatNumber(T + 14 + 18 * (k + 1) + 2) +
+         "' r='5' fill='white' stroke='#777' stroke-width='2'/><text x='" + formatNumber(W - R + 26) + "' y='" +
+         formatNumber(T + 14 + 18 * (k + 1) + 6) + "' fill='#777'>" + std::to_string(outside) +
+         " beyond the frame</text>\n";
+  s += "</svg>\n";
   return s;
 }
 

@@ -111,3 +111,24 @@ TEST(Report, AxesAreLogarithmicWhereTheDataSpansDecades) {
   EXPECT_EQ(exactSvg.find(">rmse (log scale)"), std::string::npos);
   EXPECT_NE(exactSvg.find("cheaper), log scale"), std::string::npos);
 }
+
+// A sweep's outliers (a run ten times dearer than the front, an error a hundred times the front's)
+// are drawn hollow on the frame's edge, and the axes frame the Pareto front and what lies near it.
+TEST(Report, ThePlotFramesTheParetoFrontAndMarksOutliersAtTheEdge) {
+  SweepReport r;
+  r.plots = {{"rmse"}};
+  for (auto [err, ms] : std::vector<std::pair<double, double>>{{0.1, 1.0}, {0.05, 2.0}, {0.02, 4.0}, {0.08, 3.0},
+                                                               {0.5, 1000.0}, {9.0, 2.0}}) {
+    SweepRow s;
+    s.label = s.group = "c" + std::to_string(r.rows.size());
+    s.values = {{"rmse", err}, {"gpu_ms", ms}};
+    r.rows.push_back(s);
+  }
+  const std::string svg = sweepPlotSvg(r, r.plots[0], "");
+  EXPECT_NE(svg.find("c4: rmse 0.5, gpu_ms 1000 (beyond the frame)"), std::string::npos);
+  EXPECT_NE(svg.find("c5: rmse 9, gpu_ms 2 (beyond the frame)"), std::string::npos);
+  EXPECT_EQ(svg.find("c3: rmse 0.08, gpu_ms 3 (beyond"), std::string::npos) << "near the front: inside";
+  EXPECT_NE(svg.find(">2 beyond the frame</text>"), std::string::npos);
+  EXPECT_EQ(svg.find("log scale"), std::string::npos) << "framed on 1..4 ms and 0.02..0.1: linear axes";
+  EXPECT_EQ(svg.find(">1000</text>"), std::string::npos);
+}
