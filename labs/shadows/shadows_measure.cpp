@@ -172,6 +172,11 @@ std::vector<StressCase> ShadowsLab::stressCases() const {
        "inside geometry"},
       {"spot-light-inside-scene", edit([](ShadowsParams& p) { p.key.type = LightType::Spot, p.key.distance = 0.3f; }),
        "", "", "inside the scene"},
+      // Points beside the spot's eye project towards infinity; the bilinear taps took fract() of it (NaN).
+      {"spot-light-at-the-centre-bilinear", edit([](ShadowsParams& p) {
+         p.key.type = LightType::Spot, p.key.distance = 0.0f, p.filter.type = ShadowFilter::PcfBilinear;
+       }),
+       "", "", "inside the scene"},
       {"near-far-ratio-1e4", edit([](ShadowsParams& p) {
          p.key.type = LightType::Spot, p.map.autoFit = false, p.map.nearPlane = 0.001f, p.map.farPlane = 10.0f;
        }),

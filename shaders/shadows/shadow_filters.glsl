@@ -135,8 +135,11 @@ ShadowQuery makeQuery(int type, ShadowLight L, ShadowSurface s) {
   } else {
     vec4 clip = L.viewProj * vec4(Pn, 1.0);
     float w = abs(clip.w) > 1e-30 ? clip.w : 1e-30;
-    q.base = vec3(clip.xy / w * 0.5 + 0.5, L.layer);
-    q.tanCentre = (clip.xy / w) * L.halfWidth;
+    // A point beside a spot light's eye (w near 0) projects towards infinity: held three map widths
+    // out, where every lookup is outside the map as before, but finite (fract() of infinity is NaN).
+    vec2 ndc = clamp(clip.xy / w, vec2(-3.0), vec2(3.0));
+    q.base = vec3(ndc * 0.5 + 0.5, L.layer);
+    q.tanCentre = ndc * L.halfWidth;
     q.beyondFar = q.beyondFar || clip.w <= 0.0;
     q.texel = 1.0 / L.mapSize;
     q.tangent = q.bitangent = vec3(0.0);
