@@ -84,6 +84,9 @@ struct AppState {
   std::string message;          // last error or confirmation, shown in the UI
   std::vector<std::string> dropped;
   std::string fileParamUnderMouse;  // a file parameter's key, as of the last frame: drops go there
+  // Data scenes not downloaded ("?": not looked up yet): looked up at start and while the scene
+  // list is open, not every frame.
+  std::string missingData = "?";
   glm::ivec2 viewport{960, 600};
   FrameHistory history;
   ConfigurationCosts costs;
@@ -237,7 +240,12 @@ void leftPanel(AppState& app) {
   ImGui::TextWrapped("%s", std::string(host.lab().summary()).c_str());
 
   ImGui::Separator();
-  if (ImGui::BeginCombo("Scene", host.sceneId().c_str())) {
+  const bool listOpened = ImGui::BeginCombo("Scene", host.sceneId().c_str());
+  if (listOpened || app.missingData == "?") {
+    app.missingData.clear();
+    for (auto& id : missingDataScenes()) app.missingData += (app.missingData.empty() ? "" : ", ") + id;
+  }
+  if (listOpened) {
     for (auto& s : listScenes(host.lab().scenes()))
       if (ImGui::Selectable(s.id.c_str(), s.id == host.sceneId())) {
         const std::string err = host.selectScene(s.id);
@@ -247,11 +255,8 @@ void leftPanel(AppState& app) {
   }
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window (an image: the scene's height map).");
-  if (const auto missing = missingDataScenes(); !missing.empty()) {
-    std::string ids;
-    for (auto& id : missing) ids += (ids.empty() ? "" : ", ") + id;
-    ImGui::TextDisabled("Not downloaded: %s. Run %s to fetch them.", ids.c_str(), kGetDataCommand);
-  }
+  if (!app.missingData.empty())
+    ImGui::TextDisabled("Not downloaded: %s. Run %s to fetch them.", app.missingData.c_str(), kGetDataCommand);
   ImGui::PopTextWrapPos();
   ImGui::Separator();
   drawParamWidgets(host.lab(), &app.fileParamUnderMouse);

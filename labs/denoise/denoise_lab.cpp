@@ -235,6 +235,8 @@ void DenoiseLab::rebuildModel(const Scene& scene) {
   mapMesh_ = GpuMesh();
   attributeMesh_ = GpuMesh();
   modelClean_ = params.input.clean;
+  missingPairs_.clear();
+  for (auto& id : missingDenoisePairs()) missingPairs_ += (missingPairs_.empty() ? "" : ", ") + id;
   const auto builtIn = scenes();
   sceneIsFile_ = std::none_of(builtIn.begin(), builtIn.end(), [&](const SceneRecipe& r) { return r.id == scene.name; });
   pairNote_.clear();

@@ -97,6 +97,7 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   int modelRevision_ = -1;   // scene revision the model was built from
   std::string modelScene_;
   bool sceneIsFile_ = false;  // a user's file, not one of the lab's scenes
+  std::string missingPairs_;  // the published pairs not on disk, as of the last model build (warnings() runs per frame)
   std::string modelClean_;   // the clean file it was built with ("" : the scene is the clean mesh)
   std::string pairNote_;     // how the scene and the clean file were paired, or ""
   double pairMoveEdges_ = 0.0;

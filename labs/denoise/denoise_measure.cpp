@@ -61,11 +61,8 @@ std::vector<PlotSpec> DenoiseLab::plots() const {
 std::vector<std::string> DenoiseLab::warnings() const {
   std::vector<std::string> w;
   if (!modelNote_.empty()) w.push_back(modelNote_);
-  if (const auto missing = missingDenoisePairs(); !missing.empty()) {
-    std::string ids;
-    for (auto& id : missing) ids += (ids.empty() ? "" : ", ") + id;
-    w.push_back("the published noisy/clean pairs are not here (" + ids + "): " + kGetDataCommand + " fetches them");
-  }
+  if (!missingPairs_.empty())
+    w.push_back("the published noisy/clean pairs are not here (" + missingPairs_ + "): " + kGetDataCommand + " fetches them");
   if (!model_) {
     w.push_back("nothing to denoise: the scene has no triangles");
     return w;
