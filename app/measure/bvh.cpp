@@ -206,13 +206,30 @@ bool Bvh::anyHit(const glm::vec3& origin, const glm::vec3& dir, float tMin, floa
   return false;
 }
 
+void Bvh::appendThreaded(uint32_t index, std::vector<glm::vec4>& out) const {
+  const BvhNode& node = nodes_[index];
+  auto here = [&] { return uint32_t(out.size() / 2); };
+  if (node.count > 0) {  // a leaf's skip is the next node, whatever follows its subtree
+    for (uint32_t first = node.first; first < node.first + node.count; first += 255) {
+      const uint32_t count = std::min(255u, node.first + node.count - first);
+      out.emplace_back(node.min, std::bit_cast<float>(first));
+      out.emplace_back(node.max, std::bit_cast<float>((here() + 1) | (count << 24)));
+    }
+    return;
+  }
+  const size_t at = out.size();
+  out.emplace_back(node.min, 0.0f);
+  out.emplace_back(node.max, 0.0f);
+  appendThreaded(node.first, out);
+  appendThreaded(node.first + 1, out);
+  out[at + 1].w = std::bit_cast<float>(here());  // count 0: an inner node
+}
+
 std::vector<glm::vec4> Bvh::nodeTexels() const {
+  // 24 bits of node index: 16 M nodes, far above the 2.5 M triangles a scene may have.
   std::vector<glm::vec4> out;
   out.reserve(2 * nodes_.size());
-  for (const BvhNode& n : nodes_) {
-    out.emplace_back(n.min, std::bit_cast<float>(n.first));
-    out.emplace_back(n.max, std::bit_cast<float>(n.count));
-  }
+  if (!nodes_.empty()) appendThreaded(0, out);
   return out;
 }
 

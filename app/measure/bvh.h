@@ -54,14 +54,19 @@ class Bvh {
   const std::vector<uint32_t>& originalIndex() const { return originalIndex_; }
   int depth() const { return depth_; }
 
-  // For a shader: two texels per node (min, first as float bits; max, count as float bits) and
-  // three per triangle (a, b, c; w = the original index as float bits), rows of `width` texels.
+  // For a shader, a stackless walk: the nodes in depth-first order, two texels each, (min, first
+  // triangle) and (max, skip | count << 24), ints as float bits. A ray that enters a node's box goes
+  // on to the next node (an inner node's first child) after testing the node's `count` triangles; a
+  // ray that misses it, or has tested them, goes to `skip`, the node after its subtree; the walk ends
+  // at the node count. Leaves of more than 255 triangles become runs of leaves. Triangles: three
+  // texels each (a, b, c; w = the original index as float bits).
   std::vector<glm::vec4> nodeTexels() const;
   std::vector<glm::vec4> triangleTexels() const;
 
  private:
   void buildNode(uint32_t index, uint32_t first, uint32_t count, int leafSize, int depth,
                  const std::vector<glm::vec3>& centroids);
+  void appendThreaded(uint32_t index, std::vector<glm::vec4>& out) const;
 
   std::vector<BvhNode> nodes_;
   std::vector<BvhTriangle> triangles_;

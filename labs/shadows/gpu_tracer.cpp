@@ -10,7 +10,7 @@
 namespace shadelab {
 namespace {
 
-constexpr int kTextureWidth = 1024;  // texels per row of the BVH textures (within every GL 3.3 and WebGL2 limit)
+constexpr int kTextureWidthLog2 = 10;  // 1024 texels per row of the BVH textures (within every GL 3.3 and WebGL2 limit)
 
 gl::Texture2D floatTexture(const std::vector<glm::vec4>& texels, int width) {
   const int rows = std::max(1, int((texels.size() + size_t(width) - 1) / size_t(width)));
@@ -53,9 +53,10 @@ std::vector<BvhTriangle> sceneTriangles(const Scene& scene) {
 void GpuShadowTracer::prepare(const Scene& scene) {
   if (bvh_ && revision_ == scene.revision) return;
   bvh_ = std::make_shared<const Bvh>(sceneTriangles(scene));
-  width_ = kTextureWidth;
-  nodes_ = floatTexture(bvh_->nodeTexels(), width_);
-  triangles_ = floatTexture(bvh_->triangleTexels(), width_);
+  const std::vector<glm::vec4> nodes = bvh_->nodeTexels();
+  nodeCount_ = int(nodes.size() / 2);
+  nodes_ = floatTexture(nodes, 1 << kTextureWidthLog2);
+  triangles_ = floatTexture(bvh_->triangleTexels(), 1 << kTextureWidthLog2);
   revision_ = scene.revision;
 }
 
@@ -96,32 +97,42 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
   prog.set("u_normals", 1);
   prog.set("u_bvhNodes", 2);
   prog.set("u_bvhTriangles", 3);
-  prog.set("u_bvhWidth", width_);
+  prog.set("u_bvhWidthLog2", kTextureWidthLog2);
   prog.set("u_lightType", light_.type == LightType::Directional ? 0 : 1);
   prog.set("u_lightPosition", light_.position);
   prog.set("u_lightDirection", light_.direction);
   prog.set("u_lightRadius", light_.radiusWorld);
-  prog.set("u_disk", diskSampleAt(pass_, perAxis_));
-  prog.set("u_pass", pass_);
   prog.set("u_epsilon", epsilon_);
-  prog.set("u_maxSteps", int(bvh_->nodes().size()) + 1);
-  const int height = sum_->size().y, rows = std::min(bandRows_, height - bandStart_);
+  prog.set("u_nodeCount", nodeCount_);
+  prog.set("u_maxSteps", nodeCount_ + 1);
   glEnable(GL_SCISSOR_TEST);
-  glScissor(0, bandStart_, sum_->size().x, rows);
   glBindVertexArray(vao_.get());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Bands until about budgetMs has gone: one band of a pass where a pass is slow (llvmpipe), many
+  // whole passes where it is fast (a GPU draws all 64 area samples of a frame within one step).
+  const int height = sum_->size().y;
+  auto since = [](auto t) { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count(); };
+  for (;;) {
+    const auto bandBegin = std::chrono::steady_clock::now();
+    const int rows = std::min(bandRows_, height - bandStart_);
+    prog.set("u_disk", diskSampleAt(pass_, perAxis_));
+    prog.set("u_pass", pass_);
+    glScissor(0, bandStart_, sum_->size().x, rows);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glFinish();
+    // The next band's height from this one's time: about budgetMs a band.
+    const double ms = since(bandBegin);
+    bandRows_ = std::clamp(int(double(rows) * budgetMs / std::max(ms, 0.1)), 4, height);
+    bandStart_ += rows;
+    if (bandStart_ >= height) {
+      bandStart_ = 0;
+      ++pass_;
+    }
+    const double nextMs = ms * double(std::min(bandRows_, height - bandStart_)) / double(rows);
+    if (pass_ >= samples_ || since(start) + nextMs > budgetMs) break;
+  }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glFinish();
-  // The next band's height from this one's time: about budgetMs a step.
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  bandRows_ = std::clamp(int(double(rows) * budgetMs / std::max(ms, 0.1)), 4, height);
-  bandStart_ += rows;
-  if (bandStart_ >= height) {
-    bandStart_ = 0;
-    ++pass_;
-  }
   return pass_ < samples_;
 }
 

@@ -47,7 +47,7 @@ class GpuShadowTracer {
   int revision_ = -1;
   std::shared_ptr<const Bvh> bvh_;
   gl::Texture2D nodes_, triangles_;
-  int width_ = 1;
+  int nodeCount_ = 0;  // in the walk's order (Bvh::nodeTexels)
   std::optional<gl::RenderTarget> positions_, normals_, sum_;
   gl::VertexArray vao_;
   LightFrame light_;

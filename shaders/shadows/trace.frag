@@ -1,15 +1,16 @@
 #version 330 core
 // Shadows lab's GPU truth: one shadow ray per pixel per pass through a BVH of the scene's
-// triangles (app/measure/bvh.h, flattened into two float textures), added into an accumulator.
+// triangles (app/measure/bvh.h, flattened into two float textures and walked without a stack),
+// added into an accumulator.
 // Pass 0 also traces the hard ray to the light's centre; every pass traces one stratified point
 // of the light's disk, the same points, in another order, as the Embree truth's 8 x 8.
 //   out: R the hard visibility (pass 0 only), G the area sample, B its square, A coverage (pass 0),
 //        plus 1024 where a ray gave up (a traversal past u_maxSteps: a bound that cannot hang)
 uniform sampler2D u_positions;  // xyz world, w > 0.5 where a surface faces the light
 uniform sampler2D u_normals;
-uniform sampler2D u_bvhNodes;      // two texels a node: (min, first), (max, count); ints as float bits
+uniform sampler2D u_bvhNodes;      // two texels a node, depth-first: (min, first), (max, skip | count << 24)
 uniform sampler2D u_bvhTriangles;  // three texels a triangle: a, b, c
-uniform int u_bvhWidth;            // texels per row of both
+uniform int u_bvhWidthLog2;        // texels per row of both: a power of two
 uniform int u_lightType;           // 0 directional, else a position (spot, point)
 uniform vec3 u_lightPosition;
 uniform vec3 u_lightDirection;     // from the light into the scene
@@ -17,14 +18,15 @@ uniform float u_lightRadius;       // world units (directional: tangent of the a
 uniform vec2 u_disk;               // this pass's point of the unit disk
 uniform int u_pass;
 uniform float u_epsilon;           // lifts ray origins off their surface along the normal
+uniform int u_nodeCount;           // where the walk ends
 uniform int u_maxSteps;            // nodes a ray may visit: the node count (each is visited once at most)
 out vec4 o_sum;
 
 bool g_gaveUp = false;  // a ray ran out of steps: counted as lit, and the pixel is flagged (A += 1024)
 
-const int kStack = 49;  // Bvh::kMaxDepth + 1
-
-vec4 texelAt(sampler2D s, int i) { return texelFetch(s, ivec2(i % u_bvhWidth, i / u_bvhWidth), 0); }
+vec4 texelAt(sampler2D s, int i) {
+  return texelFetch(s, ivec2(i & ((1 << u_bvhWidthLog2) - 1), i >> u_bvhWidthLog2), 0);
+}
 
 bool entersBox(vec3 lo, vec3 hi, vec3 origin, vec3 invDir, float tMax) {
   vec3 t0 = (lo - origin) * invDir, t1 = (hi - origin) * invDir;
@@ -52,29 +54,33 @@ bool hitsTriangle(int t, vec3 origin, vec3 dir, float tMax) {
   return hit > 0.0 && hit < tMax;
 }
 
-// Anything between origin and origin + dir * tMax.
+// Anything between origin and origin + dir * tMax: a walk of the nodes in depth-first order with
+// no stack. Entering a node's box leads to the next node (an inner node's first child); missing
+// it, or a leaf whose triangles are tested, leads past its subtree (skip). Indices only grow, so
+// no node is visited twice and the walk ends at u_nodeCount.
 bool occluded(vec3 origin, vec3 dir, float tMax) {
   vec3 invDir = 1.0 / dir;
-  int stack[kStack];
-  int top = 0;
-  stack[top++] = 0;
-  for (int steps = 0; top > 0; ++steps) {
+  int node = 0;
+  for (int steps = 0; node < u_nodeCount; ++steps) {
     if (steps >= u_maxSteps) {
       g_gaveUp = true;
       return false;
     }
-    int node = stack[--top];
     vec4 lo = texelAt(u_bvhNodes, 2 * node), hi = texelAt(u_bvhNodes, 2 * node + 1);
-    if (!entersBox(lo.xyz, hi.xyz, origin, invDir, tMax)) continue;
-    int first = int(floatBitsToUint(lo.w)), count = int(floatBitsToUint(hi.w));
-    if (count == 0) {
-      if (top + 2 > kStack) return false;  // deeper than the build allows: cannot happen
-      stack[top++] = first;
-      stack[top++] = first + 1;
+    uint link = floatBitsToUint(hi.w);
+    int skip = int(link & 0xFFFFFFu), count = int(link >> 24);
+    if (!entersBox(lo.xyz, hi.xyz, origin, invDir, tMax)) {
+      node = skip;
       continue;
     }
+    if (count == 0) {
+      ++node;
+      continue;
+    }
+    int first = int(floatBitsToUint(lo.w));
     for (int i = first; i < first + count; ++i)
       if (hitsTriangle(i, origin, dir, tMax)) return true;
+    node = skip;
   }
   return false;
 }
