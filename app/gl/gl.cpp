@@ -1,5 +1,7 @@
 #include "gl/gl.h"
 
+#include <cstring>
+
 namespace gl {
 
 bool loadFunctions(ShlGetProcAddress getProc, const char** missing) {
@@ -9,6 +11,14 @@ bool loadFunctions(ShlGetProcAddress getProc, const char** missing) {
   const bool usable = glGetString && glGenVertexArrays && glCreateShader && glGenQueries && glTexImage2D;
   if (!usable && missing) *missing = shlFirstMissingGL();
   return usable;
+}
+
+bool softwareRenderer() {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!renderer) return false;
+  for (const char* name : {"llvmpipe", "softpipe", "SwiftShader"})
+    if (std::strstr(renderer, name)) return true;
+  return false;
 }
 
 bool hasTessellation() {

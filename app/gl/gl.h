@@ -13,6 +13,9 @@
 
 namespace gl {
 
+// The current context draws in software (llvmpipe, softpipe, SwiftShader): fragment work costs
+// 10-50x a GPU's, so timers and the choice of truth tracer differ.
+bool softwareRenderer();
 
 // Tessellation stages (core in 4.0): a 3.3 context has none, so labs check before using them.
 bool hasTessellation();

@@ -13,9 +13,7 @@ static double nowMs() {
 }
 
 PassTimer::PassTimer() {
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
-  clock_ = software ? Clock::Finish : Clock::GpuQuery;
+  clock_ = softwareRenderer() ? Clock::Finish : Clock::GpuQuery;
   if (const char* env = std::getenv("SHADELAB_TIMER")) {
     if (std::strcmp(env, "query") == 0) clock_ = Clock::GpuQuery;
     if (std::strcmp(env, "finish") == 0) clock_ = Clock::Finish;

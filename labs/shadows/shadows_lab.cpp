@@ -68,6 +68,7 @@ LightSetup ShadowsLab::fillSetup() const {
 
 std::string ShadowsLab::setup(LabContext& ctx) {
   shaders_ = &ctx.shaders;
+  softwareRenderer_ = gl::softwareRenderer();
   programs_.assign(kSlotCount, ProgramSlot{});
   dummies_.create();
   emptyVao_ = gl::VertexArray::make();

@@ -27,7 +27,7 @@ enum class ShadowView {
 };
 enum class DepthFormat { D16, D24, D32F, Count };
 enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
-enum class TruthTracer { Embree, Gpu };       // who traces the ray-traced truth
+enum class TruthTracer { Auto, Embree, Gpu };  // who traces the ray-traced truth
 
 // One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).
 struct ShadowsParams {
@@ -89,7 +89,7 @@ struct ShadowsParams {
     bool showFrustum = false;
   } view;
   struct Truth {
-    TruthTracer tracer = TruthTracer::Embree;
+    TruthTracer tracer = TruthTracer::Auto;
   } truth;
   struct SceneSettings {
     int tessellation = 48;
@@ -178,9 +178,16 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.map.size(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   std::unique_ptr<GpuShadowTracer> tracer_;   // truth_tracer = gpu
+  bool softwareRenderer_ = true;              // the context draws in software (gl::softwareRenderer)
+  // truth_tracer = auto resolved: the GPU tracer unless the context draws in software.
+  bool tracesOnGpu() const {
+    return params.truth.tracer == TruthTracer::Gpu || (params.truth.tracer == TruthTracer::Auto && !softwareRenderer_);
+  }
   ProgramSlot traceProgram_;
+  // The GPU trace's area truth: its standard error (mean over its pixels) as of the last read-back,
+  // and the sample count it was read at.
   double standardError_ = 0.0;
-  int errorAt_ = -1;  // the sample count standardError_ was read at  // of the GPU trace's area truth, mean over its pixels, as of its last read-back
+  int errorAt_ = 0;
   int rayRevision_ = -1;
   InternalView internalView_ = InternalView::None;
 };

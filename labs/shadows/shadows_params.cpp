@@ -150,19 +150,21 @@ void visitView(ParamVisitor& v, ShadowsParams::View& view, MapFit fit) {
   v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, view.showFrustum);
 }
 
-constexpr std::string_view kTracers[] = {"embree", "gpu"};
+constexpr std::string_view kTracers[] = {"auto", "embree", "gpu"};
 
 void visitTruth(ParamVisitor& v, ShadowsParams::Truth& truth) {
-  v.enumParam({"truth_tracer", "Truth traced by", "", "embree: Intel Embree on the CPU, the whole truth at once; gpu: a "
-               "BVH walked by a fragment shader, one sample of the light's disk per pass, so the area truth converges "
-               "while the window keeps drawing (and where there is no Embree). Both trace the same rays."},
+  v.enumParam({"truth_tracer", "Truth traced by", "", "auto: the GPU tracer on a GPU, Embree on a software renderer "
+               "(llvmpipe, SwiftShader), where the fragment shader is the slower of the two; embree: Intel Embree on "
+               "the CPU, the whole truth at once; gpu: a BVH walked by a fragment shader, samples of the light's disk "
+               "pass by pass, so the area truth converges while the window keeps drawing (and where there is no "
+               "Embree). Both trace the same rays."},
                truth.tracer, kTracers);
 }
 
 void visitScene(ParamVisitor& v, ShadowsParams::SceneSettings& scene) {
   v.intParam({"tessellation", "Tessellation", "segments", "Segments of procedural spheres and tori."}, scene.tessellation, 3, 256);
-  v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e4); lengths in "
-                "radii and texels follow it."}, scene.scale, 1e-3f, 1e4f, true);
+  v.floatParam({"scene_scale", "Scene scale", "", "Uniform scale of the whole scene (1e-3 .. 1e6); lengths in "
+                "radii and texels follow it."}, scene.scale, 1e-3f, 1e6f, true);
   v.boolParam({"floor", "Floor under files", "", "A mesh from a file (dropped or --scene FILE) stands on a floor "
                "under its bounds, so its shadow has somewhere to fall; off: the file alone, self-shadowing only."},
               scene.floorUnderFiles);

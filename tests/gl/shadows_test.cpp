@@ -214,7 +214,7 @@ TEST(Shadows, TheGpuTracerAgreesWithEmbree) {
 
 // The split heuristic's and the hit test's hard cases, as a file on the lab's floor: one huge
 // triangle over two thousand tiny ones, zero-area triangles (a point, a line), two coplanar
-// overlapping quads; at scene scale 1 and 1e4.
+// overlapping quads; at scene scale 1, 1e4 and 1e6.
 TEST(Shadows, TheGpuTracerHoldsOnHugeTinyDegenerateAndCoplanarTriangles) {
   const auto file = test::testOutput("tracer_stress.obj");
   {
@@ -239,7 +239,7 @@ TEST(Shadows, TheGpuTracerHoldsOnHugeTinyDegenerateAndCoplanarTriangles) {
       tri({-1 + shift, 0.05f, -1}, {1 + shift, 0.05f, 1}, {-1 + shift, 0.05f, 1});
     }
   }
-  for (const char* scale : {"1", "10000"}) {
+  for (const char* scale : {"1", "10000", "1000000"}) {
     auto host = test::labHost("shadows", file.c_str(), {std::string("shadows.scene_scale=") + scale,
                                                        "shadows.scene_light=off", "shadows.light_elevation=60"});
     expectTracersAgree(*host, std::string("stress scene, scale ") + scale, false);
