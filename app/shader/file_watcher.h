@@ -8,6 +8,8 @@
 // watched from the moment it appears; the watched files already in it count as changed.
 // Events are debounced (an editor may write twice in a row); whether the content really changed
 // is decided later, by hash, by whoever reloads. This class never touches GL.
+// In the browser (file_watcher_web.cpp) there is no inotify: each poll compares the watched files'
+// time stamps and sizes in the page's file system, where the editor and dropped files write.
 #pragma once
 #include <chrono>
 #include <filesystem>
@@ -38,6 +40,7 @@ class FileWatcher {
   std::set<std::filesystem::path> missing_;             // directories of watched files, not there yet
   std::set<std::filesystem::path> files_;               // what we report on
   std::map<std::filesystem::path, std::chrono::steady_clock::time_point> pending_;
+  std::map<std::filesystem::path, std::pair<std::filesystem::file_time_type, uintmax_t>> stamps_;  // polled (web)
 };
 
 }  // namespace shadelab

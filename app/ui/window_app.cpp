@@ -6,6 +6,7 @@
 //   4. draw the UI into the window and swap
 #include "ui/window_app.h"
 
+#include <memory>
 #include <optional>
 
 #include "host/soak.h"
@@ -26,6 +27,7 @@
 #include "cli/session.h"
 #include "scene/scene_catalog.h"
 #include "ui/panels.h"
+#include "ui/platform.h"
 #include "ui/window_files.h"
 
 namespace shadelab {
@@ -280,6 +282,200 @@ void leftPanel(AppState& app) {
   }
 }
 
+// One window from its first frame to its last: what the frames share. It lives on the heap, since
+// in the browser the page calls drawFrame() long after runWindow has returned.
+class WindowSession {
+ public:
+  WindowSession(GLFWwindow* window, const Options& options, const WindowOptions& wopt);
+  // One frame: events, the lab's frame, the UI; false once the window is to close.
+  bool drawFrame();
+  int exitCode = 0;
+
+ private:
+  static ShaderSearchPath shaderPathFor(const Options& options, const SoakDriver* soak) {
+    ShaderSearchPath path = shaderSearchPath(options);
+    if (soak) path.prepend(soak->scratch());
+    return path;
+  }
+
+  GLFWwindow* window;
+  const WindowOptions wopt;
+  AppState app;
+  // --soak: random use of this window, as `shadelab soak` does headless
+  std::unique_ptr<SoakDriver> soak;
+  LabHost host;
+  Measurer measurer;
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  double uiMs = 0;
+  const std::vector<std::string> labs = labIds();
+  int frame = 0;
+};
+
+WindowSession::WindowSession(GLFWwindow* window, const Options& options, const WindowOptions& wopt)
+    : window(window),
+      wopt(wopt),
+      soak(wopt.soakMinutes > 0 ? std::make_unique<SoakDriver>(SoakDriver::makeScratch(), wopt.soakSeed) : nullptr),
+      host(shaderPathFor(options, soak.get())),
+      measurer(host) {
+  host.jobs().setLowPriority(true);  // the window's frames come first
+  measurer.onMeasured = [](const Measurement& m) {
+    std::printf("measured %s (%s), truth: %s:", m.lab.c_str(), m.label.c_str(), m.truth.c_str());
+    for (auto& [k, v] : m.values) std::printf(" %s=%s", k.c_str(), formatNumber(v).c_str());
+    std::printf("\n");
+    std::fflush(stdout);
+  };
+  app.host = &host;
+  app.measurer = &measurer;
+  app.measure.autoMeasure = wopt.autoMeasure;
+  app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
+  app.presenting = wopt.present;
+  if (wopt.uiScale > 0) {
+    app.uiScale = wopt.uiScale;
+  } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen
+    float sx = 1.0f, sy = 1.0f;
+    glfwGetWindowContentScale(window, &sx, &sy);
+    app.uiScale = std::clamp(std::max(sx, sy), 0.5f, 4.0f);
+  }
+  glfwSetWindowUserPointer(window, &app);
+  glfwSetDropCallback(window, onDrop);
+  if (!options.preset.empty()) app.message = loadPreset(host, options.preset);
+  if (!options.lab.empty()) app.message = host.selectLab(options.lab);
+  if (!options.scene.empty()) app.message = host.selectScene(options.scene);
+  for (auto& s : options.sets)
+    if (auto e = host.set(s); !e.empty()) app.message = e;
+  for (auto& a : options.actions)
+    if (auto e = host.runAction(a); !e.empty()) app.message = e;
+  if (auto e = applyCamera(host, options.camera); !e.empty()) app.message = e;
+}
+
+bool WindowSession::drawFrame() {
+  if (glfwWindowShouldClose(window)) return false;
+  // 1. events
+  glfwPollEvents();
+  handleDrops(app);
+  if (wopt.cycleLabs && frame % 3 == 0) app.message = host.selectLab(labs[size_t(frame / 3) % labs.size()]);
+  const auto now = std::chrono::steady_clock::now();
+  const float dt = std::chrono::duration<float>(now - last).count();
+  last = now;
+
+  // 2. the lab's frame (at the viewport size the last layout gave it)
+  const float time = float(glfwGetTime());
+  const auto& passes = host.renderFrame(app.viewport, time, dt);
+  if (soak) {
+    soak->afterFrame(host);
+    if (frame % 2 == 0) soak->step(host);
+    if (frame % 97 == 0) app.measure.requested = true;  // Measure pressed now and then; later steps supersede it
+    if (soak->seconds() >= wopt.soakMinutes * 60.0) {
+      const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
+      const SoakDriver::Verdict verdict = soak->finish(csv, wopt.soakMinutes >= 10.0);
+      std::printf("%s", verdict.report.c_str());
+      exitCode = verdict.passed ? 0 : 1;
+      glfwSetWindowShouldClose(window, GLFW_TRUE);
+    }
+  }
+  double gpu = 0;
+  for (auto& p : passes) gpu += p.gpuMs;
+  app.history.push(dt * 1000.0f, float(gpu));
+  app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
+  if (frame > 2) (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
+  if (app.screenshotRequested) {
+    app.message = saveScreenshot(host, app.viewport);
+    app.screenshotRequested = false;
+  }
+
+  // 3. UI layout
+  const auto uiStart = std::chrono::steady_clock::now();
+  applyUiScale(app);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  int fbw = 0, fbh = 0;
+  glfwGetFramebufferSize(window, &fbw, &fbh);
+  if (app.presenting) {
+    // The viewport fills the window; the overlay carries what the class reads.
+    ImGui::SetNextWindowPos({0, 0});
+    ImGui::SetNextWindowSize({float(fbw), float(fbh)});
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+    ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar);
+    viewportImage(app);
+    ImGui::End();
+    ImGui::PopStyleVar();
+    presentationOverlay(app, passes);
+  } else {
+    // Side panels keep their width and are resized by their inner edge, each at most 35 % of
+    // the window, so the viewport always has 30 % or more; it takes the rest.
+    const float maxW = 0.35f * float(fbw), minW = std::min(220 * app.uiScale, maxW);
+    app.leftW = std::clamp(app.leftW, minW, maxW);
+    app.rightW = std::clamp(app.rightW, minW, maxW);
+    ImGui::SetNextWindowPos({0, 0});
+    ImGui::SetNextWindowSize({app.leftW, float(fbh)});
+    ImGui::SetNextWindowSizeConstraints({minW, float(fbh)}, {maxW, float(fbh)});
+    ImGui::Begin("Lab", nullptr, kSidePanel);
+    leftPanel(app);
+    app.leftW = ImGui::GetWindowWidth();
+    ImGui::End();
+
+    ImGui::SetNextWindowPos({float(fbw) - app.rightW, 0});
+    ImGui::SetNextWindowSize({app.rightW, float(fbh)});
+    ImGui::SetNextWindowSizeConstraints({minW, float(fbh)}, {maxW, float(fbh)});
+    ImGui::Begin("Inspect", nullptr, kSidePanel);
+    if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
+    if (ImGui::CollapsingHeader("Error against the truth", ImGuiTreeNodeFlags_DefaultOpen)) {
+      const MeasureRequest now{app.costs.signature,
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(),
+                               app.costs.costs(), app.viewport, time};
+      drawMeasurePanel(host, measurer, app.measure, now, app.message);
+    }
+    drawLabPanels(host.lab());
+    if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
+    if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
+    app.rightW = ImGui::GetWindowWidth();
+    ImGui::End();
+
+    const float viewW = std::max(float(fbw) - app.leftW - app.rightW, 16.0f);
+    ImGui::SetNextWindowPos({app.leftW, 0});
+    ImGui::SetNextWindowSize({viewW, float(fbh)});
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
+    ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
+    viewportImage(app);
+    ImGui::End();
+    ImGui::PopStyleVar();
+
+    // Running jobs over the bottom of the viewport: progress, what they do, Cancel.
+    if (host.jobs().busy()) {
+      ImGui::SetNextWindowPos({app.leftW + 10, float(fbh) - 10}, ImGuiCond_Always, {0, 1});
+      ImGui::SetNextWindowSize({viewW - 20, 0});
+      ImGui::SetNextWindowBgAlpha(0.85f);
+      ImGui::Begin("Jobs", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+      drawJobs(host.jobs());
+      ImGui::End();
+    }
+  }
+
+  // 4. draw the UI
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fbw, fbh);
+  glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uiStart).count();
+
+  if (wopt.exitAfterFrames > 0 && frame + 1 >= wopt.exitAfterFrames) {
+    app.responsiveness.report();
+    if (!wopt.screenshot.empty())
+      if (auto err = saveWindowImage(wopt.screenshot, {fbw, fbh}); !err.empty()) {
+        std::fprintf(stderr, "shadelab: %s\n", err.c_str());
+        exitCode = 1;
+      }
+    glfwSetWindowShouldClose(window, GLFW_TRUE);
+  }
+  glfwSwapBuffers(window);
+  ++frame;
+  return !glfwWindowShouldClose(window);
+}
+
 }  // namespace
 
 int runWindow(const Options& options, const WindowOptions& wopt) {
@@ -311,177 +507,12 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   ImGui::StyleColorsDark();
   glfwSetKeyCallback(window, onKey);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ImGui_ImplOpenGL3_Init(imguiGlslVersion());
 
-  int exitCode = 0;
-  {
-    AppState app;
-    ShaderSearchPath shaderPath = shaderSearchPath(options);
-    std::optional<SoakDriver> soak;  // --soak: random use of this window, as `shadelab soak` does headless
-    if (wopt.soakMinutes > 0) {
-      soak.emplace(SoakDriver::makeScratch(), wopt.soakSeed);
-      shaderPath.prepend(soak->scratch());
-    }
-    LabHost host(shaderPath);
-    host.jobs().setLowPriority(true);  // the window's frames come first
-    Measurer measurer(host);
-    measurer.onMeasured = [](const Measurement& m) {
-      std::printf("measured %s (%s), truth: %s:", m.lab.c_str(), m.label.c_str(), m.truth.c_str());
-      for (auto& [k, v] : m.values) std::printf(" %s=%s", k.c_str(), formatNumber(v).c_str());
-      std::printf("\n");
-      std::fflush(stdout);
-    };
-    app.host = &host;
-    app.measurer = &measurer;
-    app.measure.autoMeasure = wopt.autoMeasure;
-    app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
-    app.presenting = wopt.present;
-    if (wopt.uiScale > 0) {
-      app.uiScale = wopt.uiScale;
-    } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen
-      float sx = 1.0f, sy = 1.0f;
-      glfwGetWindowContentScale(window, &sx, &sy);
-      app.uiScale = std::clamp(std::max(sx, sy), 0.5f, 4.0f);
-    }
-    glfwSetWindowUserPointer(window, &app);
-    glfwSetDropCallback(window, onDrop);
-    if (!options.preset.empty()) app.message = loadPreset(host, options.preset);
-    if (!options.lab.empty()) app.message = host.selectLab(options.lab);
-    if (!options.scene.empty()) app.message = host.selectScene(options.scene);
-    for (auto& s : options.sets)
-      if (auto e = host.set(s); !e.empty()) app.message = e;
-    for (auto& a : options.actions)
-      if (auto e = host.runAction(a); !e.empty()) app.message = e;
-    if (auto e = applyCamera(host, options.camera); !e.empty()) app.message = e;
-
-    auto last = std::chrono::steady_clock::now();
-    double uiMs = 0;
-    const auto labs = labIds();
-    for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
-      // 1. events
-      glfwPollEvents();
-      handleDrops(app);
-      if (wopt.cycleLabs && frame % 3 == 0) app.message = host.selectLab(labs[size_t(frame / 3) % labs.size()]);
-      const auto now = std::chrono::steady_clock::now();
-      const float dt = std::chrono::duration<float>(now - last).count();
-      last = now;
-
-      // 2. the lab's frame (at the viewport size the last layout gave it)
-      const float time = float(glfwGetTime());
-      const auto& passes = host.renderFrame(app.viewport, time, dt);
-      if (soak) {
-        soak->afterFrame(host);
-        if (frame % 2 == 0) soak->step(host);
-        if (frame % 97 == 0) app.measure.requested = true;  // Measure pressed now and then; later steps supersede it
-        if (soak->seconds() >= wopt.soakMinutes * 60.0) {
-          const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
-          const SoakDriver::Verdict verdict = soak->finish(csv, wopt.soakMinutes >= 10.0);
-          std::printf("%s", verdict.report.c_str());
-          exitCode = verdict.passed ? 0 : 1;
-          glfwSetWindowShouldClose(window, GLFW_TRUE);
-        }
-      }
-      double gpu = 0;
-      for (auto& p : passes) gpu += p.gpuMs;
-      app.history.push(dt * 1000.0f, float(gpu));
-      app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
-      if (frame > 2) (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
-      if (app.screenshotRequested) {
-        app.message = saveScreenshot(host, app.viewport);
-        app.screenshotRequested = false;
-      }
-
-      // 3. UI layout
-      const auto uiStart = std::chrono::steady_clock::now();
-      applyUiScale(app);
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      ImGui::NewFrame();
-      int fbw = 0, fbh = 0;
-      glfwGetFramebufferSize(window, &fbw, &fbh);
-      if (app.presenting) {
-        // The viewport fills the window; the overlay carries what the class reads.
-        ImGui::SetNextWindowPos({0, 0});
-        ImGui::SetNextWindowSize({float(fbw), float(fbh)});
-        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-        ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar);
-        viewportImage(app);
-        ImGui::End();
-        ImGui::PopStyleVar();
-        presentationOverlay(app, passes);
-      } else {
-        // Side panels keep their width and are resized by their inner edge, each at most 35 % of
-        // the window, so the viewport always has 30 % or more; it takes the rest.
-        const float maxW = 0.35f * float(fbw), minW = std::min(220 * app.uiScale, maxW);
-        app.leftW = std::clamp(app.leftW, minW, maxW);
-        app.rightW = std::clamp(app.rightW, minW, maxW);
-        ImGui::SetNextWindowPos({0, 0});
-        ImGui::SetNextWindowSize({app.leftW, float(fbh)});
-        ImGui::SetNextWindowSizeConstraints({minW, float(fbh)}, {maxW, float(fbh)});
-        ImGui::Begin("Lab", nullptr, kSidePanel);
-        leftPanel(app);
-        app.leftW = ImGui::GetWindowWidth();
-        ImGui::End();
-
-        ImGui::SetNextWindowPos({float(fbw) - app.rightW, 0});
-        ImGui::SetNextWindowSize({app.rightW, float(fbh)});
-        ImGui::SetNextWindowSizeConstraints({minW, float(fbh)}, {maxW, float(fbh)});
-        ImGui::Begin("Inspect", nullptr, kSidePanel);
-        if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
-        if (ImGui::CollapsingHeader("Error against the truth", ImGuiTreeNodeFlags_DefaultOpen)) {
-          const MeasureRequest now{app.costs.signature,
-                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(),
-                                   app.costs.costs(), app.viewport, time};
-          drawMeasurePanel(host, measurer, app.measure, now, app.message);
-        }
-        drawLabPanels(host.lab());
-        if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
-        if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
-        app.rightW = ImGui::GetWindowWidth();
-        ImGui::End();
-
-        const float viewW = std::max(float(fbw) - app.leftW - app.rightW, 16.0f);
-        ImGui::SetNextWindowPos({app.leftW, 0});
-        ImGui::SetNextWindowSize({viewW, float(fbh)});
-        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-        ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
-        viewportImage(app);
-        ImGui::End();
-        ImGui::PopStyleVar();
-
-        // Running jobs over the bottom of the viewport: progress, what they do, Cancel.
-        if (host.jobs().busy()) {
-          ImGui::SetNextWindowPos({app.leftW + 10, float(fbh) - 10}, ImGuiCond_Always, {0, 1});
-          ImGui::SetNextWindowSize({viewW - 20, 0});
-          ImGui::SetNextWindowBgAlpha(0.85f);
-          ImGui::Begin("Jobs", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                            ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-          drawJobs(host.jobs());
-          ImGui::End();
-        }
-      }
-
-      // 4. draw the UI
-      ImGui::Render();
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glViewport(0, 0, fbw, fbh);
-      glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-      glClear(GL_COLOR_BUFFER_BIT);
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uiStart).count();
-
-      if (wopt.exitAfterFrames > 0 && frame + 1 >= wopt.exitAfterFrames) {
-        app.responsiveness.report();
-        if (!wopt.screenshot.empty())
-          if (auto err = saveWindowImage(wopt.screenshot, {fbw, fbh}); !err.empty()) {
-            std::fprintf(stderr, "shadelab: %s\n", err.c_str());
-            exitCode = 1;
-          }
-        glfwSetWindowShouldClose(window, GLFW_TRUE);
-      }
-      glfwSwapBuffers(window);
-    }
-  }
+  auto session = std::make_shared<WindowSession>(window, options, wopt);
+  runMainLoop([session] { return session->drawFrame(); });
+  const int exitCode = session->exitCode;
+  session.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

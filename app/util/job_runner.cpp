@@ -1,13 +1,11 @@
 #include "util/job_runner.h"
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <exception>
 #include <utility>
+
+#include "util/thread_priority.h"
 
 namespace shadelab {
 
@@ -93,8 +91,7 @@ void JobRunner::cancelAll() {
 }
 
 void JobRunner::workerLoop() {
-  const id_t self = id_t(syscall(SYS_gettid));
-  const int normal = getpriority(PRIO_PROCESS, self);
+  const ThreadPriority priority;
   for (;;) {
     std::shared_ptr<Job> job;
     {
@@ -105,8 +102,7 @@ void JobRunner::workerLoop() {
       queue_.pop_front();
       job->running = true;
     }
-    // For this thread and every thread the job starts (Linux: nice is per thread, inherited).
-    setpriority(PRIO_PROCESS, self, lowPriority_ ? normal + 10 : normal);
+    priority.lower(lowPriority_);  // for this thread and every thread the job starts
     std::function<void()> finish;
     std::string error;
     try {

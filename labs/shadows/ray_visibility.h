@@ -1,4 +1,5 @@
-// Ground-truth visibility by ray tracing the same triangles with Embree: no depth map, no bias,
+// Ground-truth visibility by ray tracing the same triangles (Embree on the desktop, the GPU
+// tracer's BVH on the CPU in the browser: ray_scene_desktop.cpp, ray_scene_web.cpp): no depth map, no bias,
 // no resolution. A hard light gets one shadow ray per pixel; an area light (disk or cone of the
 // light's radius) gets n x n stratified rays, and visibility is the fraction that get through.
 #pragma once
