@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Build ShadeLab and run the whole test suite with ctest: unit, GL through OSMesa, CLI, grading,
-# the real window under Xvfb, and the fuzz targets over their kept inputs plus 20 s of fresh
-# fuzzing each (label fuzz; clang's build in build-fuzz/). Any arguments go to ctest, e.g.
+# the real window under Xvfb, the page in headless Chromium (label web; emscripten's build in
+# build-web/), and the fuzz targets over their kept inputs plus 20 s of fresh fuzzing each (label
+# fuzz; clang's build in build-fuzz/). Any arguments go to ctest, e.g.
 #   ./test.sh -L unit
 #   ./test.sh --sanitize        the same suite built with AddressSanitizer + UBSan, in build-asan/
 set -euo pipefail
@@ -30,4 +31,5 @@ fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build
 tools/fuzz.sh --build
+./web.sh --build  # the page, for the web tests (label web)
 ctest --test-dir build --output-on-failure -j2 "$@"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ShadeLab needs, if any are missing. Nothing else is downloaded.
-# usage: tools/install_deps.sh [build|test|fuzz|data]
+# usage: tools/install_deps.sh [build|test|fuzz|data|web]
 set -euo pipefail
 build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
@@ -8,13 +8,17 @@ build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 test_pkgs=(xvfb xauth xdotool)
 fuzz_pkgs=(clang-14 libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes for clang
 data_pkgs=(curl ca-certificates)          # tools/get_data.sh
+# ./web.sh: emscripten, dpkg-dev for Dear ImGui's source package, and what the page's tests drive it with
+web_pkgs=(emscripten dpkg-dev ninja-build python3 libglm-dev libtinygltf-dev libtinyobjloader-dev libstb-dev
+  nlohmann-json3-dev libeigen3-dev libflann-dev liblz4-dev libgl-dev chromium glslang-tools)
 want=("${build_pkgs[@]}")
 case "${1:-build}" in
   build) ;;
   test) want+=("${test_pkgs[@]}" "${fuzz_pkgs[@]}" "${data_pkgs[@]}") ;;
   data) want=("${data_pkgs[@]}") ;;
   fuzz) want+=("${fuzz_pkgs[@]}") ;;
-  *) echo "install_deps: unknown set '$1' (valid: build, test, fuzz, data)" >&2; exit 2 ;;
+  web) want=("${web_pkgs[@]}") ;;
+  *) echo "install_deps: unknown set '$1' (valid: build, test, fuzz, data, web)" >&2; exit 2 ;;
 esac
 
 missing=()

@@ -21,6 +21,11 @@ bool softwareRenderer() {
   return false;
 }
 
+bool hasGeometryShaders() {
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return version && !std::strstr(version, "OpenGL ES") && !std::strstr(version, "WebGL");
+}
+
 bool hasTessellation() {
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);

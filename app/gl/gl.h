@@ -17,6 +17,10 @@ namespace gl {
 // 10-50x a GPU's, so timers and the choice of truth tracer differ.
 bool softwareRenderer();
 
+// Geometry shaders (core in 3.2): OpenGL ES 3.0 and WebGL2 have none, so a lab draws what it would
+// draw with one in several passes, or says the option needs one.
+bool hasGeometryShaders();
+
 // Tessellation stages (core in 4.0): a 3.3 context has none, so labs check before using them.
 bool hasTessellation();
 

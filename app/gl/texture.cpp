@@ -29,6 +29,28 @@ float maxAnisotropy() {
   return limit;
 }
 
+TransferFormat transferFormatFor(GLenum internal) {
+  switch (internal) {
+    case GL_RGBA16F: return {GL_RGBA, GL_HALF_FLOAT};
+    case GL_RGBA32F: return {GL_RGBA, GL_FLOAT};
+    case GL_RGB16F: return {GL_RGB, GL_HALF_FLOAT};
+    case GL_RGB32F: return {GL_RGB, GL_FLOAT};
+    case GL_RG16F: return {GL_RG, GL_HALF_FLOAT};
+    case GL_RG32F: return {GL_RG, GL_FLOAT};
+    case GL_R16F: return {GL_RED, GL_HALF_FLOAT};
+    case GL_R32F: return {GL_RED, GL_FLOAT};
+    case GL_R8: return {GL_RED, GL_UNSIGNED_BYTE};
+    case GL_RG8: return {GL_RG, GL_UNSIGNED_BYTE};
+    case GL_RGB8: case GL_SRGB8: return {GL_RGB, GL_UNSIGNED_BYTE};
+    case GL_DEPTH_COMPONENT16: return {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
+    case GL_DEPTH_COMPONENT24: return {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
+    case GL_DEPTH_COMPONENT32F: return {GL_DEPTH_COMPONENT, GL_FLOAT};
+    case GL_DEPTH24_STENCIL8: return {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+    case GL_DEPTH32F_STENCIL8: return {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
+    default: return {GL_RGBA, GL_UNSIGNED_BYTE};  // RGBA8, SRGB8_ALPHA8
+  }
+}
+
 Texture2D Texture2D::allocate(glm::ivec2 size, GLenum internalFormat, int levels) {
   Texture2D t;
   t.name_ = TextureName::make();
@@ -36,9 +58,10 @@ Texture2D Texture2D::allocate(glm::ivec2 size, GLenum internalFormat, int levels
   t.levels_ = levels > 0 ? levels : fullMipChain(size);
   glBindTexture(GL_TEXTURE_2D, t.id());
   // Every level, as GL 3.3 allocates them (glTexStorage2D is 4.2); MAX_LEVEL marks the chain complete.
+  const TransferFormat transfer = transferFormatFor(internalFormat);
   for (int level = 0; level < t.levels_; ++level) {
     const glm::ivec2 s = glm::max(size >> level, glm::ivec2(1));
-    glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat), s.x, s.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, level, GLint(internalFormat), s.x, s.y, 0, transfer.format, transfer.type, nullptr);
   }
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, t.levels_ - 1);
   SamplerState s;

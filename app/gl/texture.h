@@ -21,6 +21,14 @@ struct SamplerState {
 // The driver's anisotropy limit (16 on llvmpipe), or 1 when it has no anisotropic filtering.
 float maxAnisotropy();
 
+// The pixel format and type to name when allocating `internalFormat` with no data: desktop GL takes
+// any, OpenGL ES 3.0 and WebGL2 only the pairs of their format table (RGBA16F: RGBA, HALF_FLOAT;
+// DEPTH_COMPONENT24: DEPTH_COMPONENT, UNSIGNED_INT; ...). Every allocation goes through this.
+struct TransferFormat {
+  GLenum format, type;
+};
+TransferFormat transferFormatFor(GLenum internalFormat);
+
 class Texture2D {
  public:
   Texture2D() = default;

@@ -1,8 +1,5 @@
 #include "host/soak.h"
 
-#include <malloc.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,6 +13,7 @@
 #include "scene/scene_catalog.h"
 #include "util/format.h"
 #include "util/output_files.h"
+#include "util/process_memory.h"
 #include "util/read_file.h"
 
 namespace fs = std::filesystem;
@@ -25,13 +23,6 @@ namespace {
 
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-double residentMb() {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return double(resident) * double(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
 }
 
 // Meshes a user might drop: the project's test files, and the shared data where it exists.
@@ -174,10 +165,9 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
     countAfterSwitch_ = false;
     LabEntry entry{seconds(), 0.0, 0.0, {}};
     for (int k = 0; k < int(gl::Kind::Count); ++k) entry.glObjects.push_back(gl::liveObjects(gl::Kind(k)));
-    ::malloc_trim(0);
+    returnFreePages();
     entry.residentMb = residentMb();
-    const struct mallinfo2 heap = ::mallinfo2();
-    entry.heapMb = double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
+    entry.heapMb = heapInUseMb();
     entries_[std::string(host.lab().id())].push_back(std::move(entry));
   }
   const double t = seconds();

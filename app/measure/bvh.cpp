@@ -1,7 +1,6 @@
 #include "measure/bvh.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -212,8 +211,8 @@ void Bvh::appendThreaded(uint32_t index, std::vector<glm::vec4>& out) const {
   if (node.count > 0) {  // a leaf's skip is the next node, whatever follows its subtree
     for (uint32_t first = node.first; first < node.first + node.count; first += 255) {
       const uint32_t count = std::min(255u, node.first + node.count - first);
-      out.emplace_back(node.min, std::bit_cast<float>(first));
-      out.emplace_back(node.max, std::bit_cast<float>((here() + 1) | (count << 24)));
+      out.emplace_back(node.min, glm::uintBitsToFloat(first));
+      out.emplace_back(node.max, glm::uintBitsToFloat((here() + 1) | (count << 24)));
     }
     return;
   }
@@ -222,7 +221,7 @@ void Bvh::appendThreaded(uint32_t index, std::vector<glm::vec4>& out) const {
   out.emplace_back(node.max, 0.0f);
   appendThreaded(node.first, out);
   appendThreaded(node.first + 1, out);
-  out[at + 1].w = std::bit_cast<float>(here());  // count 0: an inner node
+  out[at + 1].w = glm::uintBitsToFloat(here());  // count 0: an inner node
 }
 
 std::vector<glm::vec4> Bvh::nodeTexels() const {
@@ -237,7 +236,7 @@ std::vector<glm::vec4> Bvh::triangleTexels() const {
   std::vector<glm::vec4> out;
   out.reserve(3 * triangles_.size());
   for (size_t i = 0; i < triangles_.size(); ++i) {
-    out.emplace_back(triangles_[i].a, std::bit_cast<float>(originalIndex_[i]));
+    out.emplace_back(triangles_[i].a, glm::uintBitsToFloat(originalIndex_[i]));
     out.emplace_back(triangles_[i].b, 0.0f);
     out.emplace_back(triangles_[i].c, 0.0f);
   }

@@ -36,6 +36,8 @@ class FileWatcher {
   int fd_ = -1;
   std::chrono::milliseconds debounce_;
   bool addWatch(const std::filesystem::path& dir);
+  // The pending files whose last change is older than the debounce interval, taken off the list.
+  std::vector<std::filesystem::path> takeSettled(std::chrono::steady_clock::time_point now);
   std::map<int, std::filesystem::path> dirs_;           // inotify wd -> directory
   std::set<std::filesystem::path> missing_;             // directories of watched files, not there yet
   std::set<std::filesystem::path> files_;               // what we report on

@@ -38,16 +38,7 @@ std::vector<fs::path> FileWatcher::poll() {
       pending_[file] = now;
     }
   }
-  std::vector<fs::path> ready;
-  for (auto it = pending_.begin(); it != pending_.end();) {
-    if (now - it->second >= debounce_) {
-      ready.push_back(it->first);
-      it = pending_.erase(it);
-    } else {
-      ++it;
-    }
-  }
-  return ready;
+  return takeSettled(now);
 }
 
 }  // namespace shadelab

@@ -1,5 +1,9 @@
 #include "shader/preprocessor.h"
 
+#include <atomic>
+#include <cctype>
+#include <regex>
+
 #include "util/contained_path.h"
 #include "util/read_file.h"
 
@@ -147,6 +151,74 @@ struct Expander {
 
 }  // namespace
 
+namespace {
+std::atomic<GlslDialect> g_dialect{GlslDialect::Desktop};
+}  // namespace
+
+void setGlslDialect(GlslDialect dialect) { g_dialect = dialect; }
+GlslDialect glslDialect() { return g_dialect; }
+
+std::string versionPreamble(const std::string& fileVersionLine, GlslDialect dialect) {
+  if (dialect == GlslDialect::Desktop) return fileVersionLine + "\n";
+  std::string out = "#version 300 es\n";
+  for (const char* type : {"float", "int", "sampler2D", "sampler3D", "samplerCube", "sampler2DArray", "sampler2DShadow",
+                           "samplerCubeShadow", "sampler2DArrayShadow", "isampler2D", "usampler2D"})
+    out += std::string("precision highp ") + type + ";\n";
+  return out + "#define SHADELAB_ES 1\n";
+}
+
+std::string flattenInterfaceBlocks(const std::string& source) {
+  static const std::regex open(R"(^\s*(in|out)\s+([A-Za-z_]\w*)\s*\{\s*(//.*)?$)");
+  static const std::regex close(R"(^\s*\}\s*([A-Za-z_]\w*)\s*(\[\s*\d*\s*\])?\s*;.*$)");
+  static const std::regex member(R"(^(\s*)((?:[A-Za-z_]\w*\s+)*?)([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*(\[[^\]]*\])?\s*;(.*)$)");
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(source);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  std::vector<std::pair<std::string, std::string>> renames;  // "instance." -> "Block_"
+  for (size_t i = 0; i < lines.size(); ++i) {
+    std::smatch m;
+    if (!std::regex_match(lines[i], m, open)) continue;
+    const std::string storage = m[1];
+    size_t j = i + 1;
+    std::smatch c;
+    while (j < lines.size() && !std::regex_match(lines[j], c, close)) ++j;
+    if (j == lines.size()) break;  // not closed: leave it for the compiler to report
+    renames.push_back({std::string(c[1]) + ".", "io_"});
+    lines[i] = "";
+    lines[j] = "";
+    for (size_t k = i + 1; k < j; ++k) {
+      std::smatch v;
+      const std::string& line = lines[k];
+      const size_t first = line.find_first_not_of(" \t");
+      if (first == std::string::npos || line[first] == '#' || line.compare(first, 2, "//") == 0) continue;
+      if (std::regex_match(line, open)) lines[k] = "";  // another head for the same members (#ifdef ... #else)
+      else if (std::regex_match(line, v, member))
+        lines[k] = std::string(v[1]) + std::string(v[2]) + storage + " " + std::string(v[3]) + " io_" +
+                   std::string(v[4]) + std::string(v[5]) + ";" + std::string(v[6]);
+    }
+    i = j;
+  }
+  std::string out;
+  for (auto& line : lines) {
+    std::string l = line;
+    for (auto& [from, to] : renames) {
+      for (size_t at = 0; (at = l.find(from, at)) != std::string::npos;) {
+        const bool wordStart = at == 0 || !(std::isalnum(static_cast<unsigned char>(l[at - 1])) || l[at - 1] == '_');
+        if (wordStart) {
+          l.replace(at, from.size(), to);
+          at += to.size();
+        } else {
+          at += from.size();
+        }
+      }
+    }
+    out += l + "\n";
+  }
+  return out;
+}
+
 PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
                                     const Defines& defines) {
   PreprocessedSource out;
@@ -172,11 +244,12 @@ PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::str
       version = line;
       break;
     }
-  out.text = version + "\n";
+  out.text = versionPreamble(version, glslDialect());
   for (auto& [name, value] : defines) out.text += "#define " + name + " " + value + "\n";
   out.text += "#line 1 0\n";
   Expander ex{path, out, {relPath}};
   if (!ex.expand(relPath, text, 0, true)) out.text.clear();
+  else if (glslDialect() == GlslDialect::Es300) out.text = flattenInterfaceBlocks(out.text);
   return out;
 }
 

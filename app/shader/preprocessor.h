@@ -75,6 +75,23 @@ struct PreprocessedSource {
 // The one-line rule a refused #include is told.
 inline constexpr const char* kSandboxRule = "#include may only name files inside the shader folders";
 
+// Which GLSL the files are compiled as. The files are written in desktop GLSL (#version 330 core
+// or 410 core); for OpenGL ES 3.0 / WebGL2 the version line becomes "#version 300 es" with highp
+// precision for floats, ints and every sampler type, and SHADELAB_ES is defined (1) for the few
+// lines that differ. One dialect per process: the context's.
+enum class GlslDialect { Desktop, Es300 };
+void setGlslDialect(GlslDialect dialect);
+GlslDialect glslDialect();
+// The lines that open a shader in `dialect` in place of the file's own #version line.
+std::string versionPreamble(const std::string& fileVersionLine, GlslDialect dialect);
+
+// GLSL ES 3.00 has no in/out interface blocks. Each `in|out Block { members } instance;` becomes one
+// varying per member named io_member, and `instance.member` becomes io_member: an ES program has a
+// vertex and a fragment stage only, whose outputs and inputs then meet by the members' names.
+// Heads for the same members under #ifdef/#else are all taken out; lines keep their numbers (the
+// heads and the closing line are left empty) and preprocessor lines inside the block stay.
+std::string flattenInterfaceBlocks(const std::string& source);
+
 PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
                                     const Defines& defines);
 

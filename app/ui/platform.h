@@ -3,6 +3,10 @@
 #pragma once
 #include <functional>
 
+#include "context/load_gl.h"
+
+struct GLFWwindow;
+
 namespace shadelab {
 
 // Calls `frame` once a display refresh until it returns false. The desktop loops here (frames
@@ -10,7 +14,21 @@ namespace shadelab {
 // so `frame` must own everything it uses.
 void runMainLoop(std::function<bool()> frame);
 
+// Where the GL loader finds each function of the window's context: GLFW's on the desktop; in the
+// page, WebGL2's own functions before WebGL1's extensions of the same name (glGenQueries is core in
+// WebGL2, not EXT_disjoint_timer_query's).
+ShlGetProcAddress glProcLoader();
+
+// After the window's context is current: the browser's WebGL2 extensions the labs draw with (float
+// render targets and their blending, float filtering, anisotropy, timer queries) are switched on;
+// nothing to do on the desktop.
+void enableContextFeatures();
+
 // The #version line Dear ImGui's OpenGL backend writes into its shaders.
 const char* imguiGlslVersion();
+
+// The monitor's content scale (2 on a high-DPI screen), for text as large as on any other; 1 in the
+// page, whose canvas is laid out in CSS pixels.
+float contentScale(GLFWwindow* window);
 
 }  // namespace shadelab

@@ -1,5 +1,9 @@
 #include "ui/platform.h"
 
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+
 namespace shadelab {
 
 void runMainLoop(std::function<bool()> frame) {
@@ -7,6 +11,16 @@ void runMainLoop(std::function<bool()> frame) {
   }
 }
 
+ShlGetProcAddress glProcLoader() { return reinterpret_cast<ShlGetProcAddress>(glfwGetProcAddress); }
+
+void enableContextFeatures() {}
+
 const char* imguiGlslVersion() { return "#version 330 core"; }
+
+float contentScale(GLFWwindow* window) {
+  float sx = 1.0f, sy = 1.0f;
+  glfwGetWindowContentScale(window, &sx, &sy);
+  return std::max(sx, sy);
+}
 
 }  // namespace shadelab

@@ -1,8 +1,17 @@
 #include "ui/platform.h"
 
 #include <emscripten.h>
+#include <emscripten/html5.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
 #include <memory>
+
+#include "shader/preprocessor.h"
+
+extern "C" void* emscripten_webgl1_get_proc_address(const char* name);  // emscripten's system/lib/gl
+extern "C" void* emscripten_webgl2_get_proc_address(const char* name);
 
 namespace shadelab {
 
@@ -10,10 +19,24 @@ namespace {
 
 void callFrame(void* arg) {
   auto* frame = static_cast<std::function<bool()>*>(arg);
-  if (!(*frame)()) emscripten_cancel_main_loop();
+  try {
+    if (!(*frame)()) emscripten_cancel_main_loop();
+  } catch (const std::exception& e) {  // what the desktop's main() would print: the page shows it
+    std::fprintf(stderr, "shadelab: %s\n", e.what());
+    EM_ASM({ Module.onAbort(UTF8ToString($0)); }, e.what());
+    emscripten_cancel_main_loop();
+  }
+  EM_ASM(Module.shadelabFrames = (Module.shadelabFrames || 0) + 1);  // the page's tests wait on it
+}
+
+ShlGlProc webglProc(const char* name) {
+  if (void* f = emscripten_webgl2_get_proc_address(name)) return reinterpret_cast<ShlGlProc>(f);
+  return reinterpret_cast<ShlGlProc>(emscripten_webgl1_get_proc_address(name));
 }
 
 }  // namespace
+
+ShlGetProcAddress glProcLoader() { return webglProc; }
 
 void runMainLoop(std::function<bool()> frame) {
   // The page owns the loop from here on: the function lives as long as the page.
@@ -21,6 +44,19 @@ void runMainLoop(std::function<bool()> frame) {
   emscripten_set_main_loop_arg(callFrame, kept, 0, true);
 }
 
+void enableContextFeatures() {
+  setGlslDialect(GlslDialect::Es300);
+  // WebGL hands out a query's result only after the page has given the frame back, never within
+  // it: passes are timed by the wall clock between finishes (and the cost table says so).
+  setenv("SHADELAB_TIMER", "finish", 0);
+  const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_get_current_context();
+  for (const char* name : {"EXT_color_buffer_float", "EXT_float_blend", "OES_texture_float_linear",
+                           "EXT_texture_filter_anisotropic", "EXT_disjoint_timer_query_webgl2"})
+    if (!emscripten_webgl_enable_extension(context, name)) std::fprintf(stderr, "shadelab: the browser has no %s\n", name);
+}
+
 const char* imguiGlslVersion() { return "#version 300 es"; }
+
+float contentScale(GLFWwindow*) { return 1.0f; }
 
 }  // namespace shadelab

@@ -332,9 +332,7 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   if (wopt.uiScale > 0) {
     app.uiScale = wopt.uiScale;
   } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen
-    float sx = 1.0f, sy = 1.0f;
-    glfwGetWindowContentScale(window, &sx, &sy);
-    app.uiScale = std::clamp(std::max(sx, sy), 0.5f, 4.0f);
+    app.uiScale = std::clamp(contentScale(window), 0.5f, 4.0f);
   }
   glfwSetWindowUserPointer(window, &app);
   glfwSetDropCallback(window, onDrop);
@@ -494,9 +492,10 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
     return 2;
   }
   glfwMakeContextCurrent(window);
+  enableContextFeatures();
   glfwSwapInterval(1);
   const char* missing = "";
-  if (!gl::loadFunctions(reinterpret_cast<ShlGetProcAddress>(glfwGetProcAddress), &missing)) {
+  if (!gl::loadFunctions(glProcLoader(), &missing)) {
     std::fprintf(stderr, "shadelab: the window's OpenGL context lacks %s\n", missing);
     return 1;
   }

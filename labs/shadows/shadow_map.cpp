@@ -12,15 +12,19 @@ int mipLevels(int size) {
   return levels;
 }
 
-GLenum momentChannels(GLenum format) {
-  return format == GL_R32F ? GL_RED : format == GL_RG32F ? GL_RG : GL_RGBA;
+// The whole cube as a layered attachment for the geometry shader's single pass; where there are no
+// geometry shaders (ES 3.0, WebGL2) its first face, and the six passes attach each face in turn.
+void attachCube(GLuint texture) {
+  if (glFramebufferTexture) glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture, 0);
+  else glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X, texture, 0);
 }
 
-void allocateArray(GLuint texture, GLenum internal, GLenum format, int size, int layers, int levels) {
+void allocateArray(GLuint texture, GLenum internal, int size, int layers, int levels) {
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+  const gl::TransferFormat transfer = gl::transferFormatFor(internal);
   for (int level = 0; level < levels; ++level) {
     const int s = std::max(size >> level, 1);
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GLint(internal), s, s, layers, 0, format, GL_FLOAT, nullptr);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GLint(internal), s, s, layers, 0, transfer.format, transfer.type, nullptr);
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
   // The texture's own filtering serves reads with no sampler object (the blur's texelFetch, the
@@ -62,31 +66,34 @@ bool ShadowMap::allocate(const MapShape& shape) {
   texture_ = gl::TextureName::make();
   if (shape.cube) {
     glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.get());
+    const gl::TransferFormat transfer = gl::transferFormatFor(shape.depthFormat);
     for (int f = 0; f < 6; ++f)
-      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GLint(shape.depthFormat), size, size, 0, GL_DEPTH_COMPONENT,
-                   GL_FLOAT, nullptr);
+      glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GLint(shape.depthFormat), size, size, 0, transfer.format,
+                   transfer.type, nullptr);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
   } else {
-    allocateArray(texture_.get(), shape.depthFormat, GL_DEPTH_COMPONENT, size, shape.layers, 1);
+    allocateArray(texture_.get(), shape.depthFormat, size, shape.layers, 1);
   }
   if (shape.cube) {  // layered: the geometry shader picks the face (or six passes attach one each)
     fbo_ = gl::FramebufferName::make();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.get());
-    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);
-    glDrawBuffer(GL_NONE);
+    attachCube(texture_.get());
+    const GLenum none = GL_NONE;
+    glDrawBuffers(1, &none);
     glReadBuffer(GL_NONE);
     if (!complete()) return false;
   }
   if (shape.momentFormat && !shape.cube) {
     moments_ = gl::TextureName::make();
-    allocateArray(moments_.get(), shape.momentFormat, momentChannels(shape.momentFormat), size, shape.layers,
+    allocateArray(moments_.get(), shape.momentFormat, size, shape.layers,
                   shape.momentMips ? mipLevels(size) : 1);
     blurTemp_ = gl::TextureName::make();
-    allocateArray(blurTemp_.get(), shape.momentFormat, momentChannels(shape.momentFormat), size, 1, 1);
+    allocateArray(blurTemp_.get(), shape.momentFormat, size, 1, 1);
     blurFbo_ = gl::FramebufferName::make();
     glBindFramebuffer(GL_FRAMEBUFFER, blurFbo_.get());
     glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, blurTemp_.get(), 0, 0);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0);
+    const GLenum color = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &color);
     if (!complete()) return false;
     momentSampler_ = gl::Sampler::make();
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MIN_FILTER, shape.momentMips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
@@ -100,7 +107,8 @@ bool ShadowMap::allocate(const MapShape& shape) {
       glBindFramebuffer(GL_FRAMEBUFFER, layerFbos_.back().get());
       glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, layer);
       if (moments_) glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, moments_.get(), 0, layer);
-      glDrawBuffer(moments_ ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+      const GLenum draw = moments_ ? GL_COLOR_ATTACHMENT0 : GL_NONE;
+      glDrawBuffers(1, &draw);
       glReadBuffer(GL_NONE);
       if (!complete()) return false;
     }
@@ -162,12 +170,12 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
   }
   if (shape_.cube && state.sixPasses) {
     for (int f = 0; f < 6; ++f) {  // one face at a time: the vertices are submitted six times
-      glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0, f);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, texture_.get(), 0);
       glClear(GL_DEPTH_BUFFER_BIT);
       program.set("u_lightViewProj", light.faceViewProj[f]);
       drawAll();
     }
-    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture_.get(), 0);  // layered again
+    attachCube(texture_.get());  // layered again
   } else if (shape_.cube) {
     program.setArray("u_faceViewProj", light.faceViewProj, 6);
     drawAll();
@@ -257,14 +265,15 @@ void ShadowMap::release() {
 
 void DummyDepthTextures::create() {
   array_ = gl::TextureName::make();
-  allocateArray(array_.get(), GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, 1, 1, 1);
+  allocateArray(array_.get(), GL_DEPTH_COMPONENT16, 1, 1, 1);
   cube_ = gl::TextureName::make();
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube_.get());
   for (int f = 0; f < 6; ++f)
-    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_DEPTH_COMPONENT16, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, GL_DEPTH_COMPONENT16, 1, 1, 0, GL_DEPTH_COMPONENT,
+                 GL_UNSIGNED_SHORT, nullptr);
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
   moments_ = gl::TextureName::make();
-  allocateArray(moments_.get(), GL_RGBA32F, GL_RGBA, 1, 1, 1);
+  allocateArray(moments_.get(), GL_RGBA32F, 1, 1, 1);
 }
 
 void DummyDepthTextures::bindArray(int unit) const {

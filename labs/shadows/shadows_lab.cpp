@@ -69,6 +69,7 @@ LightSetup ShadowsLab::fillSetup() const {
 std::string ShadowsLab::setup(LabContext& ctx) {
   shaders_ = &ctx.shaders;
   softwareRenderer_ = gl::softwareRenderer();
+  geometryShaders_ = gl::hasGeometryShaders();
   programs_.assign(kSlotCount, ProgramSlot{});
   dummies_.create();
   emptyVao_ = gl::VertexArray::make();
@@ -86,7 +87,7 @@ std::string ShadowsLab::setup(LabContext& ctx) {
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
   glBindVertexArray(0);
   // Cube-map lookups near a face's edge filter across into the next face (core since 3.2).
-  glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+  if (geometryShaders_) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // desktop GL; always on in ES 3.0
   return {};
 }
 
@@ -282,14 +283,14 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
   const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
                            (cascades_.size() >= 2 ? " cascade " : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
-  Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, params.map.sixCubePasses, filter));
+  Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, sixCubePasses(), filter));
   if (isMomentFilter(filter)) {
     depth.use();
     setFilterUniforms(depth);  // the moment pass warps depth with the same exponents the lookups use
   }
   for (int layer = 0; layer < layers; ++layer) {
     auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
-                           size + (cube ? (params.map.sixCubePasses ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
+                           size + (cube ? (sixCubePasses() ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
                            (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : ""));
     keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer, state);
   }
@@ -310,7 +311,7 @@ void ShadowsLab::render(Frame& frame) {
   const LightFrame fill = buildLight(fillSetup(), bounds, ignored);
   const GLenum format = rowOf(kDepthFormats, params.map.format).internalFormat;
   const ShadowFilter filter = effectiveFilterOf(params);
-  DepthPassState depthState{params.map.cullFront, params.bias.offsetFactor, params.bias.offsetUnits, params.map.sixCubePasses};
+  DepthPassState depthState{params.map.cullFront, params.bias.offsetFactor, params.bias.offsetUnits, sixCubePasses()};
   depthState.momentClear = farMoments(params, filter);
   const bool gbuffer = internalView_ != InternalView::None;
 

@@ -179,6 +179,8 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   std::unique_ptr<GpuShadowTracer> tracer_;   // truth_tracer = gpu
   bool softwareRenderer_ = true;              // the context draws in software (gl::softwareRenderer)
+  bool geometryShaders_ = true;               // the context has them (not WebGL2): else six cube passes
+  bool sixCubePasses() const { return params.map.sixCubePasses || !geometryShaders_; }
   // truth_tracer = auto resolved: the GPU tracer unless the context draws in software.
   bool tracesOnGpu() const {
     return params.truth.tracer == TruthTracer::Gpu || (params.truth.tracer == TruthTracer::Auto && !softwareRenderer_);

@@ -192,7 +192,7 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
 std::vector<ProgramSpec> ShadowsLab::currentPrograms() const {
   const ShadowFilter filter = effectiveFilterOf(params);
   std::vector<ProgramSpec> out = {litSpec(params, InternalView::None), litSpec(params, InternalView::Position),
-                                  depthSpec(params.key.type == LightType::Point, params.map.sixCubePasses, filter),
+                                  depthSpec(params.key.type == LightType::Point, sixCubePasses(), filter),
                                   depthSpec(false, false, filter), depthViewSpec(params)};
   if (isMomentFilter(filter)) out.push_back(blurSpec());
   return out;

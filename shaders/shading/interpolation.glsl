@@ -3,7 +3,7 @@
 //   AFFINE_UV       `noperspective`: linear in screen space, as early PlayStation-era hardware did;
 //                   straight checker lines bend on large triangles seen at an angle.
 //   flat lighting   one value per triangle (the provoking vertex's), no interpolation at all.
-#ifdef AFFINE_UV
+#if defined(AFFINE_UV) && !defined(SHADELAB_ES)  // GLSL ES 3.00 has no noperspective
 #define UV_INTERP noperspective
 #else
 #define UV_INTERP

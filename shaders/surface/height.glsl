@@ -14,7 +14,17 @@ uniform float u_heightScale;    // world units for a height of 1
 // height field is sampled trilinearly (the lab binds such a sampler), so one level is all its
 // footprint needs, and an explicit level is cheaper per read than gradients.
 float g_heightLod;
+#ifdef SHADELAB_ES
+// GLSL ES 3.00 has no textureQueryLod: the level from the footprint's longer side, as the
+// hardware's isotropic selection does (OpenGL 4.6, 8.14.1), clamped to the full mip chain.
+void initHeightGradients(vec2 uv) {
+  vec2 size = vec2(textureSize(u_heightMap, 0)), texels = uv * size;
+  float rho = max(length(dFdx(texels)), length(dFdy(texels)));
+  g_heightLod = clamp(log2(max(rho, 1e-8)), 0.0, floor(log2(max(size.x, size.y))));  // a full chain
+}
+#else
 void initHeightGradients(vec2 uv) { g_heightLod = textureQueryLod(u_heightMap, uv).y; }
+#endif
 
 float heightAt(vec2 uv) { return textureLod(u_heightMap, uv, g_heightLod).r; }
 

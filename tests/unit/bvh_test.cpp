@@ -3,7 +3,6 @@
 // random soups, on a mesh of one huge and many tiny triangles, and on degenerate input.
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <random>
 
 #include "labs/shadows/gpu_tracer.h"
@@ -123,7 +122,7 @@ bool walkTexels(const std::vector<glm::vec4>& nodes, const std::vector<glm::vec4
   for (uint32_t node = 0; node < count;) {
     ++*visits;
     const glm::vec4 lo = nodes[2 * node], hi = nodes[2 * node + 1];
-    const uint32_t link = std::bit_cast<uint32_t>(hi.w), skip = link & 0xFFFFFFu, n = link >> 24;
+    const uint32_t link = glm::floatBitsToUint(hi.w), skip = link & 0xFFFFFFu, n = link >> 24;
     EXPECT_GT(skip, node) << "indices only grow";
     const glm::vec3 t0 = (glm::vec3(lo) - o) * invDir, t1 = (glm::vec3(hi) - o) * invDir;
     const glm::vec3 nearT = glm::min(t0, t1), farT = glm::max(t0, t1);
@@ -137,7 +136,7 @@ bool walkTexels(const std::vector<glm::vec4>& nodes, const std::vector<glm::vec4
       ++node;
       continue;
     }
-    for (uint32_t i = std::bit_cast<uint32_t>(lo.w); i < std::bit_cast<uint32_t>(lo.w) + n; ++i) {
+    for (uint32_t i = glm::floatBitsToUint(lo.w); i < glm::floatBitsToUint(lo.w) + n; ++i) {
       const BvhTriangle t{glm::vec3(triangles[3 * i]), glm::vec3(triangles[3 * i + 1]), glm::vec3(triangles[3 * i + 2])};
       const auto hit = intersectTriangle(t, o, d);
       if (hit && hit->t > tMin && hit->t < tMax) return true;
@@ -161,9 +160,9 @@ TEST(Bvh, TexelsCarryTheTreeForAStacklessWalk) {
   ASSERT_EQ(triangles.size(), 3 * tris.size());
   std::vector<int> seen(tris.size(), 0);
   for (size_t k = 0; k < nodes.size(); k += 2) {
-    const uint32_t link = std::bit_cast<uint32_t>(nodes[k + 1].w), n = link >> 24;
-    for (uint32_t i = std::bit_cast<uint32_t>(nodes[k].w); n > 0 && i < std::bit_cast<uint32_t>(nodes[k].w) + n; ++i)
-      ++seen.at(std::bit_cast<uint32_t>(triangles[3 * i].w));
+    const uint32_t link = glm::floatBitsToUint(nodes[k + 1].w), n = link >> 24;
+    for (uint32_t i = glm::floatBitsToUint(nodes[k].w); n > 0 && i < glm::floatBitsToUint(nodes[k].w) + n; ++i)
+      ++seen.at(glm::floatBitsToUint(triangles[3 * i].w));
   }
   for (size_t i = 0; i < tris.size(); ++i) ASSERT_EQ(seen[i], 1) << "triangle " << i;
   std::mt19937 rng(7);

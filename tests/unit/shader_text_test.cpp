@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "shader/compile_log.h"
@@ -73,6 +74,43 @@ TEST_F(ShaderText, MissingAndCircularIncludesAreErrorsAtFileLine) {
   EXPECT_NE(out.error.find("is circular"), std::string::npos) << out.error;
   out = preprocessShader(ShaderSearchPath({root}), "lab/none.frag", {});
   EXPECT_EQ(out.error, "lab/none.frag: error: shader file not found in the search path");
+}
+
+// The ES dialect: "#version 300 es" with precision for every sampler type, and interface blocks
+// flattened into varyings named by their members, line for line, #ifdef lines and heads kept out.
+TEST_F(ShaderText, TheEsDialectWritesItsVersionAndFlattensInterfaceBlocks) {
+  write("lab/a.vert", "#version 330 core\n"
+                      "#ifdef MODE_FLAT\n"
+                      "out Vertex {\n"
+                      "#else\n"
+                      "out Surface {  // to the fragment stage\n"
+                      "#endif\n"
+                      "  vec3 worldPos;\n"
+                      "  UV_INTERP vec2 uv;\n"
+                      "#ifdef MODE_GOURAUD\n"
+                      "  flat vec3 colour[2];\n"
+                      "#endif\n"
+                      "} vout;\n"
+                      "void main() { vout.worldPos = vec3(0.0); vout.uv = myvout.uv; }\n");
+  setGlslDialect(GlslDialect::Es300);
+  auto es = preprocessShader(ShaderSearchPath({root}), "lab/a.vert", {});
+  setGlslDialect(GlslDialect::Desktop);
+  ASSERT_TRUE(es.ok()) << es.error;
+  EXPECT_EQ(es.text.rfind("#version 300 es\n", 0), 0u) << es.text;
+  EXPECT_NE(es.text.find("precision highp sampler2DArrayShadow;"), std::string::npos);
+  EXPECT_NE(es.text.find("#define SHADELAB_ES 1"), std::string::npos);
+  EXPECT_NE(es.text.find("\n#ifdef MODE_FLAT\n\n#else\n\n#endif\n  out vec3 io_worldPos;\n  UV_INTERP out vec2 io_uv;\n"
+                         "#ifdef MODE_GOURAUD\n  flat out vec3 io_colour[2];\n#endif\n\n"),
+            std::string::npos)
+      << es.text;
+  EXPECT_NE(es.text.find("io_worldPos = vec3(0.0); io_uv = myvout.uv;"), std::string::npos)
+      << "instance.member renamed, a longer name ending in the instance's left alone:\n" << es.text;
+  EXPECT_EQ(es.text.find("vout."), es.text.find("myvout.") + 2);
+  const auto desktop = preprocessShader(ShaderSearchPath({root}), "lab/a.vert", {});
+  EXPECT_EQ(desktop.text.rfind("#version 330 core\n", 0), 0u);
+  EXPECT_NE(desktop.text.find("} vout;"), std::string::npos) << "the desktop keeps its blocks";
+  EXPECT_EQ(std::count(es.text.begin(), es.text.end(), '\n') - std::count(desktop.text.begin(), desktop.text.end(), '\n'),
+            12) << "the preamble's lines alone: the source keeps its line numbers";
 }
 
 TEST(CompileLog, MesaNvidiaAmdAndRawLines) {

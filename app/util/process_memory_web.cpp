@@ -1,0 +1,17 @@
+#include "util/process_memory.h"
+
+#include <emscripten/heap.h>
+#include <malloc.h>
+
+namespace shadelab {
+
+double residentMb() { return double(emscripten_get_heap_size()) / (1024.0 * 1024.0); }
+
+double heapInUseMb() {
+  const struct mallinfo heap = ::mallinfo();
+  return double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
+}
+
+void returnFreePages() {}  // WebAssembly memory only grows
+
+}  // namespace shadelab
