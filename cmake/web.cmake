@@ -60,7 +60,7 @@ target_compile_options(shadelab PRIVATE -pthread -fexceptions -Wall -Wextra -Wno
 target_link_options(shadelab PRIVATE -pthread -fexceptions -sPTHREAD_POOL_SIZE=6 -sUSE_GLFW=3
   -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=268435456
   -sMAXIMUM_MEMORY=2147483648 -sENVIRONMENT=web,worker -sEXIT_RUNTIME=0 -sEXPORTED_RUNTIME_METHODS=[FS]
-  --profiling-funcs
+  --profiling-funcs  # function names in the .wasm: a stack trace in the console names them
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/shaders@/shadelab/shaders"
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/exercises@/shadelab/exercises")
 add_custom_command(TARGET shadelab POST_BUILD

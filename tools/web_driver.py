@@ -109,6 +109,9 @@ class Page:
         if method == "Runtime.consoleAPICalled":
             text = " ".join(str(a.get("value", a.get("description", ""))) for a in params.get("args", []))
             self.console.append(f"{params.get('type')}: {text}")
+        elif method == "Log.entryAdded":  # the browser's own messages (WebGL's errors among them)
+            entry = params.get("entry", {})
+            self.console.append(f"{entry.get('source')} {entry.get('level')}: {entry.get('text')}")
         elif method == "Runtime.exceptionThrown":
             details = params.get("exceptionDetails", {})
             text = details.get("exception", {}).get("description") or details.get("text", "")
@@ -163,6 +166,7 @@ def main():
             sys.exit("web_driver: chromium did not start its DevTools endpoint")
         page = Page(WebSocket(targets[0]["webSocketDebuggerUrl"], timeout=args.timeout))
         page.call("Runtime.enable")
+        page.call("Log.enable")
         page.call("Page.enable")
         w, h = (int(x) for x in args.size.split(","))
         page.call("Emulation.setDeviceMetricsOverride", width=w, height=h, deviceScaleFactor=1, mobile=False)

@@ -21,10 +21,14 @@ bool softwareRenderer() {
   return false;
 }
 
-bool hasGeometryShaders() {
+static bool esContext() {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  return version && !std::strstr(version, "OpenGL ES") && !std::strstr(version, "WebGL");
+  return version && (std::strstr(version, "OpenGL ES") || std::strstr(version, "WebGL"));
 }
+
+bool hasGeometryShaders() { return !esContext(); }
+
+bool hasBorderColor() { return !esContext(); }
 
 bool hasTessellation() {
   GLint major = 0, minor = 0;

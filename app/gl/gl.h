@@ -20,6 +20,8 @@ bool softwareRenderer();
 // Geometry shaders (core in 3.2): OpenGL ES 3.0 and WebGL2 have none, so a lab draws what it would
 // draw with one in several passes, or says the option needs one.
 bool hasGeometryShaders();
+// GL_CLAMP_TO_BORDER and a border colour: not in OpenGL ES 3.0 and WebGL2 (clamp to edge there).
+bool hasBorderColor();
 
 // Tessellation stages (core in 4.0): a 3.3 context has none, so labs check before using them.
 bool hasTessellation();

@@ -122,8 +122,10 @@ bool ShadowMap::allocate(const MapShape& shape) {
   glSamplerParameteri(compare_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glSamplerParameteri(compare_.get(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
   glSamplerParameteri(compare_.get(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-  for (GLuint s : {raw_.get(), compare_.get()}) glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
+  if (gl::hasBorderColor()) {
+    const float border[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    for (GLuint s : {raw_.get(), compare_.get()}) glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
+  }
   return true;
 }
 
@@ -227,7 +229,7 @@ void ShadowMap::filterMoments(Program& blur, int radius, GLuint emptyVao) {
 void ShadowMap::bind(int rawUnit, int compareUnit, bool border) {
   const GLenum target = shape_.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D_ARRAY;
   if (wrapBorder_ != int(border)) {  // sampler state changes make drivers revalidate: only on change
-    const GLint wrap = border ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
+    const GLint wrap = border && gl::hasBorderColor() ? GL_CLAMP_TO_BORDER : GL_CLAMP_TO_EDGE;
     for (GLuint s : {raw_.get(), compare_.get()}) {
       glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
       glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
@@ -274,18 +276,25 @@ void DummyDepthTextures::create() {
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
   moments_ = gl::TextureName::make();
   allocateArray(moments_.get(), GL_RGBA32F, 1, 1, 1);
+  raw_ = gl::Sampler::make();
+  compare_ = gl::Sampler::make();
+  for (GLuint s : {raw_.get(), compare_.get()}) {
+    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  glSamplerParameteri(compare_.get(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
 }
 
-void DummyDepthTextures::bindArray(int unit) const {
+void DummyDepthTextures::bindArray(int unit, bool compare) const {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D_ARRAY, array_.get());
-  glBindSampler(unit, 0);
+  glBindSampler(unit, compare ? compare_.get() : raw_.get());
 }
 
-void DummyDepthTextures::bindCube(int unit) const {
+void DummyDepthTextures::bindCube(int unit, bool compare) const {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_CUBE_MAP, cube_.get());
-  glBindSampler(unit, 0);
+  glBindSampler(unit, compare ? compare_.get() : raw_.get());
 }
 
 void DummyDepthTextures::bindMoments(int unit) const {
@@ -298,6 +307,8 @@ void DummyDepthTextures::release() {
   array_.reset();
   cube_.reset();
   moments_.reset();
+  raw_.reset();
+  compare_.reset();
 }
 
 }  // namespace shadelab

@@ -79,13 +79,16 @@ class ShadowMap {
 class DummyDepthTextures {
  public:
   void create();
-  void bindArray(int unit) const;
-  void bindCube(int unit) const;
+  // With a sampler object whose compare mode matches the shader's sampler type (`compare`: a
+  // shadow sampler): WebGL2 refuses a draw that reads a depth texture through the other kind.
+  void bindArray(int unit, bool compare) const;
+  void bindCube(int unit, bool compare) const;
   void bindMoments(int unit) const;
   void release();
 
  private:
   gl::TextureName array_, cube_, moments_;
+  gl::Sampler raw_, compare_;
 };
 
 }  // namespace shadelab

@@ -196,7 +196,10 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
       map.bind(rawUnit, cmpUnit, params.map.borderClamp);
       boundSamplers_.insert(boundSamplers_.end(), {rawUnit, cmpUnit});
     } else {
-      for (int unit : {rawUnit, cmpUnit}) cube ? dummies_.bindCube(unit) : dummies_.bindArray(unit);
+      for (int unit : {rawUnit, cmpUnit}) {
+        cube ? dummies_.bindCube(unit, unit == cmpUnit) : dummies_.bindArray(unit, unit == cmpUnit);
+        boundSamplers_.push_back(unit);
+      }
     }
   };
   auto bindMoments = [&](ShadowMap& map, bool real, const char* name, int unit) {
@@ -214,7 +217,10 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   bindMap(fillMap_, fillReal, false, "u_fillMap", "u_fillCmp", kFillMap, kFillCmp);
   bindMoments(fillMap_, fillReal, "u_fillMoments", kFillMoments);
   if (prog.uses("u_noCube") || prog.uses("u_noCmpCube"))
-    for (int unit : {kNoCube, kNoCmpCube}) dummies_.bindCube(unit);
+    for (int unit : {kNoCube, kNoCmpCube}) {
+      dummies_.bindCube(unit, unit == kNoCmpCube);
+      boundSamplers_.push_back(unit);
+    }
   if (fill) {
     setLight(prog, "u_fill", *fill, sizeOf(fillMap_));
     const float r2 = glm::dot(fill->position - b.center(), fill->position - b.center());
@@ -378,8 +384,8 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   setLight(prog, "u_key", shown, sizeOf(map), layer);
   prog.set("u_keyMap", int(kKeyMap));
   prog.set("u_keyCube", int(kKeyCube));
-  dummies_.bindArray(kKeyMap);
-  dummies_.bindCube(kKeyCube);
+  dummies_.bindArray(kKeyMap, false);
+  dummies_.bindCube(kKeyCube, false);
   if (map.cube()) map.bind(kKeyCube, kKeyCmpCube, true);
   else map.bind(kKeyMap, kKeyCmp, true);
   // The distances the map's content occupies from this light: what the linear view stretches to
