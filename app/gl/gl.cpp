@@ -30,6 +30,8 @@ bool hasGeometryShaders() { return !esContext(); }
 
 bool hasBorderColor() { return !esContext(); }
 
+bool hasNorm16Textures() { return !esContext(); }
+
 bool hasTessellation() {
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);

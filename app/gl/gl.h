@@ -22,6 +22,8 @@ bool softwareRenderer();
 bool hasGeometryShaders();
 // GL_CLAMP_TO_BORDER and a border colour: not in OpenGL ES 3.0 and WebGL2 (clamp to edge there).
 bool hasBorderColor();
+// 16-bit normalized textures (GL_R16): not in OpenGL ES 3.0 and WebGL2.
+bool hasNorm16Textures();
 
 // Tessellation stages (core in 4.0): a 3.3 context has none, so labs check before using them.
 bool hasTessellation();

@@ -40,6 +40,7 @@ TransferFormat transferFormatFor(GLenum internal) {
     case GL_R16F: return {GL_RED, GL_HALF_FLOAT};
     case GL_R32F: return {GL_RED, GL_FLOAT};
     case GL_R8: return {GL_RED, GL_UNSIGNED_BYTE};
+    case GL_R16: return {GL_RED, GL_UNSIGNED_SHORT};
     case GL_RG8: return {GL_RG, GL_UNSIGNED_BYTE};
     case GL_RGB8: case GL_SRGB8: return {GL_RGB, GL_UNSIGNED_BYTE};
     case GL_DEPTH_COMPONENT16: return {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <nlohmann/json.hpp>
 
@@ -314,12 +315,26 @@ void DenoiseLab::upload(DenoiseResult r) {
     mapMesh_.updatePositions(res.noisy);
     mapMesh_.updateNormals(res.noisyNormals);
     const DisplacementMap& m = *res.map;
-    const std::vector<uint8_t> texels = encodeMap(m, false);
+    std::vector<uint8_t> texels = encodeMap(m, false);
+    GLenum internal = m.format == MapFormat::Unorm8 ? GL_R8 : m.format == MapFormat::Unorm16 ? GL_R16 : GL_R32F;
+    GLenum type = m.format == MapFormat::Unorm8 ? GL_UNSIGNED_BYTE : m.format == MapFormat::Unorm16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
+    if (internal == GL_R16 && !gl::hasNorm16Textures()) {
+      // WebGL2 has no 16-bit normalized textures: the values a GL_R16 lookup returns, v / 65535, held
+      // as 32-bit floats (exactly: 16 bits fit the mantissa), filtered alike.
+      std::vector<float> values(texels.size() / 2);
+      for (size_t i = 0; i < values.size(); ++i) {
+        uint16_t v = 0;
+        std::memcpy(&v, &texels[2 * i], 2);
+        values[i] = float(v) / 65535.0f;
+      }
+      texels.resize(values.size() * 4);
+      std::memcpy(texels.data(), values.data(), texels.size());
+      internal = GL_R32F;
+      type = GL_FLOAT;
+    }
     gl::SamplerState s;
     s.minFilter = s.magFilter = GL_NEAREST;  // the lookup filter is set per draw (bilinear or not)
     s.wrapS = s.wrapT = m.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;  // as the bake and the read-back
-    const GLenum internal = m.format == MapFormat::Unorm8 ? GL_R8 : m.format == MapFormat::Unorm16 ? GL_R16 : GL_R32F;
-    const GLenum type = m.format == MapFormat::Unorm8 ? GL_UNSIGNED_BYTE : m.format == MapFormat::Unorm16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
     mapTexture_ = gl::Texture2D::fromData(m.size, internal, GL_RED, type, texels.data(), s);
     // A small grey preview for the panel: the stored values over the map's own range.
     float lo = INFINITY, hi = -INFINITY;
