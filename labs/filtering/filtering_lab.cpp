@@ -5,6 +5,7 @@
 
 #include "lab/technique.h"
 #include "labs/filtering/filtering_scenes.h"
+#include "shader/preprocessor.h"
 
 namespace shadelab {
 namespace {
@@ -270,7 +271,9 @@ void FilteringLab::applySampler() {
   glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, nearest ? GL_NEAREST : GL_LINEAR);
   glSamplerParameteri(s, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glSamplerParameteri(s, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glSamplerParameterf(s, GL_TEXTURE_LOD_BIAS, std::clamp(params.lodBias, -maxBias_, maxBias_));
+  // GLSL ES has no sampler LOD bias: there the shader passes the same bias to texture() (SHADELAB_ES).
+  if (glslDialect() == GlslDialect::Desktop)
+    glSamplerParameterf(s, GL_TEXTURE_LOD_BIAS, std::clamp(params.lodBias, -maxBias_, maxBias_));
   if (anisotropyLimit_ > 1.0f)
     glSamplerParameterf(s, GL_TEXTURE_MAX_ANISOTROPY, std::clamp(float(anisotropy()), 1.0f, anisotropyLimit_));
 }
@@ -316,7 +319,7 @@ void FilteringLab::render(Frame& frame) {
     prog.use();
     prog.set("u_viewProj", viewProj);
     prog.set("u_map", kUnit);
-    prog.set("u_lodBias", params.lodBias);
+    prog.set("u_lodBias", params.lodBias);  // the ES path's texture() bias is clamped as the sampler's is
     prog.set("u_level", params.level);
     prog.set("u_maxAnisotropy", inShader() ? float(anisotropy())
                                            : std::min(float(anisotropy()), std::max(anisotropyLimit_, 1.0f)));

@@ -28,6 +28,8 @@ vec4 lookup(vec2 uv) {
   return filteredLookup(u_map, uv);
 #elif defined(MANUAL_LEVEL)
   return textureLod(u_map, uv, u_level);
+#elif defined(SHADELAB_ES)
+  return texture(u_map, uv, u_lodBias);  // ES samplers have no LOD bias: the same bias, given here
 #else
   return texture(u_map, uv);
 #endif
