@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "lab/technique.h"
+#include "shader/preprocessor.h"
 
 namespace shadelab {
 namespace {
@@ -46,6 +47,7 @@ void ShadingLab::visitParams(ParamVisitor& v) {
                "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, namesOf<kShadingModes>());
   v.enumParam({"specular", "Specular model", "", "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
                "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."}, p.specular, kSpecularNames);
+  if (glslDialect() == GlslDialect::Es300) v.unavailable("GLSL ES 3.00 (WebGL2) has no noperspective: UVs are perspective-correct");
   v.enumParam({"uv_interpolation", "UV interpolation", "", "perspective: correct (divide by w); affine: "
                "linear in screen space (noperspective), bends the checker on large triangles."}, p.uvInterpolation, kUvNames);
   v.intParam({"tessellation", "Tessellation", "segments", "Segments around the procedural spheres and tori "

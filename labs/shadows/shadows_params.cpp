@@ -4,6 +4,7 @@
 
 #include "labs/shadows/shadow_options.h"
 #include "labs/shadows/shadows_lab.h"
+#include "shader/preprocessor.h"
 
 namespace shadelab {
 namespace {
@@ -75,6 +76,7 @@ void visitMap(ParamVisitor& v, ShadowsParams::Map& map, LightType keyType) {
                "shadowed."}, map.farFix);
   v.boolParam({"cull_front", "Cull front faces", "", "Depth pass draws back faces: closed meshes lose acne, thin "
                "ones leak."}, map.cullFront);
+  if (glslDialect() == GlslDialect::Es300) v.unavailable("WebGL2 has no geometry shaders: the cube is always drawn in six passes");
   v.boolParam({"six_cube_passes", "Cube map in six passes", "", "Point light: draw the six faces in six passes "
                "instead of one geometry-shader pass (compare their cost)."}, map.sixCubePasses);
 }
