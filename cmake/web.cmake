@@ -32,9 +32,7 @@ add_custom_command(
 
 # Everything the desktop's core has, but for the desktop's own files (_desktop.cpp) and the grader's
 # watchdog (a forked child per configuration: the page checks exercises in place).
-file(GLOB WEB_SOURCES CONFIGURE_DEPENDS
-  app/util/*.cpp app/gl/*.cpp app/shader/*.cpp app/scene/*.cpp app/measure/*.cpp app/host/*.cpp app/grade/*.cpp
-  app/lab/*.cpp labs/*.cpp labs/*/*.cpp app/ui/*.cpp app/web/*.cpp)
+file(GLOB WEB_SOURCES CONFIGURE_DEPENDS ${SHADELAB_CORE_GLOBS} app/ui/*.cpp app/web/*.cpp)
 list(FILTER WEB_SOURCES EXCLUDE REGEX "(_desktop\\.cpp|app/grade/watchdog\\.cpp)$")
 set(IMGUI_SOURCES ${IMGUI_SOURCE_DIR}/imgui.cpp ${IMGUI_SOURCE_DIR}/imgui_draw.cpp
   ${IMGUI_SOURCE_DIR}/imgui_tables.cpp ${IMGUI_SOURCE_DIR}/imgui_widgets.cpp

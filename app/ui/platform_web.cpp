@@ -4,7 +4,6 @@
 #include <emscripten/html5.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <exception>
 #include <memory>
 
@@ -46,9 +45,6 @@ void runMainLoop(std::function<bool()> frame) {
 
 void enableContextFeatures() {
   setGlslDialect(GlslDialect::Es300);
-  // WebGL hands out a query's result only after the page has given the frame back, never within
-  // it: passes are timed by the wall clock between finishes (and the cost table says so).
-  setenv("SHADELAB_TIMER", "finish", 0);
   const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_get_current_context();
   for (const char* name : {"EXT_color_buffer_float", "EXT_float_blend", "OES_texture_float_linear",
                            "EXT_texture_filter_anisotropic", "EXT_disjoint_timer_query_webgl2"})
