@@ -176,14 +176,20 @@ std::string flattenInterfaceBlocks(const std::string& source) {
     std::istringstream in(source);
     for (std::string line; std::getline(in, line);) lines.push_back(line);
   }
-  std::vector<std::pair<std::string, std::string>> renames;  // "instance." -> "Block_"
+  // The patterns are tried only on lines short enough to be a block's head, member or close:
+  // std::regex recurses per character, and a student's 100,000-character line overflowed the stack.
+  constexpr size_t kLongestBlockLine = 400;
+  auto matches = [](const std::string& line, std::smatch& m, const std::regex& re) {
+    return line.size() <= kLongestBlockLine && std::regex_match(line, m, re);
+  };
+  std::vector<std::pair<std::string, std::string>> renames;  // "instance." -> "io_"
   for (size_t i = 0; i < lines.size(); ++i) {
     std::smatch m;
-    if (!std::regex_match(lines[i], m, open)) continue;
+    if (!matches(lines[i], m, open)) continue;
     const std::string storage = m[1];
     size_t j = i + 1;
     std::smatch c;
-    while (j < lines.size() && !std::regex_match(lines[j], c, close)) ++j;
+    while (j < lines.size() && !matches(lines[j], c, close)) ++j;
     if (j == lines.size()) break;  // not closed: leave it for the compiler to report
     renames.push_back({std::string(c[1]) + ".", "io_"});
     lines[i] = "";
@@ -193,8 +199,8 @@ std::string flattenInterfaceBlocks(const std::string& source) {
       const std::string& line = lines[k];
       const size_t first = line.find_first_not_of(" \t");
       if (first == std::string::npos || line[first] == '#' || line.compare(first, 2, "//") == 0) continue;
-      if (std::regex_match(line, open)) lines[k] = "";  // another head for the same members (#ifdef ... #else)
-      else if (std::regex_match(line, v, member))
+      if (matches(line, v, open)) lines[k] = "";  // another head for the same members (#ifdef ... #else)
+      else if (matches(line, v, member))
         lines[k] = std::string(v[1]) + std::string(v[2]) + storage + " " + std::string(v[3]) + " io_" +
                    std::string(v[4]) + std::string(v[5]) + ";" + std::string(v[6]);
     }

@@ -1,6 +1,7 @@
 // The shader preprocessor over a student's folder: the input is a set of files, each starting
 // with a line "//@file NAME" (the first is the main file; without any marker the whole input is
-// the main file). Includes, cycles, the sandbox and the #line numbering are all exercised.
+// the main file). Includes, cycles, the sandbox and the #line numbering are all exercised, in the
+// desktop dialect and in GLSL ES (interface blocks flattened).
 #include <string>
 
 #include "fuzz_files.h"
@@ -30,7 +31,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     rest = nl == std::string_view::npos ? std::string_view() : tail.substr(nl + 1);
   }
   const shadelab::ShaderSearchPath path({root});
-  const auto out = shadelab::preprocessShader(path, "shading/shade.frag", {{"SHADOWS", "1"}, {"PCF_SIZE", "3"}});
-  (void)out;
+  // Both dialects: the ES one also flattens interface blocks (the page's path).
+  for (auto dialect : {shadelab::GlslDialect::Desktop, shadelab::GlslDialect::Es300}) {
+    shadelab::setGlslDialect(dialect);
+    const auto out = shadelab::preprocessShader(path, "shading/shade.frag", {{"SHADOWS", "1"}, {"PCF_SIZE", "3"}});
+    (void)out;
+  }
+  shadelab::setGlslDialect(shadelab::GlslDialect::Desktop);
   return 0;
 }

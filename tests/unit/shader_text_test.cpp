@@ -113,6 +113,15 @@ TEST_F(ShaderText, TheEsDialectWritesItsVersionAndFlattensInterfaceBlocks) {
             12) << "the preamble's lines alone: the source keeps its line numbers";
 }
 
+// A line of 100,000 characters inside and after a block: no pattern runs on it (std::regex
+// recursed per character and overflowed the stack); the block is still flattened.
+TEST(EsFlattening, SurvivesAHugeLine) {
+  const std::string huge(100000, ' ');
+  const std::string out = flattenInterfaceBlocks("out S {\n" + huge + "vec3 a;\n  vec2 b;\n} v;\n" + huge + "x\n");
+  EXPECT_NE(out.find("  out vec2 io_b;"), std::string::npos);
+  EXPECT_EQ(out.find("out S"), std::string::npos);
+}
+
 TEST(CompileLog, MesaNvidiaAmdAndRawLines) {
   const std::vector<fs::path> files = {"shaders/lab/a.frag", "shaders/common/light.glsl"};
   const auto d = parseCompileLog(
