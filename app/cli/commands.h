@@ -11,7 +11,9 @@ int runCheckShaders(const Options& o);
 int runSweep(const Options& o);
 int runStress(const Options& o);
 int runCompare(const Options& o);  // two PNGs -> rmse, max error; --out writes a diff image
-int runGrade(const Options& o);    // exercises/ rubrics against a student's shader folder
+int runGrade(const Options& o);       // exercises/ rubrics against a student's shader folder
+int runGradeClass(const Options& o);  // grade --class: every submission in a folder, a gradebook and a class page
+int runGradeMerge(const Options& o);  // grade merge: the outputs of --shard runs joined into one
 int runRandom(const Options& o);   // random configurations per lab: finite, no GL error, named when black
 int runSoak(const Options& o);     // minutes of random use; memory, GL objects and jobs over time
 

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli/grade_render.h"
+#include "cli/grade_student.h"
 #include "grade/grading.h"
 #include "grade/watchdog.h"
 #include "measure/report.h"
@@ -30,20 +31,8 @@ int cannotGrade(const std::string& message) {
   return kCannotGrade;
 }
 
-std::string slug(const std::string& s) {
-  std::string out;
-  for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? char(std::tolower(ch)) : '-';
-  return out;
-}
-
 double number(const nlohmann::json& values, const std::string& key) {
   return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
-}
-
-bool inside(const fs::path& child, const fs::path& parent) {
-  const fs::path c = fs::weakly_canonical(child), p = fs::weakly_canonical(parent);
-  auto [pe, ce] = std::mismatch(p.begin(), p.end(), c.begin(), c.end());
-  return pe == p.end();
 }
 
 std::string describe(const Configuration& c) {
@@ -70,8 +59,10 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
                   "was scored",
                   watchdog);
     why = s;
+    out.outcome = Outcome::TimedOut;
   } else if (student.is_null()) {
     why = "the renderer died drawing the student's shader (" + run.describe() + ")";
+    out.outcome = Outcome::Crashed;
   }
   if (!why.empty()) out.errors.push_back(why);
   if (student.is_object()) {
@@ -82,6 +73,7 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
     if (!student["errors"].empty()) {
       const std::string first = student["errors"][0].get<std::string>();
       why = "did not build: " + first.substr(0, first.find('\n'));  // the message line, without the caret
+      out.outcome = Outcome::DidNotBuild;
     }
   }
   for (auto& check : c.checks) {
@@ -107,8 +99,8 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
 }
 
 // Grades one exercise into `out`; returns "" or why it could not be graded.
-std::string gradeExercise(const std::string& id, const Options& o, const fs::path& dir, ExerciseResult& out,
-                          std::string& renderer) {
+std::string gradeExercise(const std::string& id, const StudentGrading& g, ExerciseResult& out, std::string& renderer,
+                          CacheCount& cache) {
   Exercise ex;
   if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
   out = ExerciseResult{};
@@ -117,10 +109,11 @@ std::string gradeExercise(const std::string& id, const Options& o, const fs::pat
   out.lab = ex.lab;
   out.total = ex.totalPoints();
   out.passMark = ex.passMark;
+  out.notes = g.notes;
   std::printf("%s: %s (%s)\n", ex.id.c_str(), ex.title.c_str(), (ex.dir / "statement.md").c_str());
   // Looked up as the shaders will be, inside the sandbox: a file whose link leads out of the
   // student's folder is never read here; its build says why.
-  const ShaderSearchPath submitted(o.shaderDirs);
+  const ShaderSearchPath submitted(g.shaderDirs);
   for (auto& file : ex.files) {
     const ShaderSearchPath::Lookup found = submitted.find(file);
     if (found.file.empty() && found.refused.empty()) out.missingFiles.push_back(file);
@@ -134,18 +127,21 @@ std::string gradeExercise(const std::string& id, const Options& o, const fs::pat
     result.name = c.name;
     result.description = describe(c);
     if (!out.missingFiles.empty()) {
+      result.outcome = Outcome::NotSubmitted;
       for (auto& check : c.checks)
         result.checks.push_back(failedCheck(check, std::nan(""), "not submitted: " + out.missingFiles.front() +
                                                                      " is in none of the --shaders folders"));
     } else {
-      ConfigurationJob job{&ex, &c, o.shaderDirs, o.backend, dir, slug(ex.id) + "-" + std::to_string(i + 1) + "-" + slug(c.name)};
+      ConfigurationJob job{&ex,   &c, g.shaderDirs, g.backend, g.dir, gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(c.name),
+                           g.cache, solutionKeyBase(ex, i)};
       const WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
-                                        [&](const std::string& phase) { return phase == "student" ? o.watchdog : kSolutionSeconds; },
-                                        (dir / "logs" / (job.stem + ".log")).string());
+                                        [&](const std::string& phase) { return phase == "student" ? g.watchdog : kSolutionSeconds; },
+                                        (g.dir / "logs" / (job.stem + ".log")).string());
       const nlohmann::json solution = readResult(job, "solution"), student = readResult(job, "student");
-      for (const char* phase : {"solution", "student"}) fs::remove(dir / (job.stem + "-" + phase + ".json"));
-      if (auto e = scoreConfiguration(job, run, o.watchdog, solution, student, result); !e.empty()) return e;
+      for (const char* phase : {"solution", "student"}) fs::remove(g.dir / (job.stem + "-" + phase + ".json"));
+      if (auto e = scoreConfiguration(job, run, g.watchdog, solution, student, result); !e.empty()) return e;
       if (renderer.empty()) renderer = solution.value("renderer", "");
+      ++(solution.value("from_cache", false) ? cache.fromCache : cache.rendered);
     }
     // Each error once per exercise: every configuration and every program variant ("shading/phong:
     // ...", "shading/gouraud: ...") compiles the same file, so an error is known by what follows
@@ -175,17 +171,74 @@ std::string gradeExercise(const std::string& id, const Options& o, const fs::pat
 
 }  // namespace
 
+SolutionCache solutionCacheFor(const Options& o) {
+  if (o.noCache) return {};
+  return SolutionCache(o.cacheDir.empty() ? defaultSolutionCacheDir() : fs::path(o.cacheDir));
+}
+
+std::string gradeSlug(const std::string& s) {
+  std::string out;
+  for (char ch : s) out += std::isalnum(static_cast<unsigned char>(ch)) ? char(std::tolower(ch)) : '-';
+  return out;
+}
+
+bool pathInside(const fs::path& child, const fs::path& parent) {
+  const fs::path c = fs::weakly_canonical(child), p = fs::weakly_canonical(parent);
+  auto [pe, ce] = std::mismatch(p.begin(), p.end(), c.begin(), c.end());
+  return pe == p.end();
+}
+
+std::string gradeStudent(const std::vector<std::string>& ids, const StudentGrading& g, GradeReport& report,
+                         CacheCount& cache) {
+  for (auto& id : ids) {
+    ExerciseResult result;
+    if (auto e = gradeExercise(id, g, result, report.renderer, cache); !e.empty()) return e;
+    report.exercises.push_back(std::move(result));
+  }
+  for (auto& [name, text] : {std::pair{"report.md", gradeMarkdown(report)}, std::pair{"report.html", gradeHtml(report, g.dir)},
+                             std::pair{"report.json", gradeJson(report)}})
+    if (auto e = writeTextFile((g.dir / name).string(), text); !e.empty()) return e;
+  return {};
+}
+
+std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend, const SolutionCache& cache,
+                             const fs::path& scratch, CacheCount& count) {
+  for (auto& id : ids) {
+    Exercise ex;
+    if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
+    for (size_t i = 0; i < ex.configurations.size(); ++i) {
+      ConfigurationJob job{&ex, &ex.configurations[i], {}, backend, scratch,
+                           gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(ex.configurations[i].name), cache,
+                           solutionKeyBase(ex, i), true};
+      const WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
+                                        [](const std::string&) { return kSolutionSeconds; },
+                                        (scratch / (job.stem + ".log")).string());
+      const nlohmann::json solution = readResult(job, "solution");
+      fs::remove(scratch / (job.stem + "-solution.json"));
+      if (solution.contains("error")) return solution["error"].get<std::string>();
+      if (!solution.contains("renderer"))
+        return ex.id + ": configuration '" + ex.configurations[i].name + "': the solution's frame was not made (" +
+               run.describe() + ")";
+      ++(solution.value("from_cache", false) ? count.fromCache : count.rendered);
+    }
+  }
+  return {};
+}
+
 int runGrade(const Options& o) {
+  if (!o.classDir.empty()) return runGradeClass(o);
+  if (!o.positional.empty()) return runGradeMerge(o);
   if (o.exercise.empty() == !o.allExercises)
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
   if (o.shaderDirs.empty()) return cannotGrade("--shaders DIR is required: the folder holding the student's shader files");
+  if (o.jobs != 1 || o.shards != 1) return cannotGrade("--jobs and --shard are for a class (--class DIR)");
   std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
   if (ids.empty()) return cannotGrade("no exercises in " + exercisesRoot().string());
 
   // The report folder: fresh, and never inside what is being graded (the student's folder is only read).
-  fs::path dir = o.out.empty() ? freshName("grades", o.allExercises ? "all" : slug(o.exercise), "") : fs::path(o.out);
+  fs::path dir = o.out.empty() ? freshName("grades", o.allExercises ? "all" : gradeSlug(o.exercise), "") : fs::path(o.out);
   for (auto& s : o.shaderDirs)
-    if (inside(dir, s))
+    if (pathInside(dir, s))
       return cannotGrade("--out " + dir.string() + " lies inside the graded folder " + s.string() +
                          ", which is only ever read; write the report elsewhere");
   std::error_code ec;
@@ -193,6 +246,12 @@ int runGrade(const Options& o) {
   fs::create_directories(dir / "logs", ec);
   if (ec) return cannotGrade("--out " + dir.string() + ": " + ec.message());
 
+  StudentGrading g;
+  g.shaderDirs = o.shaderDirs;
+  g.dir = dir;
+  g.backend = o.backend;
+  g.watchdog = o.watchdog;
+  g.cache = solutionCacheFor(o);
   GradeReport report;
   for (auto& d : o.shaderDirs) report.studentDirs.push_back(d.string());
   char date[32];
@@ -201,14 +260,8 @@ int runGrade(const Options& o) {
   report.date = date;
   report.command = "shadelab grade " + (o.allExercises ? std::string("--all") : "--exercise " + o.exercise);
   for (auto& d : o.shaderDirs) report.command += " --shaders " + d.string();
-  for (auto& id : ids) {
-    ExerciseResult result;
-    if (auto e = gradeExercise(id, o, dir, result, report.renderer); !e.empty()) return cannotGrade(e);
-    report.exercises.push_back(std::move(result));
-  }
-  for (auto& [name, text] : {std::pair{"report.md", gradeMarkdown(report)}, std::pair{"report.html", gradeHtml(report, dir)},
-                             std::pair{"report.json", gradeJson(report)}})
-    if (auto e = writeTextFile((dir / name).string(), text); !e.empty()) return cannotGrade(e);
+  CacheCount cache;
+  if (auto e = gradeStudent(ids, g, report, cache); !e.empty()) return cannotGrade(e);
 
   double earned = 0, total = 0;
   bool passed = true;
@@ -220,6 +273,9 @@ int runGrade(const Options& o) {
   if (report.exercises.size() > 1)
     std::printf("all: %g / %g points (%.1f%%), %s\n", std::round(earned * 100) / 100, total,
                 total > 0 ? 100.0 * earned / total : 0.0, passed ? "every exercise passed" : "not every exercise passed");
+  if (g.cache.enabled())
+    std::printf("solutions: %d of %d configurations from the cache (%s)\n", cache.fromCache, cache.fromCache + cache.rendered,
+                g.cache.dir().c_str());
   std::printf("report: %s (also report.md, report.json)\n", (dir / "report.html").c_str());
   return passed ? 0 : 1;
 }

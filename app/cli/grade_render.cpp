@@ -46,6 +46,18 @@ std::vector<std::string> buildErrors(LabHost& host) {
 
 }  // namespace
 
+std::string solutionKeyBase(const Exercise& ex, size_t configuration) {
+  static const std::string program = ContentHash().addFile("/proc/self/exe").hex();  // once per process
+  return ContentHash()
+      .add("shaders ")
+      .addTree(builtinShaderDir())
+      .add("\nrubric ")
+      .add(ex.id)
+      .addFile(ex.dir / "rubric.json")
+      .add("\nconfiguration " + std::to_string(configuration) + "\nprogram " + program)
+      .hex();
+}
+
 nlohmann::json readResult(const ConfigurationJob& job, const std::string& phase) {
   std::ifstream in(job.dir / (job.stem + "-" + phase + ".json"));
   if (!in) return {};
@@ -66,28 +78,39 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   auto context = createHeadlessContext(job.backend, err);
   if (!context) return failSolution(err);
 
-  // The built-in shaders: the solution's frame, and the truth the checks need.
-  ImageF solution;
-  std::vector<ImageF> truths;
-  nlohmann::json solutionJson{{"renderer", context->describe()}};
-  {
+  // The built-in shaders: the solution's frame, and the truth the checks need, from the cache when
+  // this renderer made them before for the same shaders, rubric and program.
+  const std::string renderer = context->describe();
+  const std::string key = ContentHash().add(job.cacheKey).add("\nbackend " + job.backend + "\nrenderer ").add(renderer).hex();
+  CachedSolution built;
+  const bool cached = job.cache.load(key, built);
+  if (!cached) {
+    built.numbers = {{"renderer", renderer}};
     LabHost host(ShaderSearchPath({builtinShaderDir()}));
     if (auto e = configure(host, ex, c); !e.empty()) return failSolution(where + ": " + e);
     host.settle();
     host.renderFrame(ex.size);
-    solution = host.readImage();
+    built.frame = host.readImage();
     if (auto errors = buildErrors(host); !errors.empty())
       return failSolution(where + ": the lab's own shaders did not build: " + errors.front());
     if (c.needsTruth()) {
       Measurer measurer(host);
       auto m = measurer.measureNow(ex.size, 0.0f, {});
       if (!m) return failSolution(where + ": this configuration has no ground truth to check against");
-      truths = m->references;
-      solutionJson["vs_truth"] = metricsJson(m->values);
+      built.truths = m->references;
+      built.numbers["vs_truth"] = metricsJson(m->values);
     }
-    if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty())
-      return failSolution(e);
+    if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
   }
+  const ImageF& solution = built.frame;
+  const std::vector<ImageF>& truths = built.truths;
+  nlohmann::json solutionJson = built.numbers;
+  solutionJson["from_cache"] = cached;
+  if (job.solutionOnly) {
+    writeResult(job, "solution", solutionJson);
+    return 0;
+  }
+  if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty()) return failSolution(e);
   writeResult(job, "solution", solutionJson);
 
   // The student's folders first: their frame, compared with the solution's and with the truth.

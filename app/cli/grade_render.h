@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grade/rubric.h"
+#include "grade/solution_cache.h"
 
 namespace shadelab {
 
@@ -23,10 +24,20 @@ struct ConfigurationJob {
   std::string backend;
   std::filesystem::path dir;  // the report folder
   std::string stem;           // file names: dir/stem-*.png
+  // The built-in side (solution frame, truths, the solution's numbers) is taken from here when it
+  // holds an entry for `cacheKey` + the renderer, and stored there when it did not.
+  SolutionCache cache;
+  std::string cacheKey;       // solutionKeyBase(): everything but the renderer
+  bool solutionOnly = false;  // fill the cache and stop (a class run does this once per configuration)
 };
 
+// The part of a configuration's cache key known before a context exists: the built-in shaders,
+// the rubric, the configuration's index and the executable.
+std::string solutionKeyBase(const Exercise& ex, size_t configuration);
+
 // Runs in the child. `enter` announces the phases "solution" and "student". Exit code 0, or 2
-// when the rubric or the built-in solution is at fault (the message is in <stem>-solution.json).
+// when the rubric or the built-in solution is at fault (the message is in <stem>-solution.json,
+// whose "from_cache" says whether the built-in side was rendered or read back).
 int renderConfiguration(const ConfigurationJob& job, const std::function<void(const std::string&)>& enter);
 
 // What the child wrote: {} when the file is absent (the child never got there).

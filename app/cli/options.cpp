@@ -25,6 +25,9 @@ commands:
   grade           grade a student's shaders:   --exercise LAB/NAME | --all  --shaders DIR  [--out DIR]
                   one line per check and a score; a Markdown, HTML and JSON report in --out (default
                   out/grades/...); exit 0 at or above the pass mark, 1 below it, 2 if it could not grade
+                  a class:  --class DIR (each subfolder or .zip one student) [--jobs N] [--shard i/n]:
+                  gradebook.csv, a class page and every student's report; exit 0 when all were graded
+  grade merge     join the outputs of --shard runs:  grade merge DIR... --out DIR
 
 options:
   --lab ID            lab to run (see `shadelab list`)
@@ -45,6 +48,11 @@ options:
   --exercise ID       grade: the exercise (see `shadelab list`), e.g. shadows/pcf
   --all               grade: every exercise
   --watchdog SECONDS  grade: how long the student's shader may take per configuration (default 20)
+  --class DIR         grade: every submission in DIR (a folder or a .zip per student)
+  --jobs N            grade --class: submissions graded at a time (default 1)
+  --shard i/n         grade --class: grade the i-th of n deterministic slices (1 <= i <= n), for array jobs
+  --cache DIR         grade: keep the solution's frames and truths here (default $SHADELAB_CACHE/solutions
+                      or ~/.cache/shadelab/solutions); --no-cache renders them every time
   --count N           random: configurations per lab (default 20)
   --seed N            random, soak: the seed (default 1); the same seed draws the same configurations
   --minutes M         soak: how long (default 1)
@@ -95,8 +103,13 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.allExercises = true;
       continue;
     }
+    if (arg == "--no-cache") {
+      o.noCache = true;
+      continue;
+    }
     if (arg.rfind("--", 0) != 0) {
-      if (o.command != "compare") return "unexpected argument '" + arg + "' (see --help)";
+      const bool merge = o.command == "grade" && (!o.positional.empty() ? o.positional[0] == "merge" : arg == "merge");
+      if (o.command != "compare" && !merge) return "unexpected argument '" + arg + "' (see --help)";
       o.positional.push_back(arg);
       continue;
     }
@@ -114,6 +127,22 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     else if (arg == "--backend") o.backend = v;
     else if (arg == "--out") o.out = v;
     else if (arg == "--exercise") o.exercise = v;
+    else if (arg == "--class") o.classDir = v;
+    else if (arg == "--cache") o.cacheDir = v;
+    else if (arg == "--jobs") {
+      char* end = nullptr;
+      const long n = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end || n < 1 || n > 256) return "--jobs: '" + v + "' is not a whole number in [1, 256]";
+      o.jobs = int(n);
+    } else if (arg == "--shard") {
+      int i = 0, n = 0;
+      char slash = 0, extra = 0;
+      if (std::sscanf(v.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || n > 100000 || i < 1 ||
+          i > n)
+        return "--shard: '" + v + "' is not i/n with 1 <= i <= n (e.g. 3/20)";
+      o.shard = i;
+      o.shards = n;
+    }
     else if (arg == "--size") {
       if (auto e = parseSize(v, o.size); !e.empty()) return e;
       o.sizeGiven = true;
@@ -140,11 +169,14 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
-             "--backend, --out, --measure, --exercise, --all, --watchdog, --count, --seed, --minutes)";
+             "--backend, --out, --measure, --exercise, --all, --watchdog, --class, --jobs, --shard, --cache, --no-cache, --count, "
+             "--seed, --minutes)";
     }
   }
   for (auto& dir : o.shaderDirs)
     if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) return "--shaders: '" + dir.string() + "' is not a folder";
+  if (std::error_code ec; !o.classDir.empty() && !std::filesystem::is_directory(o.classDir, ec))
+    return "--class: '" + o.classDir.string() + "' is not a folder";
   return {};
 }
 

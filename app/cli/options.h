@@ -31,11 +31,16 @@ struct Options {
   std::string exercise;                          // grade: --exercise lab/name
   bool allExercises = false;                     // grade: --all
   double watchdog = 20.0;                        // grade: seconds a student's frames may take
+  std::filesystem::path classDir;                // grade: --class DIR, one submission per folder or .zip
+  int jobs = 1;                                  // grade --class: submissions graded at a time
+  int shard = 1, shards = 1;                     // grade --class: --shard i/n
+  std::string cacheDir;                          // grade: --cache DIR ("" = the default folder)
+  bool noCache = false;                          // grade: --no-cache
   int count = 20;                                // random: configurations per lab
   unsigned seed = 1;                             // random, soak
   double minutes = 1.0;                          // soak
   bool help = false;
-  std::vector<std::string> positional;           // compare A.png B.png
+  std::vector<std::string> positional;           // compare A.png B.png; grade merge DIR...
 };
 
 // Returns "" or a one-line error naming the bad option and what is valid.

@@ -10,6 +10,24 @@
 
 namespace shadelab {
 
+const char* outcomeName(Outcome o) {
+  switch (o) {
+    case Outcome::Graded: return "graded";
+    case Outcome::NotSubmitted: return "not submitted";
+    case Outcome::DidNotBuild: return "did not build";
+    case Outcome::TimedOut: return "stopped by the watchdog";
+    case Outcome::Crashed: return "crashed";
+  }
+  return "?";
+}
+
+Outcome ExerciseResult::outcome() const {
+  if (!missingFiles.empty()) return Outcome::NotSubmitted;
+  for (auto& c : configurations)
+    if (c.outcome != Outcome::Graded) return c.outcome;
+  return Outcome::Graded;
+}
+
 const char* gradeName(Grade g) {
   switch (g) {
     case Grade::Full: return "PASS";
@@ -208,7 +226,8 @@ std::string gradeJson(const GradeReport& report) {
   for (auto& e : report.exercises) {
     nlohmann::json je{{"id", e.id},           {"title", e.title},         {"lab", e.lab},
                       {"score", e.earned},    {"total", e.total},         {"percent", e.percent()},
-                      {"pass_mark", e.passMark}, {"passed", e.passed()}, {"missing_files", e.missingFiles},
+                      {"pass_mark", e.passMark}, {"passed", e.passed()}, {"status", outcomeName(e.outcome())},
+                      {"missing_files", e.missingFiles},
                       {"notes", e.notes},     {"checks", nlohmann::json::array()}};
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
@@ -224,7 +243,9 @@ std::string gradeJson(const GradeReport& report) {
                                 {"points", r.earned},
                                 {"max_points", r.check.points},
                                 {"message", r.message},
-                                {"errors", c.errors}});
+                                {"hint", r.check.hint},
+                                {"errors", c.errors},
+                                {"images", {{"student", c.studentImage}, {"solution", c.solutionImage}, {"diff", c.diffImage}}}});
     j["exercises"].push_back(std::move(je));
   }
   return j.dump(2) + "\n";

@@ -30,8 +30,14 @@ void applyRequirements(std::vector<CheckResult>& checks);
 // The check could not be measured at all (did not compile, the watchdog, a crash): no points.
 CheckResult failedCheck(const Check& check, double solutionValue, const std::string& why);
 
+// How a configuration's student frame ended, and (the first that is not Graded) how an exercise's did.
+enum class Outcome { Graded, NotSubmitted, DidNotBuild, TimedOut, Crashed };
+// "graded", "not submitted", "did not build", "stopped by the watchdog", "crashed"
+const char* outcomeName(Outcome o);
+
 struct ConfigurationResult {
   std::string name;
+  Outcome outcome = Outcome::Graded;
   std::string description;  // "scene shadow-test, filter=pcf pcf_size=5"
   std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
   size_t nonFinite = 0;      // NaN/Inf values in the student's frame
@@ -48,6 +54,7 @@ struct ExerciseResult {
   double earned = 0.0, total = 0.0, passMark = 0.0;
   double percent() const { return total > 0 ? 100.0 * earned / total : 0.0; }
   bool passed() const { return percent() + 1e-9 >= passMark; }
+  Outcome outcome() const;  // not submitted, else the first configuration's that is not Graded
 };
 
 struct GradeReport {

@@ -1,0 +1,292 @@
+// shadelab grade --class DIR: every submission in a folder, each graded as `grade --shaders` grades
+// one (every configuration in its own child under the watchdog), N at a time, in a deterministic
+// slice of the class when sharded; then a gradebook and a class page. `grade merge` joins the
+// outputs of shards into what one run over the whole class would have written.
+//
+// Layout of --out:
+//   class.json        what was graded: exercises, this shard, its students
+//   gradebook.csv     one row per student and exercise
+//   class.html        the class page
+//   students/NAME/    each student's report (as `grade --shaders` writes it) and grade.log
+//   logs/             the solutions' logs
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/grade_student.h"
+#include "cli/submissions.h"
+#include "grade/class_report.h"
+#include "grade/rubric.h"
+#include "measure/report.h"
+#include "util/output_files.h"
+#include "util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kCannotGrade = 2;
+
+int cannotGrade(const std::string& message) {
+  std::fprintf(stderr, "shadelab: grade: %s\n", message.c_str());
+  return kCannotGrade;
+}
+
+// Runs in a worker process: grades one submission into out/students/<name>/. Exit 0 when its
+// report was written, 2 when the grader could not go on.
+int gradeSubmission(const Submission& sub, const std::vector<std::string>& ids, const Options& o, const fs::path& out,
+                    const SolutionCache& cache) {
+  StudentGrading g;
+  g.dir = out / "students" / sub.name;
+  g.backend = o.backend;
+  g.watchdog = o.watchdog;
+  g.cache = cache;
+  std::error_code ec;
+  fs::create_directories(g.dir / "logs", ec);
+  if (ec) return cannotGrade(g.dir.string() + ": " + ec.message());
+  if (FILE* log = std::freopen((g.dir / "grade.log").c_str(), "w", stdout)) dup2(fileno(log), STDERR_FILENO);
+
+  fs::path unpacked;
+  if (sub.zip) {
+    unpacked = out / "unpacked" / sub.name;
+    removeUnpacked(unpacked);  // what an earlier, interrupted run left
+    if (auto e = unpackZip(sub.source, unpacked); !e.empty()) {
+      removeUnpacked(unpacked);
+      fs::create_directories(unpacked, ec);  // graded as an empty folder: nothing submitted, and why
+      g.notes.push_back("the zip was not unpacked: " + e);
+      std::printf("%s\n", e.c_str());
+    }
+    g.shaderDirs = {shaderRootOf(unpacked)};
+  } else {
+    g.shaderDirs = {shaderRootOf(sub.source)};
+  }
+  GradeReport report;
+  report.studentDirs = {sub.source.string()};
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
+  report.date = date;
+  report.command = "shadelab grade --class " + o.classDir.string() + " (submission " + sub.name + ")";
+  CacheCount count;
+  const std::string e = gradeStudent(ids, g, report, count);
+  if (!unpacked.empty()) removeUnpacked(unpacked);
+  if (!e.empty()) return cannotGrade(e);
+  return 0;
+}
+
+struct Summary {
+  int submissions = 0;
+  std::map<std::string, int> statuses;
+};
+
+// Reads every student's report under out/students into the gradebook and the class page. A
+// student whose report is missing (the grader itself failed on it) gets a "crashed" row per
+// exercise. "" or why the outputs could not be written.
+std::string writeClassOutputs(const fs::path& out, const std::vector<std::string>& ids,
+                              const std::vector<std::string>& students, Summary& summary) {
+  std::vector<ClassRow> rows;
+  for (auto& s : students) {
+    const fs::path report = out / "students" / s / "report.json";
+    if (fs::exists(report)) {
+      if (auto e = readStudentRows(report, s, rows); !e.empty()) return e;
+    } else {
+      for (auto& id : ids) {
+        ClassRow row;
+        row.student = s;
+        row.exercise = row.title = id;
+        row.status = "crashed";
+        rows.push_back(row);
+      }
+    }
+  }
+  summary.submissions = int(students.size());
+  for (auto& r : rows) ++summary.statuses[r.status];
+  for (auto& [name, text] : {std::pair{"gradebook.csv", gradebookCsv(rows)}, std::pair{"class.html", classHtml(rows, out / "students")}})
+    if (auto e = writeTextFile((out / name).string(), text); !e.empty()) return e;
+  return {};
+}
+
+nlohmann::json classJson(const std::vector<std::string>& ids, int shard, int shards, const std::vector<std::string>& students) {
+  return {{"exercises", ids}, {"shard", shard}, {"shards", shards}, {"students", students}};
+}
+
+void printSummary(const fs::path& out, const Summary& s) {
+  std::string line;
+  for (Outcome o : {Outcome::Graded, Outcome::DidNotBuild, Outcome::TimedOut, Outcome::Crashed, Outcome::NotSubmitted})
+    if (auto n = s.statuses.find(outcomeName(o)); n != s.statuses.end())
+      line += (line.empty() ? "" : ", ") + std::to_string(n->second) + " " + n->first;
+  std::printf("class: %d submissions (%s)\ngradebook: %s\nclass page: %s\n", s.submissions, line.c_str(),
+              (out / "gradebook.csv").c_str(), (out / "class.html").c_str());
+}
+
+// A fresh output folder outside what is graded; "" or why not.
+std::string prepareOut(const fs::path& out, const std::vector<fs::path>& graded) {
+  for (auto& g : graded)
+    if (pathInside(out, g))
+      return "--out " + out.string() + " lies inside " + g.string() + ", which is only ever read; write elsewhere";
+  std::error_code ec;
+  if (fs::exists(out / "class.json", ec) || fs::exists(out / "gradebook.csv", ec))
+    return "--out " + out.string() + " already holds a class's grades; nothing is overwritten";
+  fs::create_directories(out / "students", ec);
+  if (!ec) fs::create_directories(out / "logs", ec);
+  return ec ? "--out " + out.string() + ": " + ec.message() : "";
+}
+
+}  // namespace
+
+int runGradeClass(const Options& o) {
+  if (o.exercise.empty() == !o.allExercises)
+    return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
+  if (!o.shaderDirs.empty()) return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
+  const std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
+  for (auto& id : ids)
+    if (Exercise ex; !loadExercise(exercisesRoot(), id, ex).empty()) return cannotGrade(loadExercise(exercisesRoot(), id, ex));
+  std::vector<Submission> all;
+  if (auto e = listSubmissions(o.classDir, all); !e.empty()) return cannotGrade(e);
+  if (all.empty()) return cannotGrade("--class " + o.classDir.string() + " holds no submissions (a folder or a .zip per student)");
+  // The slice: every n-th submission by name, starting at the i-th. Which shard a student falls
+  // in depends only on the sorted names, so every node computes the same split.
+  std::vector<Submission> mine;
+  for (size_t k = 0; k < all.size(); ++k)
+    if (int(k % size_t(o.shards)) == o.shard - 1) mine.push_back(all[k]);
+
+  const fs::path out = o.out.empty() ? freshName("grades", "class-" + gradeSlug(o.allExercises ? "all" : o.exercise), "") : fs::path(o.out);
+  if (auto e = prepareOut(out, {o.classDir}); !e.empty()) return cannotGrade(e);
+  const SolutionCache cache = solutionCacheFor(o);
+  std::printf("grading %zu of %zu submissions in %s (shard %d of %d), %zu exercise%s, %d at a time\n", mine.size(), all.size(),
+              o.classDir.c_str(), o.shard, o.shards, ids.size(), ids.size() == 1 ? "" : "s", o.jobs);
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  if (cache.enabled()) {
+    CacheCount count;
+    if (auto e = prepareSolutions(ids, o.backend, cache, out / "logs", count); !e.empty()) return cannotGrade(e);
+    std::printf("solutions: %d configurations, %d from the cache, %d rendered (%s)\n", count.fromCache + count.rendered,
+                count.fromCache, count.rendered, cache.dir().c_str());
+  }
+  std::fflush(stdout);
+
+  // Workers: one process per submission, at most --jobs at once. The parent holds no GL context
+  // and no threads; each worker forks its own watched children.
+  std::map<pid_t, const Submission*> running;
+  bool failed = false;
+  const auto reap = [&] {
+    int status = 0;
+    const pid_t pid = wait(&status);
+    if (pid <= 0 || !running.count(pid)) return;
+    const Submission& sub = *running[pid];
+    running.erase(pid);
+    std::vector<ClassRow> rows;
+    const fs::path report = out / "students" / sub.name / "report.json";
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !readStudentRows(report, sub.name, rows).empty()) {
+      failed = true;
+      std::printf("  %-24s not graded: the grader failed (see %s)\n", sub.name.c_str(),
+                  (out / "students" / sub.name / "grade.log").c_str());
+    }
+    for (auto& r : rows)
+      std::printf("  %-24s %-22s %5g / %-3g %s\n", sub.name.c_str(), r.exercise.c_str(), std::round(r.score * 100) / 100,
+                  r.total, r.status.c_str());
+    std::fflush(stdout);
+  };
+  for (auto& sub : mine) {
+    while (int(running.size()) >= o.jobs) reap();
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) _exit(gradeSubmission(sub, ids, o, out, cache));
+    if (pid < 0) return cannotGrade(std::string("cannot start a worker: ") + std::strerror(errno));
+    running[pid] = &sub;
+  }
+  while (!running.empty()) reap();
+  fs::remove_all(out / "unpacked");
+
+  std::vector<std::string> names;
+  for (auto& s : mine) names.push_back(s.name);
+  Summary summary;
+  if (auto e = writeClassOutputs(out, ids, names, summary); !e.empty()) return cannotGrade(e);
+  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, o.shard, o.shards, names).dump(2) + "\n"); !e.empty())
+    return cannotGrade(e);
+  printSummary(out, summary);
+  std::printf("took %.1f s, %.2f s per submission\n", std::chrono::duration<double>(Clock::now() - start).count(),
+              std::chrono::duration<double>(Clock::now() - start).count() / std::max<size_t>(1, mine.size()));
+  return failed ? 1 : 0;
+}
+
+int runGradeMerge(const Options& o) {
+  if (o.positional.empty() || o.positional[0] != "merge") return cannotGrade("unexpected argument '" + o.positional[0] + "'");
+  const std::vector<std::string> dirs(o.positional.begin() + 1, o.positional.end());
+  if (dirs.empty()) return cannotGrade("merge: name the shards' output folders: grade merge DIR... --out DIR");
+  if (o.out.empty()) return cannotGrade("merge: --out DIR is required: where the joined gradebook and class page go");
+
+  std::vector<std::string> ids, students;
+  std::map<int, std::string> shardDirs;
+  int shards = 0;
+  std::map<std::string, fs::path> from;  // student -> the shard folder holding their report
+  for (auto& d : dirs) {
+    const fs::path file = fs::path(d) / "class.json";
+    std::string text;
+    if (!readWholeFile(file, text)) return cannotGrade("merge: " + file.string() + " cannot be read (not the output of grade --class)");
+    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+    if (j.is_discarded() || !j.is_object() || !j.contains("exercises") || !j["exercises"].is_array() || !j.contains("students") ||
+        !j["students"].is_array() || !j.value("shard", nlohmann::json()).is_number_integer() ||
+        !j.value("shards", nlohmann::json()).is_number_integer())
+      return cannotGrade("merge: " + file.string() + ": not a class record (needs exercises, students, shard, shards)");
+    std::vector<std::string> theirs;
+    for (auto& e : j["exercises"])
+      if (e.is_string()) theirs.push_back(e.get<std::string>());
+    const int shard = j["shard"].get<int>(), of = j["shards"].get<int>();
+    if (ids.empty()) {
+      ids = theirs;
+      shards = of;
+    } else if (theirs != ids || of != shards) {
+      return cannotGrade("merge: " + d + " graded other exercises or another split (" + std::to_string(of) + " shards) than " +
+                         dirs.front());
+    }
+    if (shard < 1 || shard > of) return cannotGrade("merge: " + file.string() + ": shard " + std::to_string(shard) + " of " + std::to_string(of));
+    if (shardDirs.count(shard))
+      return cannotGrade("merge: shard " + std::to_string(shard) + " is given twice (" + shardDirs[shard] + " and " + d + ")");
+    shardDirs[shard] = d;
+    for (auto& s : j["students"]) {
+      if (!s.is_string()) continue;
+      const std::string name = s.get<std::string>();
+      if (name.empty() || name[0] == '.' || name.find('/') != std::string::npos)
+        return cannotGrade("merge: " + file.string() + ": '" + name + "' is not a submission's name");
+      if (from.count(name)) return cannotGrade("merge: '" + name + "' was graded by two shards (" + from[name].string() + ", " + d + ")");
+      from[name] = d;
+      students.push_back(name);
+    }
+  }
+  for (int i = 1; i <= shards; ++i)
+    if (!shardDirs.count(i))
+      return cannotGrade("merge: shard " + std::to_string(i) + " of " + std::to_string(shards) + " is missing; give every shard's --out folder");
+
+  const fs::path out = o.out;
+  std::vector<fs::path> inputs(dirs.begin(), dirs.end());
+  if (auto e = prepareOut(out, inputs); !e.empty()) return cannotGrade(e);
+  std::sort(students.begin(), students.end());
+  for (auto& s : students) {
+    std::error_code ec;
+    fs::copy(from[s] / "students" / s, out / "students" / s, fs::copy_options::recursive, ec);
+    if (ec) return cannotGrade("merge: " + (from[s] / "students" / s).string() + ": " + ec.message());
+  }
+  Summary summary;
+  if (auto e = writeClassOutputs(out, ids, students, summary); !e.empty()) return cannotGrade(e);
+  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, 1, 1, students).dump(2) + "\n"); !e.empty())
+    return cannotGrade(e);
+  printSummary(out, summary);
+  return 0;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,157 @@
+#include "grade/solution_cache.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+
+#include "util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kMagic = "SHADELAB-SOLUTION 1\n";
+constexpr int kMaxSide = 16384;
+
+template <typename T>
+void put(std::string& out, T v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof v);
+}
+
+// Reads from a byte string, failing (rather than reading past the end) on anything short.
+struct Reader {
+  std::string_view bytes;
+  size_t at = 0;
+  bool take(void* dst, size_t n) {
+    if (n > bytes.size() - at) return false;
+    std::memcpy(dst, bytes.data() + at, n);
+    at += n;
+    return true;
+  }
+  template <typename T>
+  bool get(T& v) {
+    return take(&v, sizeof v);
+  }
+};
+
+void putImage(std::string& out, const ImageF& image) {
+  put<int32_t>(out, image.size.x);
+  put<int32_t>(out, image.size.y);
+  out.append(reinterpret_cast<const char*>(image.rgba.data()), image.rgba.size() * sizeof(float));
+}
+
+bool getImage(Reader& in, ImageF& image) {
+  int32_t w = 0, h = 0;
+  if (!in.get(w) || !in.get(h) || w < 1 || h < 1 || w > kMaxSide || h > kMaxSide) return false;
+  const size_t floats = size_t(w) * size_t(h) * 4;
+  if (floats * sizeof(float) > in.bytes.size() - in.at) return false;
+  image.size = {w, h};
+  image.rgba.resize(floats);
+  return in.take(image.rgba.data(), floats * sizeof(float));
+}
+
+}  // namespace
+
+ContentHash& ContentHash::add(std::string_view bytes) {
+  // Two FNV-1a lanes with different multipliers and offsets: 128 bits between them.
+  for (unsigned char c : bytes) {
+    a_ = (a_ ^ c) * 0x100000001b3ull;         // FNV's 64-bit prime
+    b_ = (b_ ^ c) * 0x9e3779b97f4a7c15ull;    // odd: 2^64 / golden ratio
+  }
+  return *this;
+}
+
+ContentHash& ContentHash::addFile(const fs::path& file) {
+  std::string bytes;
+  if (!readWholeFile(file, bytes)) return add("\x01(unreadable)\x01");
+  return add(std::to_string(bytes.size()) + ":").add(bytes);
+}
+
+ContentHash& ContentHash::addTree(const fs::path& dir) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) files.push_back(it->path().lexically_relative(dir));
+  std::sort(files.begin(), files.end());
+  add(std::to_string(files.size()) + " files\n");
+  for (auto& f : files) add(f.generic_string() + "\n").addFile(dir / f);
+  return *this;
+}
+
+std::string ContentHash::hex() const {
+  char s[33];
+  std::snprintf(s, sizeof s, "%016llx%016llx", static_cast<unsigned long long>(a_), static_cast<unsigned long long>(b_));
+  return s;
+}
+
+SolutionCache::SolutionCache(fs::path dir) : dir_(std::move(dir)) {}
+
+fs::path SolutionCache::file(const std::string& key) const { return dir_ / (key + ".bin"); }
+
+bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
+  if (!enabled()) return false;
+  std::string bytes;
+  if (!readWholeFile(file(key), bytes)) return false;
+  Reader in{bytes};
+  if (bytes.compare(0, kMagic.size(), kMagic) != 0) return false;
+  in.at = kMagic.size();
+  uint32_t jsonBytes = 0, images = 0;
+  if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
+  CachedSolution entry;
+  entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
+  in.at += jsonBytes;
+  if (entry.numbers.is_discarded() || !entry.numbers.is_object()) return false;
+  if (!in.get(images) || images < 1 || images > 64 || !getImage(in, entry.frame)) return false;
+  entry.truths.resize(images - 1);
+  for (auto& t : entry.truths)
+    if (!getImage(in, t)) return false;
+  if (in.at != bytes.size()) return false;
+  out = std::move(entry);
+  return true;
+}
+
+std::string SolutionCache::store(const std::string& key, const CachedSolution& entry) const {
+  if (!enabled()) return {};
+  std::string bytes(kMagic);
+  const std::string json = entry.numbers.dump();
+  put<uint32_t>(bytes, uint32_t(json.size()));
+  bytes += json;
+  put<uint32_t>(bytes, uint32_t(1 + entry.truths.size()));
+  putImage(bytes, entry.frame);
+  for (auto& t : entry.truths) putImage(bytes, t);
+
+  std::error_code ec;
+  fs::create_directories(dir_, ec);
+  if (ec) return "the solution cache " + dir_.string() + ": " + ec.message();
+  // Another process may be writing the same entry: each writes its own file and the last rename wins.
+  const fs::path temp = dir_ / (key + ".tmp-" + std::to_string(getpid()));
+  {
+    std::ofstream out(temp, std::ios::binary);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    if (!out.flush()) {
+      fs::remove(temp, ec);
+      return "the solution cache " + temp.string() + ": could not write";
+    }
+  }
+  fs::rename(temp, file(key), ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    return "the solution cache " + file(key).string() + ": " + ec.message();
+  }
+  return {};
+}
+
+fs::path defaultSolutionCacheDir() {
+  if (const char* env = std::getenv("SHADELAB_CACHE"); env && *env) return fs::path(env) / "solutions";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "shadelab" / "solutions";
+  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "shadelab" / "solutions";
+  return {};
+}
+
+}  // namespace shadelab

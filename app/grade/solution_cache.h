@@ -1,0 +1,67 @@
+// What grading renders with the built-in shaders, kept between runs: for one rubric configuration,
+// the solution's frame, the lab's ground truths and the solution's numbers against them. A class of
+// 500 students needs them once, not 500 times.
+//
+// An entry is named by a key over everything that could change it: the contents of every built-in
+// shader file, the exercise's rubric, the configuration's place in it, the program that renders
+// (the executable's bytes: a change to a lab's code changes its truth) and the renderer (GL
+// vendor, renderer and version). Change any of them and the old entry is simply never asked for.
+//
+// Entries are written under a temporary name and renamed into place, so processes grading side
+// by side (--jobs, shards on a shared folder) never read half an entry; an entry that does not read
+// back whole (truncated, another version's layout) is a miss, never an error.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "measure/image.h"
+
+namespace shadelab {
+
+// A 128-bit content hash (two independent FNV-1a lanes): a cache key, not a defence against
+// someone forging collisions; nothing a student hands in goes into a key.
+class ContentHash {
+ public:
+  ContentHash& add(std::string_view bytes);
+  // The file's bytes, preceded by its length so that two files cannot run into each other; a file
+  // that cannot be read adds a marker instead.
+  ContentHash& addFile(const std::filesystem::path& file);
+  // Every regular file under `dir`, in order of their relative paths, each name with its bytes.
+  ContentHash& addTree(const std::filesystem::path& dir);
+  std::string hex() const;  // 32 hex digits
+
+ private:
+  uint64_t a_ = 0xcbf29ce484222325ull, b_ = 0x84222325cbf29ce4ull;
+};
+
+struct CachedSolution {
+  ImageF frame;                 // the solution's frame
+  std::vector<ImageF> truths;   // the lab's references for the configuration (empty when no check needs them)
+  nlohmann::json numbers;       // what the solution's phase reports: renderer, vs_truth
+};
+
+class SolutionCache {
+ public:
+  SolutionCache() = default;                          // off: every lookup misses, nothing is stored
+  explicit SolutionCache(std::filesystem::path dir);  // created on the first store
+  bool enabled() const { return !dir_.empty(); }
+  const std::filesystem::path& dir() const { return dir_; }
+
+  bool load(const std::string& key, CachedSolution& out) const;
+  // "" on success, else why it could not be stored (grading goes on without it).
+  std::string store(const std::string& key, const CachedSolution& entry) const;
+
+ private:
+  std::filesystem::path file(const std::string& key) const;
+  std::filesystem::path dir_;
+};
+
+// $SHADELAB_CACHE, else $XDG_CACHE_HOME/shadelab, else ~/.cache/shadelab; "solutions" under it.
+std::filesystem::path defaultSolutionCacheDir();
+
+}  // namespace shadelab
