@@ -44,7 +44,7 @@ int run(int argc, char** argv) {
   Options o;
   if (auto err = parseOptions(int(args.size()), args.data(), o); !err.empty()) {
     std::fprintf(stderr, "shadelab: %s\n", err.c_str());
-    return 1;
+    return o.command == "grade" ? 2 : 1;  // grade's 1 means "below the pass mark"; 2 is "could not grade"
   }
   if (o.help) {
     std::printf("%s", usage().c_str());

@@ -29,18 +29,23 @@ nlohmann::json metricsJson(const Metrics& metrics) {
   return j;
 }
 
-// Every error of the programs this frame used, at the student's file:line with the caret.
+// The errors of the programs this frame used (the first 20), at the student's file:line with the caret.
 std::vector<std::string> buildErrors(LabHost& host) {
+  constexpr size_t kMostErrors = 20;  // a file that makes thousands of errors: its first ones say enough
   std::vector<std::string> out;
+  size_t more = 0;
   for (auto& p : host.lab().activePrograms()) {
     if (!p->lastBuildFailed() && p->hasGoodProgram()) continue;
     for (auto& d : p->diagnostics())
       if (d.isError) {
         const std::string text = p->spec().name + ": " + d.formatWithCaret();
-        if (std::find(out.begin(), out.end(), text) == out.end()) out.push_back(text);
+        if (std::find(out.begin(), out.end(), text) != out.end()) continue;
+        if (out.size() < kMostErrors) out.push_back(text);
+        else ++more;
       }
     if (p->diagnostics().empty()) out.push_back(p->spec().name + ": did not build (no message from the driver)");
   }
+  if (more) out.push_back("... and " + std::to_string(more) + " more errors");
   return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -12,6 +13,10 @@
 #include <cstring>
 
 namespace shadelab {
+
+namespace {
+constexpr rlim_t kMaxChildFileBytes = rlim_t(256) << 20;
+}
 
 std::string WatchedRun::describe() const {
   char seconds[32];
@@ -32,6 +37,10 @@ WatchedRun runWatched(const WatchedWork& work, const std::function<double(const 
   const pid_t pid = fork();
   if (pid == 0) {
     close(fds[0]);
+    // Nothing a configuration writes (images, numbers, its log) comes near this; a child that
+    // tries is stopped by SIGXFSZ and counted as crashed, its submission alone paying for it.
+    const rlimit fileSize{kMaxChildFileBytes, kMaxChildFileBytes};
+    setrlimit(RLIMIT_FSIZE, &fileSize);
     if (int log = open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644); log >= 0) {
       dup2(log, STDOUT_FILENO);
       dup2(log, STDERR_FILENO);

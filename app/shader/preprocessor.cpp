@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cctype>
+#include <cstdio>
 #include <regex>
 
 #include "util/contained_path.h"
@@ -57,6 +58,24 @@ std::string includeTarget(const std::string& line) {
 bool isVersionLine(const std::string& line) {
   size_t i = line.find_first_not_of(" \t");
   return i != std::string::npos && line.compare(i, 8, "#version") == 0;
+}
+
+// The largest shader file read: the lab's largest is 16 KB. A student's folder could hold a file
+// of gigabytes; it is refused by its size before a byte of it is read.
+constexpr uintmax_t kMaxShaderFileBytes = uintmax_t(1) << 20;
+
+// "" and the file's text, or why it is not read.
+std::string readShaderFile(const fs::path& file, std::string& text) {
+  std::error_code ec;
+  uintmax_t bytes = fs::file_size(file, ec);
+  if (!ec && bytes <= kMaxShaderFileBytes && readWholeFile(file, text)) bytes = text.size();  // it may have grown since
+  else if (ec || bytes <= kMaxShaderFileBytes) return "cannot be read";
+  if (bytes <= kMaxShaderFileBytes) return {};
+  text.clear();
+  char s[96];
+  std::snprintf(s, sizeof s, "is %.1f MB; a shader file may be at most %d MB", double(bytes) / (1 << 20),
+                int(kMaxShaderFileBytes >> 20));
+  return s;
 }
 
 void fail(PreprocessedSource& out, std::string file, int line, int column, std::string message) {
@@ -131,8 +150,12 @@ struct Expander {
         }
         const fs::path file = found.file;
         std::string incText;
-        if (file.empty() || !readWholeFile(file, incText)) {
+        if (file.empty()) {
           fail(out, out.files[fileIndex].string(), lineNo, nameColumn, "cannot find include \"" + target + "\"");
+          return false;
+        }
+        if (auto why = readShaderFile(file, incText); !why.empty()) {
+          fail(out, out.files[fileIndex].string(), lineNo, nameColumn, "#include \"" + target + "\": " + file.string() + " " + why);
           return false;
         }
         const int k = int(out.files.size());
@@ -235,8 +258,12 @@ PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::str
     fail(out, relPath, 0, 0, found.refused);
     return out;
   }
-  if (file.empty() || !readWholeFile(file, text)) {
+  if (file.empty()) {
     fail(out, relPath, 0, 0, "shader file not found in the search path");
+    return out;
+  }
+  if (auto why = readShaderFile(file, text); !why.empty()) {
+    fail(out, file.string(), 0, 0, why);
     return out;
   }
   out.files.push_back(file);
