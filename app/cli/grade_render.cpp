@@ -13,10 +13,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string configure(LabHost& host, const Exercise& ex, const Configuration& c) {
+// A host made with the configuration's lab and scene (a child draws one configuration: no other
+// lab's or scene's build on the way), then its settings and camera.
+std::unique_ptr<LabHost> configuredHost(const std::vector<fs::path>& roots, const Exercise& ex, const Configuration& c,
+                                        std::string& error) {
+  auto host = std::make_unique<LabHost>(ShaderSearchPath(roots), ex.lab, c.scene);
   std::vector<std::string> sets;
   for (auto& [key, value] : c.settings) sets.push_back(key + "=" + value);
-  return configureHost(host, ex.lab, c.scene, sets, {}, c.camera);
+  error = configureHost(*host, ex.lab, host->sceneId() == c.scene ? std::string() : c.scene, sets, {}, c.camera);
+  return host;
 }
 
 void writeResult(const ConfigurationJob& job, const std::string& phase, const nlohmann::json& j) {
@@ -91,8 +96,10 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   const bool cached = job.cache.load(key, built);
   if (!cached) {
     built.numbers = {{"renderer", renderer}};
-    LabHost host(ShaderSearchPath({builtinShaderDir()}));
-    if (auto e = configure(host, ex, c); !e.empty()) return failSolution(where + ": " + e);
+    std::string configError;
+    const auto solutionHost = configuredHost({builtinShaderDir()}, ex, c, configError);
+    if (!configError.empty()) return failSolution(where + ": " + configError);
+    LabHost& host = *solutionHost;
     host.settle();
     host.renderFrame(ex.size);
     built.frame = host.readImage();
@@ -122,8 +129,10 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   enter("student");
   std::vector<fs::path> roots = job.studentDirs;
   roots.push_back(builtinShaderDir());
-  LabHost host{ShaderSearchPath(roots)};
-  if (auto e = configure(host, ex, c); !e.empty()) return failSolution(where + ": " + e);
+  std::string configError;
+  const auto studentHost = configuredHost(roots, ex, c, configError);
+  if (!configError.empty()) return failSolution(where + ": " + configError);
+  LabHost& host = *studentHost;
   host.settle();
   host.renderFrame(ex.size);
   const ImageF image = host.readImage();

@@ -146,7 +146,7 @@ std::string gradebookCsv(const std::vector<ClassRow>& rows) {
     for (auto& c : row.checks)
       if (std::find(columns.begin(), columns.end(), checkKey(row, c)) == columns.end()) columns.push_back(checkKey(row, c));
   std::string csv = "student,exercise,status,score,total,percent,passed";
-  for (auto& c : columns) csv += "," + csvField(c);
+  for (auto& c : columns) csv.append(",").append(csvField(c));
   csv += "\n";
   for (auto& row : rows) {
     csv += csvField(row.student) + "," + csvField(row.exercise) + "," + csvField(row.status) + "," + points(row.score) + "," +

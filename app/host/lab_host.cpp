@@ -1,12 +1,17 @@
 #include "host/lab_host.h"
 
+#include <algorithm>
+
 #include "host/truth.h"
 #include "scene/scene_catalog.h"
 
 namespace shadelab {
 
-LabHost::LabHost(ShaderSearchPath shaderPath) : shaders_(std::make_unique<ShaderLibrary>(std::move(shaderPath))) {
-  selectLab(labIds().front());
+LabHost::LabHost(ShaderSearchPath shaderPath, std::string_view firstLab, const std::string& firstScene)
+    : shaders_(std::make_unique<ShaderLibrary>(std::move(shaderPath))) {
+  const std::vector<std::string> ids = labIds();
+  const bool known = std::find(ids.begin(), ids.end(), firstLab) != ids.end();
+  if (!known || !enterLab(firstLab, firstScene).empty()) selectLab(known ? firstLab : std::string_view(ids.front()));
 }
 
 LabHost::~LabHost() {
@@ -14,7 +19,7 @@ LabHost::~LabHost() {
   if (lab_ && labReady_) lab_->teardown();
 }
 
-std::string LabHost::selectLab(std::string_view id) {
+std::string LabHost::enterLab(std::string_view id, const std::string& firstScene) {
   auto next = makeLab(id);
   if (!next) {
     std::string valid;
@@ -31,7 +36,7 @@ std::string LabHost::selectLab(std::string_view id) {
   shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
   labReady_ = true;
-  const std::string scene = std::string(lab_->defaultScene());
+  const std::string scene = firstScene.empty() ? std::string(lab_->defaultScene()) : firstScene;
   heightMap_.clear();
   const std::string err = rebuildScene(scene, lab_->needs(), true);
   previous_.reset();  // the old lab's scene, which rebuildScene kept: of no use to this lab

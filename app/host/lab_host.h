@@ -24,10 +24,13 @@ namespace shadelab {
 class LabHost {
  public:
   // Needs a current GL context. `shaderPath`: the student's folders first, then shaders/.
-  explicit LabHost(ShaderSearchPath shaderPath);
+  // `firstLab`, `firstScene`: what is set up first (the first of labIds() when empty or unknown,
+  // the lab's default scene when empty or when it does not build), so that a caller who wants one
+  // lab and scene does not build another on the way; sceneId() says which scene was built.
+  explicit LabHost(ShaderSearchPath shaderPath, std::string_view firstLab = {}, const std::string& firstScene = {});
   ~LabHost();
 
-  std::string selectLab(std::string_view id);
+  std::string selectLab(std::string_view id) { return enterLab(id, {}); }
   std::string selectScene(const std::string& idOrPath);
   // An image (PNG, JPEG, ...) as the height map of every material of the current scene, white =
   // high (a lab may read it as depth): a user's own relief for a mesh whose file has none. Kept
@@ -89,6 +92,7 @@ class LabHost {
   const char* timerClock() const { return timer_.clockName(); }
 
  private:
+  std::string enterLab(std::string_view id, const std::string& scene);  // "" = the lab's default scene
   // A scene built for one set of needs, uploaded.
   struct Built {
     Scene scene;
