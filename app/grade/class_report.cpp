@@ -96,37 +96,44 @@ std::string readStudentRows(const fs::path& reportJson, const std::string& stude
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("exercises") || !j["exercises"].is_array())
     return reportJson.string() + ": not a grade report (no \"exercises\" list)";
-  const auto number = [](const nlohmann::json& v) { return v.is_number() ? v.get<double>() : std::nan(""); };
+  // Fields read by name; a missing or mistyped one reads as "" or NaN (a const json's operator[]
+  // must not be asked for a key it lacks).
   const auto text = [](const nlohmann::json& o, const char* key) {
-    return o.contains(key) && o[key].is_string() ? o[key].get<std::string>() : std::string();
+    const auto it = o.find(key);
+    return it != o.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  const auto number = [](const nlohmann::json& o, const char* key) {
+    const auto it = o.find(key);
+    return it != o.end() && it->is_number() ? it->get<double>() : std::nan("");
+  };
+  const auto list = [](const nlohmann::json& o, const char* key) {
+    const auto it = o.find(key);
+    return it != o.end() && it->is_array() ? *it : nlohmann::json::array();
   };
   try {
     for (auto& e : j["exercises"]) {
+      if (!e.is_object()) return reportJson.string() + ": an exercise that is not an object";
       ClassRow row;
       row.student = student;
-      row.exercise = text(e, "id");
-      row.title = text(e, "title");
-      row.status = text(e, "status");
-      row.score = number(e["score"]);
-      row.total = number(e["total"]);
-      row.percent = number(e["percent"]);
-      row.passMark = number(e["pass_mark"]);
+      for (auto [key, member] : {std::pair{"id", &ClassRow::exercise}, {"title", &ClassRow::title}, {"status", &ClassRow::status}})
+        row.*member = text(e, key);
+      for (auto [key, member] : {std::pair{"score", &ClassRow::score}, {"total", &ClassRow::total},
+                                 {"percent", &ClassRow::percent}, {"pass_mark", &ClassRow::passMark}})
+        row.*member = number(e, key);
       row.passed = e.value("passed", false);
-      for (auto& c : e["checks"]) {
+      for (auto& c : list(e, "checks")) {
+        if (!c.is_object()) continue;
         ClassCheck check;
-        check.configuration = text(c, "configuration");
-        check.check = text(c, "check");
-        check.metric = text(c, "metric");
-        check.result = text(c, "result");
-        check.hint = text(c, "hint");
-        check.message = text(c, "message");
-        check.value = number(c["value"]);
-        check.fullAt = number(c["full_at"]);
-        check.points = number(c["points"]);
-        check.maxPoints = number(c["max_points"]);
-        if (c.contains("images") && c["images"].is_object()) {
-          check.studentImage = text(c["images"], "student");
-          check.diffImage = text(c["images"], "diff");
+        for (auto [key, member] : {std::pair{"configuration", &ClassCheck::configuration}, {"check", &ClassCheck::check},
+                                   {"metric", &ClassCheck::metric}, {"result", &ClassCheck::result},
+                                   {"hint", &ClassCheck::hint}, {"message", &ClassCheck::message}})
+          check.*member = text(c, key);
+        for (auto [key, member] : {std::pair{"value", &ClassCheck::value}, {"full_at", &ClassCheck::fullAt},
+                                   {"points", &ClassCheck::points}, {"max_points", &ClassCheck::maxPoints}})
+          check.*member = number(c, key);
+        if (const auto images = c.find("images"); images != c.end() && images->is_object()) {
+          check.studentImage = text(*images, "student");
+          check.diffImage = text(*images, "diff");
         }
         row.checks.push_back(std::move(check));
       }
