@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 #include <zip.h>
 
@@ -46,15 +47,17 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-// The lab's pcf.glsl with `find` (exactly once) replaced.
-std::string pcfWith(const std::string& find, const std::string& replace) {
-  std::string text = readText(builtinShaderDir() / "shadows/pcf.glsl");
+// The lab's `file` with `find` (exactly once) replaced.
+std::string labFileWith(const std::string& file, const std::string& find, const std::string& replace) {
+  std::string text = readText(builtinShaderDir() / file);
   const size_t at = text.find(find);
-  EXPECT_NE(at, std::string::npos) << "shadows/pcf.glsl no longer holds: " << find;
+  EXPECT_NE(at, std::string::npos) << file << " no longer holds: " << find;
   EXPECT_EQ(text.find(find, at + 1), std::string::npos) << find;
   if (at != std::string::npos) text.replace(at, find.size(), replace);
   return text;
 }
+
+std::string pcfWith(const std::string& find, const std::string& replace) { return labFileWith("shadows/pcf.glsl", find, replace); }
 
 const std::string kTap = "lit += tapCompare(type, L, map, cube, q, vec2(i, j) - 0.5 * float(PCF_SIZE - 1));";
 
@@ -315,4 +318,67 @@ TEST(GradeClass, BadArgumentsAreNamed) {
     EXPECT_EQ(shard.exitCode, 2) << bad << ": grade exits 2 when it cannot grade";
     EXPECT_NE(shard.output.find("--shard: '" + std::string(bad) + "' is not i/n"), std::string::npos) << shard.output;
   }
+}
+
+// --all over a class of three: the lab's own shaders (full marks everywhere), every exercise's
+// starter (each below 30 %), and the seeded mistakes of tests/grade in one folder, each failing
+// the check meant to catch it.
+TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) {
+  const fs::path root = scratch("all"), cls = root / "class", out = root / "out";
+  fs::create_directories(cls);
+  fs::copy(builtinShaderDir(), cls / "solution", fs::copy_options::recursive);
+  const std::vector<std::string> ids = listExercises(exercisesRoot());
+  for (auto& id : ids) {
+    Exercise ex;
+    ASSERT_EQ(loadExercise(exercisesRoot(), id, ex), "");
+    fs::copy(ex.dir / "starter", cls / "starters", fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  }
+  struct Mistake {
+    std::string file, find, replace, exercise, check;
+  };
+  const std::vector<Mistake> mistakes = {
+      {"common/specular.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)", "max(dot(N, L + V), 0.0)", "shading/blinn-phong",
+       "highlight"},
+      {"shadows/pcf.glsl", kTap,
+       "{ vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1); lit += receiverDepth(type, L, q, o) + q.bias > "
+       "tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0; }",
+       "shadows/pcf", "no acne"},
+      {"surface/bump.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));", "surface/bump",
+       "shaded relief"},
+      {"filtering/bilinear.glsl", "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
+       "vec2 p = fract(uv) * vec2(levelSize(s, level));", "filtering/bilinear", "smooth ramps between texels"},
+  };
+  for (auto& m : mistakes) writeText(cls / "mistakes" / m.file, labFileWith(m.file, m.find, m.replace));
+
+  const Ran r = runShadelab("grade --class '" + cls.string() + "' --all --jobs 2 --out '" + out.string() + "' --cache '" +
+                            (root / "cache").string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::map<std::pair<std::string, std::string>, nlohmann::json> rows;  // (student, exercise) -> its report entry
+  for (const char* student : {"solution", "starters", "mistakes"}) {
+    const nlohmann::json report = nlohmann::json::parse(readText(out / "students" / student / "report.json"), nullptr, false);
+    ASSERT_TRUE(report.is_object()) << student;
+    for (auto& e : report["exercises"]) rows[{student, e["id"].get<std::string>()}] = e;
+  }
+  for (auto& id : ids) {
+    const nlohmann::json &solution = rows[std::pair<std::string, std::string>("solution", id)],
+                         &starter = rows[std::pair<std::string, std::string>("starters", id)];
+    EXPECT_DOUBLE_EQ(solution["percent"].get<double>(), 100.0) << id;
+    EXPECT_EQ(starter["status"], "graded") << id;
+    EXPECT_LT(starter["percent"].get<double>(), 30.0) << id;
+  }
+  for (auto& m : mistakes) {
+    const nlohmann::json& e = rows[{"mistakes", m.exercise}];
+    bool found = false;
+    for (auto& c : e["checks"])
+      if (c["check"] == m.check) {
+        found = true;
+        EXPECT_NE(c["result"], "PASS") << m.exercise << ": " << m.check;
+      }
+    EXPECT_TRUE(found) << m.exercise << " has no check '" << m.check << "'";
+  }
+  // The gradebook: a row per student and exercise.
+  std::istringstream book(readText(out / "gradebook.csv"));
+  size_t lines = 0;
+  for (std::string line; std::getline(book, line);) ++lines;
+  EXPECT_EQ(lines, 1 + 3 * ids.size());
 }
