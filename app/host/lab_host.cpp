@@ -202,6 +202,11 @@ GlTraceStep LabHost::traceOnGl(const gl::RenderTarget& target, const OrbitCamera
   return step;
 }
 
+bool LabHost::pollChanges() {
+  const bool rebuilt = shaders_->reloadChanged() > 0;
+  return jobs_.deliver() > 0 || rebuilt;
+}
+
 const std::vector<gl::PassTiming>& LabHost::renderFrame(glm::ivec2 size, float time, float dt) {
   shaders_->reloadChanged();
   jobs_.deliver();

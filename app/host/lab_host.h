@@ -50,6 +50,9 @@ class LabHost {
 
   // Delivers finished jobs, makes the scene match the lab's needs, reloads changed shaders,
   // lets the lab update and renders one frame into the view's target.
+  // Between frames of a window that has stopped drawing: rebuilds programs whose files were saved
+  // and takes finished jobs' results; true when either happened, so that the frame is drawn.
+  bool pollChanges();
   const std::vector<gl::PassTiming>& renderFrame(glm::ivec2 size, float time = 0.0f, float dt = 0.0f);
   ImageF readImage() const { return {target_->size(), target_->readRgba()}; }
   // One frame of the current settings into `target` as `camera` sees it, shifted by `jitter`

@@ -144,6 +144,9 @@ class Lab {
   // Once per frame before render(), with the scene built for needs(): where a lab submits jobs
   // for derived results whose inputs changed, and uploads results that arrived.
   virtual void update(const Scene& scene, float dt) {}
+  // Whether the frame changes with time alone (an animated camera): the window keeps drawing while
+  // it does, and otherwise stops drawing when nothing moves.
+  virtual bool animating() const { return false; }
   virtual void render(Frame& frame) = 0;
   // Programs used by the current configuration (for the Shaders panel and error display).
   virtual std::vector<ProgramRef> activePrograms() const = 0;

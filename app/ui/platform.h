@@ -14,6 +14,10 @@ namespace shadelab {
 // so `frame` must own everything it uses.
 void runMainLoop(std::function<bool()> frame);
 
+// Waits up to `seconds` for a window event (input, a resize, an expose) and handles it; the page,
+// whose animation frames pace it, only handles what is pending.
+void waitForEvents(double seconds);
+
 // Where the GL loader finds each function of the window's context: GLFW's on the desktop; in the
 // page, WebGL2's own functions before WebGL1's extensions of the same name (glGenQueries is core in
 // WebGL2, not EXT_disjoint_timer_query's).

@@ -7,6 +7,8 @@
 #include <exception>
 #include <memory>
 
+#include <GLFW/glfw3.h>
+
 #include "shader/preprocessor.h"
 
 extern "C" void* emscripten_webgl1_get_proc_address(const char* name);  // emscripten's system/lib/gl
@@ -34,6 +36,8 @@ ShlGlProc webglProc(const char* name) {
 }
 
 }  // namespace
+
+void waitForEvents(double) { glfwPollEvents(); }
 
 ShlGetProcAddress glProcLoader() { return webglProc; }
 

@@ -102,7 +102,31 @@ struct AppState {
   float uiScale = 1.0f, appliedScale = 0.0f;
 };
 
+// Window events of any kind (input, resize, expose, drops), counted by the callbacks below: a
+// window that has stopped drawing draws again when this moves.
+unsigned windowEvents = 0;
+
+void countEvent(GLFWwindow*) { ++windowEvents; }
+
+// Installed before Dear ImGui's backend, which chains to them: input still reaches ImGui.
+void countInput(GLFWwindow* w) {
+  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { countEvent(win); });
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { countEvent(win); });
+  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { countEvent(win); });
+  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { countEvent(win); });
+  glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { countEvent(win); });
+  glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { countEvent(win); });
+}
+
+// Not chained by ImGui: resizes and exposes (a window uncovered must be drawn again).
+void countWindowChanges(GLFWwindow* w) {
+  glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { countEvent(win); });
+  glfwSetWindowRefreshCallback(w, countEvent);
+  glfwSetWindowIconifyCallback(w, [](GLFWwindow* win, int) { countEvent(win); });
+}
+
 void onDrop(GLFWwindow* w, int count, const char** paths) {
+  ++windowEvents;
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
   for (int i = 0; i < count; ++i) app->dropped.emplace_back(paths[i]);
 }
@@ -111,6 +135,7 @@ void onDrop(GLFWwindow* w, int count, const char** paths) {
 // release that land in one poll (a busy frame) would slip past ImGui's per-frame key state.
 // Installed before ImGui's backend, which chains to it.
 void onKey(GLFWwindow* w, int key, int, int action, int) {
+  ++windowEvents;
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
   if (!app || action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F12) app->screenshotRequested = true;
@@ -298,6 +323,15 @@ class WindowSession {
     return path;
   }
 
+  // When nothing moves (no input, no job, nothing animating, the settings and view unchanged) for
+  // kSettleSeconds and kSettleFrames, the window stops drawing and waits for events, waking every
+  // kIdleWakeSeconds to pick up saved shader files and finished jobs: an idle window costs next to
+  // nothing (a laptop on battery in a lecture hall). Test and soak runs always draw.
+  static constexpr double kSettleSeconds = 2.0, kIdleWakeSeconds = 0.25;
+  static constexpr int kSettleFrames = 30;
+  bool quiet();
+  void noteActivity();
+
   GLFWwindow* window;
   const WindowOptions wopt;
   AppState app;
@@ -309,7 +343,29 @@ class WindowSession {
   double uiMs = 0;
   const std::vector<std::string> labs = labIds();
   int frame = 0;
+  unsigned seenEvents = 0;
+  std::chrono::steady_clock::time_point lastActivity = std::chrono::steady_clock::now();
+  int framesSinceActivity = 0;
+  bool resumed = false;  // this frame follows a wait: its time since the last frame is no frame time
 };
+
+bool WindowSession::quiet() {
+  if (wopt.soakMinutes > 0 || wopt.cycleLabs || wopt.exitAfterFrames > 0 || app.screenshotRequested) return false;
+  if (windowEvents != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating()) return false;
+  const auto still = std::max(lastActivity, app.costs.since);  // the settings, camera and viewport last changed
+  return framesSinceActivity >= kSettleFrames &&
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - still).count() >= kSettleSeconds;
+}
+
+void WindowSession::noteActivity() {
+  if (windowEvents != seenEvents || host.jobs().busy()) {
+    seenEvents = windowEvents;
+    lastActivity = std::chrono::steady_clock::now();
+    framesSinceActivity = 0;
+  } else {
+    ++framesSinceActivity;
+  }
+}
 
 WindowSession::WindowSession(GLFWwindow* window, const Options& options, const WindowOptions& wopt)
     : window(window),
@@ -348,12 +404,24 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
 
 bool WindowSession::drawFrame() {
   if (glfwWindowShouldClose(window)) return false;
-  // 1. events
-  glfwPollEvents();
+  // 1. events; when nothing moves, wait for them instead of drawing the same frame again
+  if (quiet()) {
+    waitForEvents(kIdleWakeSeconds);
+    if (windowEvents == seenEvents && !host.pollChanges()) {
+      resumed = true;
+      return !glfwWindowShouldClose(window);
+    }
+    lastActivity = std::chrono::steady_clock::now();  // a saved shader or a finished job: draw a while
+    framesSinceActivity = 0;
+  } else {
+    glfwPollEvents();
+  }
+  noteActivity();
   handleDrops(app);
   if (wopt.cycleLabs && frame % 3 == 0) app.message = host.selectLab(labs[size_t(frame / 3) % labs.size()]);
   const auto now = std::chrono::steady_clock::now();
-  const float dt = std::chrono::duration<float>(now - last).count();
+  // After a wait the time since the last drawn frame is idle time, not frame time: one refresh.
+  const float dt = resumed ? 1.0f / 60.0f : std::chrono::duration<float>(now - last).count();
   last = now;
 
   // 2. the lab's frame (at the viewport size the last layout gave it)
@@ -373,7 +441,8 @@ bool WindowSession::drawFrame() {
   }
   double gpu = 0;
   for (auto& p : passes) gpu += p.gpuMs;
-  app.history.push(dt * 1000.0f, float(gpu));
+  if (!resumed) app.history.push(dt * 1000.0f, float(gpu));
+  resumed = false;
   app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
   if (frame > 2) (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
   if (app.screenshotRequested) {
@@ -505,7 +574,9 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write nothing into the user's folder
   ImGui::StyleColorsDark();
   glfwSetKeyCallback(window, onKey);
+  countInput(window);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  countWindowChanges(window);
   ImGui_ImplOpenGL3_Init(imguiGlslVersion());
 
   auto session = std::make_shared<WindowSession>(window, options, wopt);

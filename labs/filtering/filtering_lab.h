@@ -57,6 +57,7 @@ class FilteringLab final : public LabWithParams<FilteringParams>, public Judge {
   std::string_view title() const override { return "Texture filtering: bilinear, mipmaps, trilinear, anisotropic"; }
   std::string_view summary() const override;
   std::string_view defaultScene() const override { return "grazing-tiles"; }
+  bool animating() const override { return params.animate; }
   std::vector<SceneRecipe> scenes() const override;
 
   void visitParams(ParamVisitor& v) override;

@@ -89,3 +89,32 @@ SESSION
 else
   echo "xdotool not installed: skipped the drag / F12 / reproduce part"
 fi
+
+# When nothing moves the window stops drawing (an idle window costs next to nothing), yet a shader
+# file saved meanwhile is rebuilt at once: start on a good copy of the shading lab's shader, let
+# it settle, read its CPU time, then save a broken version and look for the error.
+student="$out/idle_student"
+rm -rf "$student" && mkdir -p "$student/shading"
+cp "$(dirname "$0")/../../shaders/shading/shade.frag" "$student/shading/shade.frag"
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab shading --shaders "$student" >"$out/idle.log" 2>&1 &
+runner=$!
+pid=""
+for _ in $(seq 50); do
+  pid=$(pgrep -n -f "^$shadelab --lab shading --shaders $student" || true)
+  [ -n "$pid" ] && break
+  sleep 0.2
+done
+[ -n "$pid" ] || { cat "$out/idle.log"; echo "the idle window did not start"; exit 1; }
+sleep 8
+ticks() { awk '{print $14 + $15}' "/proc/$pid/stat"; }
+a=$(ticks); sleep 4; b=$(ticks)
+cpu=$(( (b - a) * 100 / $(getconf CLK_TCK) / 4 ))
+cp "$(dirname "$0")/../data/broken_shaders/shading/shade.frag" "$student/shading/shade.frag"
+for _ in $(seq 40); do grep -q "shade.frag:6:[0-9]*: error:" "$out/idle.log" && break; sleep 0.25; done
+kill "$pid" 2>/dev/null || true
+wait "$runner" 2>/dev/null || true
+# A window drawing every frame burns well over 100 % here; an idle one wakes four times a second.
+[ "$cpu" -lt 25 ] || { echo "the idle window used $cpu % of a core; it should have stopped drawing"; exit 1; }
+grep -q "shade.frag:6:[0-9]*: error:" "$out/idle.log" ||
+  { cat "$out/idle.log"; echo "a shader saved while the window was idle was not rebuilt"; exit 1; }
+echo "idle window passed ($cpu % of a core; the saved shader rebuilt)"
