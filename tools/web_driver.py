@@ -2,10 +2,13 @@
 """Drives the page in Debian's headless Chromium (SwiftShader WebGL2) through the DevTools protocol.
 
 usage: tools/web_driver.py URL --screenshot OUT.png [--frames N] [--timeout S] [--eval JS]...
+                           [--wait-console TEXT]... [--fetch FS_PATH_JS=LOCAL_FILE]...
 
 Opens URL, waits until the app has drawn N frames (Module.shadelabFrames, counted by the page's
-main loop), runs each --eval expression and prints its value, saves a screenshot of the page, and
-prints the page's console. Exit 1 when the page stopped (abort, uncaught error) or never drew.
+main loop), runs each --eval expression and prints its value, waits until the console has a line
+holding each --wait-console text, copies each --fetch file out of the page's file system (the JS
+expression gives its path there), saves a screenshot of the page, and prints the page's console.
+Exit 1 when the page stopped (abort, uncaught error), never drew, or a console text never came.
 Only the Python standard library: the protocol's WebSocket is spoken here.
 """
 import argparse
@@ -139,6 +142,8 @@ def main():
     parser.add_argument("--timeout", type=float, default=120)
     parser.add_argument("--size", default="1280,800")
     parser.add_argument("--eval", action="append", default=[])
+    parser.add_argument("--wait-console", action="append", default=[])
+    parser.add_argument("--fetch", action="append", default=[])
     args = parser.parse_args()
 
     browser = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -183,7 +188,27 @@ def main():
         print(f"frames: {frames} in {time.time() - start:.1f} s; first frame after {first:.1f} s"
               if first is not None else f"frames: 0 in {time.time() - start:.1f} s")
         for expression in args.eval:
-            print(f"eval {expression}: {json.dumps(page.evaluate(expression))}")
+            print(f"eval {expression[:200]}: {json.dumps(page.evaluate(expression))}")
+        missing = list(args.wait_console)
+        while missing and time.time() < deadline and not page.failed:
+            page.evaluate("0")  # lets the console events that arrived meanwhile in
+            missing = [m for m in missing if not any(m in line for line in page.console)]
+            time.sleep(0.25)
+        for fetch in args.fetch:
+            where, _, local = fetch.rpartition("=")
+            try:
+                data = page.evaluate("(() => { const a = Module.FS.readFile(" + where + "); let s = '';"
+                                     " for (let i = 0; i < a.length; i += 0x8000)"
+                                     " s += String.fromCharCode.apply(null, a.subarray(i, i + 0x8000));"
+                                     " return btoa(s); })()")
+            except RuntimeError as e:
+                data = str(e)
+            if not isinstance(data, str):
+                missing.append(f"the file {where}")
+                continue
+            with open(local, "wb") as f:
+                f.write(base64.b64decode(data))
+            print(f"fetched {where} -> {local} ({os.path.getsize(local)} bytes)")
         shot = page.call("Page.captureScreenshot", format="png")
         with open(args.screenshot, "wb") as f:
             f.write(base64.b64decode(shot["data"]))
@@ -193,6 +218,8 @@ def main():
             print(f"web_driver: the page failed: {page.failed}")
         elif frames < args.frames:
             print(f"web_driver: the page drew {frames} frames of {args.frames} in {args.timeout:.0f} s")
+        elif missing:
+            print(f"web_driver: never came: {'; '.join(missing)}")
         else:
             code = 0
     finally:

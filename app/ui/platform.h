@@ -2,6 +2,7 @@
 // platform_web.cpp, one of which is built (CMakeLists.txt, cmake/web.cmake).
 #pragma once
 #include <functional>
+#include <string>
 
 #include "context/load_gl.h"
 
@@ -17,6 +18,10 @@ void runMainLoop(std::function<bool()> frame);
 // Waits up to `seconds` for a window event (input, a resize, an expose) and handles it; the page,
 // whose animation frames pace it, only handles what is pending.
 void waitForEvents(double seconds);
+
+// A file the user asked to save (a screenshot, its preset): on the desktop it is already where
+// they will look; the page hands it to the browser as a download.
+void offerDownload(const std::string& path);
 
 // Where the GL loader finds each function of the window's context: GLFW's on the desktop; in the
 // page, WebGL2's own functions before WebGL1's extensions of the same name (glGenQueries is core in

@@ -11,6 +11,8 @@ void runMainLoop(std::function<bool()> frame) {
   }
 }
 
+void offerDownload(const std::string&) {}
+
 void waitForEvents(double seconds) { glfwWaitEventsTimeout(seconds); }
 
 ShlGetProcAddress glProcLoader() { return reinterpret_cast<ShlGetProcAddress>(glfwGetProcAddress); }

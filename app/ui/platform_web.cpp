@@ -39,6 +39,27 @@ ShlGlProc webglProc(const char* name) {
 
 void waitForEvents(double) { glfwPollEvents(); }
 
+void offerDownload(const std::string& path) {
+  // The file's bytes from the page's file system, as a Blob the browser saves under its name.
+  // Module.shadelabSaved lists what was offered (the page's tests read the files back).
+  EM_ASM(
+      {
+        const path = UTF8ToString($0);
+        const bytes = FS.readFile(path);
+        const type = path.endsWith('.png') ? 'image/png' : path.endsWith('.json') ? 'application/json' : 'application/octet-stream';
+        const url = URL.createObjectURL(new Blob([bytes], {type : type}));
+        const a = document.createElement('a');
+        a.href = url;
+        a.download = path.substring(path.lastIndexOf('/') + 1);
+        document.body.appendChild(a);
+        a.click();
+        a.remove();
+        setTimeout(() => URL.revokeObjectURL(url), 10000);
+        Module.shadelabSaved = (Module.shadelabSaved || []).concat([path]);
+      },
+      path.c_str());
+}
+
 ShlGetProcAddress glProcLoader() { return webglProc; }
 
 void runMainLoop(std::function<bool()> frame) {

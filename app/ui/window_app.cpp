@@ -392,14 +392,19 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   }
   glfwSetWindowUserPointer(window, &app);
   glfwSetDropCallback(window, onDrop);
-  if (!options.preset.empty()) app.message = loadPreset(host, options.preset);
-  if (!options.lab.empty()) app.message = host.selectLab(options.lab);
-  if (!options.scene.empty()) app.message = host.selectScene(options.scene);
-  for (auto& s : options.sets)
-    if (auto e = host.set(s); !e.empty()) app.message = e;
-  for (auto& a : options.actions)
-    if (auto e = host.runAction(a); !e.empty()) app.message = e;
-  if (auto e = applyCamera(host, options.camera); !e.empty()) app.message = e;
+  // What the command line (or the page's link) got wrong, every line of it: a later setting that
+  // went well does not wipe out an earlier one that did not.
+  const auto note = [&](const std::string& e) {
+    if (!e.empty()) app.message += (app.message.empty() ? "" : "\n") + e;
+  };
+  note(wopt.message);
+  if (!options.preset.empty()) app.message = loadPreset(host, options.preset);  // "loaded ...", or why not
+  if (!options.lab.empty()) note(host.selectLab(options.lab));
+  if (!options.scene.empty()) note(host.selectScene(options.scene));
+  for (auto& s : options.sets) note(host.set(s));
+  for (auto& a : options.actions) note(host.runAction(a));
+  note(applyCamera(host, options.camera));
+  if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
 }
 
 bool WindowSession::drawFrame() {
@@ -447,6 +452,8 @@ bool WindowSession::drawFrame() {
   if (frame > 2) (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
   if (app.screenshotRequested) {
     app.message = saveScreenshot(host, app.viewport);
+    std::printf("%s\n", app.message.c_str());
+    std::fflush(stdout);
     app.screenshotRequested = false;
   }
 

@@ -8,6 +8,7 @@
 
 #include "gl/gl.h"
 #include "measure/report.h"
+#include "ui/platform.h"
 #include "util/output_files.h"
 
 namespace fs = std::filesystem;
@@ -24,12 +25,15 @@ std::string saveScreenshot(LabHost& host, glm::ivec2 size) {
   state["reproduce"] = cmd;
   if (auto err = writeTextFile(fs::path(png).replace_extension(".json").string(), state.dump(2) + "\n"); !err.empty())
     return err;
+  offerDownload(png.string());
+  offerDownload(fs::path(png).replace_extension(".json").string());
   return "saved " + png.string() + " (+ .json; reproduce with: " + cmd + ")";
 }
 
 std::string savePreset(LabHost& host) {
   const fs::path p = freshName("presets", std::string(host.lab().id()), ".json");
   if (auto err = writeTextFile(p.string(), host.stateJson().dump(2) + "\n"); !err.empty()) return err;
+  offerDownload(p.string());
   return "saved preset " + p.string();
 }
 

@@ -3,9 +3,11 @@
 # build-web/: served with the isolation headers threads need, each lab opened by its link, frames
 # counted, no shader or WebGL error, the viewport of each screenshot checked for a picture (not one
 # flat colour).
-# usage: web_test.sh REPO IMAGE_CHECK OUT_DIR
+# Then what a user does there: Measure gives a number, F12's frame and preset are rendered again by
+# the desktop build and agree with it, and a dropped shader with a typo is named at its file:line.
+# usage: web_test.sh REPO IMAGE_CHECK OUT_DIR SHADELAB
 set -euo pipefail
-repo=$1 check=$2 out=$3
+repo=$1 check=$2 out=$3 shadelab=$4
 site=$repo/build-web
 if [ ! -f "$site/shadelab.wasm" ]; then
   echo "no page in $site: ./test.sh builds it (./web.sh --build)"
@@ -37,4 +39,41 @@ open_lab denoise "lab=denoise"
 open_lab filtering "lab=filtering"
 open_lab shadows "lab=shadows"
 open_lab shadows-point-pcss "lab=shadows&shadows.light_type=point&shadows.filter=pcss"  # six cube passes
+echo "every lab draws in the page"
+
+drive() {  # drive NAME LINK ARGS...: the page at LINK, driven by tools/web_driver.py ARGS
+  local name=$1 link=$2
+  shift 2
+  python3 "$repo/tools/web_driver.py" "http://127.0.0.1:$port/index.html#$link" --frames 5 --timeout 180 \
+    --screenshot "$out/$name.png" "$@" >"$out/$name.log" 2>&1 || { cat "$out/$name.log"; echo "$name: failed"; exit 1; }
+}
+
+# Measure from the link: the shading lab's error against its truth (an image) is a number.
+drive measure "lab=shading&measure" --wait-console "measured shading"
+grep -qE "measured shading \(defaults\), truth: .*rmse=[0-9]" "$out/measure.log" ||
+  { cat "$out/measure.log"; echo "Measure gave no number in the page"; exit 1; }
+grep -o "measured shading.*" "$out/measure.log"
+
+# F12 in the page saves (and offers as downloads) the frame and its preset; the desktop renders the
+# preset again, and the two frames agree: the same sources, shaders and numbers on both.
+f12="(() => { const e = new KeyboardEvent('keydown', {key: 'F12', code: 'F12', bubbles: true});
+  Object.defineProperty(e, 'keyCode', {get: () => 123}); window.dispatchEvent(e);
+  const u = new KeyboardEvent('keyup', {key: 'F12', code: 'F12', bubbles: true});
+  Object.defineProperty(u, 'keyCode', {get: () => 123}); window.dispatchEvent(u); return 'F12'; })()"
+drive screenshot "lab=shading" --frames 10 --eval "$f12" --wait-console "saved " \
+  --fetch "Module.shadelabSaved[0]=$out/page-frame.png" --fetch "Module.shadelabSaved[1]=$out/page-frame.json"
+LIBGL_ALWAYS_SOFTWARE=1 "$shadelab" render --preset "$out/page-frame.json" --out "$out/native-frame.png" >/dev/null
+rmse=$("$shadelab" compare "$out/page-frame.png" "$out/native-frame.png" | sed -n 's/^rmse \([0-9.]*\).*/\1/p')
+echo "the page's frame against the desktop's (SwiftShader against llvmpipe): rmse $rmse"
+python3 -c "import sys; sys.exit(0 if float('$rmse') <= 0.01 else 1)" ||
+  { echo "the page's frame and the desktop's differ by more than 0.01 RMSE"; exit 1; }
+
+# A student's shader dropped on the page, with a typo: its file and line are named (WebGL's
+# compiler gives no column).
+frag=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$repo/tests/data/broken_shaders/shading/shade.frag")
+drop="(() => { const dt = new DataTransfer(); dt.items.add(new File([$frag], 'shade.frag', {type: 'text/plain'}));
+  Module.canvas.dispatchEvent(new DragEvent('drop', {dataTransfer: dt, bubbles: true, cancelable: true})); return 'dropped'; })()"
+drive drop "lab=shading" --frames 10 --eval "$drop" --wait-console "shade.frag:6:"
+grep -qE "shade\.frag:6:([0-9]+:)? error:" "$out/drop.log" || { cat "$out/drop.log"; echo "the dropped shader's error was not named"; exit 1; }
+grep -m1 -oE "[^ ]*shade\.frag:6:([0-9]+:)? error:.*" "$out/drop.log"
 echo "web test passed"
