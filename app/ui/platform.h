@@ -23,6 +23,10 @@ void waitForEvents(double seconds);
 // they will look; the page hands it to the browser as a download.
 void offerDownload(const std::string& path);
 
+// What to tell a user about the data scenes that are not here (real meshes fetched by the
+// desktop's tools/get_data.sh): how to fetch them, or that the page does not carry them.
+const char* missingDataAdvice();
+
 // Where the GL loader finds each function of the window's context: GLFW's on the desktop; in the
 // page, WebGL2's own functions before WebGL1's extensions of the same name (glGenQueries is core in
 // WebGL2, not EXT_disjoint_timer_query's).

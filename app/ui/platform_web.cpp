@@ -37,6 +37,11 @@ ShlGlProc webglProc(const char* name) {
 
 }  // namespace
 
+const char* missingDataAdvice() {
+  return "The page does not carry them (the desktop build fetches them with tools/get_data.sh); drop a mesh file "
+         "of your own on the page instead.";
+}
+
 void waitForEvents(double) { glfwPollEvents(); }
 
 void offerDownload(const std::string& path) {

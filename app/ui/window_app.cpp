@@ -283,7 +283,7 @@ void leftPanel(AppState& app) {
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window (an image: the scene's height map).");
   if (!app.missingData.empty())
-    ImGui::TextDisabled("Not downloaded: %s. Run %s to fetch them.", app.missingData.c_str(), kGetDataCommand);
+    ImGui::TextDisabled("Not here: %s. %s", app.missingData.c_str(), missingDataAdvice());
   ImGui::PopTextWrapPos();
   ImGui::Separator();
   drawParamWidgets(host.lab(), &app.fileParamUnderMouse);

@@ -130,15 +130,26 @@ std::vector<glm::dvec3> umbrella(std::span<const glm::dvec3> p, const Adjacency&
 
 namespace {
 
-// One explicit (Jacobi) step of size `step` (negative for Taubin's mu), in place: every delta was
-// computed from the old positions already. Returns false, changing nothing, when the step would
-// leave a non-finite position.
-bool explicitStep(std::vector<glm::dvec3>& p, std::span<const glm::dvec3> delta, const std::vector<glm::dvec3>* normals,
-                  double step) {
-  auto move = [&](size_t i) { return normals ? glm::dot(delta[i], (*normals)[i]) * (*normals)[i] : delta[i]; };
-  for (size_t i = 0; i < p.size(); ++i)
-    if (!finite(p[i] - step * move(i))) return false;
-  for (size_t i = 0; i < p.size(); ++i) p[i] -= step * move(i);
+// One explicit (Jacobi) step of size `step` (negative for Taubin's mu): every delta was computed
+// from the old positions already. The new positions go to `next` in one pass, checked as they are
+// made, and are swapped in only when all are finite: a step that would leave a non-finite position
+// returns false and changes nothing. `next` is the caller's scratch, reused across steps.
+bool explicitStep(std::vector<glm::dvec3>& p, std::vector<glm::dvec3>& next, std::span<const glm::dvec3> delta,
+                  const std::vector<glm::dvec3>* normals, double step) {
+  next.resize(p.size());
+  bool allFinite = true;
+  if (normals)
+    for (size_t i = 0; i < p.size(); ++i) {
+      next[i] = p[i] - step * (glm::dot(delta[i], (*normals)[i]) * (*normals)[i]);
+      allFinite &= finite(next[i]);
+    }
+  else
+    for (size_t i = 0; i < p.size(); ++i) {
+      next[i] = p[i] - step * delta[i];
+      allFinite &= finite(next[i]);
+    }
+  if (!allFinite) return false;
+  p.swap(next);
   return true;
 }
 
@@ -157,7 +168,7 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
     if (s.alongNormal) normals = normalsOf(p, idx);
     return energyOf(delta, s.alongNormal ? &normals : nullptr);
   };
-  std::vector<glm::dvec3> delta, normals;
+  std::vector<glm::dvec3> delta, normals, next;
   for (int it = 0; it < s.iterations; ++it) {
     const double e = measure(delta, normals);
     r.energy.push_back(e);
@@ -171,10 +182,10 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
     if (job && !job->progress(float(it) / float(s.iterations), "iteration " + std::to_string(it + 1) + " of " +
                                                                   std::to_string(s.iterations)))
       return;
-    bool ok = explicitStep(p, delta, s.alongNormal ? &normals : nullptr, s.lambda);
+    bool ok = explicitStep(p, next, delta, s.alongNormal ? &normals : nullptr, s.lambda);
     if (ok && s.method == SmoothingMethod::Taubin) {
       measure(delta, normals);
-      ok = explicitStep(p, delta, s.alongNormal ? &normals : nullptr, mu);
+      ok = explicitStep(p, next, delta, s.alongNormal ? &normals : nullptr, mu);
     }
     if (!ok) {
       r.stoppedAt = it;
