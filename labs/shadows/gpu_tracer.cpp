@@ -11,6 +11,9 @@ namespace shadelab {
 namespace {
 
 constexpr int kTextureWidthLog2 = 10;  // 1024 texels per row of the BVH textures (within every GL 3.3 and WebGL2 limit)
+// Disk samples a draw after the first (trace.frag's u_disks): the first pass is one sample, so
+// that a whole first estimate is on screen soon where a pass is slow.
+constexpr int kSamplesPerDraw = 8;
 
 gl::Texture2D floatTexture(const std::vector<glm::vec4>& texels, int width) {
   const int rows = std::max(1, int((texels.size() + size_t(width) - 1) / size_t(width)));
@@ -111,24 +114,32 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
   // whole passes where it is fast (a GPU draws all 64 area samples of a frame within one step).
   const int height = sum_->size().y;
   auto since = [](auto t) { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count(); };
+  // The samples of a pass: one in the first, up to kSamplesPerDraw after it (fixed for all the
+  // pass's bands, which trace the same disk points).
+  const auto batchAt = [&](int pass) { return pass == 0 ? 1 : std::min(kSamplesPerDraw, samples_ - pass); };
   for (;;) {
     const auto bandBegin = std::chrono::steady_clock::now();
-    const int rows = std::min(bandRows_, height - bandStart_);
-    prog.set("u_disk", diskSampleAt(pass_, perAxis_));
+    const int batch = batchAt(pass_);
+    const int rows = std::clamp(bandRowSamples_ / batch, 1, height - bandStart_);
+    for (int k = 0; k < batch; ++k)
+      prog.set(("u_disks[" + std::to_string(k) + "]").c_str(), diskSampleAt(pass_ + k, perAxis_));
+    prog.set("u_diskCount", batch);
     prog.set("u_pass", pass_);
     glScissor(0, bandStart_, sum_->size().x, rows);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glFinish();
-    // The next band's height from this one's time: about budgetMs a band.
-    const double ms = since(bandBegin);
-    bandRows_ = std::clamp(int(double(rows) * budgetMs / std::max(ms, 0.1)), 4, height);
+    // The next band's size from this one's time, in rows times samples: about budgetMs a band.
+    const double ms = since(bandBegin), perRowSample = std::max(ms, 0.1) / double(rows * batch);
+    bandRowSamples_ = std::clamp(int(budgetMs / perRowSample), 4, height * kSamplesPerDraw);
     bandStart_ += rows;
     if (bandStart_ >= height) {
       bandStart_ = 0;
-      ++pass_;
+      pass_ += batch;
     }
-    const double nextMs = ms * double(std::min(bandRows_, height - bandStart_)) / double(rows);
-    if (pass_ >= samples_ || since(start) + nextMs > budgetMs) break;
+    if (pass_ >= samples_) break;
+    const int nextBatch = batchAt(pass_);
+    const int nextRows = std::clamp(bandRowSamples_ / nextBatch, 1, height - bandStart_);
+    if (since(start) + perRowSample * double(nextRows * nextBatch) > budgetMs) break;
   }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);

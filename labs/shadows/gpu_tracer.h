@@ -1,9 +1,10 @@
 // The shadows lab's truth on the GPU: the same question as Embree's (is the key light's centre
 // visible from this pixel's surface, and what fraction of its disk), asked by a fragment shader
 // that walks a BVH of the scene's triangles (shaders/shadows/trace.frag). One pass adds one
-// sample of the disk to every pixel, so the area truth converges pass by pass, in the window
-// between frames, while its standard error shrinks; after samplesPerAxis^2 passes it is the
-// Embree truth's estimator, sample for sample. Needs no Embree: the browser's truth too.
+// sample of the disk to every pixel (the first), then up to eight, so the area truth converges pass
+// by pass, in the window between frames, while its standard error shrinks; after samplesPerAxis^2
+// samples it is the Embree truth's estimator, sample for sample. Needs no Embree: the browser's
+// truth too.
 #pragma once
 #include <memory>
 #include <optional>
@@ -32,7 +33,7 @@ class GpuShadowTracer {
   // before this returns: a driver that defers its work, as llvmpipe does, would otherwise queue
   // every pass into one frame). Returns false once every sample of every pixel is in.
   bool step(ShaderLibrary& shaders, ProgramSlot& program, double budgetMs = 25.0);
-  int samplesDone() const { return pass_; }
+  int samplesDone() const { return pass_; }  // disk samples in every pixel so far
   int samplesWanted() const { return samples_; }
   // R the hard truth, G = B the mean of the area samples so far, A coverage: the Embree truth's
   // layout. `standardError`, if given, receives the mean standard error of G over covered pixels.
@@ -52,7 +53,8 @@ class GpuShadowTracer {
   gl::VertexArray vao_;
   LightFrame light_;
   int perAxis_ = 1, samples_ = 1, pass_ = 0;
-  int bandStart_ = 0, bandRows_ = 16;  // the next band of the current pass, and its height
+  int bandStart_ = 0;        // the next band of the current pass
+  int bandRowSamples_ = 16;  // its height times the pass's samples: what fits the budget
   float epsilon_ = 0.0f;
   mutable size_t gaveUp_ = 0;
 };

@@ -2,10 +2,13 @@
 // Shadows lab's GPU truth: one shadow ray per pixel per pass through a BVH of the scene's
 // triangles (app/measure/bvh.h, flattened into two float textures and walked without a stack),
 // added into an accumulator.
-// Pass 0 also traces the hard ray to the light's centre; every pass traces one stratified point
-// of the light's disk, the same points, in another order, as the Embree truth's 8 x 8.
-//   out: R the hard visibility (pass 0 only), G the area sample, B its square, A coverage (pass 0),
-//        plus 1024 where a ray gave up (a traversal past u_maxSteps: a bound that cannot hang)
+// Pass 0 also traces the hard ray to the light's centre; every pass traces u_diskCount stratified
+// points of the light's disk (the same points, in another order, as the Embree truth's 8 x 8) and
+// adds their sum: several samples a draw, so that the additive blend into a float target, slow
+// where a GPU has few raster back ends, happens once for all of them.
+//   out: R the hard visibility (pass 0 only), G the sum of the area samples, B of their squares,
+//        A coverage (pass 0), plus 1024 where a ray gave up (a traversal past u_maxSteps: a bound
+//        that cannot hang)
 uniform sampler2D u_positions;  // xyz world, w > 0.5 where a surface faces the light
 uniform sampler2D u_normals;
 uniform sampler2D u_bvhNodes;      // two texels a node, depth-first: (min, first), (max, skip | count << 24)
@@ -15,7 +18,8 @@ uniform int u_lightType;           // 0 directional, else a position (spot, poin
 uniform vec3 u_lightPosition;
 uniform vec3 u_lightDirection;     // from the light into the scene
 uniform float u_lightRadius;       // world units (directional: tangent of the angular radius)
-uniform vec2 u_disk;               // this pass's point of the unit disk
+uniform vec2 u_disks[8];           // this pass's points of the unit disk
+uniform int u_diskCount;           // how many of them (1..8)
 uniform int u_pass;
 uniform float u_epsilon;           // lifts ray origins off their surface along the normal
 uniform int u_nodeCount;           // where the walk ends
@@ -111,6 +115,11 @@ void main() {
   }
   vec3 origin = position.xyz + texelFetch(u_normals, p, 0).xyz * u_epsilon;
   float hard = u_pass == 0 ? reaches(origin, vec2(0.0)) : 0.0;
-  float area = u_lightRadius > 0.0 ? reaches(origin, u_disk) : (u_pass == 0 ? hard : reaches(origin, vec2(0.0)));
-  o_sum = vec4(hard, area, area * area, (u_pass == 0 ? 1.0 : 0.0) + (g_gaveUp ? 1024.0 : 0.0));
+  float area = 0.0, areaSq = 0.0;
+  for (int k = 0; k < u_diskCount; ++k) {
+    float a = u_lightRadius > 0.0 ? reaches(origin, u_disks[k]) : (u_pass == 0 ? hard : reaches(origin, vec2(0.0)));
+    area += a;
+    areaSq += a * a;
+  }
+  o_sum = vec4(hard, area, areaSq, (u_pass == 0 ? 1.0 : 0.0) + (g_gaveUp ? 1024.0 : 0.0));
 }
