@@ -57,7 +57,8 @@ target_compile_options(shadelab PRIVATE -pthread -fexceptions -Wall -Wextra -Wno
 # COOP/COEP (web.sh). A pool started with the page, so that no job waits for a worker to be made.
 target_link_options(shadelab PRIVATE -pthread -fexceptions -sPTHREAD_POOL_SIZE=6 -sUSE_GLFW=3
   -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=268435456
-  -sMAXIMUM_MEMORY=2147483648 -sENVIRONMENT=web,worker -sEXIT_RUNTIME=0 -sEXPORTED_RUNTIME_METHODS=[FS]
+  -sMAXIMUM_MEMORY=2147483648 -sENVIRONMENT=web,worker -sEXIT_RUNTIME=0 -sEXPORTED_RUNTIME_METHODS=[FS,addRunDependency,removeRunDependency]
+  -lidbfs.js  # the student's folder, kept in the browser's storage (IndexedDB)
   --profiling-funcs  # function names in the .wasm: a stack trace in the console names them
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/shaders@/shadelab/shaders"
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/exercises@/shadelab/exercises")

@@ -46,6 +46,8 @@ class Program {
   const ProgramSpec& spec() const { return spec_; }
   const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
   const std::vector<std::filesystem::path>& files() const { return files_; }
+  // The same files as the program asks for them ("shading/shade.frag", "common/lighting.glsl").
+  const std::vector<std::string>& relPaths() const { return relPaths_; }
 
   // Whether the program reads the uniform `name` (the compiler drops the ones it does not): a lab
   // binds textures only for the samplers its current variant really samples.

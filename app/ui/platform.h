@@ -23,6 +23,10 @@ void waitForEvents(double seconds);
 // they will look; the page hands it to the browser as a download.
 void offerDownload(const std::string& path);
 
+// After the in-app editor saved a file into the student's folder: the page copies the folder into
+// the browser's storage (it survives a reload); on the desktop the file is already on disk.
+void persistStudentFiles();
+
 // What to tell a user about the data scenes that are not here (real meshes fetched by the
 // desktop's tools/get_data.sh): how to fetch them, or that the page does not carry them.
 const char* missingDataAdvice();

@@ -13,6 +13,8 @@ void runMainLoop(std::function<bool()> frame) {
 
 void offerDownload(const std::string&) {}
 
+void persistStudentFiles() {}
+
 const char* missingDataAdvice() { return "Run tools/get_data.sh to fetch them."; }
 
 void waitForEvents(double seconds) { glfwWaitEventsTimeout(seconds); }

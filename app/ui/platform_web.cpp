@@ -37,6 +37,12 @@ ShlGlProc webglProc(const char* name) {
 
 }  // namespace
 
+void persistStudentFiles() {
+  EM_ASM({
+    FS.syncfs(false, (err) => { if (err) console.warn("shadelab: your shaders could not be kept in the browser's storage: " + err); });
+  });
+}
+
 const char* missingDataAdvice() {
   return "The page does not carry them (the desktop build fetches them with tools/get_data.sh); drop a mesh file "
          "of your own on the page instead.";

@@ -28,6 +28,7 @@
 #include "scene/scene_catalog.h"
 #include "ui/panels.h"
 #include "ui/platform.h"
+#include "ui/shader_editor.h"
 #include "ui/window_files.h"
 
 namespace shadelab {
@@ -93,6 +94,7 @@ struct AppState {
   FrameHistory history;
   ConfigurationCosts costs;
   MeasureUi measure;
+  ShaderEditor editor;
   Responsiveness responsiveness;
   bool screenshotRequested = false;
   // The layout: side panels the user widens or narrows by their inner edge, or presentation mode
@@ -385,6 +387,7 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   app.measure.autoMeasure = wopt.autoMeasure;
   app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
   app.presenting = wopt.present;
+  if (!options.shaderDirs.empty()) app.editor.folder = options.shaderDirs.front();  // edits go to the student's first folder
   if (wopt.uiScale > 0) {
     app.uiScale = wopt.uiScale;
   } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen
@@ -502,7 +505,10 @@ bool WindowSession::drawFrame() {
     }
     drawLabPanels(host.lab());
     if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
-    if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) drawShaderPanel(host, app.message);
+    if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) {
+      drawShaderPanel(host, app.message);
+      drawEditableFiles(app.editor, host);
+    }
     app.rightW = ImGui::GetWindowWidth();
     ImGui::End();
 
@@ -526,6 +532,8 @@ bool WindowSession::drawFrame() {
       ImGui::End();
     }
   }
+
+  drawShaderEditor(app.editor, host, app.message);
 
   // 4. draw the UI
   ImGui::Render();

@@ -18,7 +18,9 @@ int main() {
   const std::string hash = emscripten_run_script_string(
       "location.hash.slice(1).split('&').filter(s => s.length > 0)"
       ".map(s => decodeURIComponent(s.replace(/\\+/g, ' '))).join('\\n')");
-  std::vector<std::string> args{"shadelab"};
+  // The student's folder: the page's own, kept in the browser's storage (web/index.html mounts it
+  // before main runs); the in-page editor saves there and it is searched before the lab's shaders.
+  std::vector<std::string> args{"shadelab", "--shaders", "/student"};
   std::string problems;
   const auto problem = [&](const std::string& p) { problems += (problems.empty() ? "" : "\n") + p; };
   std::istringstream lines(hash);
