@@ -16,6 +16,7 @@
 
 #include "cli/submissions.h"
 #include "grade/rubric.h"
+#include "util/zip_writer.h"
 #include "shader/preprocessor.h"
 
 namespace fs = std::filesystem;
@@ -295,6 +296,18 @@ TEST(GradeClass, AZipIsUnpackedOnlyInsideItsFolder) {
   EXPECT_EQ(shaderRootOf(root / "plain"), root / "plain");
   removeUnpacked(root / "unpacked-good");
   EXPECT_FALSE(fs::exists(root / "unpacked-good"));
+}
+
+// What a student downloads from the in-app editor ("Download my shaders", a stored zip written by
+// util/zip_writer) is a submission grade --class takes: libzip reads it back byte for byte.
+TEST(GradeClass, TheEditorsDownloadIsASubmission) {
+  const fs::path root = scratch("download");
+  const std::string pcf = readText(builtinShaderDir() / "shadows/pcf.glsl");
+  writeText(root / "ana.zip", storedZip({{"shadows/pcf.glsl", pcf}, {"common/notes.txt", ""}}));
+  ASSERT_EQ(unpackZip(root / "ana.zip", root / "unpacked"), "");
+  EXPECT_EQ(readText(root / "unpacked/shadows/pcf.glsl"), pcf);
+  EXPECT_TRUE(fs::exists(root / "unpacked/common/notes.txt"));
+  EXPECT_EQ(shaderRootOf(root / "unpacked"), root / "unpacked");
 }
 
 TEST(GradeClass, BadArgumentsAreNamed) {

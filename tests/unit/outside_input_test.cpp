@@ -11,6 +11,7 @@
 #include "host/preset.h"
 #include "scene/loaders.h"
 #include "util/contained_path.h"
+#include "util/zip_writer.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -150,3 +151,17 @@ TEST(Loaders, PlyValuesPastFloatOrNotFiniteNeverReachTheMesh) {
 }
 
 }  // namespace
+
+// What the in-app editor's "Download my shaders" writes: a stored zip. Its checksum is the one
+// every unzip tool checks; tests/grade/class_test.cpp reads the archive back with libzip.
+TEST(ZipWriter, TheChecksumIsZipsCrc32AndTheArchiveEndsWithItsDirectory) {
+  EXPECT_EQ(crc32("123456789"), 0xCBF43926u);  // the CRC-32 check value
+  EXPECT_EQ(crc32(""), 0u);
+  const std::string zip = storedZip({{"shadows/pcf.glsl", "// mine\n"}, {"common/lighting.glsl", ""}});
+  ASSERT_GE(zip.size(), 22u);
+  EXPECT_EQ(zip.substr(0, 4), std::string("PK\x03\x04", 4));
+  const std::string end = zip.substr(zip.size() - 22);
+  EXPECT_EQ(end.substr(0, 4), std::string("PK\x05\x06", 4));
+  EXPECT_EQ(uint8_t(end[10]), 2);  // two entries
+  EXPECT_NE(zip.find("shadows/pcf.glsl// mine\n"), std::string::npos) << "stored: the name, then the bytes as they are";
+}
