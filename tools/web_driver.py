@@ -3,12 +3,15 @@
 
 usage: tools/web_driver.py URL --screenshot OUT.png [--frames N] [--timeout S] [--eval JS]...
                            [--wait-console TEXT]... [--fetch FS_PATH_JS=LOCAL_FILE]...
+                           [--reload [--wait-console-after-reload TEXT]...]
 
 Opens URL, waits until the app has drawn N frames (Module.shadelabFrames, counted by the page's
 main loop), runs each --eval expression and prints its value, waits until the console has a line
 holding each --wait-console text, copies each --fetch file out of the page's file system (the JS
 expression gives its path there), saves a screenshot of the page, and prints the page's console.
-Exit 1 when the page stopped (abort, uncaught error), never drew, or a console text never came.
+With --reload it then opens the page again in the same browser (its storage kept), waits for N
+frames and each --wait-console-after-reload text. Exit 1 when the page stopped (abort, uncaught
+error), never drew, or a console text never came.
 Only the Python standard library: the protocol's WebSocket is spoken here.
 """
 import argparse
@@ -144,6 +147,8 @@ def main():
     parser.add_argument("--eval", action="append", default=[])
     parser.add_argument("--wait-console", action="append", default=[])
     parser.add_argument("--fetch", action="append", default=[])
+    parser.add_argument("--reload", action="store_true")
+    parser.add_argument("--wait-console-after-reload", action="append", default=[])
     args = parser.parse_args()
 
     browser = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -209,6 +214,21 @@ def main():
             with open(local, "wb") as f:
                 f.write(base64.b64decode(data))
             print(f"fetched {where} -> {local} ({os.path.getsize(local)} bytes)")
+        if args.reload and not missing and not page.failed:
+            print(f"reloading; console so far: {len(page.console)} lines")
+            page.console.append("--- reloaded ---")
+            mark = len(page.console)
+            page.call("Page.reload", ignoreCache=False)
+            time.sleep(1.0)
+            frames = 0
+            while time.time() < deadline and not page.failed and frames < args.frames:
+                frames = page.evaluate("(window.Module && Module.shadelabFrames) || 0") or 0
+                time.sleep(0.25)
+            missing = list(args.wait_console_after_reload)
+            while missing and time.time() < deadline and not page.failed:
+                page.evaluate("0")
+                missing = [m for m in missing if not any(m in line for line in page.console[mark:])]
+                time.sleep(0.25)
         shot = page.call("Page.captureScreenshot", format="png")
         with open(args.screenshot, "wb") as f:
             f.write(base64.b64decode(shot["data"]))

@@ -10,14 +10,15 @@ namespace shadelab {
 namespace {
 
 // The loud fallback: a magenta/black screen-space checker. Kept in C++ on purpose: it must
-// work when the shader folder itself is broken or missing.
-const char* kFallbackVs = R"(#version 330 core
+// work when the shader folder itself is broken or missing. Its version line is the dialect's
+// (versionPreamble): in the page it is GLSL ES 3.00 like every other program.
+const char* kFallbackVs = R"(
 layout(location = 0) in vec3 a_position;
 uniform mat4 u_model;
 uniform mat4 u_viewProj;
 void main() { gl_Position = u_viewProj * u_model * vec4(a_position, 1.0); }
 )";
-const char* kFallbackFs = R"(#version 330 core
+const char* kFallbackFs = R"(
 out vec4 o_color;
 void main() {
   ivec2 cell = ivec2(gl_FragCoord.xy) / 16;
@@ -132,7 +133,10 @@ ShaderLibrary::ShaderLibrary(ShaderSearchPath path)
   onDiagnostic = [](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.format().c_str()); };
   std::vector<std::string> logs;
   int failed = -1;
-  fallback_ = buildProgram({{GL_VERTEX_SHADER, kFallbackVs}, {GL_FRAGMENT_SHADER, kFallbackFs}}, logs, failed);
+  const std::string version = versionPreamble("#version 330 core", glslDialect());
+  fallback_ = buildProgram({{GL_VERTEX_SHADER, version + kFallbackVs}, {GL_FRAGMENT_SHADER, version + kFallbackFs}}, logs, failed);
+  if (!fallback_)
+    for (auto& l : logs) std::fprintf(stderr, "shadelab: the fallback program did not build: %s\n", l.c_str());
 }
 
 ShaderLibrary::~ShaderLibrary() = default;

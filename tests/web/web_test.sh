@@ -76,4 +76,17 @@ drop="(() => { const dt = new DataTransfer(); dt.items.add(new File([$frag], 'sh
 drive drop "lab=shading" --frames 10 --eval "$drop" --wait-console "shade.frag:6:"
 grep -qE "shade\.frag:6:([0-9]+:)? error:" "$out/drop.log" || { cat "$out/drop.log"; echo "the dropped shader's error was not named"; exit 1; }
 grep -m1 -oE "[^ ]*shade\.frag:6:([0-9]+:)? error:.*" "$out/drop.log"
+
+# The page's student folder: a file saved there (as the in-page editor saves) rebuilds the programs
+# that read it, and it is still there after a reload (the browser's storage).
+save="(async () => { Module.FS.mkdirTree('/student/shading'); Module.FS.writeFile('/student/shading/shade.frag', $frag);
+  await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
+drive student "lab=shading" --frames 10 --eval "$save" --wait-console "/student/shading/shade.frag:6" \
+  --reload --wait-console-after-reload "/student/shading/shade.frag:6"
+sed -n '/--- reloaded ---/,$p' "$out/student.log" | grep -qE "/student/shading/shade\.frag:6:([0-9]+:)? error:" ||
+  { cat "$out/student.log"; echo "the student's saved shader was not there after a reload"; exit 1; }
+# It never compiled in this page: the loud magenta checker is drawn in its place, not nothing.
+"$check" "$out/student.png" --crop "$viewport" --min-colors 2 --color 255,0,255 --min-pixels 5000 ||
+  { echo "a program that never compiled drew nothing in the page"; exit 1; }
+echo "the student's folder survives a reload"
 echo "web test passed"
