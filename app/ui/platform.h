@@ -23,6 +23,11 @@ void waitForEvents(double seconds);
 // they will look; the page hands it to the browser as a download.
 void offerDownload(const std::string& path);
 
+// Puts a link to the frame on the clipboard (`fragment`: what follows '#'), and returns the link
+// as the user will paste it: the page's own address in the browser; "index.html#..." on the
+// desktop, for the course's copy of the page.
+std::string copyLink(const std::string& fragment);
+
 // After the in-app editor saved a file into the student's folder: the page copies the folder into
 // the browser's storage (it survives a reload); on the desktop the file is already on disk.
 void persistStudentFiles();

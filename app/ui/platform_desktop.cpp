@@ -13,6 +13,12 @@ void runMainLoop(std::function<bool()> frame) {
 
 void offerDownload(const std::string&) {}
 
+std::string copyLink(const std::string& fragment) {
+  const std::string link = "index.html#" + fragment;
+  glfwSetClipboardString(nullptr, link.c_str());
+  return link;
+}
+
 void persistStudentFiles() {}
 
 const char* missingDataAdvice() { return "Run tools/get_data.sh to fetch them."; }

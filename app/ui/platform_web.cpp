@@ -37,6 +37,19 @@ ShlGlProc webglProc(const char* name) {
 
 }  // namespace
 
+std::string copyLink(const std::string& fragment) {
+  const std::string link = std::string(emscripten_run_script_string("location.origin + location.pathname")) + "#" + fragment;
+  // The address bar shows it too, so that reloading the page keeps the frame.
+  EM_ASM(
+      {
+        const url = UTF8ToString($0);
+        history.replaceState(null, '', url);
+        if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() => {});
+      },
+      link.c_str());
+  return link;
+}
+
 void persistStudentFiles() {
   EM_ASM({
     FS.syncfs(false, (err) => { if (err) console.warn("shadelab: your shaders could not be kept in the browser's storage: " + err); });

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "host/share_link.h"
 #include "host/soak.h"
 
 #include <GLFW/glfw3.h>
@@ -302,6 +303,11 @@ void leftPanel(AppState& app) {
   if (ImGui::Button("Screenshot (F12)")) app.screenshotRequested = true;
   ImGui::SameLine();
   if (ImGui::Button("Save preset")) app.message = savePreset(host);
+  ImGui::SameLine();
+  if (ImGui::Button("Copy link")) {
+    const ShareLink link = shareLink(host);
+    app.message = "copied " + copyLink(link.fragment) + (link.note.empty() ? "" : " (" + link.note + ")");
+  }
   if (ImGui::BeginCombo("Load preset", "choose...")) {
     for (auto& file : listPresets())
       if (ImGui::Selectable(file.c_str())) app.message = loadPreset(host, file);

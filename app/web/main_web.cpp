@@ -6,42 +6,30 @@
 #include <emscripten.h>
 
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/options.h"
+#include "host/share_link.h"
 #include "ui/window_app.h"
 
 int main() {
   using namespace shadelab;
-  const std::string hash = emscripten_run_script_string(
-      "location.hash.slice(1).split('&').filter(s => s.length > 0)"
-      ".map(s => decodeURIComponent(s.replace(/\\+/g, ' '))).join('\\n')");
+  const OpenedLink link = openLink(emscripten_run_script_string("location.hash.slice(1)"));
   // The student's folder: the page's own, kept in the browser's storage (web/index.html mounts it
   // before main runs); the in-page editor saves there and it is searched before the lab's shaders.
   std::vector<std::string> args{"shadelab", "--shaders", "/student"};
+  for (auto [key, value] : {std::pair{"--lab", &link.lab}, {"--scene", &link.scene}, {"--camera", &link.camera}})
+    if (!value->empty()) args.insert(args.end(), {key, *value});
+  for (auto& s : link.sets) args.insert(args.end(), {"--set", s});
+  if (link.measure) args.push_back("--measure");
   std::string problems;
-  const auto problem = [&](const std::string& p) { problems += (problems.empty() ? "" : "\n") + p; };
-  std::istringstream lines(hash);
-  for (std::string item; std::getline(lines, item);) {
-    const size_t eq = item.find('=');
-    const std::string key = item.substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : item.substr(eq + 1);
-    if (key == "lab" || key == "scene" || key == "camera") {
-      args.insert(args.end(), {"--" + key, value});
-    } else if (key == "measure") {
-      args.push_back("--measure");
-    } else if (key.find('.') != std::string::npos) {
-      args.insert(args.end(), {"--set", item});
-    } else {
-      problem("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, LAB.KEY)");
-    }
-  }
+  for (auto& p : link.problems) problems += (problems.empty() ? "" : "\n") + p;
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   Options options;
-  if (auto err = parseOptions(int(argv.size()), argv.data(), options); !err.empty()) problem("the link: " + err);
+  if (auto err = parseOptions(int(argv.size()), argv.data(), options); !err.empty())
+    problems += (problems.empty() ? "" : "\n") + ("the link: " + err);
   WindowOptions window;
   window.message = problems;
   try {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "gl_test.h"
+#include "host/share_link.h"
 
 using namespace shadelab;
 
@@ -120,4 +121,37 @@ TEST(Host, BadInputKeepsLastGoodState) {
   CollectAsText c;
   host.lab().visitParams(c);
   EXPECT_EQ(c.values.front().second, "flat");  // the preset was all-or-nothing
+}
+
+// "Copy link": the link carries the lab, the scene, the camera and the settings that differ from
+// the lab's defaults; opened on another host (as the page opens its URL), it gives the same state.
+TEST(Host, ASharedLinkOpensTheSameFrame) {
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectLab("shadows"), "");
+  ASSERT_EQ(host.selectScene("learnopengl"), "");
+  ASSERT_EQ(host.set("shadows.filter=pcss"), "");
+  ASSERT_EQ(host.set("shadows.light_radius=0.07"), "");
+  host.camera().orbit(25.0f, -5.0f);
+  const ShareLink link = shareLink(host);
+  EXPECT_EQ(link.note, "");
+  EXPECT_EQ(link.fragment.rfind("lab=shadows&scene=learnopengl&camera=", 0), 0u) << link.fragment;
+  EXPECT_NE(link.fragment.find("&shadows.filter=pcss"), std::string::npos) << link.fragment;
+  EXPECT_EQ(link.fragment.find("shadows.map_size"), std::string::npos) << "a default is left out: " << link.fragment;
+
+  const OpenedLink opened = openLink("#" + link.fragment);
+  EXPECT_TRUE(opened.problems.empty());
+  LabHost other(test::builtinShaders());
+  ASSERT_EQ(other.selectLab(opened.lab), "");
+  ASSERT_EQ(other.selectScene(opened.scene), "");
+  for (auto& s : opened.sets) ASSERT_EQ(other.set(s), "") << s;
+  ASSERT_EQ(other.camera().parse(opened.camera), "");
+  EXPECT_EQ(other.stateJson().dump(), host.stateJson().dump());
+
+  // Encoded as a URL needs it, read back whole; an unknown key is named.
+  EXPECT_EQ(percentEncode("yaw=30,pitch=20 a+b"), "yaw%3D30%2Cpitch%3D20%20a%2Bb");
+  const OpenedLink odd = openLink("lab=shading&camera=yaw%3D30%2Cpitch%3D20&colour=red&measure&%");
+  EXPECT_EQ(odd.camera, "yaw=30,pitch=20");
+  EXPECT_TRUE(odd.measure);
+  ASSERT_EQ(odd.problems.size(), 2u);
+  EXPECT_NE(odd.problems[0].find("'colour' is unknown"), std::string::npos);
 }

@@ -1,0 +1,90 @@
+#include "host/share_link.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+#include "host/lab_host.h"
+#include "lab/params.h"
+#include "scene/scene_catalog.h"
+
+namespace shadelab {
+
+std::string percentEncode(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
+      out += char(c);
+    } else {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+std::string percentDecode(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
+    if (text[i] == '%' && i + 2 < text.size() && hex(text[i + 1]) && hex(text[i + 2])) {
+      out += char(std::stoi(text.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += text[i] == '+' ? ' ' : text[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+OpenedLink openLink(const std::string& fragment) {
+  OpenedLink link;
+  size_t start = fragment.empty() || fragment[0] != '#' ? 0 : 1;
+  while (start < fragment.size()) {
+    size_t end = fragment.find('&', start);
+    if (end == std::string::npos) end = fragment.size();
+    const std::string item = percentDecode(fragment.substr(start, end - start));
+    start = end + 1;
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    if (key == "lab") link.lab = value;
+    else if (key == "scene") link.scene = value;
+    else if (key == "camera") link.camera = value;
+    else if (key == "measure") link.measure = true;
+    else if (key.find('.') != std::string::npos) link.sets.push_back(item);
+    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, LAB.KEY)");
+  }
+  return link;
+}
+
+ShareLink shareLink(LabHost& host) {
+  ShareLink link;
+  const std::string lab(host.lab().id());
+  link.fragment = "lab=" + percentEncode(lab);
+  const auto scenes = listScenes(host.lab().scenes());
+  const bool catalogued =
+      std::any_of(scenes.begin(), scenes.end(), [&](const SceneEntry& s) { return s.id == host.sceneId(); });
+  if (catalogued) link.fragment += "&scene=" + percentEncode(host.sceneId());
+  else link.note = "the scene is a file of yours (" + host.sceneId() + "): the link opens the lab's default scene";
+  link.fragment += "&camera=" + percentEncode(host.camera().toString());
+  Settings defaults;
+  if (auto fresh = makeLab(lab)) {
+    CollectAsText c;
+    fresh->visitParams(c);
+    defaults = c.values;
+  }
+  for (const auto& setting : host.currentSettings()) {
+    const auto d = std::find_if(defaults.begin(), defaults.end(), [&](auto& kv) { return kv.first == setting.first; });
+    if (d != defaults.end() && d->second == setting.second) continue;
+    link.fragment += "&" + percentEncode(lab + "." + setting.first) + "=" + percentEncode(setting.second);
+  }
+  return link;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,33 @@
+// A link to what is on screen: the part of the page's URL after '#', which the page reads back
+// (app/web/main_web.cpp): "lab=shadows&scene=learnopengl&camera=...&shadows.filter=pcss". A
+// teacher copies it and the class opens the same frame. Only settings that differ from the lab's
+// defaults are written, so the link stays short and says what was changed.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+class LabHost;
+
+struct ShareLink {
+  std::string fragment;  // without the '#'
+  std::string note;      // what the link cannot carry (a mesh file of the user's own), or ""
+};
+
+ShareLink shareLink(LabHost& host);
+
+// A link's fragment read back: percent-decoding each "key=value" ('+' is a space), as the page
+// does when it opens.
+struct OpenedLink {
+  std::string lab, scene, camera;
+  std::vector<std::string> sets;  // "lab.key=value"
+  bool measure = false;
+  std::vector<std::string> problems;  // keys it does not know, with the valid ones
+};
+OpenedLink openLink(const std::string& fragment);
+
+// RFC 3986 percent-encoding of everything but the unreserved characters.
+std::string percentEncode(const std::string& text);
+
+}  // namespace shadelab
