@@ -29,6 +29,7 @@
 #include "scene/scene_catalog.h"
 #include "ui/panels.h"
 #include "ui/platform.h"
+#include "gl/pixel_probe.h"
 #include "ui/shader_editor.h"
 #include "ui/window_files.h"
 
@@ -96,6 +97,7 @@ struct AppState {
   ConfigurationCosts costs;
   MeasureUi measure;
   ShaderEditor editor;
+  PixelProbe probe;  // the viewport's readout under the cursor
   Responsiveness responsiveness;
   bool screenshotRequested = false;
   // The layout: side panels the user widens or narrows by their inner edge, or presentation mode
@@ -218,11 +220,14 @@ void viewportControls(AppState& app) {
     cam.pan(io.MouseDelta.x / float(app.viewport.y), io.MouseDelta.y / float(app.viewport.y));
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) cam.zoom(std::pow(0.9f, io.MouseWheel));
   // Pixel readout: the float value under the cursor (depth maps, visibility, NaN hunting).
+  // Read back without waiting for the frame (PixelProbe): the value shown is a frame or two old.
   if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
     const ImVec2 origin = ImGui::GetItemRectMin();
     const int x = int(io.MousePos.x - origin.x), y = int(io.MousePos.y - origin.y);
-    const auto px = app.host->target()->readPixel(x, y);
-    ImGui::SetTooltip("pixel %d, %d\nR %.6g  G %.6g\nB %.6g  A %.6g", x, y, px[0], px[1], px[2], px[3]);
+    app.probe.request(*app.host->target(), x, y);
+    if (const auto& v = app.probe.latest())
+      ImGui::SetTooltip("pixel %d, %d\nR %.6g  G %.6g\nB %.6g  A %.6g", v->x, v->y, v->rgba[0], v->rgba[1], v->rgba[2],
+                        v->rgba[3]);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "gl_test.h"
+#include "gl/pixel_probe.h"
 #include "host/share_link.h"
 
 using namespace shadelab;
@@ -154,4 +155,28 @@ TEST(Host, ASharedLinkOpensTheSameFrame) {
   EXPECT_TRUE(odd.measure);
   ASSERT_EQ(odd.problems.size(), 2u);
   EXPECT_NE(odd.problems[0].find("'colour' is unknown"), std::string::npos);
+}
+
+// The viewport's readout reads back through a fenced pixel buffer: a frame or two later, the same
+// value a plain glReadPixels gives, and never a wait.
+TEST(Host, ThePixelReadoutArrivesWithoutAStall) {
+  LabHost host(test::builtinShaders());
+  host.renderFrame({64, 48});
+  const gl::RenderTarget& target = *host.target();
+  PixelProbe probe;
+  EXPECT_FALSE(probe.latest().has_value());
+  probe.request(target, 32, 30);
+  std::optional<PixelProbe::Value> v;
+  for (int frame = 0; frame < 100 && !v; ++frame) {
+    glFinish();
+    v = probe.latest();
+  }
+  ASSERT_TRUE(v.has_value());
+  EXPECT_EQ(v->x, 32);
+  EXPECT_EQ(v->y, 30);
+  EXPECT_EQ(v->rgba, target.readPixel(32, 30));
+  probe.request(target, 640, 480);  // outside: ignored
+  glFinish();
+  EXPECT_EQ(probe.latest()->x, 32);
+  EXPECT_EQ(gl::drainErrors(), "");
 }
