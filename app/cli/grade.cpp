@@ -26,11 +26,6 @@ namespace {
 constexpr int kCannotGrade = 2;
 constexpr double kSolutionSeconds = 600.0;  // the built-in solution and its truth: generous, never the student's fault
 
-int cannotGrade(const std::string& message) {
-  std::fprintf(stderr, "shadelab: grade: %s\n", message.c_str());
-  return kCannotGrade;
-}
-
 double number(const nlohmann::json& values, const std::string& key) {
   return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
 }
@@ -171,6 +166,18 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
 
 }  // namespace
 
+int cannotGrade(const std::string& message) {
+  std::fprintf(stderr, "shadelab: grade: %s\n", message.c_str());
+  return kCannotGrade;
+}
+
+std::string gradeDate() {
+  char date[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
+  return date;
+}
+
 SolutionCache solutionCacheFor(const Options& o) {
   if (o.noCache) return {};
   return SolutionCache(o.cacheDir.empty() ? defaultSolutionCacheDir() : fs::path(o.cacheDir));
@@ -254,10 +261,7 @@ int runGrade(const Options& o) {
   g.cache = solutionCacheFor(o);
   GradeReport report;
   for (auto& d : o.shaderDirs) report.studentDirs.push_back(d.string());
-  char date[32];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
-  report.date = date;
+  report.date = gradeDate();
   report.command = "shadelab grade " + (o.allExercises ? std::string("--all") : "--exercise " + o.exercise);
   for (auto& d : o.shaderDirs) report.command += " --shaders " + d.string();
   CacheCount cache;

@@ -39,13 +39,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kCannotGrade = 2;
-
-int cannotGrade(const std::string& message) {
-  std::fprintf(stderr, "shadelab: grade: %s\n", message.c_str());
-  return kCannotGrade;
-}
-
 // Runs in a worker process: grades one submission into out/students/<name>/. Exit 0 when its
 // report was written, 2 when the grader could not go on.
 int gradeSubmission(const Submission& sub, const std::vector<std::string>& ids, const Options& o, const fs::path& out,
@@ -76,10 +69,7 @@ int gradeSubmission(const Submission& sub, const std::vector<std::string>& ids, 
   }
   GradeReport report;
   report.studentDirs = {sub.source.string()};
-  char date[32];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
-  report.date = date;
+  report.date = gradeDate();
   report.command = "shadelab grade --class " + o.classDir.string() + " (submission " + sub.name + ")";
   CacheCount count;
   const std::string e = gradeStudent(ids, g, report, count);
@@ -153,8 +143,10 @@ int runGradeClass(const Options& o) {
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
   if (!o.shaderDirs.empty()) return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
   const std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
-  for (auto& id : ids)
-    if (Exercise ex; !loadExercise(exercisesRoot(), id, ex).empty()) return cannotGrade(loadExercise(exercisesRoot(), id, ex));
+  for (auto& id : ids) {
+    Exercise ex;
+    if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return cannotGrade(e);
+  }
   std::vector<Submission> all;
   if (auto e = listSubmissions(o.classDir, all); !e.empty()) return cannotGrade(e);
   if (all.empty()) return cannotGrade("--class " + o.classDir.string() + " holds no submissions (a folder or a .zip per student)");

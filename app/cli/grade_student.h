@@ -36,6 +36,11 @@ std::string gradeStudent(const std::vector<std::string>& ids, const StudentGradi
 std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend, const SolutionCache& cache,
                              const std::filesystem::path& scratch, CacheCount& count);
 
+// "shadelab: grade: MESSAGE" on stderr; returns grade's exit code for "could not grade" (2).
+int cannotGrade(const std::string& message);
+// The report's date: "2026-11-26 07:35", local time.
+std::string gradeDate();
+
 // --cache DIR, the default folder, or none with --no-cache.
 SolutionCache solutionCacheFor(const Options& o);
 

@@ -31,6 +31,7 @@
 #include "ui/platform.h"
 #include "gl/pixel_probe.h"
 #include "ui/shader_editor.h"
+#include "ui/window_events.h"
 #include "ui/window_files.h"
 
 namespace shadelab {
@@ -107,31 +108,8 @@ struct AppState {
   float uiScale = 1.0f, appliedScale = 0.0f;
 };
 
-// Window events of any kind (input, resize, expose, drops), counted by the callbacks below: a
-// window that has stopped drawing draws again when this moves.
-unsigned windowEvents = 0;
-
-void countEvent(GLFWwindow*) { ++windowEvents; }
-
-// Installed before Dear ImGui's backend, which chains to them: input still reaches ImGui.
-void countInput(GLFWwindow* w) {
-  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { countEvent(win); });
-  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { countEvent(win); });
-  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { countEvent(win); });
-  glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { countEvent(win); });
-  glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { countEvent(win); });
-  glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { countEvent(win); });
-}
-
-// Not chained by ImGui: resizes and exposes (a window uncovered must be drawn again).
-void countWindowChanges(GLFWwindow* w) {
-  glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { countEvent(win); });
-  glfwSetWindowRefreshCallback(w, countEvent);
-  glfwSetWindowIconifyCallback(w, [](GLFWwindow* win, int) { countEvent(win); });
-}
-
 void onDrop(GLFWwindow* w, int count, const char** paths) {
-  ++windowEvents;
+  countWindowEvent(w);
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
   for (int i = 0; i < count; ++i) app->dropped.emplace_back(paths[i]);
 }
@@ -140,7 +118,7 @@ void onDrop(GLFWwindow* w, int count, const char** paths) {
 // release that land in one poll (a busy frame) would slip past ImGui's per-frame key state.
 // Installed before ImGui's backend, which chains to it.
 void onKey(GLFWwindow* w, int key, int, int action, int) {
-  ++windowEvents;
+  countWindowEvent(w);
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
   if (!app || action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F12) app->screenshotRequested = true;
@@ -364,15 +342,15 @@ class WindowSession {
 
 bool WindowSession::quiet() {
   if (wopt.soakMinutes > 0 || wopt.cycleLabs || wopt.exitAfterFrames > 0 || app.screenshotRequested) return false;
-  if (windowEvents != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating()) return false;
+  if (windowEvents() != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating()) return false;
   const auto still = std::max(lastActivity, app.costs.since);  // the settings, camera and viewport last changed
   return framesSinceActivity >= kSettleFrames &&
          std::chrono::duration<double>(std::chrono::steady_clock::now() - still).count() >= kSettleSeconds;
 }
 
 void WindowSession::noteActivity() {
-  if (windowEvents != seenEvents || host.jobs().busy()) {
-    seenEvents = windowEvents;
+  if (windowEvents() != seenEvents || host.jobs().busy()) {
+    seenEvents = windowEvents();
     lastActivity = std::chrono::steady_clock::now();
     framesSinceActivity = 0;
   } else {
@@ -426,7 +404,7 @@ bool WindowSession::drawFrame() {
   // 1. events; when nothing moves, wait for them instead of drawing the same frame again
   if (quiet()) {
     waitForEvents(kIdleWakeSeconds);
-    if (windowEvents == seenEvents && !host.pollChanges()) {
+    if (windowEvents() == seenEvents && !host.pollChanges()) {
       resumed = true;
       return !glfwWindowShouldClose(window);
     }
