@@ -84,11 +84,11 @@ cp build/tutorial-shadows-path/shadows_sweep.csv $f/shadows_path.csv
 # shadows.md: LearnOpenGL's scene at the chapter's 800x600, one 1024^2 map fitted to the scene, to
 # the view, and cascades of the same memory (4 x 512^2)
 l="$sl render --lab shadows --scene learnopengl --size 800x600 --set shadows.filter=hard"
-$l --set shadows.map_size=1024 --out $f/shadows_11_scene_fit.png
+$l --set shadows.map_size=1024 --set shadows.fit=scene --out $f/shadows_11_scene_fit.png
 $l --set shadows.map_size=1024 --set shadows.fit=view --out $f/shadows_11_view_fit.png
 $l --set shadows.map_size=512 --set shadows.fit=cascades --out $f/shadows_11_cascades.png
 $l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.view=cascades --out $f/shadows_11_cascade_view.png
-$l --set shadows.map_size=1024 --set shadows.view=texel-density --out $f/shadows_11_density_scene.png
+$l --set shadows.map_size=1024 --set shadows.fit=scene --set shadows.view=texel-density --out $f/shadows_11_density_scene.png
 $l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.view=texel-density \
   --out $f/shadows_11_density_cascades.png
 $l --set shadows.map_size=512 --set shadows.fit=cascades --set shadows.view=depth-linear --set shadows.depth_cascade=1 \

@@ -40,15 +40,21 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
   heightMap_.clear();
   const std::string err = rebuildScene(scene, lab_->needs(), true);
   previous_.reset();  // the old lab's scene, which rebuildScene kept: of no use to this lab
+  if (err.empty()) applySceneSettings({});  // a new lab starts at its defaults: nothing to restore
   return err;
 }
 
 std::string LabHost::selectScene(const std::string& idOrPath) {
   std::string kept;
   std::swap(kept, heightMap_);  // a height map belongs to the scene it was given for
+  const std::vector<std::string> leaving = built_.scene.suggestedSettings;
   const std::string err = rebuildScene(idOrPath, lab_->needs(), true);
-  if (err.empty()) previous_.reset();  // another scene: the old builds are of no further use
-  else heightMap_ = kept;
+  if (err.empty()) {
+    previous_.reset();  // another scene: the old builds are of no further use
+    applySceneSettings(leaving);
+  } else {
+    heightMap_ = kept;
+  }
   return err;
 }
 
@@ -157,7 +163,42 @@ Settings LabHost::currentSettings() {
   return c.values;
 }
 
-void LabHost::resetParams() { lab_->resetParams(); }
+Settings LabHost::defaultSettings() {
+  Settings defaults;
+  if (auto fresh = makeLab(lab_->id())) {
+    CollectAsText c;
+    fresh->visitParams(c);
+    defaults = std::move(c.values);
+  }
+  for (const std::string& s : built_.scene.suggestedSettings) {
+    const auto eq = s.find('=');
+    const std::string key = eq == std::string::npos ? std::string() : ownKey(s.substr(0, eq));
+    for (auto& [k, v] : defaults)
+      if (!key.empty() && k == key) v = s.substr(eq + 1);
+  }
+  return defaults;
+}
+
+void LabHost::resetParams() {
+  lab_->resetParams();
+  applySceneSettings({});
+}
+
+void LabHost::applySceneSettings(const std::vector<std::string>& leaving) {
+  if (!leaving.empty()) {
+    CollectAsText labDefaults;
+    if (auto fresh = makeLab(lab_->id())) fresh->visitParams(labDefaults);
+    for (const std::string& s : leaving) {
+      const std::string key = ownKey(s.substr(0, s.find('=')));
+      for (const auto& [k, v] : labDefaults.values)
+        if (!key.empty() && k == key) set(k + "=" + v);
+    }
+  }
+  // A scene's suggestions are the project's own text: one that does not apply is a bug the lab
+  // tests catch (every scene is selected there), not something a user can fix, so it is not shown.
+  for (const std::string& s : built_.scene.suggestedSettings)
+    if (!ownKey(s.substr(0, s.find('='))).empty()) set(s);
+}
 
 std::vector<gl::PassTiming> LabHost::draw(gl::PassTimer& timer, const gl::RenderTarget& target,
                                           const OrbitCamera& camera, float time, glm::vec2 jitter, int slice,

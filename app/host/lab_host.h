@@ -45,6 +45,9 @@ class LabHost {
   std::string runAction(const std::string& key);
   std::string applySettings(const Settings& settings);
   Settings currentSettings();  // every param of the current lab as text
+  // The current lab's defaults on the current scene: its own, with the scene's suggested settings
+  // for it (Scene::suggestedSettings) over them. resetParams() returns to them.
+  Settings defaultSettings();
   void resetParams();
   void resetCamera();
 
@@ -104,6 +107,9 @@ class LabHost {
     std::vector<std::string> warnings;
   };
   std::string ownKey(const std::string& key) const;
+  // After a scene is picked: the settings the scene left (`leaving`, its suggestions) back to the
+  // lab's defaults, then the new scene's suggestions applied.
+  void applySceneSettings(const std::vector<std::string>& leaving);
   std::string ensureScene();
   std::vector<gl::PassTiming> draw(gl::PassTimer& timer, const gl::RenderTarget& target, const OrbitCamera& camera,
                                    float time, glm::vec2 jitter, int slice = 0, int slices = 1);

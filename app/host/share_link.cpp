@@ -73,12 +73,7 @@ ShareLink shareLink(LabHost& host) {
   if (catalogued) link.fragment += "&scene=" + percentEncode(host.sceneId());
   else link.note = "the scene is a file of yours (" + host.sceneId() + "): the link opens the lab's default scene";
   link.fragment += "&camera=" + percentEncode(host.camera().toString());
-  Settings defaults;
-  if (auto fresh = makeLab(lab)) {
-    CollectAsText c;
-    fresh->visitParams(c);
-    defaults = c.values;
-  }
+  const Settings defaults = host.defaultSettings();  // the scene's own suggestions count as defaults
   for (const auto& setting : host.currentSettings()) {
     const auto d = std::find_if(defaults.begin(), defaults.end(), [&](auto& kv) { return kv.first == setting.first; });
     if (d != defaults.end() && d->second == setting.second) continue;

@@ -87,6 +87,9 @@ struct Scene {
   std::vector<std::string> warnings;  // shown in the UI, printed by the CLI
   std::string suggestedCamera;         // OrbitCamera::parse text applied after framing, or ""
   glm::vec3 suggestedLight{0.0f};      // a point the scene's key light shines from, towards the origin; 0: none
+  // "lab.key=value" settings the scene is best shown with (the learnopengl scene's cascades): the
+  // host applies the current lab's when the scene is picked and counts them as its defaults there.
+  std::vector<std::string> suggestedSettings;
   int revision = 0;                    // set by the host on every build: caches keyed on it go stale
 
   Bounds bounds;  // world-space bounds of all instances, kept by the host (computeBounds) after each build

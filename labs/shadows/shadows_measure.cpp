@@ -326,6 +326,11 @@ std::vector<SceneRecipe> ShadowsLab::scenes() const {
                              glm::normalize(glm::vec3(1.0f, 0.0f, 1.0f))));
              s.suggestedCamera = "yaw=0,pitch=25,distance=7,target=0;0;0.5,fov=45,near=0.1,far=100";
              s.suggestedLight = glm::vec3(-2.0f, 4.0f, -1.0f);
+             // The chapter's fixed +-10 box on its 1024^2 map misclassifies 0.085 % of the pixels of
+             // this view against ray-traced visibility; one map fitted to the scene (a half-extent
+             // of 35) 0.31 %, fitted to the view 0.15 %; four cascades 0.043 % (2048^2 maps, the
+             // lab's default: 0.16, 0.085 and 0.033 %). So the scene opens with cascades.
+             s.suggestedSettings = {"shadows.fit=cascades"};
              return std::string();
            }}};
 }

@@ -77,6 +77,7 @@ struct ShadowQuery {
   float bias;      // world units
   float texel;     // one texel in offset units (uv, or tangent at unit distance)
   float texelWorld;
+  vec2 planeSlope; // directional RECEIVER_PLANE: the receiver plane's depth change per texel of offset
   bool beyondFar;
 };
 
@@ -144,6 +145,11 @@ ShadowQuery makeQuery(int type, ShadowLight L, ShadowSurface s) {
     q.texel = 1.0 / L.mapSize;
     q.tangent = q.bitangent = vec3(0.0);
   }
+  // Along a directional light's parallel rays the plane's depth is linear in the offset: one
+  // gradient here instead of a ray-plane intersection per tap (receiverDepth). Zero where the
+  // plane contains the light direction (no intersection).
+  float denom = dot(L.axis, q.plane);
+  q.planeSlope = abs(denom) < 1e-4 ? vec2(0.0) : -vec2(dot(L.right, q.plane), dot(L.up, q.plane)) * (q.texelWorld / denom);
   return q;
 }
 
@@ -162,9 +168,7 @@ float receiverDepth(int type, ShadowLight L, ShadowQuery q, vec2 o) {
   float d;
   vec3 toP = q.point - L.position;
   if (type == LIGHT_DIRECTIONAL) {
-    float denom = dot(L.axis, q.plane);
-    if (abs(denom) < 1e-4) return q.depth;  // the plane contains the light direction: no intersection
-    d = q.depth - dot(L.right * o.x + L.up * o.y, q.plane) * q.texelWorld / denom;
+    d = q.depth + dot(o, q.planeSlope);
   } else {
     vec3 dir = type == LIGHT_POINT ? q.base + (q.tangent * o.x + q.bitangent * o.y) * q.texel
                                    : L.axis + L.right * (q.tanCentre.x + o.x * q.texel * 2.0 * L.halfWidth) +

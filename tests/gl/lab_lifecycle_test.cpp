@@ -157,6 +157,41 @@ TEST(Host, ASharedLinkOpensTheSameFrame) {
   EXPECT_NE(odd.problems[0].find("'colour' is unknown"), std::string::npos);
 }
 
+// A scene may come with settings it is best shown with (the learnopengl scene opens with
+// cascades): applied when it is picked, its defaults for Reset and for links, and gone with it.
+TEST(Host, AScenesSuggestedSettingsAreItsDefaults) {
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectLab("shadows"), "");
+  auto fit = [&] {
+    for (auto& [k, v] : host.currentSettings())
+      if (k == "fit") return v;
+    return std::string("?");
+  };
+  EXPECT_EQ(fit(), "scene");
+  ASSERT_EQ(host.selectScene("learnopengl"), "");
+  EXPECT_EQ(fit(), "cascades");
+  ASSERT_EQ(host.set("shadows.fit=scene"), "");
+  const ShareLink link = shareLink(host);
+  EXPECT_NE(link.fragment.find("&shadows.fit=scene"), std::string::npos) << "differs from the scene's default";
+  LabHost other(test::builtinShaders(), "shadows", "learnopengl");
+  for (auto& s : openLink(link.fragment).sets) ASSERT_EQ(other.set(s), "") << s;
+  EXPECT_EQ(other.currentSettings(), host.currentSettings());
+  host.resetParams();
+  EXPECT_EQ(fit(), "cascades");
+  EXPECT_EQ(shareLink(host).fragment.find("shadows.fit"), std::string::npos) << "the scene's default is left out";
+  ASSERT_EQ(host.selectScene("shadow-test"), "");
+  EXPECT_EQ(fit(), "scene") << "the suggestion leaves with its scene";
+
+  // Every lab's own scenes' suggestions name its parameters and valid values.
+  for (const std::string& lab : labIds()) {
+    ASSERT_EQ(host.selectLab(lab), "");
+    for (const SceneRecipe& recipe : host.lab().scenes()) {
+      if (!host.selectScene(recipe.id).empty()) continue;  // a scene of shared data that is not here
+      for (const std::string& s : host.scene().suggestedSettings) EXPECT_EQ(host.set(s), "") << recipe.id << ": " << s;
+    }
+  }
+}
+
 // The viewport's readout reads back through a fenced pixel buffer: a frame or two later, the same
 // value a plain glReadPixels gives, and never a wait.
 TEST(Host, ThePixelReadoutArrivesWithoutAStall) {

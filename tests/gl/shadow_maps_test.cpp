@@ -41,7 +41,8 @@ std::vector<float> depthLayer(const ShadowMap& map, int layer) {
 // The camera sees the floor to the horizon, so a map fitted to the view still spans ~35 of the
 // floor's 50 units and gains less than 2x; cascades of the same memory gain several times that.
 TEST(ShadowMaps, CascadesAtLeastHalveTheErrorOnLearnOpenGlsSceneAtEqualMemory) {
-  auto host = test::labHost("shadows", "learnopengl", {"shadows.map_size=1024", "shadows.filter=hard"});
+  auto host = test::labHost(
+      "shadows", "learnopengl", {"shadows.map_size=1024", "shadows.filter=hard", "shadows.fit=scene"});  // the scene opens with cascades
   const ImageF truth = host->renderReference({800, 600});
   const double scene = misclassified(*host, truth);
   host->set("shadows.fit=view");
