@@ -73,6 +73,10 @@ const std::vector<Builder>& builders() {
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
          add(s, makeUvSphere(0.7f, seg), at(-1.3f, 0.7f, 0.9f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
          s.suggestedCamera = "yaw=15,pitch=30,distance=11,target=0;0.6;0";
+         // The camera sees most of the ground, but not its far corners: a map fitted to the view
+         // misclassifies 0.042 % of the pixels against ray-traced visibility, one fitted to the
+         // whole scene 0.053 % (hard shadows, 800x600; bench BM_DefaultFit).
+         s.suggestedSettings = {"shadows.fit=view"};
        }},
       {"empty", "nothing at all (stress runs: a lab must cope)", [](Scene&, int) {}},
   };

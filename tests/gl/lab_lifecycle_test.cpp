@@ -167,7 +167,7 @@ TEST(Host, AScenesSuggestedSettingsAreItsDefaults) {
       if (k == "fit") return v;
     return std::string("?");
   };
-  EXPECT_EQ(fit(), "scene");
+  EXPECT_EQ(fit(), "view");  // the default scene, shadow-test, suggests it
   ASSERT_EQ(host.selectScene("learnopengl"), "");
   EXPECT_EQ(fit(), "cascades");
   ASSERT_EQ(host.set("shadows.fit=scene"), "");
@@ -179,8 +179,10 @@ TEST(Host, AScenesSuggestedSettingsAreItsDefaults) {
   host.resetParams();
   EXPECT_EQ(fit(), "cascades");
   EXPECT_EQ(shareLink(host).fragment.find("shadows.fit"), std::string::npos) << "the scene's default is left out";
+  ASSERT_EQ(host.selectScene("sphere"), "");
+  EXPECT_EQ(fit(), "scene") << "the suggestion leaves with its scene: the lab's own default";
   ASSERT_EQ(host.selectScene("shadow-test"), "");
-  EXPECT_EQ(fit(), "scene") << "the suggestion leaves with its scene";
+  EXPECT_EQ(fit(), "view");
 
   // Every lab's own scenes' suggestions name its parameters and valid values.
   for (const std::string& lab : labIds()) {
