@@ -31,6 +31,15 @@ void timeConfiguration(benchmark::State& state, const char* lab, const std::vect
   state.SetLabel(label);
 }
 
+void depthMapSampling(unsigned target) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float white[4] = {1, 1, 1, 1};
+  glTexParameterfv(target, GL_TEXTURE_BORDER_COLOR, white);
+}
+
 }  // namespace shadelab
 
 using namespace shadelab;

@@ -22,4 +22,8 @@ void timeFrames(benchmark::State& state, LabHost& host, glm::ivec2 size);
 void timeConfiguration(benchmark::State& state, const char* lab, const std::vector<std::string>& config,
                        const std::vector<std::string>& extra = {});
 
+// A bare program's depth map sampled as the labs sample theirs: nearest texels, and outside the
+// map a border of depth 1 (lit). For the texture bound to `target`.
+void depthMapSampling(unsigned target);
+
 }  // namespace shadelab

@@ -90,12 +90,7 @@ void BM_ShadowFrameworkOverhead(benchmark::State& state) {
   glGenTextures(1, &shadowTex);
   glBindTexture(GL_TEXTURE_2D_ARRAY, shadowTex);
   glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, mapSize, mapSize, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-  const float white[4] = {1, 1, 1, 1};
-  glTexParameterfv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BORDER_COLOR, white);
+  depthMapSampling(GL_TEXTURE_2D_ARRAY);
   glGenFramebuffers(1, &shadowFbo);
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo);
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, shadowTex, 0, 0);
