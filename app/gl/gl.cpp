@@ -63,4 +63,32 @@ std::string drainErrors() {
   return out;
 }
 
+void releaseDriverHeldTextures() {
+  GLuint texture[2] = {0, 0}, framebuffer = 0;
+  glGenTextures(2, texture);
+  glBindTexture(GL_TEXTURE_2D, texture[0]);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glGenFramebuffers(1, &framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture[0], 0);
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glViewport(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &framebuffer);
+
+  constexpr int kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
+  glBindTexture(GL_TEXTURE_2D_ARRAY, texture[1]);
+  for (int level = 0; level < kLevels; ++level)
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RGBA8, 4 >> level, 4 >> level, kLayers, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 nullptr);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
+  glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  glDeleteTextures(2, texture);
+}
+
 }  // namespace gl

@@ -32,4 +32,13 @@ const char* errorString(GLenum error);  // "GL_INVALID_ENUM", ...
 // Drains glGetError; returns "" or a comma-separated list such as "GL_INVALID_ENUM".
 std::string drainErrors();
 
+// llvmpipe (Mesa 22.3) keeps textures alive after they and their framebuffers are deleted: the
+// one last cleared through a framebuffer, and the layers of the one whose mipmaps were generated
+// last, until another texture takes its place. A lab that leaves with a 1 GB shadow map cleared
+// last, or 360 MB of mipmapped moment maps, would hold that memory while the next lab runs. This
+// clears a one-texel texture through a framebuffer of its own and generates the mipmaps of a small
+// array of eight layers (both deleted again), which moves those references onto them. The host
+// calls it when a lab is torn down. Leaves framebuffer 0 and no texture bound on the active unit.
+void releaseDriverHeldTextures();
+
 }  // namespace gl

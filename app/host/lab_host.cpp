@@ -32,7 +32,10 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
     return std::string(id) + ": setup failed: " + err;
   }
   jobs_.cancelAll();  // nothing of the old lab may be delivered to the new one
-  if (lab_ && labReady_) lab_->teardown();
+  if (lab_ && labReady_) {
+    lab_->teardown();
+    gl::releaseDriverHeldTextures();  // else the driver may keep the old lab's biggest maps (gl/gl.h)
+  }
   shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
   labReady_ = true;

@@ -5,6 +5,7 @@
 #include "gl_test.h"
 #include "gl/pixel_probe.h"
 #include "host/share_link.h"
+#include "util/process_memory.h"
 
 using namespace shadelab;
 
@@ -59,6 +60,29 @@ TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
 // Entering a lab leaves nothing of the lab before it: the GL objects after the first frame are
 // the same whichever lab (and scene) came before. (The old lab's scene was once kept as the
 // host's "previous build", found by the soak.)
+// The memory a lab's textures took comes back when it goes: llvmpipe would otherwise keep textures
+// alive after the lab deleted them (gl::releaseDriverHeldTextures; here the cascades' EVSM moment
+// maps, four layers of 2048^2 RGBA32F with their mips: 357 MB, and the depth maps).
+TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
+  LabHost host(test::builtinShaders());
+  auto heapAfterFrame = [&] {
+    host.renderFrame({160, 90});
+    glFinish();
+    returnFreePages();
+    return heapInUseMb();
+  };
+  heapAfterFrame();
+  const double before = heapAfterFrame();
+  ASSERT_EQ(host.selectLab("shadows"), "");
+  for (const char* s : {"shadows.fit=cascades", "shadows.filter=evsm"}) ASSERT_EQ(host.set(s), "");
+  const double inShadows = heapAfterFrame();
+  ASSERT_EQ(host.selectLab("shading"), "");
+  const double after = heapAfterFrame();
+  std::printf("heap in use: %.1f MB, %.1f MB with the moment maps, %.1f MB after leaving\n", before, inShadows, after);
+  EXPECT_GT(inShadows, before + 300.0);
+  EXPECT_LT(after, before + 16.0);
+}
+
 TEST(Lifecycle, EnteringALabKeepsNothingOfTheLabBefore) {
   LabHost host(test::builtinShaders());
   auto enter = [&](const std::string& id) {
