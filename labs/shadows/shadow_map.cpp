@@ -44,7 +44,8 @@ bool complete() {
 double ShadowMap::bytesOf(const MapShape& shape) {
   const double texels = double(shape.size) * shape.size * (shape.cube ? 6 : shape.layers);
   const double moments = shape.momentFormat == GL_R32F ? 4 : shape.momentFormat == GL_RG32F ? 8 : shape.momentFormat ? 16 : 0;
-  return texels * (4.0 + moments * (shape.momentMips ? 4.0 / 3.0 : 1.0));
+  const double scratch = shape.cube ? 0.0 : double(shape.size) * shape.size * moments;  // one blur layer
+  return texels * (4.0 + moments * (shape.momentMips ? 4.0 / 3.0 : 1.0)) + scratch;
 }
 
 int ShadowMap::ensure(const MapShape& shape) {
@@ -53,6 +54,7 @@ int ShadowMap::ensure(const MapShape& shape) {
   requested_ = shape;
   gl::drainErrors();  // errors from before are not this allocation's
   for (MapShape attempt = shape; attempt.size >= 256; attempt.size /= 2) {
+    if (bytesOf(attempt) > kBudgetBytes && attempt.size > 256) continue;
     if (allocate(attempt)) return attempt.size;
     release();
   }

@@ -33,10 +33,13 @@ struct MapShape {
 
 class ShadowMap {
  public:
-  // (Re)allocates only when the shape changes. Where the driver cannot allocate it (an 8192^2
-  // cube or four cascades of RGBA32F moments are gigabytes), halves the size until it can and
-  // returns the size it got: shape.size, a smaller one, or 0 (not even 256^2; no map then).
+  // (Re)allocates only when the shape changes. Where the shape needs more than kBudgetBytes (an
+  // 8192^2 cube or four cascades of RGBA32F moments are gigabytes: a software renderer takes them
+  // from the machine's memory, which a laptop may not have) or the driver cannot allocate it,
+  // halves the size until it fits and returns the size it got: shape.size, a smaller one, or 0
+  // (not even 256^2; no map then).
   int ensure(const MapShape& shape);
+  static constexpr double kBudgetBytes = 2.0 * 1024 * 1024 * 1024;
   // Draws every instance's depth (and moments) from `light` into `layer`. `program` is the depth
   // program variant for this map (CUBE_MAP for a one-pass cube, CUBE_FACE for six passes,
   // MOMENTS for a filtered map).
@@ -58,7 +61,7 @@ class ShadowMap {
   bool hasMoments() const { return bool(moments_); }
   GLuint texture() const { return texture_.get(); }
   explicit operator bool() const { return bool(texture_); }
-  // What `shape` needs in GPU memory, bytes (for the message when it could not be allocated).
+  // What `shape` needs in GPU memory, bytes: depth, moments with their mips and the blur's scratch.
   static double bytesOf(const MapShape& shape);
 
  private:

@@ -268,14 +268,23 @@ static ViewVolume viewVolume(const Frame& frame) {
 bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* which) {
   const int got = map.ensure(shape);
   if (got == shape.size) return true;
-  const double mib = ShadowMap::bytesOf(shape) / double(1 << 20);
-  char bytes[32];
-  std::snprintf(bytes, sizeof bytes, mib >= 1024.0 ? "%.1f GiB" : "%.0f MiB", mib >= 1024.0 ? mib / 1024.0 : mib);
-  const std::string asked = std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes + ")";
-  mapWarnings_.push_back(got ? "the driver could not allocate a " + asked + "; drawing at " + std::to_string(got) +
-                                   "^2 instead: pick a smaller map size or fewer layers"
-                             : "the driver could not allocate even a 256^2 " + std::string(which) +
-                                   " shadow map: no shadow from that light");
+  auto bytes = [](const MapShape& s) {
+    const double mib = ShadowMap::bytesOf(s) / double(1 << 20);
+    char text[32];
+    std::snprintf(text, sizeof text, mib >= 1024.0 ? "%.1f GiB" : "%.0f MiB", mib >= 1024.0 ? mib / 1024.0 : mib);
+    return std::string(text);
+  };
+  const std::string asked = std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes(shape) + ")";
+  MapShape drawn = shape;
+  drawn.size = got;
+  const std::string instead = "; drawing at " + std::to_string(got) + "^2 (" + bytes(drawn) +
+                              ") instead: pick a smaller map size, fewer cascades or a depth-only filter";
+  if (got && ShadowMap::bytesOf(shape) > ShadowMap::kBudgetBytes)
+    mapWarnings_.push_back("a " + asked + " is over the lab's 2 GiB budget for shadow maps" + instead);
+  else
+    mapWarnings_.push_back(got ? "the driver could not allocate a " + asked + instead
+                               : "the driver could not allocate even a 256^2 " + std::string(which) +
+                                     " shadow map: no shadow from that light");
   return got > 0;
 }
 

@@ -257,3 +257,18 @@ TEST(ShadowMaps, BilinearPcfInTheShaderMatchesTheSampler) {
   std::printf("pcf-bilinear against hardware-pcf: rmse %.5f, max %.4f\n", e.rmse, e.maxError);
   EXPECT_LT(e.rmse, 0.01);
 }
+
+// A map over the lab's memory budget is drawn smaller, and the lab says why: one 8192^2 map of
+// EVSM moments with mips and the blur's scratch is 2.6 GiB, which a software renderer would take
+// from the machine's memory.
+TEST(ShadowMaps, AMapOverTheBudgetIsDrawnSmallerAndSaysSo) {
+  auto host = test::labHost("shadows", "shadow-test", {"shadows.fit=scene", "shadows.filter=evsm", "shadows.map_size=8192"});
+  host->renderFrame({160, 90});
+  EXPECT_EQ(shadowsOf(*host).keyMap().size(), 4096);
+  bool said = false;
+  for (const std::string& w : host->warnings()) said |= w.find("over the lab's 2 GiB budget") != std::string::npos;
+  EXPECT_TRUE(said);
+  EXPECT_GT(ShadowMap::bytesOf({false, 8192, 1, GL_DEPTH_COMPONENT24, GL_RGBA32F, true}), ShadowMap::kBudgetBytes);
+  EXPECT_LT(ShadowMap::bytesOf({false, 8192, 4, GL_DEPTH_COMPONENT24, 0, false}), ShadowMap::kBudgetBytes);  // depth alone fits
+  EXPECT_EQ(gl::drainErrors(), "");
+}
