@@ -64,17 +64,19 @@ std::string drainErrors() {
 }
 
 void releaseDriverHeldTextures() {
+  // Big enough that every rasteriser thread gets tiles of it (llvmpipe's threads hold their own).
+  constexpr int kSide = 512;
   GLuint texture[2] = {0, 0}, framebuffer = 0;
   glGenTextures(2, texture);
   glBindTexture(GL_TEXTURE_2D, texture[0]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSide, kSide, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   glBindTexture(GL_TEXTURE_2D, 0);
   glGenFramebuffers(1, &framebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture[0], 0);
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
-  glViewport(0, 0, 1, 1);
+  glViewport(0, 0, kSide, kSide);
   glClear(GL_COLOR_BUFFER_BIT);
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -83,7 +85,7 @@ void releaseDriverHeldTextures() {
   constexpr int kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture[1]);
   for (int level = 0; level < kLevels; ++level)
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RGBA8, 4 >> level, 4 >> level, kLayers, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RGBA8, kSide >> level, kSide >> level, kLayers, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  nullptr);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
