@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/options.h"
 #ifdef SHADELAB_HAS_WINDOW
 #include "ui/window_app.h"
 #endif
@@ -28,15 +29,10 @@ int run(int argc, char** argv) {
     else if (a == "--soak-seed" && i + 1 < argc) window.soakSeed = unsigned(std::atol(argv[++i]));
     else if (a == "--present") window.present = true;
     else if (a == "--window-size" && i + 1 < argc) {
-      const std::string text = argv[++i];
-      int w = 0, h = 0;
-      char tail = 0;
-      if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 320 || h < 240 || w > 16384 || h > 16384) {
-        std::fprintf(stderr, "shadelab: --window-size: invalid value '%s' (valid: WxH, 320x240 to 16384x16384)\n",
-                     text.c_str());
+      if (auto err = parseSize("--window-size", argv[++i], window.size, 240); !err.empty()) {
+        std::fprintf(stderr, "shadelab: %s\n", err.c_str());
         return 1;
       }
-      window.size[0] = w, window.size[1] = h;
     }
     else if (a == "--ui-scale" && i + 1 < argc) {
       const std::string text = argv[++i];

@@ -71,12 +71,12 @@ window only:
 )";
 }
 
-static std::string parseSize(const std::string& text, glm::ivec2& size) {
+std::string parseSize(const std::string& option, const std::string& text, glm::ivec2& size, int minSide) {
   int w = 0, h = 0;
   char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 16 || h < 16 || w > 16384 ||
-      h > 16384)
-    return "--size: '" + text + "' is not WxH with 16 <= W,H <= 16384 (e.g. 1280x720)";
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < minSide || h < minSide ||
+      w > 16384 || h > 16384)
+    return option + ": '" + text + "' is not WxH with " + std::to_string(minSide) + " <= W,H <= 16384 (e.g. 1280x720)";
   size = {w, h};
   return {};
 }
@@ -145,7 +145,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.shards = n;
     }
     else if (arg == "--size") {
-      if (auto e = parseSize(v, o.size); !e.empty()) return e;
+      if (auto e = parseSize("--size", v, o.size); !e.empty()) return e;
       o.sizeGiven = true;
     } else if (arg == "--watchdog") {
       char* end = nullptr;

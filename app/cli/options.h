@@ -45,6 +45,8 @@ struct Options {
 
 // Returns "" or a one-line error naming the bad option and what is valid.
 std::string parseOptions(int argc, char** argv, Options& out);
+// "WxH" into `size`, each side in [minSide, 16384]; returns "" or an error naming `option`.
+std::string parseSize(const std::string& option, const std::string& text, glm::ivec2& size, int minSide = 16);
 std::string usage();
 
 }  // namespace shadelab

@@ -10,6 +10,7 @@
 #include "gl/gl.h"
 #include "host/random_settings.h"
 #include "host/soak.h"
+#include "util/output_files.h"
 
 namespace shadelab {
 namespace {
@@ -74,13 +75,8 @@ int runRandom(const Options& o) {
 }
 
 int runSoak(const Options& o) {
-  if (!o.out.empty()) {  // found out now, not after the run: the folder is made, or why not is said
-    const std::filesystem::path folder = std::filesystem::path(o.out).parent_path();
-    std::error_code ec;
-    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
-    if (ec || (!folder.empty() && !std::filesystem::is_directory(folder)))
-      return fail("--out " + o.out + ": cannot make the folder " + folder.string() + (ec ? ": " + ec.message() : ""));
-  }
+  if (!o.out.empty())  // found out now, not after the run
+    if (auto err = makeParentFolder(o.out); !err.empty()) return fail(err);
   Options with = o;
   const std::filesystem::path scratch = SoakDriver::makeScratch();
   with.shaderDirs.insert(with.shaderDirs.begin(), scratch);

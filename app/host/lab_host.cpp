@@ -166,18 +166,19 @@ Settings LabHost::currentSettings() {
   return c.values;
 }
 
+// The current lab's own defaults: a fresh instance's parameters (not set up).
+static Settings labDefaults(std::string_view labId) {
+  CollectAsText c;
+  if (auto fresh = makeLab(labId)) fresh->visitParams(c);
+  return std::move(c.values);
+}
+
 Settings LabHost::defaultSettings() {
-  Settings defaults;
-  if (auto fresh = makeLab(lab_->id())) {
-    CollectAsText c;
-    fresh->visitParams(c);
-    defaults = std::move(c.values);
-  }
+  Settings defaults = labDefaults(lab_->id());
   for (const std::string& s : built_.scene.suggestedSettings) {
-    const auto eq = s.find('=');
-    const std::string key = eq == std::string::npos ? std::string() : ownKey(s.substr(0, eq));
+    const std::string key = ownKey(s.substr(0, s.find('=')));
     for (auto& [k, v] : defaults)
-      if (!key.empty() && k == key) v = s.substr(eq + 1);
+      if (!key.empty() && k == key) v = s.substr(s.find('=') + 1);
   }
   return defaults;
 }
@@ -188,14 +189,11 @@ void LabHost::resetParams() {
 }
 
 void LabHost::applySceneSettings(const std::vector<std::string>& leaving) {
-  if (!leaving.empty()) {
-    CollectAsText labDefaults;
-    if (auto fresh = makeLab(lab_->id())) fresh->visitParams(labDefaults);
-    for (const std::string& s : leaving) {
-      const std::string key = ownKey(s.substr(0, s.find('=')));
-      for (const auto& [k, v] : labDefaults.values)
-        if (!key.empty() && k == key) set(k + "=" + v);
-    }
+  if (!leaving.empty()) {  // what the scene before suggested goes back to the lab's own default
+    const Settings defaults = labDefaults(lab_->id());
+    for (const std::string& s : leaving)
+      for (const auto& [k, v] : defaults)
+        if (k == ownKey(s.substr(0, s.find('=')))) set(k + "=" + v);
   }
   // A scene's suggestions are the project's own text: one that does not apply is a bug the lab
   // tests catch (every scene is selected there), not something a user can fix, so it is not shown.

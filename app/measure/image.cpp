@@ -8,6 +8,8 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "util/output_files.h"
+
 namespace shadelab {
 
 static float clamp01(float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 1.0f; }
@@ -73,10 +75,7 @@ std::string writePng(const std::string& path, const ImageF& image) {
   std::vector<unsigned char> rgb(size_t(image.size.x) * image.size.y * 3);
   for (size_t i = 0, n = rgb.size() / 3; i < n; ++i)
     for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = (unsigned char)std::lround(clamp01(image.rgba[i * 4 + c]) * 255.0f);
-  // The folder a user names is made, as `render --out out/shots/a.png` in a fresh clone expects.
-  std::error_code made;
-  if (const auto folder = std::filesystem::path(path).parent_path(); !folder.empty())
-    std::filesystem::create_directories(folder, made);
+  makeParentFolder(path);  // a failure shows as the write's own error below
   const std::string tmp = path + ".tmp";
   if (!stbi_write_png(tmp.c_str(), image.size.x, image.size.y, 3, rgb.data(), image.size.x * 3))
     return path + ": cannot write PNG (does the folder exist and is it writable?)";

@@ -10,6 +10,7 @@
 #include <stb_image_write.h>
 
 #include "util/format.h"
+#include "util/output_files.h"
 
 namespace shadelab {
 
@@ -20,6 +21,7 @@ double SweepRow::value(const std::string& key) const {
 }
 
 std::string writeTextFile(const std::string& path, const std::string& text) {
+  if (auto err = makeParentFolder(path); !err.empty()) return err;
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary);

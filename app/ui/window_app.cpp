@@ -558,7 +558,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   for (const gl::Version v : gl::kContextVersions) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, v.major);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, v.minor);
-    if ((window = glfwCreateWindow(wopt.size[0], wopt.size[1], "ShadeLab", nullptr, nullptr))) break;
+    if ((window = glfwCreateWindow(wopt.size.x, wopt.size.y, "ShadeLab", nullptr, nullptr))) break;
   }
   if (!window) {
     glfwTerminate();

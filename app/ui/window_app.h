@@ -13,7 +13,7 @@ struct WindowOptions {
   unsigned soakSeed = 1;    // --soak-seed N
   float uiScale = 0;        // --ui-scale S: text and widgets (0: the monitor's content scale)
   bool present = false;     // --present: start in presentation mode (F11)
-  int size[2] = {1280, 800}; // --window-size WxH: the window's size at start
+  glm::ivec2 size{1280, 800}; // --window-size WxH: the window's size at start
   std::string message;      // shown in the Messages panel from the start (the page: what its link got wrong)
 };
 

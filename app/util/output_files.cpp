@@ -7,6 +7,16 @@ namespace fs = std::filesystem;
 
 namespace shadelab {
 
+std::string makeParentFolder(const std::string& path) {
+  const fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) return {};
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec || !fs::is_directory(folder))
+    return path + ": cannot make the folder " + folder.string() + (ec ? ": " + ec.message() : "");
+  return {};
+}
+
 fs::path outputDir(const std::string& sub) {
   const char* env = std::getenv("SHADELAB_OUT");
   fs::path dir = fs::path(env && *env ? env : "out") / sub;

@@ -6,6 +6,9 @@
 
 namespace shadelab {
 
+// The folder `path` lies in, made if missing (a user's `--out out/shots/a.png` in a fresh clone);
+// returns "" or why it could not be made.
+std::string makeParentFolder(const std::string& path);
 // out/<sub> (or $SHADELAB_OUT/<sub>), created if missing.
 std::filesystem::path outputDir(const std::string& sub);
 // out/<sub>/<stem>-YYYYmmdd-HHMMSS[-n]<ext>: neither it nor the same name with .json exists.

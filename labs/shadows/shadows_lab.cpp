@@ -279,6 +279,7 @@ bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* wh
   drawn.size = got;
   const std::string instead = "; drawing at " + std::to_string(got) + "^2 (" + bytes(drawn) +
                               ") instead: pick a smaller map size, fewer cascades or a depth-only filter";
+  static_assert(ShadowMap::kBudgetBytes == 2.0 * 1024 * 1024 * 1024, "the message below names the budget");
   if (got && ShadowMap::bytesOf(shape) > ShadowMap::kBudgetBytes)
     mapWarnings_.push_back("a " + asked + " is over the lab's 2 GiB budget for shadow maps" + instead);
   else
