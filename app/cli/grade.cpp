@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/grade_render.h"
 #include "cli/grade_student.h"
+#include "grade/configuration_frames.h"
 #include "grade/grading.h"
 #include "grade/watchdog.h"
 #include "measure/report.h"
@@ -26,17 +27,6 @@ namespace {
 constexpr int kCannotGrade = 2;
 constexpr double kSolutionSeconds = 600.0;  // the built-in solution and its truth: generous, never the student's fault
 
-double number(const nlohmann::json& values, const std::string& key) {
-  return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
-}
-
-std::string describe(const Configuration& c) {
-  std::string s = "scene " + (c.scene.empty() ? std::string("(the lab's default)") : c.scene);
-  if (!c.camera.empty()) s += ", camera " + c.camera;
-  for (auto& [k, v] : c.settings) s += ", " + k + "=" + v;
-  return s;
-}
-
 // The checks of one configuration, from what its child wrote and how it ended. Returns "" or why
 // the grader itself cannot go on (a rubric or solution at fault).
 std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& run, double watchdog,
@@ -46,7 +36,7 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
   if (!solution.contains("renderer"))
     return "configuration '" + c.name + "': the solution's frame was not made (" + run.describe() + ")";
   out.solutionImage = job.stem + "-solution.png";
-  std::string why;  // why no check could be measured
+  std::string why;  // why nothing the student drew can be scored
   if (run.end == WatchedRun::End::TimedOut) {
     char s[160];
     std::snprintf(s, sizeof s,
@@ -59,38 +49,11 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
     why = "the renderer died drawing the student's shader (" + run.describe() + ")";
     out.outcome = Outcome::Crashed;
   }
-  if (!why.empty()) out.errors.push_back(why);
   if (student.is_object()) {
-    for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
-    out.nonFinite = student["non_finite"].get<size_t>();
     out.studentImage = job.stem + "-student.png";
     out.diffImage = job.stem + "-diff.png";
-    if (!student["errors"].empty()) {
-      const std::string first = student["errors"][0].get<std::string>();
-      why = "did not build: " + first.substr(0, first.find('\n'));  // the message line, without the caret
-      out.outcome = Outcome::DidNotBuild;
-    }
   }
-  for (auto& check : c.checks) {
-    const bool truth = check.against == Against::Truth;
-    const double solutionValue = truth ? number(solution["vs_truth"], check.metric) : 0.0;
-    if (truth && !std::isfinite(solutionValue)) {
-      std::string reported;
-      for (auto& [k, v] : solution["vs_truth"].items()) reported += (reported.empty() ? "" : ", ") + k;
-      return (job.exercise->dir / "rubric.json").string() + ": check '" + check.name + "': the lab reports no metric '" +
-             check.metric + "' (it reports: " + reported + ")";
-    }
-    if (!why.empty()) {
-      out.checks.push_back(failedCheck(check, solutionValue, why));
-      continue;
-    }
-    CheckResult r = scoreCheck(check, number(student[truth ? "vs_truth" : "vs_solution"], check.metric), solutionValue);
-    if (out.nonFinite && r.grade != Grade::Full)
-      r.message = std::to_string(out.nonFinite) + " NaN/Inf values in the frame. " + r.message;
-    out.checks.push_back(std::move(r));
-  }
-  applyRequirements(out.checks);
-  return {};
+  return scoreChecks(*job.exercise, c, solution, student, why, out);
 }
 
 // Grades one exercise into `out`; returns "" or why it could not be graded.
@@ -106,26 +69,15 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
   out.passMark = ex.passMark;
   out.notes = g.notes;
   std::printf("%s: %s (%s)\n", ex.id.c_str(), ex.title.c_str(), (ex.dir / "statement.md").c_str());
-  // Looked up as the shaders will be, inside the sandbox: a file whose link leads out of the
-  // student's folder is never read here; its build says why.
-  const ShaderSearchPath submitted(g.shaderDirs);
-  for (auto& file : ex.files) {
-    const ShaderSearchPath::Lookup found = submitted.find(file);
-    if (found.file.empty() && found.refused.empty()) out.missingFiles.push_back(file);
-    else if (!found.file.empty() && readWholeFile(found.file) == readWholeFile(builtinShaderDir() / file))
-      out.notes.push_back(found.file.string() + " is the lab's own file, unchanged");
-  }
+  lookUpSubmission(ex, g.shaderDirs, out);
   std::vector<std::string> printed;
   for (size_t i = 0; i < ex.configurations.size(); ++i) {
     const Configuration& c = ex.configurations[i];
     ConfigurationResult result;
     result.name = c.name;
-    result.description = describe(c);
+    result.description = describeConfiguration(c);
     if (!out.missingFiles.empty()) {
-      result.outcome = Outcome::NotSubmitted;
-      for (auto& check : c.checks)
-        result.checks.push_back(failedCheck(check, std::nan(""), "not submitted: " + out.missingFiles.front() +
-                                                                     " is in none of the --shaders folders"));
+      notSubmitted(c, out.missingFiles.front() + " is in none of the --shaders folders", result);
     } else {
       ConfigurationJob job{&ex,   &c, g.shaderDirs, g.backend, g.dir, gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(c.name),
                            g.cache, solutionKeyBase(ex, i)};
@@ -138,29 +90,14 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
       if (renderer.empty()) renderer = solution.value("renderer", "");
       ++(solution.value("from_cache", false) ? cache.fromCache : cache.rendered);
     }
-    // Each error once per exercise: every configuration and every program variant ("shading/phong:
-    // ...", "shading/gouraud: ...") compiles the same file, so an error is known by what follows
-    // the program's name.
-    for (auto& err : result.errors) {
-      const size_t name = err.find(": ");
-      const std::string where = name == std::string::npos ? err : err.substr(name + 2);
-      if (std::find(printed.begin(), printed.end(), where) == printed.end()) {
-        std::printf("  %s\n", err.c_str());
-        printed.push_back(where);
-      }
-    }
-    for (auto& r : result.checks) {
-      std::printf("%s\n", checkLine(result, r).c_str());
-      if (!r.message.empty() && result.errors.empty()) std::printf("          %s\n", r.message.c_str());
-      out.earned += r.earned;
-    }
+    for (auto& line : configurationLines(result, printed)) std::printf("%s\n", line.c_str());
+    for (auto& r : result.checks) out.earned += r.earned;
     std::fflush(stdout);
     out.configurations.push_back(std::move(result));
   }
   for (auto& f : out.missingFiles) std::printf("  not submitted: %s is in none of the --shaders folders\n", f.c_str());
   for (auto& n : out.notes) std::printf("  note: %s\n", n.c_str());
-  std::printf("%s: %g / %g points (%.1f%%), pass mark %.0f%%: %s\n\n", ex.id.c_str(), std::round(out.earned * 100) / 100,
-              out.total, out.percent(), out.passMark, out.passed() ? "passed" : "NOT PASSED");
+  std::printf("%s\n\n", exerciseTotalLine(out).c_str());
   return {};
 }
 

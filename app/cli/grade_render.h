@@ -1,7 +1,8 @@
 // The part of grading that draws: one rubric configuration, rendered in a child process (see
 // grade/watchdog.h) first with the built-in shaders (the solution, and the lab's ground truth when
-// a check needs it), then with the student's folders searched first. Results go to files beside
-// the report so that what was finished survives a watchdog kill:
+// a check needs it), then with the student's folders searched first (grade/configuration_frames.h
+// draws both). Results go to files beside the report so that what was finished survives a
+// watchdog kill:
 //   <stem>-solution.png, <stem>-student.png, <stem>-diff.png      images for the report
 //   <stem>-solution.json, <stem>-student.json                    numbers and build errors
 #pragma once

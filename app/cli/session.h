@@ -6,6 +6,7 @@
 
 #include "cli/options.h"
 #include "context/gl_context.h"
+#include "host/configure.h"
 #include "host/lab_host.h"
 
 namespace shadelab {
@@ -20,13 +21,6 @@ struct Session {
 ShaderSearchPath shaderSearchPath(const Options& o);
 // Returns "" or the one-line error to print; `s` is usable only on success.
 std::string openSession(const Options& o, Session& s);
-// Applies the camera option: parsed over the framed camera; near/far refit unless given.
-std::string applyCamera(LabHost& host, const std::string& spec);
-// Lab, scene ("" = keep), "lab.key=value" settings, actions, camera, in that order: the one way a
-// headless run (a session, a rubric's configuration) configures a host.
-std::string configureHost(LabHost& host, const std::string& lab, const std::string& scene,
-                          const std::vector<std::string>& sets, const std::vector<std::string>& actions,
-                          const std::string& camera);
 
 struct TimedFrames {
   double gpuMs = 0;  // median over the timed frames of the frame's summed pass times

@@ -1,5 +1,6 @@
 #include "grade/grading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -72,6 +73,61 @@ CheckResult failedCheck(const Check& check, double solutionValue, const std::str
   return r;
 }
 
+std::string describeConfiguration(const Configuration& c) {
+  std::string s = "scene " + (c.scene.empty() ? std::string("(the lab's default)") : c.scene);
+  if (!c.camera.empty()) s += ", camera " + c.camera;
+  for (auto& [k, v] : c.settings) s += ", " + k + "=" + v;
+  return s;
+}
+
+void notSubmitted(const Configuration& c, const std::string& why, ConfigurationResult& out) {
+  out.outcome = Outcome::NotSubmitted;
+  for (auto& check : c.checks) out.checks.push_back(failedCheck(check, std::nan(""), "not submitted: " + why));
+}
+
+namespace {
+
+double number(const nlohmann::json& values, const std::string& key) {
+  return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
+}
+
+}  // namespace
+
+std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
+                        const nlohmann::json& student, std::string why, ConfigurationResult& out) {
+  if (!why.empty()) out.errors.push_back(why);
+  if (student.is_object()) {
+    for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
+    out.nonFinite = student["non_finite"].get<size_t>();
+    if (!student["errors"].empty()) {
+      const std::string first = student["errors"][0].get<std::string>();
+      why = "did not build: " + first.substr(0, first.find('\n'));  // the message line, without the caret
+      out.outcome = Outcome::DidNotBuild;
+    }
+  }
+  for (auto& check : c.checks) {
+    const bool truth = check.against == Against::Truth;
+    const double solutionValue = truth ? number(solution["vs_truth"], check.metric) : 0.0;
+    if (truth && !std::isfinite(solutionValue)) {
+      std::string reported;
+      if (solution.contains("vs_truth"))
+        for (auto& [k, v] : solution["vs_truth"].items()) reported += (reported.empty() ? "" : ", ") + k;
+      return (ex.dir / "rubric.json").string() + ": check '" + check.name + "': the lab reports no metric '" +
+             check.metric + "' (it reports: " + (reported.empty() ? "none" : reported) + ")";
+    }
+    if (!why.empty()) {
+      out.checks.push_back(failedCheck(check, solutionValue, why));
+      continue;
+    }
+    CheckResult r = scoreCheck(check, number(student[truth ? "vs_truth" : "vs_solution"], check.metric), solutionValue);
+    if (out.nonFinite && r.grade != Grade::Full)
+      r.message = std::to_string(out.nonFinite) + " NaN/Inf values in the frame. " + r.message;
+    out.checks.push_back(std::move(r));
+  }
+  applyRequirements(out.checks);
+  return {};
+}
+
 namespace {
 
 std::string points(double v) {
@@ -120,6 +176,29 @@ std::string checkLine(const ConfigurationResult& c, const CheckResult& r) {
                 r.check.metric.c_str(), value(r.value).c_str(), bound(r.check.full, r.fullBound).c_str(),
                 points(r.earned).c_str(), points(r.check.points).c_str());
   return line;
+}
+
+std::vector<std::string> configurationLines(const ConfigurationResult& c, std::vector<std::string>& printed) {
+  std::vector<std::string> out;
+  for (auto& err : c.errors) {
+    // An error is known by what follows the program's name ("shading/phong: ...", "shading/gouraud: ...").
+    const size_t name = err.find(": ");
+    const std::string where = name == std::string::npos ? err : err.substr(name + 2);
+    if (std::find(printed.begin(), printed.end(), where) != printed.end()) continue;
+    printed.push_back(where);
+    out.push_back("  " + err);
+  }
+  for (auto& r : c.checks) {
+    out.push_back(checkLine(c, r));
+    if (!r.message.empty() && c.errors.empty()) out.push_back("          " + r.message);
+  }
+  return out;
+}
+
+std::string exerciseTotalLine(const ExerciseResult& e) {
+  char line[96];
+  std::snprintf(line, sizeof line, " points (%.1f%%), pass mark %.0f%%: ", e.percent(), e.passMark);
+  return e.id + ": " + points(e.earned) + " / " + points(e.total) + line + (e.passed() ? "passed" : "NOT PASSED");
 }
 
 std::string gradeMarkdown(const GradeReport& report) {

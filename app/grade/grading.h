@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "grade/rubric.h"
 
 namespace shadelab {
@@ -46,6 +48,22 @@ struct ConfigurationResult {
   std::vector<CheckResult> checks;
 };
 
+// "scene shadow-test, camera yaw=30, filter=pcf, pcf_size=5"
+std::string describeConfiguration(const Configuration& c);
+
+// Scores a configuration's checks from the two sides' numbers, as grade/configuration_frames.h
+// reports them (`student` null when nothing of the student's came back). `why`, when not empty, is
+// why nothing the student drew can be scored (the watchdog, a crash): every check then scores 0
+// with it; a frame that did not build does the same with its first error. Fills out.checks,
+// out.errors, out.nonFinite and out.outcome. Returns "" or why the rubric is at fault (a metric
+// the lab does not report).
+std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
+                        const nlohmann::json& student, std::string why, ConfigurationResult& out);
+
+// A configuration not graded because a file is missing (`why`: "X is in none of the folders"):
+// every check scores 0 with it.
+void notSubmitted(const Configuration& c, const std::string& why, ConfigurationResult& out);
+
 struct ExerciseResult {
   std::string id, title, lab;
   std::vector<std::string> missingFiles;  // the submission lacks them: not graded, 0 points
@@ -67,6 +85,12 @@ struct GradeReport {
 
 // "  pcf-5x5 [scene shadow-test, pcf_size=5]  acne_pct  0.12 <= 0.62 (solution+0.5)  PASS  2/2"
 std::string checkLine(const ConfigurationResult& c, const CheckResult& r);
+// The terminal's lines for one configuration: its errors, each once per exercise (`printed` holds
+// the ones said already: every configuration and program variant compiles the same file), then
+// one checkLine per check with the check's hint under it when it lost points.
+std::vector<std::string> configurationLines(const ConfigurationResult& c, std::vector<std::string>& printed);
+// "shadows/pcf: 6 / 11 points (54.5%), pass mark 60%: NOT PASSED"
+std::string exerciseTotalLine(const ExerciseResult& e);
 std::string gradeMarkdown(const GradeReport& report);
 // Reads the images named in the report from `dir` and embeds them.
 std::string gradeHtml(const GradeReport& report, const std::filesystem::path& dir);

@@ -1,0 +1,114 @@
+#include "grade/configuration_frames.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "host/configure.h"
+#include "host/measurer.h"
+#include "measure/report.h"
+#include "util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json metricsJson(const Metrics& metrics) {
+  nlohmann::json j = nlohmann::json::object();
+  for (auto& [k, v] : metrics) j[k] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+  return j;
+}
+
+std::string where(const Exercise& ex, const Configuration& c) {
+  return (ex.dir / "rubric.json").string() + ": configuration '" + c.name + "'";
+}
+
+}  // namespace
+
+void lookUpSubmission(const Exercise& ex, const std::vector<fs::path>& studentDirs, ExerciseResult& out) {
+  const ShaderSearchPath submitted(studentDirs);
+  for (auto& file : ex.files) {
+    const ShaderSearchPath::Lookup found = submitted.find(file);
+    if (found.file.empty() && found.refused.empty()) out.missingFiles.push_back(file);
+    else if (!found.file.empty() && readWholeFile(found.file) == readWholeFile(builtinShaderDir() / file))
+      out.notes.push_back(found.file.string() + " is the lab's own file, unchanged");
+  }
+}
+
+std::unique_ptr<LabHost> configuredHost(const std::vector<fs::path>& roots, const Exercise& ex, const Configuration& c,
+                                        std::string& error) {
+  auto host = std::make_unique<LabHost>(ShaderSearchPath(roots), ex.lab, c.scene);
+  std::vector<std::string> sets;
+  for (auto& [key, value] : c.settings) sets.push_back(key + "=" + value);
+  error = configureHost(*host, ex.lab, host->sceneId() == c.scene ? std::string() : c.scene, sets, {}, c.camera);
+  return host;
+}
+
+std::vector<std::string> buildErrors(LabHost& host) {
+  constexpr size_t kMostErrors = 20;  // a file that makes thousands of errors: its first ones say enough
+  std::vector<std::string> out;
+  size_t more = 0;
+  for (auto& p : host.lab().activePrograms()) {
+    if (!p->lastBuildFailed() && p->hasGoodProgram()) continue;
+    for (auto& d : p->diagnostics())
+      if (d.isError) {
+        const std::string text = p->spec().name + ": " + d.formatWithCaret();
+        if (std::find(out.begin(), out.end(), text) != out.end()) continue;
+        if (out.size() < kMostErrors) out.push_back(text);
+        else ++more;
+      }
+    if (p->diagnostics().empty()) out.push_back(p->spec().name + ": did not build (no message from the driver)");
+  }
+  if (more) out.push_back("... and " + std::to_string(more) + " more errors");
+  return out;
+}
+
+std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolution& out) {
+  std::string configError;
+  const auto solutionHost = configuredHost({builtinShaderDir()}, ex, c, configError);
+  if (!configError.empty()) return where(ex, c) + ": " + configError;
+  LabHost& host = *solutionHost;
+  host.settle();
+  host.renderFrame(ex.size);
+  out.frame = host.readImage();
+  if (auto errors = buildErrors(host); !errors.empty())
+    return where(ex, c) + ": the lab's own shaders did not build: " + errors.front();
+  if (c.needsTruth()) {
+    Measurer measurer(host);
+    auto m = measurer.measureNow(ex.size, 0.0f, {});
+    if (!m) return where(ex, c) + ": this configuration has no ground truth to check against";
+    out.truths = m->references;
+    out.numbers["vs_truth"] = metricsJson(m->values);
+  }
+  return {};
+}
+
+nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,
+                           const CachedSolution& solution, ImageF& image, std::string& error) {
+  std::vector<fs::path> roots = studentDirs;
+  roots.push_back(builtinShaderDir());
+  std::string configError;
+  const auto studentHost = configuredHost(roots, ex, c, configError);
+  if (!configError.empty()) {
+    error = where(ex, c) + ": " + configError;
+    return {};
+  }
+  LabHost& host = *studentHost;
+  host.settle();
+  host.renderFrame(ex.size);
+  image = host.readImage();
+  nlohmann::json student{{"errors", buildErrors(host)}, {"non_finite", countNonFinite(image)}};
+  const ImageError e = compareImages(image, solution.frame);
+  student["vs_solution"] = metricsJson({{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
+                                        {"bad_pixel_pct", e.badPixelPct}});
+  if (c.needsTruth() && student["errors"].empty()) {
+    const Judge& judge = *host.lab().judge();  // the solution was measured against its truth: the lab judges
+    std::vector<ImageF> views;
+    for (auto& view : judge.measuredViews()) views.push_back(host.renderView(ex.size, 0.0f, view.settings));
+    student["vs_truth"] = metricsJson(judge.viewMetrics(views, solution.truths));
+  }
+  return student;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,45 @@
+// The frames one rubric configuration is graded on, drawn in the GL context current on the calling
+// thread: first the lab's built-in shaders (the solution's frame, and the lab's ground truth when a
+// check needs it), then the student's folders searched first. `shadelab grade` draws them in a
+// watched child process (cli/grade_render.h); the window's Check button draws them in its own
+// context between frames (grade/exercise_check.h). Both score what comes out with scoreChecks.
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "grade/grading.h"
+#include "grade/rubric.h"
+#include "grade/solution_cache.h"
+#include "host/lab_host.h"
+
+namespace shadelab {
+
+// Which of the exercise's files the student's folders hold, looked up as the shaders will be
+// (inside the sandbox: a link leading out of the folder is never read here; its build says why).
+// Fills out.missingFiles, and out.notes for a file identical to the lab's own.
+void lookUpSubmission(const Exercise& ex, const std::vector<std::filesystem::path>& studentDirs, ExerciseResult& out);
+
+// A host made with the configuration's lab and scene (no other lab's or scene's build on the way),
+// then its settings and camera. `error` is "" or what the rubric asked that could not be applied.
+std::unique_ptr<LabHost> configuredHost(const std::vector<std::filesystem::path>& roots, const Exercise& ex,
+                                        const Configuration& c, std::string& error);
+
+// The errors of the programs the host's last frame used (the first 20), at file:line:col with the caret.
+std::vector<std::string> buildErrors(LabHost& host);
+
+// The built-in side: `out.frame`, and when a check needs them `out.truths` and out.numbers["vs_truth"].
+// Returns "" or why it could not be drawn (the rubric's or the lab's fault, never the student's).
+std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolution& out);
+
+// The student's side against the solution's: their frame in `image` and its numbers
+// {"errors": [...], "non_finite": N, "vs_solution": {rmse, covered_rmse, max_error, bad_pixel_pct},
+//  "vs_truth": {the lab's metrics}}; "vs_truth" only when a check needs it and the frame built.
+// `error` receives what the rubric asked that could not be applied.
+nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<std::filesystem::path>& studentDirs,
+                           const CachedSolution& solution, ImageF& image, std::string& error);
+
+}  // namespace shadelab

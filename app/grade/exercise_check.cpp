@@ -1,0 +1,76 @@
+#include "grade/exercise_check.h"
+
+#include <nlohmann/json.hpp>
+
+#include "grade/configuration_frames.h"
+#include "shader/preprocessor.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> studentDirs) {
+  running_ = false;
+  error_.clear();
+  result_ = ExerciseResult{};
+  Exercise ex;
+  if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return error_ = e;
+  exercise_ = std::move(ex);
+  studentDirs_ = std::move(studentDirs);
+  // The kept solutions hold only while the built-in shaders they were drawn with are unchanged.
+  const std::string hash = ContentHash().addTree(builtinShaderDir()).hex();
+  if (hash != shadersHash_) solutions_.clear();
+  shadersHash_ = hash;
+  result_.id = exercise_.id;
+  result_.title = exercise_.title;
+  result_.lab = exercise_.lab;
+  result_.total = exercise_.totalPoints();
+  result_.passMark = exercise_.passMark;
+  lookUpSubmission(exercise_, studentDirs_, result_);
+  running_ = !exercise_.configurations.empty();
+  return {};
+}
+
+void ExerciseCheck::step() {
+  if (!running_) return;
+  const size_t i = result_.configurations.size();
+  const Configuration& c = exercise_.configurations[i];
+  ConfigurationResult out;
+  out.name = c.name;
+  out.description = describeConfiguration(c);
+  const auto stop = [&](const std::string& why) {
+    error_ = why;
+    running_ = false;
+  };
+  if (!result_.missingFiles.empty()) {
+    notSubmitted(c, result_.missingFiles.front() + " is not in your folder: open the starter", out);
+  } else {
+    const std::string key = exercise_.id + "#" + std::to_string(i);
+    auto kept = solutions_.find(key);
+    if (kept == solutions_.end()) {
+      CachedSolution built;
+      if (auto e = drawSolution(exercise_, c, built); !e.empty()) return stop(e);
+      kept = solutions_.emplace(key, std::move(built)).first;
+    }
+    ImageF image;
+    std::string configError;
+    const nlohmann::json student = drawStudent(exercise_, c, studentDirs_, kept->second, image, configError);
+    if (!configError.empty()) return stop(configError);
+    if (auto e = scoreChecks(exercise_, c, kept->second.numbers, student, {}, out); !e.empty()) return stop(e);
+  }
+  for (auto& r : out.checks) result_.earned += r.earned;
+  result_.configurations.push_back(std::move(out));
+  running_ = result_.configurations.size() < exercise_.configurations.size();
+}
+
+std::vector<std::string> ExerciseCheck::lines() const {
+  std::vector<std::string> out, printed;
+  for (auto& c : result_.configurations)
+    for (auto& line : configurationLines(c, printed)) out.push_back(std::move(line));
+  for (auto& n : result_.notes) out.push_back("  note: " + n);
+  if (!running_ && error_.empty() && result_.configurations.size() == exercise_.configurations.size())
+    out.push_back(exerciseTotalLine(result_));
+  return out;
+}
+
+}  // namespace shadelab

@@ -1,0 +1,50 @@
+// Checking an exercise where the student works: the window's (and the page's) Check button. The
+// rubric's configurations are drawn one per step() in the window's own GL context, between its
+// frames, and scored exactly as `shadelab grade` scores them (grade/configuration_frames.h, then
+// scoreChecks), so the lines and hints are the grader's. The solution's side is kept for the next
+// Check: after the first one only the student's frames are drawn.
+//
+// There is no watchdog here: a shader that never returns stalls the window (in the page the
+// browser stops it and the context is lost, which the page reports). The desktop `shadelab grade`,
+// with its child processes, stays the course's official grader.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "grade/grading.h"
+#include "grade/solution_cache.h"
+
+namespace shadelab {
+
+class ExerciseCheck {
+ public:
+  // Starts checking exercise `id` with `studentDirs` searched before the built-in shaders. "" or
+  // why it cannot (an unknown exercise, a rubric that does not read).
+  std::string start(const std::string& id, std::vector<std::filesystem::path> studentDirs);
+  bool running() const { return running_; }
+  // Draws and scores the next configuration (one call can take a while: a truth to trace).
+  void step();
+
+  const std::string& id() const { return exercise_.id; }
+  size_t configurationsDone() const { return result_.configurations.size(); }
+  size_t configurations() const { return exercise_.configurations.size(); }
+  const ExerciseResult& result() const { return result_; }
+  // Why the check stopped without a score: the rubric's or the lab's fault, never the student's.
+  const std::string& error() const { return error_; }
+  // The grader's lines for what is done so far: errors once each, one line per check with its
+  // hint under it when it lost points, and the total when finished.
+  std::vector<std::string> lines() const;
+
+ private:
+  Exercise exercise_;
+  std::vector<std::filesystem::path> studentDirs_;
+  ExerciseResult result_;
+  std::string error_;
+  bool running_ = false;
+  std::string shadersHash_;                          // the built-in shaders the kept solutions were drawn with
+  std::map<std::string, CachedSolution> solutions_;  // "id#configuration" -> the built-in side
+};
+
+}  // namespace shadelab
