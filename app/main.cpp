@@ -28,6 +28,7 @@ int run(int argc, char** argv) {
     else if (a == "--soak" && i + 1 < argc) window.soakMinutes = std::atof(argv[++i]);
     else if (a == "--soak-seed" && i + 1 < argc) window.soakSeed = unsigned(std::atol(argv[++i]));
     else if (a == "--present") window.present = true;
+    else if (a == "--check") window.check = true;
     else if (a == "--window-size" && i + 1 < argc) {
       if (auto err = parseSize("--window-size", argv[++i], window.size, 240); !err.empty()) {
         std::fprintf(stderr, "shadelab: %s\n", err.c_str());

@@ -63,6 +63,7 @@ window only:
   --screenshot FILE   save the whole window (UI included) before exiting
   --present           start in presentation mode: the viewport fills the window (F11 toggles, Esc leaves)
   --window-size WxH   the window's size at start (default 1280x800)
+  --exercise ID       open the Exercises section on this exercise (with --check: press its Check)
   --ui-scale S        text and widgets S times larger, 0.5..4, for projectors (default: the monitor's scale)
   --cycle-labs        switch to every lab in turn while running
   --auto-measure      start with Auto measure on

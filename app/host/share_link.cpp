@@ -57,8 +57,10 @@ OpenedLink openLink(const std::string& fragment) {
     else if (key == "scene") link.scene = value;
     else if (key == "camera") link.camera = value;
     else if (key == "measure") link.measure = true;
+    else if (key == "exercise") link.exercise = value;
+    else if (key == "check") link.check = true;
     else if (key.find('.') != std::string::npos) link.sets.push_back(item);
-    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, LAB.KEY)");
+    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, LAB.KEY)");
   }
   return link;
 }

@@ -23,6 +23,8 @@ struct OpenedLink {
   std::string lab, scene, camera;
   std::vector<std::string> sets;  // "lab.key=value"
   bool measure = false;
+  std::string exercise;  // "shading/blinn-phong": the Exercises section opens on it
+  bool check = false;    // press its Check once the page has drawn
   std::vector<std::string> problems;  // keys it does not know, with the valid ones
 };
 OpenedLink openLink(const std::string& fragment);

@@ -30,6 +30,7 @@
 #include "ui/panels.h"
 #include "ui/platform.h"
 #include "gl/pixel_probe.h"
+#include "ui/exercise_panel.h"
 #include "ui/shader_editor.h"
 #include "ui/window_events.h"
 #include "ui/window_files.h"
@@ -98,6 +99,7 @@ struct AppState {
   ConfigurationCosts costs;
   MeasureUi measure;
   ShaderEditor editor;
+  ExercisePanel exercises;
   PixelProbe probe;  // the viewport's readout under the cursor
   Responsiveness responsiveness;
   bool screenshotRequested = false;
@@ -296,6 +298,9 @@ void leftPanel(AppState& app) {
       if (ImGui::Selectable(file.c_str())) app.message = loadPreset(host, file);
     ImGui::EndCombo();
   }
+  ImGui::Separator();
+  if (ImGui::CollapsingHeader("Exercises", app.exercises.selected.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen))
+    drawExercisePanel(app.exercises, host, app.editor, app.message);
 }
 
 // One window from its first frame to its last: what the frames share. It lives on the heap, since
@@ -342,7 +347,9 @@ class WindowSession {
 
 bool WindowSession::quiet() {
   if (wopt.soakMinutes > 0 || wopt.cycleLabs || wopt.exitAfterFrames > 0 || app.screenshotRequested) return false;
-  if (windowEvents() != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating()) return false;
+  if (windowEvents() != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating() ||
+      app.exercises.check.running() || app.exercises.checkRequested)
+    return false;
   const auto still = std::max(lastActivity, app.costs.since);  // the settings, camera and viewport last changed
   return framesSinceActivity >= kSettleFrames &&
          std::chrono::duration<double>(std::chrono::steady_clock::now() - still).count() >= kSettleSeconds;
@@ -396,6 +403,11 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   for (auto& s : options.sets) note(host.set(s));
   for (auto& a : options.actions) note(host.runAction(a));
   note(applyCamera(host, options.camera));
+  if (!options.exercise.empty()) {  // --exercise (the page's link): the Exercises section opens on it
+    Exercise ex;
+    if (auto e = loadExercise(exercisesRoot(), options.exercise, ex); !e.empty()) note(e);
+    else app.exercises.select(ex.id);
+  }
   if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
 }
 
@@ -415,6 +427,9 @@ bool WindowSession::drawFrame() {
   }
   noteActivity();
   handleDrops(app);
+  // A Check draws its configurations between frames, one a frame, in this context.
+  if (frame == 2 && wopt.check) app.exercises.checkRequested = true;
+  stepExerciseCheck(app.exercises, host, app.message);
   if (wopt.cycleLabs && frame % 3 == 0) app.message = host.selectLab(labs[size_t(frame / 3) % labs.size()]);
   const auto now = std::chrono::steady_clock::now();
   // After a wait the time since the last drawn frame is idle time, not frame time: one refresh.

@@ -14,6 +14,7 @@ struct WindowOptions {
   float uiScale = 0;        // --ui-scale S: text and widgets (0: the monitor's content scale)
   bool present = false;     // --present: start in presentation mode (F11)
   glm::ivec2 size{1280, 800}; // --window-size WxH: the window's size at start
+  bool check = false;        // --check: press Check for --exercise once the first frames are drawn
   std::string message;      // shown in the Messages panel from the start (the page: what its link got wrong)
 };
 

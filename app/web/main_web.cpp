@@ -1,7 +1,8 @@
 // The page's entry point: the window front end, configured by the link that opened it.
 //   index.html#lab=shadows&scene=learnopengl&shadows.filter=pcss&camera=yaw=30,pitch=20
 // lab, scene and camera as the desktop's --lab, --scene and --camera; every "lab.key=value" a --set;
-// "measure" presses Measure once the first frames are timed (--measure). What the link gets wrong is
+// "measure" presses Measure once the first frames are timed (--measure); "exercise=shading/blinn-phong"
+// opens the Exercises section on it and "check" presses its Check. What the link gets wrong is
 // shown in the page's Messages panel.
 #include <emscripten.h>
 
@@ -19,7 +20,8 @@ int main() {
   // The student's folder: the page's own, kept in the browser's storage (web/index.html mounts it
   // before main runs); the in-page editor saves there and it is searched before the lab's shaders.
   std::vector<std::string> args{"shadelab", "--shaders", "/student"};
-  for (auto [key, value] : {std::pair{"--lab", &link.lab}, {"--scene", &link.scene}, {"--camera", &link.camera}})
+  for (auto [key, value] : {std::pair{"--lab", &link.lab}, {"--scene", &link.scene}, {"--camera", &link.camera},
+                            {"--exercise", &link.exercise}})
     if (!value->empty()) args.insert(args.end(), {key, *value});
   for (auto& s : link.sets) args.insert(args.end(), {"--set", s});
   if (link.measure) args.push_back("--measure");
@@ -32,6 +34,7 @@ int main() {
     problems += (problems.empty() ? "" : "\n") + ("the link: " + err);
   WindowOptions window;
   window.message = problems;
+  window.check = link.check;
   try {
     return runWindow(options, window);
   } catch (const std::exception& e) {  // the page shows it (web/index.html) instead of a bare abort

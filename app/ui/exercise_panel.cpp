@@ -1,0 +1,178 @@
+#include "ui/exercise_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "host/lab_host.h"
+#include "ui/platform.h"
+#include "ui/shader_editor.h"
+#include "util/contained_path.h"
+#include "util/output_files.h"
+#include "util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The folders a Check reads the student's files from: the host's own, ahead of the built-in one.
+std::vector<fs::path> studentFolders(LabHost& host) {
+  std::vector<fs::path> dirs;
+  for (auto& root : host.shaders().searchPath().roots())
+    if (root != builtinShaderDir()) dirs.push_back(root);
+  return dirs;
+}
+
+// The starter's files into the student's folder, never over a file already there (their work);
+// the lab switched to the exercise's and its first file opened in the editor.
+std::string openStarter(const std::string& id, LabHost& host, ShaderEditor& editor) {
+  Exercise ex;
+  if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
+  if (host.lab().id() != ex.lab)
+    if (auto e = host.selectLab(ex.lab); !e.empty()) return e;
+  std::string copied, kept;
+  for (auto& file : ex.files) {
+    const fs::path name = containedName(file);
+    if (name.empty()) return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
+    const fs::path mine = editor.folder / name;
+    std::error_code ec;
+    if (fs::exists(mine, ec)) {
+      kept += (kept.empty() ? "" : ", ") + file;
+      continue;
+    }
+    const fs::path starter = ex.dir / "starter" / name;
+    if (!fs::is_regular_file(starter, ec)) return starter.string() + " is missing: the exercise has no starter for " + file;
+    if (auto e = writeTextFile(mine.string(), readWholeFile(starter)); !e.empty()) return e;
+    copied += (copied.empty() ? "" : ", ") + file;
+  }
+  persistStudentFiles();
+  host.pollChanges();  // the new files shadow the lab's own from this frame on
+  editor.open(host, ex.files.front());
+  std::string status = "opened " + ex.files.front();
+  if (!copied.empty()) status += "; the starter's " + copied + " copied into " + editor.folder.string();
+  if (!kept.empty()) status += "; your " + kept + " kept as it is";
+  return status;
+}
+
+const ImVec4 kPass{0.45f, 0.85f, 0.45f, 1.0f}, kPartial{0.95f, 0.8f, 0.3f, 1.0f}, kFail{1.0f, 0.45f, 0.4f, 1.0f};
+
+}  // namespace
+
+void ExercisePanel::select(const std::string& id) {
+  selected = id;
+  statement = readWholeFile(exercisesRoot() / id / "statement.md");
+}
+
+void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
+  if (panel.ids.empty()) panel.ids = listExercises(exercisesRoot());
+  if (panel.ids.empty()) {
+    ImGui::TextDisabled("No exercises in %s.", exercisesRoot().c_str());
+    return;
+  }
+  const std::string lab(host.lab().id());
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##exercise", panel.selected.empty() ? "Pick an exercise" : panel.selected.c_str())) {
+    for (auto& id : panel.ids) {
+      const bool thisLab = id.rfind(lab + "/", 0) == 0;  // the lab on screen first to the eye
+      if (!thisLab) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+      if (ImGui::Selectable(id.c_str(), id == panel.selected)) panel.select(id);
+      if (!thisLab) ImGui::PopStyleColor();
+    }
+    ImGui::EndCombo();
+  }
+  if (panel.selected.empty()) {
+    ImGui::TextWrapped("Each exercise asks for one function of a lab's shader: open its starter, write the "
+                       "function in the editor, and press Check to have it graded here.");
+    return;
+  }
+  if (editor.folder.empty()) {
+    ImGui::TextDisabled("Start with --shaders DIR to work on an exercise here.");
+  } else if (ImGui::Button("Open the starter")) {
+    status = openStarter(panel.selected, host, editor);
+  }
+  ImGui::SameLine();
+  ImGui::Checkbox("Statement", &panel.showStatement);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(panel.check.running());
+  if (ImGui::Button("Check")) panel.checkRequested = true;
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
+                      "solution's and the truth, here in the window.", panel.selected.c_str());
+  if (panel.showStatement) {
+    ImGui::BeginChild("statement", {0, 220 * ImGui::GetIO().FontGlobalScale}, true);
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(panel.statement.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndChild();
+  }
+
+  const ExerciseCheck& check = panel.check;
+  if (check.id() != panel.selected) return;
+  if (check.running()) {
+    const float done = float(check.configurationsDone()) / float(std::max<size_t>(check.configurations(), 1));
+    char label[64];
+    std::snprintf(label, sizeof label, "configuration %zu of %zu", check.configurationsDone() + 1, check.configurations());
+    ImGui::ProgressBar(done, {-1, 0}, label);
+  }
+  if (!check.error().empty()) {
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored({1.0f, 0.45f, 0.4f, 1.0f}, "Could not check: %s", check.error().c_str());
+    ImGui::PopTextWrapPos();
+  }
+  // The grader's results, laid out for a narrow panel: the total first, then per check its grade,
+  // name and points, the number against its bound, and the hint when it lost points.
+  const ExerciseResult& r = check.result();
+  ImGui::PushTextWrapPos(0);
+  if (!check.running() && check.error().empty() && r.configurations.size() == check.configurations())
+    ImGui::TextColored(r.passed() ? kPass : kFail, "%.4g / %.4g points (%.1f%%), pass mark %.0f%%: %s", r.earned, r.total,
+                       r.percent(), r.passMark, r.passed() ? "passed" : "not passed");
+  for (auto& f : r.missingFiles) ImGui::TextColored(kFail, "%s is not in your folder: open the starter.", f.c_str());
+  std::vector<std::string> said;  // each build error once: every configuration compiles the same file
+  for (auto& c : r.configurations) {
+    for (auto& e : c.errors)
+      if (std::find(said.begin(), said.end(), e.substr(e.find(": ") + 2)) == said.end()) {
+        said.push_back(e.substr(e.find(": ") + 2));
+        ImGui::TextColored(kFail, "%s", e.c_str());
+      }
+    for (auto& k : c.checks) {
+      const ImVec4 colour = k.grade == Grade::Full ? kPass : k.grade == Grade::Partial ? kPartial : kFail;
+      ImGui::TextColored(colour, "%-7s %s: %s  %.3g/%.3g", gradeName(k.grade), c.name.c_str(), k.check.name.c_str(),
+                         k.earned, k.check.points);
+      ImGui::Indent();
+      if (std::isfinite(k.value)) ImGui::TextDisabled("%s %.4g, full marks at <= %.4g", k.check.metric.c_str(), k.value, k.fullBound);
+      if (!k.message.empty() && c.errors.empty()) ImGui::TextUnformatted(k.message.c_str());
+      ImGui::Unindent();
+    }
+  }
+  for (auto& n : r.notes) ImGui::TextDisabled("note: %s", n.c_str());
+  ImGui::PopTextWrapPos();
+}
+
+bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, std::string& status) {
+  if (panel.checkRequested) {
+    panel.checkRequested = false;
+    if (panel.selected.empty()) {
+      status = "Check: pick an exercise first";
+    } else if (auto e = panel.check.start(panel.selected, studentFolders(host)); !e.empty()) {
+      status = "Check: " + e;
+    } else {
+      std::printf("checking %s\n", panel.selected.c_str());
+    }
+    return panel.check.running();
+  }
+  if (!panel.check.running()) return false;
+  panel.check.step();
+  if (!panel.check.running()) {  // finished: the grader's lines on the terminal (the page's console) too
+    for (auto& line : panel.check.lines()) std::printf("%s\n", line.c_str());
+    if (!panel.check.error().empty()) std::printf("check: %s\n", panel.check.error().c_str());
+    std::fflush(stdout);
+  }
+  return panel.check.running();
+}
+
+}  // namespace shadelab

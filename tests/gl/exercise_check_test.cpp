@@ -1,0 +1,130 @@
+// The window's Check: an exercise graded in place, in the window's own context, scored as
+// `shadelab grade` scores it; the window's own frame is the same after a Check as before it.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <fstream>
+
+#include "gl_test.h"
+#include "grade/exercise_check.h"
+#include "measure/report.h"
+#include "util/read_file.h"
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kShaders = fs::path(SHADELAB_SOURCE_DIR) / "shaders";
+constexpr const char* kExercise = "shading/blinn-phong";
+constexpr const char* kFile = "common/specular.glsl";
+
+class Check : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    student = fs::temp_directory_path() / ("shadelab_check_" + std::to_string(::getpid()));
+    fs::remove_all(student);
+    fs::create_directories(student / "common");
+  }
+  void TearDown() override { fs::remove_all(student); }
+
+  void submit(const std::string& text) { std::ofstream(student / kFile, std::ios::trunc) << text; }
+
+  // Checks the exercise to the end, one step a call as the window does.
+  const ExerciseResult& run(ExerciseCheck& check) {
+    EXPECT_EQ(check.start(kExercise, {student}), "");
+    int steps = 0;
+    while (check.running() && steps++ < 100) check.step();
+    EXPECT_FALSE(check.running());
+    EXPECT_EQ(check.error(), "");
+    EXPECT_EQ(check.configurationsDone(), check.configurations());
+    return check.result();
+  }
+
+  fs::path student;
+};
+
+TEST_F(Check, TheLabsOwnFileScoresFullMarks) {
+  submit(readWholeFile(kShaders / kFile));
+  ExerciseCheck check;
+  const ExerciseResult& r = run(check);
+  EXPECT_TRUE(r.passed());
+  EXPECT_DOUBLE_EQ(r.earned, r.total);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes.front().find("the lab's own file, unchanged"), std::string::npos);
+  EXPECT_NE(check.lines().back().find("passed"), std::string::npos) << check.lines().back();
+}
+
+TEST_F(Check, TheStarterScoresNothingAndEveryCheckSaysWhy) {
+  submit(readWholeFile(exercisesRoot() / kExercise / "starter" / kFile));
+  ExerciseCheck check;
+  const ExerciseResult& r = run(check);
+  EXPECT_FALSE(r.passed());
+  EXPECT_LT(r.percent(), 30.0);
+  for (auto& c : r.configurations)
+    for (auto& k : c.checks)
+      if (k.grade != Grade::Full) EXPECT_FALSE(k.message.empty()) << c.name << ": " << k.check.name;
+  EXPECT_NE(check.lines().back().find("NOT PASSED"), std::string::npos) << check.lines().back();
+}
+
+// The classic mistake the hint names: H not normalised turns the highlight into a white disc.
+TEST_F(Check, AnUnnormalisedHalfVectorLosesTheHighlightsPoints) {
+  std::string text = readWholeFile(kShaders / kFile);
+  const std::string half = "safeNormalize(L + V, N)";
+  const size_t at = text.find(half);
+  ASSERT_NE(at, std::string::npos) << "the solution's half vector is written differently now";
+  text.replace(at, half.size(), "(L + V)");
+  submit(text);
+  ExerciseCheck check;
+  const ExerciseResult& r = run(check);
+  ASSERT_FALSE(r.configurations.empty());
+  const CheckResult& highlight = r.configurations.front().checks.front();
+  EXPECT_EQ(highlight.grade, Grade::Fail) << highlight.value;
+  EXPECT_GT(highlight.value, 0.05);
+}
+
+TEST_F(Check, AMissingFileIsNotSubmitted) {
+  ExerciseCheck check;
+  const ExerciseResult& r = run(check);
+  EXPECT_EQ(r.outcome(), Outcome::NotSubmitted);
+  EXPECT_EQ(r.earned, 0.0);
+  ASSERT_FALSE(r.configurations.empty());
+  EXPECT_NE(r.configurations.front().checks.front().message.find(kFile), std::string::npos);
+}
+
+TEST_F(Check, AFileThatDoesNotCompileIsNamedAtItsLine) {
+  submit("float specularFactor(vec3 N, vec3 L, vec3 V) {\n  return max(dot(N, normalize(L + V)), 0.0)\n}\n");
+  ExerciseCheck check;
+  const ExerciseResult& r = run(check);
+  EXPECT_EQ(r.outcome(), Outcome::DidNotBuild);
+  EXPECT_EQ(r.earned, 0.0);
+  bool named = false;
+  for (auto& line : check.lines()) named |= line.find(kFile) != std::string::npos && line.find("error") != std::string::npos;
+  EXPECT_TRUE(named);
+}
+
+TEST(CheckStart, AnUnknownExerciseSaysWhichAreThere) {
+  ExerciseCheck check;
+  const std::string e = check.start("shading/nope", {});
+  EXPECT_NE(e.find("unknown exercise 'shading/nope'"), std::string::npos) << e;
+  EXPECT_NE(e.find(kExercise), std::string::npos) << e;
+  EXPECT_FALSE(check.running());
+}
+
+// The Check draws between the window's frames in the window's context: what it binds and enables
+// must not leak into the window's next frame.
+TEST_F(Check, TheWindowsFrameIsTheSameAfterACheck) {
+  auto host = test::labHost("shadows", nullptr, {});
+  const glm::ivec2 size{320, 240};
+  host->renderFrame(size);
+  const ImageF before = host->readImage();
+  submit(readWholeFile(kShaders / kFile));
+  ExerciseCheck check;
+  run(check);
+  host->renderFrame(size);
+  const ImageF after = host->readImage();
+  EXPECT_LT(compareImages(after, before).maxError, 1e-6);
+}
+
+}  // namespace
