@@ -73,6 +73,10 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     ImGui::TextDisabled("No exercises in %s.", exercisesRoot().c_str());
     return;
   }
+  if (panel.reveal) {  // a Check runs: its results in view, below the section's top
+    ImGui::SetScrollHereY(0.0f);
+    panel.reveal = panel.check.running() || panel.checkRequested;
+  }
   const std::string lab(host.lab().id());
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##exercise", panel.selected.empty() ? "Pick an exercise" : panel.selected.c_str())) {
@@ -162,6 +166,7 @@ bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, std::string& status)
       status = "Check: " + e;
     } else {
       std::printf("checking %s\n", panel.selected.c_str());
+      panel.reveal = true;
     }
     return panel.check.running();
   }

@@ -19,6 +19,7 @@ struct ExercisePanel {
   std::string statement;         // its statement.md
   bool showStatement = false;
   bool checkRequested = false;   // --check / the link's "check": press Check on the next frame
+  bool reveal = false;           // a Check started: the panel scrolls to its results until it ends
   ExerciseCheck check;
 
   void select(const std::string& id);
