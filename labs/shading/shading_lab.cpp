@@ -15,7 +15,7 @@ struct ShadingModeRow {
   ShadingMode value;
   std::string_view name;
   std::string_view define;
-  bool perFace;  // a geometry shader hands each triangle's normal to its three corners
+  bool perFace;  // one lighting per triangle: a geometry shader, or unwelded faces, gives its normal to its three corners
 };
 constexpr ShadingModeRow kShadingModes[] = {
     {ShadingMode::Flat, "flat", "MODE_FLAT", true},
@@ -25,6 +25,44 @@ constexpr ShadingModeRow kShadingModes[] = {
 static_assert(coversEnum<ShadingMode>(kShadingModes));
 constexpr std::string_view kSpecularNames[] = {"blinn-phong", "phong"};
 constexpr std::string_view kUvNames[] = {"perspective", "affine"};
+constexpr std::string_view kFlatFacesNames[] = {"geometry_shader", "unwelded"};
+
+// Flat shading without a geometry shader: every triangle gets three vertices of its own, each
+// carrying what flat.geom computes from the whole triangle: the face's normal (the cross product
+// turned to agree with the vertex normals; their average where the face has no area) in the
+// normal, and the face's centroid in kVector0, where the vertex stage lights it. Three times the
+// vertices, and all three corners compute the same colour.
+GpuMesh unweldedFaces(const MeshData& m) {
+  MeshData out;
+  std::vector<float> centroids;
+  const size_t corners = m.indices.size() / 3 * 3;
+  out.positions.reserve(corners);
+  out.normals.reserve(corners);
+  if (!m.uvs.empty()) out.uvs.reserve(corners);
+  centroids.reserve(corners * 4);
+  for (size_t t = 0; t < corners; t += 3) {
+    const uint32_t i[3] = {m.indices[t], m.indices[t + 1], m.indices[t + 2]};
+    const glm::vec3 p[3] = {m.positions[i[0]], m.positions[i[1]], m.positions[i[2]]};
+    glm::vec3 averaged(0.0f);
+    if (!m.normals.empty()) averaged = m.normals[i[0]] + m.normals[i[1]] + m.normals[i[2]];
+    const glm::vec3 face = glm::cross(p[1] - p[0], p[2] - p[0]);
+    glm::vec3 n = glm::dot(face, face) > 0.0f ? glm::normalize(face)
+                  : glm::dot(averaged, averaged) > 0.0f ? glm::normalize(averaged) : glm::vec3(0, 1, 0);
+    if (glm::dot(n, averaged) < 0.0f) n = -n;  // the winding disagrees with the normals: trust the normals
+    const glm::vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
+    for (int k = 0; k < 3; ++k) {
+      out.positions.push_back(p[k]);
+      out.normals.push_back(n);
+      if (!m.uvs.empty()) out.uvs.push_back(m.uvs[i[k]]);
+      centroids.insert(centroids.end(), {centre.x, centre.y, centre.z, 1.0f});
+    }
+  }
+  out.indices.resize(corners);
+  for (size_t k = 0; k < corners; ++k) out.indices[k] = uint32_t(k);
+  GpuMesh mesh = GpuMesh::upload(out);
+  mesh.setAttribute(kVector0, 4, centroids);
+  return mesh;
+}
 
 // Light k sits on a ring around the scene at the chosen elevation, with its own colour, so
 // several highlights are told apart.
@@ -50,6 +88,13 @@ void ShadingLab::visitParams(ParamVisitor& v) {
   if (glslDialect() == GlslDialect::Es300) v.unavailable("GLSL ES 3.00 (WebGL2) has no noperspective: UVs are perspective-correct");
   v.enumParam({"uv_interpolation", "UV interpolation", "", "perspective: correct (divide by w); affine: "
                "linear in screen space (noperspective), bends the checker on large triangles."}, p.uvInterpolation, kUvNames);
+  if (p.mode != ShadingMode::Flat) v.unavailable("only for mode flat");
+  else if (glslDialect() == GlslDialect::Es300) v.unavailable("WebGL2 has no geometry shaders: faces are always unwelded");
+  v.enumParam({"flat_faces", "Flat faces from", "", "How flat mode gives a triangle one normal and one colour. "
+               "geometry_shader: a geometry shader sees the whole triangle, lights it once at its centroid and hands "
+               "the colour to its three corners. unwelded: no vertex is shared (three per triangle, each carrying its "
+               "face's normal and centroid) and the vertex stage lights it: the way without geometry shaders "
+               "(WebGL2), at three times the vertices. The two draw the same picture."}, p.flatFaces, kFlatFacesNames);
   v.intParam({"tessellation", "Tessellation", "segments", "Segments around the procedural spheres and tori "
               "(rings = half). Files are drawn as loaded."}, p.tessellation, 3, kReferenceTessellation);
   v.section("Material");
@@ -79,9 +124,14 @@ ProgramSpec ShadingLab::programSpec(const ShadingParams& p, bool textured) const
   const ShadingModeRow& mode = rowOf(kShadingModes, p.mode);
   spec.name = "shading/" + std::string(mode.name) + (textured ? "+texture" : "");
   spec.stages.push_back({GL_VERTEX_SHADER, "shading/shade.vert"});
-  if (mode.perFace) spec.stages.push_back({GL_GEOMETRY_SHADER, "shading/flat.geom"});
+  const bool unwelded = mode.perFace && (p.flatFaces == FlatFaces::Unwelded || glslDialect() == GlslDialect::Es300);
+  if (mode.perFace && !unwelded) spec.stages.push_back({GL_GEOMETRY_SHADER, "shading/flat.geom"});
   spec.stages.push_back({GL_FRAGMENT_SHADER, "shading/shade.frag"});
   spec.defines.emplace_back(mode.define, "1");
+  if (unwelded) {
+    spec.name += "+unwelded";
+    spec.defines.emplace_back("FLAT_UNWELDED", "1");
+  }
   spec.defines.emplace_back("NUM_LIGHTS", std::to_string(p.lights));
   if (p.specular == SpecularModel::Phong) spec.defines.emplace_back("SPECULAR_PHONG", "1");
   if (p.uvInterpolation == UvInterpolation::Affine) spec.defines.emplace_back("AFFINE_UV", "1");
@@ -102,6 +152,11 @@ std::vector<ProgramSpec> ShadingLab::allPrograms() const {
           for (int lights : {0, 4}) {
             p.lights = lights;
             all.push_back(programSpec(p, textured));
+            if (p.mode == ShadingMode::Flat) {
+              p.flatFaces = FlatFaces::Unwelded;
+              all.push_back(programSpec(p, textured));
+              p.flatFaces = FlatFaces::GeometryShader;
+            }
           }
         }
   return all;
@@ -112,8 +167,15 @@ std::string ShadingLab::setup(LabContext& ctx) {
   return {};
 }
 
+bool ShadingLab::unweldedFlat() const {
+  return params.mode == ShadingMode::Flat &&
+         (params.flatFaces == FlatFaces::Unwelded || glslDialect() == GlslDialect::Es300);
+}
+
 void ShadingLab::teardown() {
   for (auto& p : programs_) p.reset();
+  unwelded_.clear();
+  unweldedRevision_ = -1;
   shaders_ = nullptr;
 }
 
@@ -140,6 +202,16 @@ void ShadingLab::render(Frame& frame) {
     lightPower[k] = kLightColor[k] * params.lightPower * distance * distance;
   }
 
+  const bool unwelded = unweldedFlat();
+  if (!unwelded) {
+    unwelded_.clear();  // only flat mode without a geometry shader keeps them
+    unweldedRevision_ = -1;
+  } else if (unweldedRevision_ != frame.scene.revision) {
+    unwelded_.clear();
+    for (auto& m : frame.scene.meshes) unwelded_.push_back(unweldedFaces(m));
+    unweldedRevision_ = frame.scene.revision;
+  }
+
   for (const Instance& inst : frame.scene.instances) {
     const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
     const gl::Texture2D* tex = params.textures ? frame.gpu.baseColorTexture(mat) : nullptr;
@@ -163,7 +235,8 @@ void ShadingLab::render(Frame& frame) {
       tex->bind(0);
       prog.set("u_baseColorMap", 0);
     }
-    frame.gpu.draw(inst);
+    if (unwelded) unwelded_[size_t(inst.mesh)].draw();
+    else frame.gpu.draw(inst);
   }
 }
 

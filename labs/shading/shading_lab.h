@@ -4,13 +4,18 @@
 // Reference: per-fragment Phong shading on the finest tessellation (true geometry up to
 // 256 segments), with perspective-correct UVs. Read next: shaders/shading/shade.frag.
 #pragma once
+#include <vector>
+
 #include "lab/lab.h"
+#include "scene/gpu_mesh.h"
 
 namespace shadelab {
 
 enum class ShadingMode { Flat, Gouraud, Phong, Count };  // a table in shading_lab.cpp
 enum class SpecularModel { BlinnPhong, Phong };
 enum class UvInterpolation { Perspective, Affine };
+// How flat mode gives each triangle one normal and one colour.
+enum class FlatFaces { GeometryShader, Unwelded };
 
 struct ShadingParams {
   ShadingMode mode = ShadingMode::Phong;
@@ -25,6 +30,7 @@ struct ShadingParams {
   float lightPower = 0.8f;      // irradiance at the scene centre (so any scene size looks alike)
   float lightElevationDeg = 45; // height of the lights above the horizon; near 0 = grazing
   bool textures = true;         // base-colour textures (the checker floor, OBJ/glTF maps)
+  FlatFaces flatFaces = FlatFaces::GeometryShader;  // WebGL2 has no geometry shaders: always unwelded there
 };
 
 class ShadingLab final : public LabWithParams<ShadingParams>, public Judge {
@@ -54,6 +60,12 @@ class ShadingLab final : public LabWithParams<ShadingParams>, public Judge {
 
  private:
   ProgramSpec programSpec(const ShadingParams& p, bool textured) const;
+  bool unweldedFlat() const;  // flat mode drawn from unwelded faces (the setting, or no geometry shaders)
+
+  // Flat mode without a geometry shader: each of the scene's meshes with three vertices of its own
+  // per triangle, carrying the face's normal and centroid; rebuilt when the scene is.
+  std::vector<GpuMesh> unwelded_;
+  int unweldedRevision_ = -1;
 
   ShaderLibrary* shaders_ = nullptr;
   // Built on demand, per variant actually drawn; a param change that alters the defines fetches

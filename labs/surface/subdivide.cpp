@@ -43,6 +43,86 @@ MeshData subdivide(const MeshData& in, int levels) {
   return m;
 }
 
+MeshData splitEdges(const MeshData& in, int parts) {
+  if (parts <= 1) return in;
+  const uint32_t n = uint32_t(parts);
+  MeshData m;
+  m.name = in.name;
+  m.material = in.material;
+  m.positions = in.positions;  // the corners keep their indices
+  m.normals = in.normals;
+  m.uvs = in.uvs;
+  m.tangents = in.tangents;
+  m.sourceTangents = in.sourceTangents;
+  // A new vertex at barycentric weights w of corners c (the weights sum to 1).
+  auto add = [&](const uint32_t c[3], const float w[3]) {
+    const uint32_t v = uint32_t(m.positions.size());
+    glm::vec3 p(0.0f), nn(0.0f);
+    glm::vec2 uv(0.0f);
+    for (int k = 0; k < 3; ++k) {
+      p += w[k] * in.positions[c[k]];
+      if (!in.normals.empty()) nn += w[k] * in.normals[c[k]];
+      if (!in.uvs.empty()) uv += w[k] * in.uvs[c[k]];
+    }
+    m.positions.push_back(p);
+    if (!in.normals.empty()) {
+      const float len = glm::length(nn);
+      m.normals.push_back(len > 1e-20f ? nn / len : in.normals[c[0]]);
+    }
+    if (!in.uvs.empty()) m.uvs.push_back(uv);
+    for (auto [src, dst] : {std::pair{&in.tangents, &m.tangents}, std::pair{&in.sourceTangents, &m.sourceTangents}}) {
+      if (src->empty()) continue;
+      glm::vec3 d(0.0f);
+      for (int k = 0; k < 3; ++k) d += w[k] * glm::vec3((*src)[c[k]]);
+      const float len = glm::length(d);
+      dst->push_back(glm::vec4(len > 1e-20f ? d / len : glm::vec3((*src)[c[0]]), (*src)[c[0]].w));
+    }
+    return v;
+  };
+  // The k-th of the n-1 inner points of edge (a, b), counted from its lower index: both triangles
+  // beside the edge get the same vertex, computed once.
+  std::unordered_map<uint64_t, uint32_t> edgeStart;
+  auto edgePoint = [&](uint32_t a, uint32_t b, uint32_t k) {
+    const uint32_t lo = std::min(a, b), hi = std::max(a, b), step = a == lo ? k : n - k;
+    const uint64_t key = uint64_t(lo) << 32 | hi;
+    auto [it, added] = edgeStart.emplace(key, uint32_t(m.positions.size()));
+    if (added)
+      for (uint32_t s = 1; s < n; ++s) {
+        const uint32_t c[3] = {lo, hi, lo};
+        const float w[3] = {float(n - s) / float(n), float(s) / float(n), 0.0f};
+        add(c, w);
+      }
+    return it->second + step - 1;
+  };
+  std::vector<uint32_t> grid;
+  for (size_t t = 0; t + 2 < in.indices.size(); t += 3) {
+    const uint32_t c[3] = {in.indices[t], in.indices[t + 1], in.indices[t + 2]};
+    // grid[(i, j)]: the point at weights ((n-i-j)/n, i/n, j/n), i + j <= n, row j of n + 1 - j points.
+    grid.assign(size_t(n + 1) * (n + 2) / 2, 0);
+    auto at = [&](uint32_t i, uint32_t j) -> uint32_t& { return grid[size_t(j) * (2 * n + 3 - j) / 2 + i]; };
+    for (uint32_t j = 0; j <= n; ++j)
+      for (uint32_t i = 0; i + j <= n; ++i) {
+        const uint32_t r = n - i - j;
+        if (r == n) at(i, j) = c[0];
+        else if (i == n) at(i, j) = c[1];
+        else if (j == n) at(i, j) = c[2];
+        else if (j == 0) at(i, j) = edgePoint(c[0], c[1], i);
+        else if (i == 0) at(i, j) = edgePoint(c[0], c[2], j);
+        else if (r == 0) at(i, j) = edgePoint(c[1], c[2], j);
+        else {
+          const float w[3] = {float(r) / float(n), float(i) / float(n), float(j) / float(n)};
+          at(i, j) = add(c, w);
+        }
+      }
+    for (uint32_t j = 0; j < n; ++j)
+      for (uint32_t i = 0; i + j < n; ++i) {
+        m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i, j + 1)});  // the corners' winding
+        if (i + j + 1 < n) m.indices.insert(m.indices.end(), {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+  }
+  return m;
+}
+
 std::vector<glm::vec2> uvScale(const MeshData& m) {
   std::vector<glm::vec2> sum(m.positions.size(), glm::vec2(0.0f));
   std::vector<float> weight(m.positions.size(), 0.0f);

@@ -50,7 +50,7 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
       if (wantsOwn && m.sourceTangents.size() != m.positions.size())
         e.notes.push_back("mesh '" + m.name + "' has no tangents of its own (glTF TANGENT): generated ones stand in");
     }
-    m = subdivide(m, key.level);
+    m = splitEdges(subdivide(m, key.level), uvs ? key.parts : 1);  // without UVs nothing is displaced
     const std::vector<glm::vec4> own = m.sourceTangents.size() == m.positions.size() ? m.sourceTangents : m.tangents;
     const std::vector<glm::vec4>& generated = m.tangents;
     auto frames = [&](TangentSource s) -> const std::vector<glm::vec4>& { return s == TangentSource::Mesh ? own : generated; };

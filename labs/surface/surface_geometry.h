@@ -26,6 +26,7 @@ struct SurfaceDraw {
 struct SurfaceGeometryKey {
   int revision = -1;  // the scene build
   int level = 0;      // midpoint subdivisions
+  int parts = 1;      // then every edge cut into this many (tessellation where there are no tessellation stages)
   bool tangents = false;
   TangentSource source = TangentSource::Generated, compare = TangentSource::Generated;
   bool operator==(const SurfaceGeometryKey&) const = default;

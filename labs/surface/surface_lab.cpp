@@ -156,7 +156,9 @@ SceneNeeds SurfaceLab::needs() const {
 ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
   ProgramSpec spec;
   SurfaceTechnique t = hasUvs ? p.technique : SurfaceTechnique::None;  // no UVs: nothing to map
-  if (t == SurfaceTechnique::Tessellation && !gl::hasTessellation()) t = SurfaceTechnique::None;  // a 3.3 context
+  // Without tessellation stages (WebGL2) the mesh is split on the CPU as the
+  // tessellator would split it, and the vertex stage displaces it as in displacement.
+  if (t == SurfaceTechnique::Tessellation && !gl::hasTessellation()) t = SurfaceTechnique::Displacement;
   spec.name = "surface/" + std::string(rowOf(kSurfaceTechniques, t).name);
   const bool tess = t == SurfaceTechnique::Tessellation;
   spec.stages.push_back({GL_VERTEX_SHADER, "surface/surface.vert"});
@@ -264,9 +266,30 @@ void SurfaceLab::render(Frame& frame) {
   glDisable(GL_CULL_FACE);
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);  // alpha 0: background, for the silhouette metric
   if (frame.slice == 0) glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // Tessellation makes level^2 triangles of every patch: held to the subdivision's triangle cap,
+  // or the brick sphere's 65,536 patches at level 64 would be a quarter of a billion triangles a frame.
+  const bool tessellating = params.technique == SurfaceTechnique::Tessellation;
+  const bool tess = tessellating && gl::hasTessellation();
+  int tessLevel = params.tessLevel;
+  if (tessellating) {
+    size_t patches = 0;
+    for (const Instance& inst : frame.scene.instances)
+      if (const MeshData& m = frame.scene.meshes[size_t(inst.mesh)]; !m.uvs.empty()) patches += m.triangleCount();
+    while (tessLevel > 1 && patches * size_t(tessLevel) * size_t(tessLevel) > size_t(kMaxTriangles)) --tessLevel;
+    if (tessLevel < params.tessLevel)
+      frameNotes_.push_back("tessellation level " + std::to_string(params.tessLevel) + " on " + std::to_string(patches) +
+                            " patches would make " + std::to_string(patches * size_t(params.tessLevel) * size_t(params.tessLevel)) +
+                            " triangles; drawn at level " + std::to_string(tessLevel) + " (at most " +
+                            std::to_string(kMaxTriangles) + ", as subdivision)");
+    if (!tess)
+      frameNotes_.push_back("this context has no tessellation stages (WebGL2 has none): each triangle is cut into " +
+                            std::to_string(tessLevel * tessLevel) + " on the CPU (a regular grid with the tessellator's "
+                            "edge points) and displaced in the vertex stage");
+  }
   SurfaceGeometryKey key;
   key.revision = frame.scene.revision;
   key.level = levelFor(frame.scene);
+  key.parts = tessellating && !tess ? tessLevel : 1;
   key.tangents = needsTangents();
   if (key.tangents) {  // otherwise the sources do not matter: one key, one build
     key.source = params.tangents;
@@ -303,27 +326,10 @@ void SurfaceLab::render(Frame& frame) {
   const bool wall = frame.scene.name == "bricks" || frame.scene.name == "bricks-learnopengl";
   const glm::vec3 lightDir = wall ? glm::vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el))
                                   : glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-  const bool tess = params.technique == SurfaceTechnique::Tessellation && gl::hasTessellation();
-  if (params.technique == SurfaceTechnique::Tessellation && !tess)
-    frameNotes_.push_back("this context has no tessellation stages (OpenGL 4.0): the surface is drawn without "
-                          "displacement; pick displacement for the same on a subdivided mesh");
-  // Tessellation makes level^2 triangles of every patch: held to the subdivision's triangle cap,
-  // or the brick sphere's 65,536 patches at level 64 would be a quarter of a billion triangles a frame.
-  int tessLevel = params.tessLevel;
-  if (tess) {
-    size_t patches = 0;
-    for (const SurfaceDraw& d : draws) patches += d.hasUvs ? d.triangles : 0;
-    while (tessLevel > 1 && patches * size_t(tessLevel) * size_t(tessLevel) > size_t(kMaxTriangles)) --tessLevel;
-    if (tessLevel < params.tessLevel)
-      frameNotes_.push_back("tessellation level " + std::to_string(params.tessLevel) + " on " + std::to_string(patches) +
-                            " patches would make " + std::to_string(patches * size_t(params.tessLevel) * size_t(params.tessLevel)) +
-                            " triangles; drawn at level " + std::to_string(tessLevel) + " (at most " +
-                            std::to_string(kMaxTriangles) + ", as subdivision)");
-  }
   std::string what = std::string(rowOf(kSurfaceTechniques, params.technique).name);
   if (params.technique == SurfaceTechnique::Displacement || params.technique == SurfaceTechnique::Truth)
     what += ", subdivision " + std::to_string(key.level);
-  if (tess) what += ", level " + std::to_string(tessLevel);
+  if (tessellating) what += ", level " + std::to_string(tessLevel) + (tess ? "" : " (cut on the CPU)");
   {
     auto pass = frame.pass("surface: " + what);
     for (const SurfaceDraw& d : draws) {

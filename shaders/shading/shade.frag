@@ -46,7 +46,7 @@ void main() {
 #endif
   bool front = seenFromNormalSide(fin.worldPos, fin.normal);
 #if defined(MODE_FLAT)
-  vec3 diffuse = fin.diffuse;  // flat.geom lit the side the eye sees already
+  vec3 diffuse = fin.diffuse;  // flat.geom (or the unwelded vertex stage) lit the side the eye sees already
   vec3 specular = fin.specular;
 #elif defined(MODE_GOURAUD)
   // Seen from behind (open meshes, the inside of a teapot), the other side's lighting.

@@ -104,6 +104,33 @@ TEST(Shading, MixedWindingShadesAlikeInEveryMode) {
   }
 }
 
+// Flat shading without a geometry shader (WebGL2's way): unwelded faces lit in the vertex stage
+// draw the geometry shader's picture, on mixed winding, on degenerate poles (tessellation 3) and
+// on the lab's scene with textures and four lights.
+TEST(Shading, UnweldedFacesDrawWhatTheGeometryShaderDraws) {
+  const std::string mixed = mixedWindingQuad("mixed_winding_flat.obj", 1.0f);
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {"shading", {"shading.lights=4", "shading.ks=0.8"}},
+      {"sphere", {"shading.tessellation=3"}},
+      {mixed, {}},
+  };
+  for (auto& [scene, sets] : cases) {
+    ImageF frames[2];
+    for (int unwelded = 0; unwelded < 2; ++unwelded) {
+      std::vector<std::string> all = sets;
+      all.push_back("shading.mode=flat");
+      all.push_back(std::string("shading.flat_faces=") + (unwelded ? "unwelded" : "geometry_shader"));
+      auto host = test::labHost("shading", scene.c_str(), all);
+      host->renderFrame({320, 240});
+      frames[unwelded] = host->readImage();
+      EXPECT_EQ(countNonFinite(frames[unwelded]), 0u) << scene;
+    }
+    const ImageError e = compareImages(frames[1], frames[0]);
+    EXPECT_LT(e.rmse, 0.002) << scene;
+    EXPECT_LT(e.badPixelPct, 0.05) << scene;  // a face's colour, not an edge pixel or two, would differ
+  }
+}
+
 // The inverse-square falloff's floor on r^2 scales with the scene: a scene a thousandth the size
 // (lights a thousandth as far) is lit exactly as brightly.
 TEST(Shading, TinyScenesAreLitLikeLargeOnes) {

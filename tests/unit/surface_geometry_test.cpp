@@ -53,6 +53,38 @@ TEST(SurfaceGeometry, SubdivisionInterpolatesUvsLinearly) {
   }
 }
 
+// Tessellation done on the CPU (no tessellation stages): parts^2 triangles per triangle, shared edge
+// points (the sphere stays closed, and on its own the mesh has no vertex twice), UVs linear, the
+// winding kept, normals unit length.
+TEST(SurfaceGeometry, SplitEdgesIsATessellatorsGridWithoutCracks) {
+  const MeshData sphere = makeUvSphere(1.0f, 12);
+  for (int parts : {2, 3, 7}) {
+    const MeshData fine = splitEdges(sphere, parts);
+    EXPECT_EQ(fine.triangleCount(), sphere.triangleCount() * size_t(parts * parts));
+    const WeldedMesh welded = weldByPosition(fine);
+    EXPECT_EQ(buildAdjacency(welded.vertexCount(), welded.indices).boundaryEdges, 0u) << parts;
+    for (const glm::vec3& n : fine.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+    for (const glm::vec3& p : fine.positions) EXPECT_LE(glm::length(p), 1.0f + 1e-5f);
+  }
+  const MeshData tri = triangle({0, 0}, {1, 0}, {0, 1});
+  const MeshData fine = splitEdges(tri, 5);
+  EXPECT_EQ(fine.positions.size(), 21u);  // (5 + 1)(5 + 2) / 2 grid points, none twice
+  double area = 0;
+  for (size_t t = 0; t < fine.indices.size(); t += 3) {
+    const glm::vec3 a = fine.positions[fine.indices[t]], b = fine.positions[fine.indices[t + 1]],
+                    c = fine.positions[fine.indices[t + 2]];
+    const float z = glm::cross(b - a, c - a).z;
+    EXPECT_GT(z, 0.0f) << "triangle " << t / 3 << " turned over";
+    area += 0.5 * z;
+  }
+  EXPECT_NEAR(area, 0.5, 1e-6);
+  for (size_t v = 0; v < fine.positions.size(); ++v) {
+    EXPECT_NEAR(fine.uvs[v].x, fine.positions[v].x, 1e-6f);
+    EXPECT_NEAR(fine.uvs[v].y, fine.positions[v].y, 1e-6f);
+  }
+  EXPECT_EQ(splitEdges(tri, 1).indices, tri.indices);
+}
+
 TEST(SurfaceGeometry, UvScaleIsTheWorldLengthOfAUvUnit) {
   for (const glm::vec2 s : uvScale(makePlane(2.0f, 4, 2.0f))) {  // 2 m spanned by 2 UV units
     EXPECT_NEAR(s.x, 1.0f, 1e-5f);

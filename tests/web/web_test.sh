@@ -34,7 +34,9 @@ open_lab() {  # open_lab NAME LINK: the page at LINK draws 10 frames and its vie
   grep "^frames:" "$out/$name.log"
 }
 open_lab shading "lab=shading"
+open_lab shading-flat "lab=shading&shading.mode=flat"  # unwelded faces: no geometry shader in WebGL2
 open_lab surface "lab=surface"
+open_lab surface-tessellation "lab=surface&surface.technique=tessellation"  # cut on the CPU: no tessellation stages
 open_lab denoise "lab=denoise"
 open_lab filtering "lab=filtering"
 open_lab shadows "lab=shadows"
