@@ -115,6 +115,7 @@ int runList(const Options& o) {
 }
 
 int runCheckShaders(const Options& o) {
+  if (o.dialect == "es") return runCheckShadersEs(o);
   std::string err;
   auto context = createHeadlessContext(o.backend, err);
   if (!context) return fail(err);

@@ -8,6 +8,7 @@ namespace shadelab {
 int runRender(const Options& o);
 int runList(const Options& o);
 int runCheckShaders(const Options& o);
+int runCheckShadersEs(const Options& o);  // --dialect es (check_shaders_es.cpp)
 int runSweep(const Options& o);
 int runStress(const Options& o);
 int runCompare(const Options& o);  // two PNGs -> rmse, max error; --out writes a diff image

@@ -42,6 +42,8 @@ options:
   --frames N          timed frames per configuration, medians reported (default 5)
   --shaders DIR       search DIR for shader files before shaders/ (repeatable; first wins)
   --backend NAME      headless context: osmesa (default) or egl
+  --dialect D         check-shaders: desktop (compiled by the driver, default) or es (GLSL ES 3.00 as the
+                      page compiles it, checked by glslangValidator)
   --out PATH          output file or folder
   --measure           measure the frame against the lab's ground truth (render: printed and in the JSON;
                       the window: as if Measure were pressed)
@@ -127,6 +129,10 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     else if (arg == "--camera") o.camera = v;
     else if (arg == "--preset") o.preset = v;
     else if (arg == "--backend") o.backend = v;
+    else if (arg == "--dialect") {
+      if (v != "desktop" && v != "es") return "--dialect: invalid value '" + v + "' (valid: desktop, es)";
+      o.dialect = v;
+    }
     else if (arg == "--out") o.out = v;
     else if (arg == "--exercise") o.exercise = v;
     else if (arg == "--class") o.classDir = v;
@@ -171,7 +177,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
-             "--backend, --out, --measure, --exercise, --all, --watchdog, --class, --jobs, --shard, --cache, --no-cache, --count, "
+             "--backend, --dialect, --out, --measure, --exercise, --all, --watchdog, --class, --jobs, --shard, --cache, --no-cache, --count, "
              "--seed, --minutes)";
     }
   }

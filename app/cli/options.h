@@ -21,6 +21,7 @@ struct Options {
   std::string heightMap;                         // --height-map image.png
   std::string preset;                            // --preset file.json (as written by the app)
   std::string backend = "osmesa";                // --backend osmesa|egl
+  std::string dialect = "desktop";               // check-shaders: --dialect desktop|es
   std::string out;                               // --out file.png (render) or DIR (sweep)
   glm::ivec2 size{960, 540};
   bool sizeGiven = false;
