@@ -59,8 +59,9 @@ OpenedLink openLink(const std::string& fragment) {
     else if (key == "measure") link.measure = true;
     else if (key == "exercise") link.exercise = value;
     else if (key == "check") link.check = true;
+    else if (key == "builtin") link.builtin = true;
     else if (key.find('.') != std::string::npos) link.sets.push_back(item);
-    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, LAB.KEY)");
+    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, LAB.KEY)");
   }
   return link;
 }
@@ -79,7 +80,11 @@ ShareLink shareLink(LabHost& host) {
   for (const auto& setting : host.currentSettings()) {
     const auto d = std::find_if(defaults.begin(), defaults.end(), [&](auto& kv) { return kv.first == setting.first; });
     if (d != defaults.end() && d->second == setting.second) continue;
-    link.fragment += "&" + percentEncode(lab + "." + setting.first) + "=" + percentEncode(setting.second);
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on the one-expression form.
+    link.fragment += '&';
+    link.fragment += percentEncode(lab + "." + setting.first);
+    link.fragment += '=';
+    link.fragment += percentEncode(setting.second);
   }
   return link;
 }

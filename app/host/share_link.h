@@ -25,6 +25,7 @@ struct OpenedLink {
   bool measure = false;
   std::string exercise;  // "shading/blinn-phong": the Exercises section opens on it
   bool check = false;    // press its Check once the page has drawn
+  bool builtin = false;  // the student's folder is not searched (after a shader lost the context)
   std::vector<std::string> problems;  // keys it does not know, with the valid ones
 };
 OpenedLink openLink(const std::string& fragment);

@@ -46,6 +46,10 @@ ShlGetProcAddress glProcLoader();
 // nothing to do on the desktop.
 void enableContextFeatures();
 
+// The page's canvas fills the browser's window and follows it when it is resized (the layout
+// follows the framebuffer every frame); the desktop's window is the user's to size.
+void followPageSize(GLFWwindow* window);
+
 // The #version line Dear ImGui's OpenGL backend writes into its shaders.
 const char* imguiGlslVersion();
 

@@ -29,6 +29,8 @@ ShlGetProcAddress glProcLoader() { return reinterpret_cast<ShlGetProcAddress>(gl
 
 void enableContextFeatures() {}
 
+void followPageSize(GLFWwindow*) {}
+
 const char* imguiGlslVersion() { return "#version 330 core"; }
 
 float contentScale(GLFWwindow* window) {

@@ -3,6 +3,7 @@
 #include <emscripten.h>
 #include <emscripten/html5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -98,6 +99,16 @@ void enableContextFeatures() {
   for (const char* name : {"EXT_color_buffer_float", "EXT_float_blend", "OES_texture_float_linear",
                            "EXT_texture_filter_anisotropic", "EXT_disjoint_timer_query_webgl2"})
     if (!emscripten_webgl_enable_extension(context, name)) std::fprintf(stderr, "shadelab: the browser has no %s\n", name);
+}
+
+void followPageSize(GLFWwindow* window) {
+  const auto fit = [](int, const EmscriptenUiEvent*, void* w) -> EM_BOOL {
+    const int width = EM_ASM_INT(return window.innerWidth), height = EM_ASM_INT(return window.innerHeight);
+    glfwSetWindowSize(static_cast<GLFWwindow*>(w), std::max(width, 240), std::max(height, 240));
+    return EM_FALSE;
+  };
+  fit(0, nullptr, window);
+  emscripten_set_resize_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, window, EM_FALSE, fit);
 }
 
 const char* imguiGlslVersion() { return "#version 300 es"; }

@@ -69,7 +69,12 @@ std::string downloadZip(const fs::path& folder) {
 
 void ShaderEditor::open(LabHost& host, const std::string& relPath) {
   rel = relPath;
-  text = saved = readWholeFile(host.shaders().searchPath().resolve(relPath));
+  // The student's own copy when there is one, whether or not their folder is searched now (the
+  // page's "builtin"): an edit is saved over that copy, so it must start from it.
+  const fs::path mine = copyOf(*this);
+  std::error_code ec;
+  const bool hasCopy = !mine.empty() && fs::is_regular_file(mine, ec);
+  text = saved = readWholeFile(hasCopy ? mine : host.shaders().searchPath().resolve(relPath));
   lastEdit = -1.0;
 }
 

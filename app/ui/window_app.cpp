@@ -384,6 +384,7 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
   app.presenting = wopt.present;
   if (!options.shaderDirs.empty()) app.editor.folder = options.shaderDirs.front();  // edits go to the student's first folder
+  if (!wopt.editFolder.empty()) app.editor.folder = wopt.editFolder;
   if (wopt.uiScale > 0) {
     app.uiScale = wopt.uiScale;
   } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen
@@ -581,6 +582,7 @@ int runWindow(const Options& options, const WindowOptions& wopt) {
   }
   glfwMakeContextCurrent(window);
   enableContextFeatures();
+  followPageSize(window);
   glfwSwapInterval(1);
   const char* missing = "";
   if (!gl::loadFunctions(glProcLoader(), &missing)) {

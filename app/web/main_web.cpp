@@ -2,7 +2,8 @@
 //   index.html#lab=shadows&scene=learnopengl&shadows.filter=pcss&camera=yaw=30,pitch=20
 // lab, scene and camera as the desktop's --lab, --scene and --camera; every "lab.key=value" a --set;
 // "measure" presses Measure once the first frames are timed (--measure); "exercise=shading/blinn-phong"
-// opens the Exercises section on it and "check" presses its Check. What the link gets wrong is
+// opens the Exercises section on it and "check" presses its Check; "builtin" leaves the student's
+// folder out of the search (the page's reload after a shader lost the WebGL context). What the link gets wrong is
 // shown in the page's Messages panel.
 #include <emscripten.h>
 
@@ -19,7 +20,10 @@ int main() {
   const OpenedLink link = openLink(emscripten_run_script_string("location.hash.slice(1)"));
   // The student's folder: the page's own, kept in the browser's storage (web/index.html mounts it
   // before main runs); the in-page editor saves there and it is searched before the lab's shaders.
-  std::vector<std::string> args{"shadelab", "--shaders", "/student"};
+  // With "builtin" (the page's reload after a shader lost the WebGL context) the folder is not
+  // searched, only edited: the student fixes the file, then opens the page without "builtin".
+  std::vector<std::string> args{"shadelab"};
+  if (!link.builtin) args.insert(args.end(), {"--shaders", "/student"});
   for (auto [key, value] : {std::pair{"--lab", &link.lab}, {"--scene", &link.scene}, {"--camera", &link.camera},
                             {"--exercise", &link.exercise}})
     if (!value->empty()) args.insert(args.end(), {key, *value});
@@ -35,6 +39,12 @@ int main() {
   WindowOptions window;
   window.message = problems;
   window.check = link.check;
+  if (link.builtin) {
+    window.editFolder = "/student";
+    window.message += std::string(window.message.empty() ? "" : "\n") +
+                      "your folder /student is not searched (the link's 'builtin', after the WebGL context was lost): "
+                      "the lab's own shaders draw; fix your file in the editor, then open the page without 'builtin'";
+  }
   try {
     return runWindow(options, window);
   } catch (const std::exception& e) {  // the page shows it (web/index.html) instead of a bare abort

@@ -106,4 +106,12 @@ grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" 
   { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
+# A shader that runs too long makes the browser take the WebGL context away (here: asked for with
+# WEBGL_lose_context): the page stops drawing, says why and offers a reload without the student's folder.
+lose="(async () => { Module.canvas.getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
+  await new Promise((ok) => setTimeout(ok, 500)); return 'status: ' + document.getElementById('status').textContent; })()"
+drive context-lost "lab=shading" --frames 5 --eval "$lose" --wait-console "the WebGL context was lost"
+grep -q "status: The browser took the page's WebGL context away.*Reload with the lab's own shaders" "$out/context-lost.log" ||
+  { cat "$out/context-lost.log"; echo "a lost WebGL context was not reported in the page"; exit 1; }
+echo "a lost WebGL context is reported, with a reload"
 echo "web test passed"
