@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 
 #include "host/lab_host.h"
 #include "lab/params.h"
@@ -60,8 +61,17 @@ OpenedLink openLink(const std::string& fragment) {
     else if (key == "exercise") link.exercise = value;
     else if (key == "check") link.check = true;
     else if (key == "builtin") link.builtin = true;
+    else if (key == "present") link.present = true;
+    else if (key == "cycle") link.cycle = true;
+    else if (key == "frames") {
+      char* end = nullptr;
+      const long n = std::strtol(value.c_str(), &end, 10);
+      if (value.empty() || *end || n < 1 || n > 1000000)
+        link.problems.push_back("the link's frames='" + value + "' is not a number of frames (1 to 1000000)");
+      else link.frames = int(n);
+    }
     else if (key.find('.') != std::string::npos) link.sets.push_back(item);
-    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, LAB.KEY)");
+    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, present, frames, cycle, LAB.KEY)");
   }
   return link;
 }

@@ -39,6 +39,9 @@ int main() {
   WindowOptions window;
   window.message = problems;
   window.check = link.check;
+  window.present = link.present;
+  window.exitAfterFrames = link.frames;
+  window.cycleLabs = link.cycle;
   if (link.builtin) {
     window.editFolder = "/student";
     window.message += std::string(window.message.empty() ? "" : "\n") +

@@ -179,6 +179,17 @@ TEST(Host, ASharedLinkOpensTheSameFrame) {
   EXPECT_TRUE(odd.measure);
   ASSERT_EQ(odd.problems.size(), 2u);
   EXPECT_NE(odd.problems[0].find("'colour' is unknown"), std::string::npos);
+
+  // The page's own keys: an exercise and its Check, the lab's own shaders, presentation mode, a
+  // number of frames (a bad one named), cycling the labs.
+  const OpenedLink page = openLink("exercise=shading%2Fblinn-phong&check&builtin&present&frames=120&cycle");
+  EXPECT_TRUE(page.problems.empty());
+  EXPECT_EQ(page.exercise, "shading/blinn-phong");
+  EXPECT_TRUE(page.check && page.builtin && page.present && page.cycle);
+  EXPECT_EQ(page.frames, 120);
+  const OpenedLink badFrames = openLink("frames=-3");
+  ASSERT_EQ(badFrames.problems.size(), 1u);
+  EXPECT_NE(badFrames.problems[0].find("frames='-3'"), std::string::npos);
 }
 
 // A scene may come with settings it is best shown with (the learnopengl scene opens with
