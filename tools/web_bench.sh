@@ -37,7 +37,7 @@ passes() { sed -n "s/.*the lab's passes \([0-9.]*\) ms.*/\1/p" <<<"$1"; }
 echo
 echo "| lab (default, 1280x720) | page frame ms | desktop frame ms | page / desktop | page passes ms | desktop passes ms | page / desktop | page load to first frame s |"
 echo "|---|---|---|---|---|---|---|---|"
-for lab in $("$bin" list | sed -n '/^labs:/,/^scenes/p' | sed -n 's/^\([a-z][a-z]*\)  .*/\1/p'); do
+for lab in ${WEB_BENCH_LABS:-$("$bin" list | sed -n '/^labs:/,/^scenes/p' | sed -n 's/^\([a-z][a-z]*\)  .*/\1/p')}; do
   python3 "$root/tools/web_driver.py" "http://127.0.0.1:$port/index.html#lab=$lab&present&frames=$frames" --size 1280,720 \
     --frames 1 --timeout 600 --wait-console "frames: " --screenshot "$out/$lab.png" >"$out/$lab-page.log" 2>&1 || true
   page=$(grep -m1 "console log: frames: " "$out/$lab-page.log" || true)

@@ -21,7 +21,7 @@ bool softwareRenderer() {
   return false;
 }
 
-static bool esContext() {
+bool esContext() {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   return version && (std::strstr(version, "OpenGL ES") || std::strstr(version, "WebGL"));
 }

@@ -17,6 +17,9 @@ namespace gl {
 // 10-50x a GPU's, so timers and the choice of truth tracer differ.
 bool softwareRenderer();
 
+// An OpenGL ES or WebGL context (the page's): what differs there is asked through the functions below.
+bool esContext();
+
 // Geometry shaders (core in 3.2): OpenGL ES 3.0 and WebGL2 have none, so a lab draws what it would
 // draw with one in several passes, or says the option needs one.
 bool hasGeometryShaders();

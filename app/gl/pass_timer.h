@@ -6,9 +6,14 @@
 //              rasteriser runs deferred on worker threads and its GL_TIME_ELAPSED leaves that
 //              work out (it reported 0.2 ms for a 1280x720 frame that takes over 10 ms), so the
 //              honest figure there is the synchronised wall time.
+//  - Readback: the same with a one-pixel read of a framebuffer of the timer's own in place of
+//              glFinish, in WebGL: there finish() returns at once (the browser's GPU process runs
+//              the commands later), while a read of pixels is answered only when everything
+//              before it has run. In a 1280x720 page, finish() timed every lab's passes at
+//              0.1-0.4 ms in frames of 100-220 ms (tools/web_bench.sh).
 // Either way the frame waits for its own numbers when it ends: that costs the CPU/GPU overlap a
 // game would keep, and buys exact per-pass cost for the very frame on screen.
-// SHADELAB_TIMER=query|finish overrides the choice.
+// SHADELAB_TIMER=query|finish|readback overrides the choice.
 #pragma once
 #include <string>
 #include <vector>
@@ -25,9 +30,9 @@ struct PassTiming {
 
 class PassTimer {
  public:
-  enum class Clock { GpuQuery, Finish };
+  enum class Clock { GpuQuery, Finish, Readback };
 
-  // Picks the clock from GL_RENDERER (software rasterisers get Finish).
+  // Picks the clock from GL_RENDERER and GL_VERSION (software rasterisers get Finish, WebGL Readback).
   PassTimer();
   Clock clock() const { return clock_; }
   const char* clockName() const;
@@ -49,6 +54,10 @@ class PassTimer {
   std::vector<Open> passes_;
   std::vector<PassTiming> last_;
   bool inPass_ = false;
+  // Readback: what is read (made on first use)
+  void sync();
+  TextureName syncTexture_;
+  FramebufferName syncTarget_;
 };
 
 // Scope guard for one pass: `auto pass = timer.scope("lighting");`

@@ -2,7 +2,10 @@
 // no GL object left behind; only the passes and textures the configuration needs.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "gl_test.h"
+#include "gl/pass_timer.h"
 #include "gl/pixel_probe.h"
 #include "host/share_link.h"
 #include "util/process_memory.h"
@@ -251,4 +254,32 @@ TEST(Host, ThePixelReadoutArrivesWithoutAStall) {
   glFinish();
   EXPECT_EQ(probe.latest()->x, 32);
   EXPECT_EQ(gl::drainErrors(), "");
+}
+
+// The page's clock (a one-pixel read where WebGL's finish() does not wait) times a pass as the
+// desktop's glFinish does: the same frame's passes, both clocks, within a factor of two (and not
+// the near-zero a clock that does not wait would give). It leaves the lab's framebuffers bound.
+TEST(PassTimer, AOnePixelReadTimesAPassAsFinishDoes) {
+  auto host = test::labHost("shadows", nullptr, {});
+  host->renderFrame({640, 360});
+  double ms[2] = {0, 0};
+  for (int round = 0; round < 3; ++round)
+    for (int c = 0; c < 2; ++c) {
+      setenv("SHADELAB_TIMER", c ? "readback" : "finish", 1);
+      gl::PassTimer chosen;  // the clock is read from the environment when it is made
+      unsetenv("SHADELAB_TIMER");
+      ASSERT_EQ(chosen.clock(), c ? gl::PassTimer::Clock::Readback : gl::PassTimer::Clock::Finish);
+      GLint before = -1;
+      glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &before);
+      chosen.beginFrame();
+      chosen.begin("draw");
+      host->renderFrame({640, 360});
+      chosen.end();
+      GLint after = -1;
+      glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &after);
+      EXPECT_EQ(after, before) << "the timer's read must put the framebuffer back";
+      ms[c] += chosen.endFrame().front().gpuMs;
+    }
+  EXPECT_GT(ms[1], 0.5 * ms[0]) << "finish " << ms[0] << " ms, readback " << ms[1] << " ms";
+  EXPECT_LT(ms[1], 2.0 * ms[0]) << "finish " << ms[0] << " ms, readback " << ms[1] << " ms";
 }
