@@ -49,15 +49,17 @@ export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 [ -f "$build/build.ninja" ] || emcmake cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DIMGUI_SOURCE_DIR="$PWD/$imgui" -DLZ4_SOURCE_DIR="$PWD/$src/lz4" >/dev/null
 cmake --build "$build"
-site=(index.html shadelab.js shadelab.wasm shadelab.data shadelab.worker.js)
+site=(index.html isolation.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js)
 
 case $mode in
   build) echo "web.sh: built $build/index.html" ;;
   out)
     mkdir -p "$out"
     for f in "${site[@]}"; do cp "$build/$f" "$out/"; done
-    echo "web.sh: the site is in $out (${site[*]}); serve it with these headers for threads:"
+    echo "web.sh: the site is in $out (${site[*]}). Its threads need these headers:"
     echo "  Cross-Origin-Opener-Policy: same-origin, Cross-Origin-Embedder-Policy: require-corp"
+    echo "A host that cannot send them (GitHub Pages, most course sites) needs nothing more: over https the"
+    echo "page registers isolation.js, a service worker that adds them, and reloads itself once."
     ;;
   serve) exec python3 tools/serve_web.py "$build" --port "$port" ;;
 esac

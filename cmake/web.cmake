@@ -63,7 +63,7 @@ target_link_options(shadelab PRIVATE -pthread -fexceptions -sPTHREAD_POOL_SIZE=6
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/shaders@/shadelab/shaders"
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/exercises@/shadelab/exercises")
 # The page around it: copied whenever it changes, whether or not the program was rebuilt.
-add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/index.html
-  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/web/index.html ${CMAKE_BINARY_DIR}/index.html
-  DEPENDS ${CMAKE_SOURCE_DIR}/web/index.html)
-add_custom_target(web_page ALL DEPENDS ${CMAKE_BINARY_DIR}/index.html)
+add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/index.html ${CMAKE_BINARY_DIR}/isolation.js
+  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/web/index.html ${CMAKE_SOURCE_DIR}/web/isolation.js ${CMAKE_BINARY_DIR}
+  DEPENDS ${CMAKE_SOURCE_DIR}/web/index.html ${CMAKE_SOURCE_DIR}/web/isolation.js)
+add_custom_target(web_page ALL DEPENDS ${CMAKE_BINARY_DIR}/index.html ${CMAKE_BINARY_DIR}/isolation.js)

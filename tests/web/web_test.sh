@@ -114,4 +114,15 @@ drive context-lost "lab=shading" --frames 5 --eval "$lose" --wait-console "the W
 grep -q "status: The browser took the page's WebGL context away.*Reload with the lab's own shaders" "$out/context-lost.log" ||
   { cat "$out/context-lost.log"; echo "a lost WebGL context was not reported in the page"; exit 1; }
 echo "a lost WebGL context is reported, with a reload"
+# A static host that sends no headers (GitHub Pages, a course site): the page registers its
+# service worker (isolation.js), which adds the isolation headers, reloads once, and draws.
+plain_port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+python3 -m http.server "$plain_port" --bind 127.0.0.1 --directory "$site" >"$out/plain-host-server.log" 2>&1 &
+plain=$!
+trap 'kill $server $plain 2>/dev/null || true' EXIT
+for _ in $(seq 50); do grep -q "Serving HTTP" "$out/plain-host-server.log" 2>/dev/null && break; sleep 0.1; done
+python3 "$repo/tools/web_driver.py" "http://127.0.0.1:$plain_port/index.html#lab=shading" --frames 10 --timeout 90 \
+  --screenshot "$out/plain-host.png" >"$out/plain-host.log" 2>&1 || { cat "$out/plain-host.log"; echo "the page did not start on a host without headers"; exit 1; }
+grep -q "GET /isolation.js" "$out/plain-host-server.log" || { echo "the page started without its service worker"; exit 1; }
+echo "the page starts on a host that sends no headers (its service worker isolates it)"
 echo "web test passed"
