@@ -4,10 +4,32 @@
 
 #include "grade/configuration_frames.h"
 #include "shader/preprocessor.h"
+#include "util/contained_path.h"
+#include "util/output_files.h"
+#include "util/read_file.h"
 
 namespace shadelab {
 
 namespace fs = std::filesystem;
+
+std::string copyStarter(const Exercise& ex, const fs::path& folder, std::vector<std::string>& copied,
+                        std::vector<std::string>& kept) {
+  for (auto& file : ex.files) {
+    const fs::path name = containedName(file);
+    if (name.empty()) return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
+    const fs::path mine = folder / name;
+    std::error_code ec;
+    if (fs::exists(mine, ec) || fs::is_symlink(mine, ec)) {
+      kept.push_back(file);
+      continue;
+    }
+    const fs::path starter = ex.dir / "starter" / name;
+    if (!fs::is_regular_file(starter, ec)) return starter.string() + " is missing: the exercise has no starter for " + file;
+    if (auto e = writeTextFile(mine.string(), readWholeFile(starter)); !e.empty()) return e;
+    copied.push_back(file);
+  }
+  return {};
+}
 
 std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> studentDirs) {
   running_ = false;

@@ -18,6 +18,12 @@
 
 namespace shadelab {
 
+// The exercise's starter files copied into the student's `folder`, never over a file already there
+// (their work). `copied` and `kept` receive the files' names. "" or why not (a file the rubric
+// names outside a shader folder, a starter missing, a folder that cannot be written).
+std::string copyStarter(const Exercise& ex, const std::filesystem::path& folder, std::vector<std::string>& copied,
+                        std::vector<std::string>& kept);
+
 class ExerciseCheck {
  public:
   // Starts checking exercise `id` with `studentDirs` searched before the built-in shaders. "" or

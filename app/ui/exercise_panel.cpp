@@ -9,8 +9,6 @@
 #include "host/lab_host.h"
 #include "ui/platform.h"
 #include "ui/shader_editor.h"
-#include "util/contained_path.h"
-#include "util/output_files.h"
 #include "util/read_file.h"
 
 namespace shadelab {
@@ -34,27 +32,19 @@ std::string openStarter(const std::string& id, LabHost& host, ShaderEditor& edit
   if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
   if (host.lab().id() != ex.lab)
     if (auto e = host.selectLab(ex.lab); !e.empty()) return e;
-  std::string copied, kept;
-  for (auto& file : ex.files) {
-    const fs::path name = containedName(file);
-    if (name.empty()) return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
-    const fs::path mine = editor.folder / name;
-    std::error_code ec;
-    if (fs::exists(mine, ec)) {
-      kept += (kept.empty() ? "" : ", ") + file;
-      continue;
-    }
-    const fs::path starter = ex.dir / "starter" / name;
-    if (!fs::is_regular_file(starter, ec)) return starter.string() + " is missing: the exercise has no starter for " + file;
-    if (auto e = writeTextFile(mine.string(), readWholeFile(starter)); !e.empty()) return e;
-    copied += (copied.empty() ? "" : ", ") + file;
-  }
+  std::vector<std::string> copied, kept;
+  if (auto e = copyStarter(ex, editor.folder, copied, kept); !e.empty()) return e;
   persistStudentFiles();
   host.pollChanges();  // the new files shadow the lab's own from this frame on
   editor.open(host, ex.files.front());
+  const auto join = [](const std::vector<std::string>& names) {
+    std::string out;
+    for (auto& n : names) out += (out.empty() ? "" : ", ") + n;
+    return out;
+  };
   std::string status = "opened " + ex.files.front();
-  if (!copied.empty()) status += "; the starter's " + copied + " copied into " + editor.folder.string();
-  if (!kept.empty()) status += "; your " + kept + " kept as it is";
+  if (!copied.empty()) status += "; the starter's " + join(copied) + " copied into " + editor.folder.string();
+  if (!kept.empty()) status += "; your " + join(kept) + " kept as it is";
   return status;
 }
 

@@ -104,6 +104,36 @@ TEST_F(Check, AFileThatDoesNotCompileIsNamedAtItsLine) {
   EXPECT_TRUE(named);
 }
 
+// Open the starter: copied where the student has no file, never over one they have (their work),
+// and then Check grades what was copied.
+TEST_F(Check, TheStarterIsCopiedOnlyWhereTheStudentHasNoFile) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(exercisesRoot(), kExercise, ex), "");
+  fs::remove_all(student);
+  std::vector<std::string> copied, kept;
+  ASSERT_EQ(copyStarter(ex, student, copied, kept), "");
+  EXPECT_EQ(copied, std::vector<std::string>{kFile});
+  EXPECT_TRUE(kept.empty());
+  EXPECT_EQ(readWholeFile(student / kFile), readWholeFile(ex.dir / "starter" / kFile));
+
+  submit("// my work\n" + readWholeFile(kShaders / kFile));
+  copied.clear();
+  ASSERT_EQ(copyStarter(ex, student, copied, kept), "");
+  EXPECT_TRUE(copied.empty());
+  EXPECT_EQ(kept, std::vector<std::string>{kFile});
+  EXPECT_EQ(readWholeFile(student / kFile).rfind("// my work\n", 0), 0u) << "the student's file was overwritten";
+
+  ExerciseCheck check;
+  EXPECT_TRUE(run(check).passed());  // their (correct) work, not the starter, is what is graded
+
+  // A rubric naming a file outside the shader folders is refused, and nothing is written.
+  Exercise bad = ex;
+  bad.files = {"../outside.glsl"};
+  copied.clear();
+  EXPECT_NE(copyStarter(bad, student, copied, kept).find("is not a name inside a shader folder"), std::string::npos);
+  EXPECT_FALSE(fs::exists(student.parent_path() / "outside.glsl"));
+}
+
 TEST(CheckStart, AnUnknownExerciseSaysWhichAreThere) {
   ExerciseCheck check;
   const std::string e = check.start("shading/nope", {});
