@@ -36,6 +36,7 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
     lab_->teardown();
     gl::releaseDriverHeldTextures();  // else the driver may keep the old lab's biggest maps (gl/gl.h)
   }
+  sideTarget_.reset();  // the old lab's measured views: a lab starts with the objects it makes itself
   shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
   labReady_ = true;
