@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <deque>
 #include <fstream>
 
 #include "cli/session.h"
@@ -31,62 +30,13 @@
 #include "ui/platform.h"
 #include "gl/pixel_probe.h"
 #include "ui/exercise_panel.h"
+#include "ui/frame_records.h"
 #include "ui/shader_editor.h"
 #include "ui/window_events.h"
 #include "ui/window_files.h"
 
 namespace shadelab {
 namespace {
-
-// The costs of the configuration on screen: medians of its recent frames, restarted whenever the
-// settings, the camera or the viewport change.
-struct ConfigurationCosts {
-  std::string signature;
-  std::chrono::steady_clock::time_point since = std::chrono::steady_clock::now();
-  std::deque<double> gpu, cpu;
-
-  void push(const std::string& now, const std::vector<gl::PassTiming>& passes) {
-    if (now != signature) {
-      signature = now;
-      since = std::chrono::steady_clock::now();
-      gpu.clear();
-      cpu.clear();
-    }
-    double g = 0, c = 0;
-    for (auto& p : passes) {
-      g += p.gpuMs;
-      c += p.cpuMs;
-    }
-    gpu.push_back(g);
-    cpu.push_back(c);
-    if (gpu.size() > 15) {
-      gpu.pop_front();
-      cpu.pop_front();
-    }
-  }
-  static double median(std::deque<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-  }
-  // Empty until three frames of this configuration ran: the first pays for shader compiles.
-  Metrics costs() const { return gpu.size() < 3 ? Metrics{} : Metrics{{"gpu_ms", median(gpu)}, {"cpu_ms", median(cpu)}}; }
-};
-
-// Frame times with and without jobs running: the UI must stay responsive while they work.
-// And the lab's own passes per frame (GPU timer, or the wall clock between glFinish calls in the
-// page), so that a frame can be compared with the same lab's frame elsewhere (tools/web_bench.sh).
-struct Responsiveness {
-  std::vector<float> idleMs, busyMs, labMs;
-  void report() const {
-    auto median = [](std::vector<float> v) {
-      std::sort(v.begin(), v.end());
-      return v.empty() ? 0.0f : v[v.size() / 2];
-    };
-    std::printf("frames: %zu, %zu while jobs ran; median frame %.1f ms idle, %.1f ms while jobs ran; the lab's passes "
-                "%.2f ms\n",
-                idleMs.size() + busyMs.size(), busyMs.size(), median(idleMs), median(busyMs), median(labMs));
-  }
-};
 
 struct AppState {
   LabHost* host = nullptr;
