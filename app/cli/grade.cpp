@@ -14,9 +14,7 @@
 #include "grade/grading.h"
 #include "grade/watchdog.h"
 #include "measure/report.h"
-#include "shader/preprocessor.h"
 #include "util/output_files.h"
-#include "util/read_file.h"
 
 namespace shadelab {
 

@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "util/format.h"
+
 namespace shadelab {
 
 std::string usage() {
@@ -138,9 +140,8 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     else if (arg == "--class") o.classDir = v;
     else if (arg == "--cache") o.cacheDir = v;
     else if (arg == "--jobs") {
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end || n < 1 || n > 256) return "--jobs: '" + v + "' is not a whole number in [1, 256]";
+      long n = 0;
+      if (!parseWholeNumber(v, 1, 256, n)) return "--jobs: '" + v + "' is not a whole number in [1, 256]";
       o.jobs = int(n);
     } else if (arg == "--shard") {
       int i = 0, n = 0;

@@ -90,8 +90,7 @@ std::vector<std::string> ExerciseCheck::lines() const {
   for (auto& c : result_.configurations)
     for (auto& line : configurationLines(c, printed)) out.push_back(std::move(line));
   for (auto& n : result_.notes) out.push_back("  note: " + n);
-  if (!running_ && error_.empty() && result_.configurations.size() == exercise_.configurations.size())
-    out.push_back(exerciseTotalLine(result_));
+  if (finished()) out.push_back(exerciseTotalLine(result_));
   return out;
 }
 

@@ -30,6 +30,10 @@ class ExerciseCheck {
   // why it cannot (an unknown exercise, a rubric that does not read).
   std::string start(const std::string& id, std::vector<std::filesystem::path> studentDirs);
   bool running() const { return running_; }
+  // Every configuration scored (not stopped by an error): the total means something.
+  bool finished() const {
+    return !running_ && error_.empty() && result_.configurations.size() == exercise_.configurations.size();
+  }
   // Draws and scores the next configuration (one call can take a while: a truth to trace).
   void step();
 

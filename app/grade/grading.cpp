@@ -178,12 +178,15 @@ std::string checkLine(const ConfigurationResult& c, const CheckResult& r) {
   return line;
 }
 
+std::string errorWithoutProgram(const std::string& error) {
+  const size_t name = error.find(": ");
+  return name == std::string::npos ? error : error.substr(name + 2);
+}
+
 std::vector<std::string> configurationLines(const ConfigurationResult& c, std::vector<std::string>& printed) {
   std::vector<std::string> out;
   for (auto& err : c.errors) {
-    // An error is known by what follows the program's name ("shading/phong: ...", "shading/gouraud: ...").
-    const size_t name = err.find(": ");
-    const std::string where = name == std::string::npos ? err : err.substr(name + 2);
+    const std::string where = errorWithoutProgram(err);
     if (std::find(printed.begin(), printed.end(), where) != printed.end()) continue;
     printed.push_back(where);
     out.push_back("  " + err);

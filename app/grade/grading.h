@@ -85,6 +85,9 @@ struct GradeReport {
 
 // "  pcf-5x5 [scene shadow-test, pcf_size=5]  acne_pct  0.12 <= 0.62 (solution+0.5)  PASS  2/2"
 std::string checkLine(const ConfigurationResult& c, const CheckResult& r);
+// A build error without the program's name ("shading/phong: f.glsl:3: ..." -> "f.glsl:3: ..."):
+// every configuration and program variant compiles the same file, so this says it once.
+std::string errorWithoutProgram(const std::string& error);
 // The terminal's lines for one configuration: its errors, each once per exercise (`printed` holds
 // the ones said already: every configuration and program variant compiles the same file), then
 // one checkLine per check with the check's hint under it when it lost points.

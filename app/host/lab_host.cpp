@@ -177,9 +177,10 @@ static Settings labDefaults(std::string_view labId) {
 Settings LabHost::defaultSettings() {
   Settings defaults = labDefaults(lab_->id());
   for (const std::string& s : built_.scene.suggestedSettings) {
-    const std::string key = ownKey(s.substr(0, s.find('=')));
+    const size_t eq = s.find('=');
+    const std::string key = ownKey(s.substr(0, eq));
     for (auto& [k, v] : defaults)
-      if (!key.empty() && k == key) v = s.substr(s.find('=') + 1);
+      if (!key.empty() && k == key) v = s.substr(eq + 1);
   }
   return defaults;
 }
@@ -192,9 +193,11 @@ void LabHost::resetParams() {
 void LabHost::applySceneSettings(const std::vector<std::string>& leaving) {
   if (!leaving.empty()) {  // what the scene before suggested goes back to the lab's own default
     const Settings defaults = labDefaults(lab_->id());
-    for (const std::string& s : leaving)
+    for (const std::string& s : leaving) {
+      const std::string key = ownKey(s.substr(0, s.find('=')));
       for (const auto& [k, v] : defaults)
-        if (k == ownKey(s.substr(0, s.find('=')))) set(k + "=" + v);
+        if (!key.empty() && k == key) set(k + "=" + v);
+    }
   }
   // A scene's suggestions are the project's own text: one that does not apply is a bug the lab
   // tests catch (every scene is selected there), not something a user can fix, so it is not shown.

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <cstdlib>
 
 #include "host/lab_host.h"
 #include "lab/params.h"
 #include "scene/scene_catalog.h"
+#include "util/format.h"
 
 namespace shadelab {
 
@@ -64,11 +64,8 @@ OpenedLink openLink(const std::string& fragment) {
     else if (key == "present") link.present = true;
     else if (key == "cycle") link.cycle = true;
     else if (key == "frames") {
-      char* end = nullptr;
-      const long n = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end || n < 1 || n > 1000000)
-        link.problems.push_back("the link's frames='" + value + "' is not a number of frames (1 to 1000000)");
-      else link.frames = int(n);
+      if (long n = 0; parseWholeNumber(value, 1, 1000000, n)) link.frames = int(n);
+      else link.problems.push_back("the link's frames='" + value + "' is not a number of frames (1 to 1000000)");
     }
     else if (key.find('.') != std::string::npos) link.sets.push_back(item);
     else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, present, frames, cycle, LAB.KEY)");

@@ -58,7 +58,10 @@ void ExercisePanel::select(const std::string& id) {
 }
 
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
-  if (panel.ids.empty()) panel.ids = listExercises(exercisesRoot());
+  if (!panel.listed) {  // once: the exercises ship with the program
+    panel.ids = listExercises(exercisesRoot());
+    panel.listed = true;
+  }
   if (panel.ids.empty()) {
     ImGui::TextDisabled("No exercises in %s.", exercisesRoot().c_str());
     return;
@@ -122,15 +125,15 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   // name and points, the number against its bound, and the hint when it lost points.
   const ExerciseResult& r = check.result();
   ImGui::PushTextWrapPos(0);
-  if (!check.running() && check.error().empty() && r.configurations.size() == check.configurations())
+  if (check.finished())
     ImGui::TextColored(r.passed() ? kPass : kFail, "%.4g / %.4g points (%.1f%%), pass mark %.0f%%: %s", r.earned, r.total,
                        r.percent(), r.passMark, r.passed() ? "passed" : "not passed");
   for (auto& f : r.missingFiles) ImGui::TextColored(kFail, "%s is not in your folder: open the starter.", f.c_str());
   std::vector<std::string> said;  // each build error once: every configuration compiles the same file
   for (auto& c : r.configurations) {
     for (auto& e : c.errors)
-      if (std::find(said.begin(), said.end(), e.substr(e.find(": ") + 2)) == said.end()) {
-        said.push_back(e.substr(e.find(": ") + 2));
+      if (std::find(said.begin(), said.end(), errorWithoutProgram(e)) == said.end()) {
+        said.push_back(errorWithoutProgram(e));
         ImGui::TextColored(kFail, "%s", e.c_str());
       }
     for (auto& k : c.checks) {

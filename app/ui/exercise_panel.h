@@ -15,6 +15,7 @@ struct ShaderEditor;
 
 struct ExercisePanel {
   std::vector<std::string> ids;  // every exercise, read once
+  bool listed = false;
   std::string selected;          // the exercise shown ("" = none)
   std::string statement;         // its statement.md
   bool showStatement = false;

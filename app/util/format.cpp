@@ -20,4 +20,12 @@ std::string formatFixed(double v, int decimals) {
   return buf;
 }
 
+bool parseWholeNumber(const std::string& text, long lo, long hi, long& out) {
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end || n < lo || n > hi) return false;
+  out = n;
+  return true;
+}
+
 }  // namespace shadelab

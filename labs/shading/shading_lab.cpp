@@ -27,6 +27,12 @@ constexpr std::string_view kSpecularNames[] = {"blinn-phong", "phong"};
 constexpr std::string_view kUvNames[] = {"perspective", "affine"};
 constexpr std::string_view kFlatFacesNames[] = {"geometry_shader", "unwelded"};
 
+// Flat mode drawn from unwelded faces: asked for, or where there are no geometry shaders (WebGL2).
+bool drawsUnwelded(const ShadingParams& p) {
+  return rowOf(kShadingModes, p.mode).perFace &&
+         (p.flatFaces == FlatFaces::Unwelded || glslDialect() == GlslDialect::Es300);
+}
+
 // Flat shading without a geometry shader: every triangle gets three vertices of its own, each
 // carrying what flat.geom computes from the whole triangle: the face's normal (the cross product
 // turned to agree with the vertex normals; their average where the face has no area) in the
@@ -124,7 +130,7 @@ ProgramSpec ShadingLab::programSpec(const ShadingParams& p, bool textured) const
   const ShadingModeRow& mode = rowOf(kShadingModes, p.mode);
   spec.name = "shading/" + std::string(mode.name) + (textured ? "+texture" : "");
   spec.stages.push_back({GL_VERTEX_SHADER, "shading/shade.vert"});
-  const bool unwelded = mode.perFace && (p.flatFaces == FlatFaces::Unwelded || glslDialect() == GlslDialect::Es300);
+  const bool unwelded = drawsUnwelded(p);
   if (mode.perFace && !unwelded) spec.stages.push_back({GL_GEOMETRY_SHADER, "shading/flat.geom"});
   spec.stages.push_back({GL_FRAGMENT_SHADER, "shading/shade.frag"});
   spec.defines.emplace_back(mode.define, "1");
@@ -167,11 +173,6 @@ std::string ShadingLab::setup(LabContext& ctx) {
   return {};
 }
 
-bool ShadingLab::unweldedFlat() const {
-  return params.mode == ShadingMode::Flat &&
-         (params.flatFaces == FlatFaces::Unwelded || glslDialect() == GlslDialect::Es300);
-}
-
 void ShadingLab::teardown() {
   for (auto& p : programs_) p.reset();
   unwelded_.clear();
@@ -202,11 +203,10 @@ void ShadingLab::render(Frame& frame) {
     lightPower[k] = kLightColor[k] * params.lightPower * distance * distance;
   }
 
-  const bool unwelded = unweldedFlat();
-  if (!unwelded) {
-    unwelded_.clear();  // only flat mode without a geometry shader keeps them
-    unweldedRevision_ = -1;
-  } else if (unweldedRevision_ != frame.scene.revision) {
+  // Built when flat mode first needs them, then kept for the scene build (a measurement's Phong
+  // frames between flat ones do not rebuild them); the lab's teardown lets them go.
+  const bool unwelded = drawsUnwelded(params);
+  if (unwelded && unweldedRevision_ != frame.scene.revision) {
     unwelded_.clear();
     for (auto& m : frame.scene.meshes) unwelded_.push_back(unweldedFaces(m));
     unweldedRevision_ = frame.scene.revision;

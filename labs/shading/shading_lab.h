@@ -60,10 +60,9 @@ class ShadingLab final : public LabWithParams<ShadingParams>, public Judge {
 
  private:
   ProgramSpec programSpec(const ShadingParams& p, bool textured) const;
-  bool unweldedFlat() const;  // flat mode drawn from unwelded faces (the setting, or no geometry shaders)
 
   // Flat mode without a geometry shader: each of the scene's meshes with three vertices of its own
-  // per triangle, carrying the face's normal and centroid; rebuilt when the scene is.
+  // per triangle, carrying the face's normal and centroid; rebuilt with the scene.
   std::vector<GpuMesh> unwelded_;
   int unweldedRevision_ = -1;
 
