@@ -163,14 +163,20 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
       problems_.push_back(std::to_string(bad) + " NaN/Inf values: " + describeState(host));
   if (countAfterSwitch_) {
     countAfterSwitch_ = false;
-    LabEntry entry{seconds(), 0.0, 0.0, {}};
+    LabEntry entry{seconds(), 0.0, 0.0, {}, {}};
     for (int k = 0; k < int(gl::Kind::Count); ++k) entry.glObjects.push_back(gl::liveObjects(gl::Kind(k)));
     returnFreePages();
     entry.residentMb = residentMb();
     entry.heapMb = heapInUseMb();
+    entry.resident = residentParts();
     entries_[std::string(host.lab().id())].push_back(std::move(entry));
   }
   const double t = seconds();
+  if (const double mb = residentMb(); mb > peakMb_) {
+    peakMb_ = mb;
+    peakSeconds_ = t;
+    peakState_ = describeState(host);
+  }
   if (t >= nextSample_) {
     nextSample_ = t + sampleSeconds_;
     samples_.push_back({t, residentMb(), gl::liveObjectsTotal(), int(host.jobs().status().size()), frames_, steps_});
@@ -191,10 +197,11 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     for (auto& e : entries) byTime.emplace_back(lab, &e);
   std::sort(byTime.begin(), byTime.end(), [](auto& a, auto& b) { return a.second->seconds < b.second->seconds; });
   std::ostringstream entryRows;
-  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects\n";
+  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects,anonymous_mb,file_mb\n";
   for (auto& [lab, e] : byTime)
     entryRows << formatNumber(e->seconds) << "," << lab << "," << formatNumber(e->residentMb) << ","
-              << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << "\n";
+              << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << ","
+              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << "\n";
   const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
   if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
@@ -207,14 +214,14 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   // Memory on lab entries after warm-up (the first fifth of the run): each entry as its growth
   // over that lab's first entry after warm-up, and the least-squares slope of those over time.
   const double warm = seconds() * 0.2;
-  auto growthSlope = [&](double LabEntry::*mb, size_t& n) {
+  auto growthSlope = [&](auto mb, size_t& n) {
     std::vector<std::pair<double, double>> growth;
     for (auto& [lab, entries] : entries_) {
       double base = -1.0;
       for (auto& e : entries) {
         if (e.seconds < warm) continue;
-        if (base < 0) base = e.*mb;
-        growth.emplace_back(e.seconds, e.*mb - base);
+        if (base < 0) base = mb(e);
+        growth.emplace_back(e.seconds, mb(e) - base);
       }
     }
     n = growth.size();
@@ -234,13 +241,17 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
       << formatNumber(last.heapMb) << " MB\n";
   }
   size_t n = 0;
-  const double heapSlope = growthSlope(&LabEntry::heapMb, n);
-  const double slope = growthSlope(&LabEntry::residentMb, n);
+  const double heapSlope = growthSlope([](const LabEntry& e) { return e.heapMb; }, n);
+  const double anonymousSlope = growthSlope([](const LabEntry& e) { return e.resident.anonymousMb; }, n);
+  const double fileSlope = growthSlope([](const LabEntry& e) { return e.resident.fileMb; }, n);
+  const double slope = growthSlope([](const LabEntry& e) { return e.residentMb; }, n);
   if (n >= 3) {
     const bool flat = slope < 1.0;
     s << "soak: on lab entries after warm-up (" << n << "): resident memory slope " << formatNumber(slope)
       << " MB per 10 min" << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)")
       << ", heap in use slope " << formatNumber(heapSlope) << " MB per 10 min\n";
+    s << "soak: the resident slope in parts: anonymous pages " << formatNumber(anonymousSlope)
+      << " MB per 10 min, pages of mapped files (libraries' code) " << formatNumber(fileSlope) << " MB per 10 min\n";
     passed = passed && (flat || !judgeSlope);
   }
   // All samples, whatever state they caught: the range the run went through.
@@ -250,6 +261,9 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     s << "soak: resident memory over the run " << formatNumber(samples_.front().residentMb) << " -> "
       << formatNumber(samples_.back().residentMb) << " MB, peak " << formatNumber(peak) << " MB\n";
   }
+  if (!peakState_.empty())
+    s << "soak: the largest resident set after a frame: " << formatNumber(peakMb_) << " MB at "
+      << formatNumber(peakSeconds_) << " s, drawing " << peakState_ << "\n";
   // GL objects: every entry into a lab must hold no more than the first did.
   for (auto& [lab, entries] : entries_) {
     const auto [least, most] = std::minmax_element(entries.begin(), entries.end(),

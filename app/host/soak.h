@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "host/lab_host.h"
+#include "util/process_memory.h"
 
 namespace shadelab {
 
@@ -63,6 +64,10 @@ class SoakDriver {
   double sampleSeconds_ = 5.0;
   long frames_ = 0, steps_ = 0, nonFiniteFrames_ = 0, glErrors_ = 0, labSwitches_ = 0, shaderEdits_ = 0,
        meshLoads_ = 0, supersedes_ = 0;
+  // The largest resident set seen after any frame, and the state that drew it: a transient of
+  // gigabytes names its configuration so that it can be reproduced and capped.
+  double peakMb_ = 0.0, peakSeconds_ = 0.0;
+  std::string peakState_;
   std::string brokenFile_;   // relative path of the scratch file now broken, or ""
   bool countAfterSwitch_ = false;
   std::vector<std::filesystem::path> meshes_;  // what loadOrDropMesh picks from besides the lab's scenes
@@ -72,6 +77,7 @@ class SoakDriver {
     double seconds;
     double residentMb;           // after the allocator returned its free pages (malloc_trim)
     double heapMb;               // allocated and in use (mallinfo2): tells memory kept from pages kept
+    ResidentParts resident;      // residentMb as anonymous and file-backed pages
     std::vector<int> glObjects;  // live GL objects of each gl::Kind
   };
   std::map<std::string, std::vector<LabEntry>> entries_;  // lab -> its entries in order

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <string>
 
 namespace shadelab {
 
@@ -12,6 +13,25 @@ double residentMb() {
   long pages = 0, resident = 0;
   statm >> pages >> resident;
   return double(resident) * double(::sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+ResidentParts residentParts() {
+  // /proc/self/status: "RssAnon:  123456 kB", "RssFile: ...", "RssShmem: ..." (shared memory
+  // counts as the process's own: a window's shared images are).
+  std::ifstream status("/proc/self/status");
+  ResidentParts parts;
+  for (std::string key; status >> key;) {
+    double kb = 0;
+    if (key == "RssAnon:" || key == "RssShmem:") {
+      status >> kb;
+      parts.anonymousMb += kb / 1024.0;
+    } else if (key == "RssFile:") {
+      status >> kb;
+      parts.fileMb += kb / 1024.0;
+    }
+    status.ignore(1 << 20, '\n');
+  }
+  return parts;
 }
 
 double heapInUseMb() {

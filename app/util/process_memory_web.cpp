@@ -7,6 +7,8 @@ namespace shadelab {
 
 double residentMb() { return double(emscripten_get_heap_size()) / (1024.0 * 1024.0); }
 
+ResidentParts residentParts() { return {residentMb(), 0.0}; }
+
 double heapInUseMb() {
   const struct mallinfo heap = ::mallinfo();
   return double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);

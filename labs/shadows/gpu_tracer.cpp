@@ -35,10 +35,11 @@ glm::vec2 diskSampleAt(int pass, int perAxis) {
 
 }  // namespace
 
-ProgramSpec GpuShadowTracer::programSpec() {
+ProgramSpec GpuShadowTracer::programSpec(bool oneRay) {
   ProgramSpec spec;
   spec.name = "shadows/trace";
   spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace.frag"}};
+  if (oneRay) spec.defines.emplace_back("ONE_RAY", "1");
   return spec;
 }
 
@@ -84,7 +85,7 @@ void GpuShadowTracer::begin(gl::RenderTarget positions, gl::RenderTarget normals
 bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double budgetMs) {
   if (!sum_ || pass_ >= samples_ || !bvh_) return false;
   const auto start = std::chrono::steady_clock::now();
-  Program& prog = slot.get(shaders, programSpec());
+  Program& prog = slot.get(shaders, programSpec(light_.radiusWorld <= 0.0f));
   sum_->bind();
   glViewport(0, 0, sum_->size().x, sum_->size().y);
   glDisable(GL_DEPTH_TEST);

@@ -42,7 +42,9 @@ class GpuShadowTracer {
   // Pixels where a ray visited more nodes than the tree has (as of the last result()): a broken
   // tree or driver; the traversal stops there instead of hanging, and the lab says so.
   size_t gaveUp() const { return gaveUp_; }
-  static ProgramSpec programSpec();
+  // The tracer's program; `oneRay` for a light of no size, whose passes trace the hard ray alone
+  // (ONE_RAY: the walk's loops over a pass's rays fold away).
+  static ProgramSpec programSpec(bool oneRay);
 
  private:
   int revision_ = -1;

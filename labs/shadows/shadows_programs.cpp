@@ -88,7 +88,7 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard), depthSpec(true, false, ShadowFilter::Hard),
                                   depthSpec(true, true, ShadowFilter::Hard), linesSpec(), blurSpec(),
-                                  GpuShadowTracer::programSpec()};
+                                  GpuShadowTracer::programSpec(false), GpuShadowTracer::programSpec(true)};
   for (const ShadowFilterRow& row : kShadowFilters)
     if (isMomentFilter(row.value)) all.push_back(depthSpec(false, false, row.value));
   ShadowsParams p;
