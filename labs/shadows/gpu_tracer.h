@@ -1,7 +1,7 @@
 // The shadows lab's truth on the GPU: the same question as Embree's (is the key light's centre
 // visible from this pixel's surface, and what fraction of its disk), asked by a fragment shader
 // that walks a BVH of the scene's triangles (shaders/shadows/trace.frag). One pass adds one
-// sample of the disk to every pixel (the first), then up to eight, so the area truth converges pass
+// sample of the disk to every pixel (the first), then up to sixteen, so the area truth converges pass
 // by pass, in the window between frames, while its standard error shrinks; after samplesPerAxis^2
 // samples it is the Embree truth's estimator, sample for sample. Needs no Embree: the browser's
 // truth too.

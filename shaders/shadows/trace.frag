@@ -19,8 +19,8 @@ uniform int u_lightType;           // 0 directional, else a position (spot, poin
 uniform vec3 u_lightPosition;
 uniform vec3 u_lightDirection;     // from the light into the scene
 uniform float u_lightRadius;       // world units (directional: tangent of the angular radius)
-uniform vec2 u_disks[8];           // this pass's points of the unit disk
-uniform int u_diskCount;           // how many of them (1..8)
+uniform vec2 u_disks[16];          // this pass's points of the unit disk
+uniform int u_diskCount;           // how many of them (1..16)
 uniform int u_pass;
 uniform float u_epsilon;           // lifts ray origins off their surface along the normal
 uniform int u_nodeCount;           // where the walk ends
@@ -58,7 +58,7 @@ bool hitsTriangle(vec3 a, vec3 e1, vec3 e2, vec3 origin, vec3 dir, float tMax) {
 }
 
 // The rays of one pixel's pass, all from one origin: the hard ray (pass 0) and the disk samples.
-#define MAX_RAYS 9
+#define MAX_RAYS 17
 vec3 g_dir[MAX_RAYS];
 vec3 g_invDir[MAX_RAYS];
 float g_tMax[MAX_RAYS];
