@@ -55,6 +55,11 @@ drive measure "lab=shading&measure" --wait-console "measured shading"
 grep -qE "measured shading \(defaults\), truth: .*rmse=[0-9]" "$out/measure.log" ||
   { cat "$out/measure.log"; echo "Measure gave no number in the page"; exit 1; }
 grep -o "measured shading.*" "$out/measure.log"
+# The shadows lab's truth in the page is the GPU tracer (no Embree there): both truths come back.
+drive measure-shadows "lab=shadows&measure" --wait-console "measured shadows"
+grep -qE "measured shadows .*truth: ray-traced on the GPU: .*visibility_rmse_hard=[0-9].*visibility_rmse_area=[0-9]" \
+  "$out/measure-shadows.log" || { cat "$out/measure-shadows.log"; echo "the shadows truth gave no number in the page"; exit 1; }
+grep -o "measured shadows.*" "$out/measure-shadows.log"
 
 # F12 in the page saves (and offers as downloads) the frame and its preset; the desktop renders the
 # preset again, and the two frames agree: the same sources, shaders and numbers on both.
