@@ -172,6 +172,11 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
     entries_[std::string(host.lab().id())].push_back(std::move(entry));
   }
   const double t = seconds();
+  if (t - lastFrameAt_ > slowestSeconds_) {
+    slowestSeconds_ = t - lastFrameAt_;
+    slowestState_ = describeState(host);
+  }
+  lastFrameAt_ = t;
   if (const double mb = residentMb(); mb > peakMb_) {
     peakMb_ = mb;
     peakSeconds_ = t;
@@ -264,6 +269,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   if (!peakState_.empty())
     s << "soak: the largest resident set after a frame: " << formatNumber(peakMb_) << " MB at "
       << formatNumber(peakSeconds_) << " s, drawing " << peakState_ << "\n";
+  if (!slowestState_.empty())
+    s << "soak: the longest step and frame: " << formatNumber(slowestSeconds_) << " s, ending in " << slowestState_ << "\n";
   // GL objects: every entry into a lab must hold no more than the first did.
   for (auto& [lab, entries] : entries_) {
     const auto [least, most] = std::minmax_element(entries.begin(), entries.end(),

@@ -68,6 +68,9 @@ class SoakDriver {
   // gigabytes names its configuration so that it can be reproduced and capped.
   double peakMb_ = 0.0, peakSeconds_ = 0.0;
   std::string peakState_;
+  // The longest wait between two frames (a step and its frame), and the state that ended it.
+  double lastFrameAt_ = 0.0, slowestSeconds_ = 0.0;
+  std::string slowestState_;
   std::string brokenFile_;   // relative path of the scratch file now broken, or ""
   bool countAfterSwitch_ = false;
   std::vector<std::filesystem::path> meshes_;  // what loadOrDropMesh picks from besides the lab's scenes

@@ -48,13 +48,14 @@ double ShadowMap::bytesOf(const MapShape& shape) {
   return texels * (4.0 + moments * (shape.momentMips ? 4.0 / 3.0 : 1.0)) + scratch;
 }
 
-int ShadowMap::ensure(const MapShape& shape) {
-  if (texture_ && shape == requested_) return shape_.size;
+int ShadowMap::ensure(const MapShape& shape, double budgetBytes) {
+  if (texture_ && shape == requested_ && budgetBytes == requestedBudget_) return shape_.size;
   release();
   requested_ = shape;
+  requestedBudget_ = budgetBytes;
   gl::drainErrors();  // errors from before are not this allocation's
   for (MapShape attempt = shape; attempt.size >= 256; attempt.size /= 2) {
-    if (bytesOf(attempt) > kBudgetBytes && attempt.size > 256) continue;
+    if (bytesOf(attempt) > budgetBytes && attempt.size > 256) continue;
     if (allocate(attempt)) return attempt.size;
     release();
   }

@@ -33,13 +33,14 @@ struct MapShape {
 
 class ShadowMap {
  public:
-  // (Re)allocates only when the shape changes. Where the shape needs more than kBudgetBytes (an
-  // 8192^2 cube or four cascades of RGBA32F moments are gigabytes: a software renderer takes them
-  // from the machine's memory, which a laptop may not have) or the driver cannot allocate it,
-  // halves the size until it fits and returns the size it got: shape.size, a smaller one, or 0
-  // (not even 256^2; no map then).
-  int ensure(const MapShape& shape);
+  // (Re)allocates only when the shape or the budget changes. Where the shape needs more than
+  // `budgetBytes` (an 8192^2 cube or four cascades of RGBA32F moments are gigabytes: a software
+  // renderer takes them from the machine's memory, which a laptop may not have) or the driver
+  // cannot allocate it, halves the size until it fits and returns the size it got: shape.size, a
+  // smaller one, or 0 (not even 256^2; no map then). The lab's maps share kBudgetBytes.
+  int ensure(const MapShape& shape, double budgetBytes);
   static constexpr double kBudgetBytes = 2.0 * 1024 * 1024 * 1024;
+  double bytes() const { return texture_ ? bytesOf(shape_) : 0.0; }  // what the map holds now
   // Draws every instance's depth (and moments) from `light` into `layer`. `program` is the depth
   // program variant for this map (CUBE_MAP for a one-pass cube, CUBE_FACE for six passes,
   // MOMENTS for a filtered map).
@@ -71,7 +72,8 @@ class ShadowMap {
                                                 // every frame makes drivers revalidate the framebuffer)
   gl::Sampler raw_, compare_, momentSampler_;
   bool allocate(const MapShape& shape);  // false (and a GL error drained) when the driver refuses
-  MapShape requested_;  // what ensure() was last asked for
+  MapShape requested_;  // what ensure() was last asked for, and within what
+  double requestedBudget_ = 0.0;
   MapShape shape_;      // what was allocated: requested_, perhaps smaller
   int wrapBorder_ = -1;  // the samplers' wrap mode as last set: 1 border, 0 edge
 };

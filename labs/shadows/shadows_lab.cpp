@@ -265,23 +265,25 @@ static ViewVolume viewVolume(const Frame& frame) {
   return v;
 }
 
-bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* which) {
-  const int got = map.ensure(shape);
+bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* which, double budgetBytes) {
+  const int got = map.ensure(shape, budgetBytes);
   if (got == shape.size) return true;
-  auto bytes = [](const MapShape& s) {
-    const double mib = ShadowMap::bytesOf(s) / double(1 << 20);
+  auto bytes = [](double b) {
+    const double mib = b / double(1 << 20);
     char text[32];
     std::snprintf(text, sizeof text, mib >= 1024.0 ? "%.1f GiB" : "%.0f MiB", mib >= 1024.0 ? mib / 1024.0 : mib);
     return std::string(text);
   };
-  const std::string asked = std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes(shape) + ")";
+  const std::string asked = std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes(ShadowMap::bytesOf(shape)) + ")";
   MapShape drawn = shape;
   drawn.size = got;
-  const std::string instead = "; drawing at " + std::to_string(got) + "^2 (" + bytes(drawn) +
+  const std::string instead = "; drawing at " + std::to_string(got) + "^2 (" + bytes(ShadowMap::bytesOf(drawn)) +
                               ") instead: pick a smaller map size, fewer cascades or a depth-only filter";
   static_assert(ShadowMap::kBudgetBytes == 2.0 * 1024 * 1024 * 1024, "the message below names the budget");
-  if (got && ShadowMap::bytesOf(shape) > ShadowMap::kBudgetBytes)
-    mapWarnings_.push_back("a " + asked + " is over the lab's 2 GiB budget for shadow maps" + instead);
+  const double othersTake = ShadowMap::kBudgetBytes - budgetBytes;
+  if (got && ShadowMap::bytesOf(shape) > budgetBytes)
+    mapWarnings_.push_back("a " + asked + " is over the lab's 2 GiB budget for shadow maps" +
+                           (othersTake > 0.0 ? " (the key light's maps take " + bytes(othersTake) + " of it)" : "") + instead);
   else
     mapWarnings_.push_back(got ? "the driver could not allocate a " + asked + instead
                                : "the driver could not allocate even a 256^2 " + std::string(which) +
@@ -294,7 +296,7 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
   const ShadowFilter filter = effectiveFilterOf(params);
   const int layers = std::max<int>(int(cascades_.size()), 1);
   if (!ensureMap(keyMap_, {cube, params.map.size(), layers, format, cube ? 0u : momentFormat(filter), params.filter.momentMips},
-                 "key"))
+                 "key", ShadowMap::kBudgetBytes))
     return;
   const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
@@ -345,7 +347,10 @@ void ShadowsLab::render(Frame& frame) {
   }
   const bool fillMapNeeded = params.fill.on && params.fill.casts && !gbuffer &&
                              (!viewIsDepthMap(params.view.mode) || params.view.depthLight == 1);
-  if (fillMapNeeded && ensureMap(fillMap_, {false, params.map.size(), 1, format, momentFormat(filter), params.filter.momentMips}, "fill")) {
+  // The fill light's map gets what the key light's leave of the lab's budget.
+  const double fillBudget = ShadowMap::kBudgetBytes - (params.key.casts ? keyMap_.bytes() : 0.0);
+  if (fillMapNeeded && ensureMap(fillMap_, {false, params.map.size(), 1, format, momentFormat(filter), params.filter.momentMips},
+                                 "fill", fillBudget)) {
     const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
     {
       auto pass = frame.pass("shadow map: fill spot " + size +

@@ -139,6 +139,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   // The key light's maps in the last frame: one, or one per cascade (tests, the Cascades panel).
   const std::vector<Cascade>& cascades() const { return cascades_; }
   const ShadowMap& keyMap() const { return keyMap_; }
+  const ShadowMap& fillMap() const { return fillMap_; }
   // Every program the current settings can draw with (a subset of allPrograms()'s, as tests check).
   std::vector<ProgramSpec> currentPrograms() const;
   // The unit-disk samples the shaders get for `count` taps (8, 16, 32, 64).
@@ -173,7 +174,9 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   std::vector<std::string> mapWarnings_;    // maps the driver could only allocate smaller, this frame
   // Allocates `map` for `shape`; false when no map could be had. A smaller map than asked is
   // drawn with a warning naming both sizes.
-  bool ensureMap(ShadowMap& map, const MapShape& shape, const char* which);
+  // `map` allocated for `shape` within `budgetBytes` (what the lab's other maps leave of
+  // ShadowMap::kBudgetBytes); a warning when it is drawn smaller than asked.
+  bool ensureMap(ShadowMap& map, const MapShape& shape, const char* which, double budgetBytes);
   // The size a map was allocated at (the texel size the shaders use), or the asked size if none.
   int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.map.size(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running

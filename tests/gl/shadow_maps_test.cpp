@@ -272,3 +272,27 @@ TEST(ShadowMaps, AMapOverTheBudgetIsDrawnSmallerAndSaysSo) {
   EXPECT_LT(ShadowMap::bytesOf({false, 8192, 4, GL_DEPTH_COMPONENT24, 0, false}), ShadowMap::kBudgetBytes);  // depth alone fits
   EXPECT_EQ(gl::drainErrors(), "");
 }
+
+// The budget is the lab's, not each map's: a casting fill light's map gets what the key light's
+// leaves (two 8192^2 VSM maps, 1.4 GiB each, were 2.9 GB between them).
+TEST(ShadowMaps, TheKeyAndFillMapsShareTheBudget) {
+  auto host = test::labHost("shadows", "shadow-test",
+                            {"shadows.light_type=spot", "shadows.filter=vsm", "shadows.map_size=8192",
+                             "shadows.fill_light=on", "shadows.fill_casts=on"});
+  host->renderFrame({160, 90});
+  const ShadowsLab& lab = shadowsOf(*host);
+  EXPECT_EQ(lab.keyMap().size(), 8192) << "the key light's map fits the budget alone";
+  EXPECT_LT(lab.fillMap().size(), 8192);
+  EXPECT_LE(lab.keyMap().bytes() + lab.fillMap().bytes(), ShadowMap::kBudgetBytes);
+  bool said = false;
+  for (const std::string& w : host->warnings())
+    said |= w.find("fill shadow map") != std::string::npos && w.find("the key light's maps take") != std::string::npos;
+  EXPECT_TRUE(said) << "the fill light's smaller map is named, with what the key light's take";
+  host->set("shadows.fill_casts=off");
+  host->renderFrame({160, 90});
+  host->set("shadows.fill_casts=on");
+  host->set("shadows.map_size=2048");
+  host->renderFrame({160, 90});
+  EXPECT_EQ(lab.fillMap().size(), 2048) << "within the budget again, the fill light's map is drawn as asked";
+  EXPECT_EQ(gl::drainErrors(), "");
+}
