@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "lab/technique.h"
 #include "labs/filtering/filtering_scenes.h"
@@ -115,7 +116,14 @@ void FilteringLab::visitParams(ParamVisitor& v) {
                "shimmer."}, p.animate);
 }
 
-bool FilteringLab::inShader() const { return params.inShader || !rowOf(kTexelFilters, params.filter).inHardware; }
+bool FilteringLab::inShader() const {
+  return params.inShader || !rowOf(kTexelFilters, params.filter).inHardware || anisotropyMovedToShader();
+}
+
+bool FilteringLab::anisotropyMovedToShader() const {
+  return slowDriverAnisotropy_ && !params.inShader && rowOf(kTexelFilters, params.filter).inHardware &&
+         anisotropy() > 1 && (params.manualLevel || params.lodBias < 0.0f);
+}
 
 SceneNeeds FilteringLab::needs() const {
   SceneNeeds n;
@@ -173,6 +181,8 @@ std::string FilteringLab::setup(LabContext& ctx) {
   probeTarget_ = gl::RenderTarget::create({2, 2}, GL_RGBA32F);
   glGetFloatv(GL_MAX_TEXTURE_LOD_BIAS, &maxBias_);
   anisotropyLimit_ = gl::maxAnisotropy();
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  slowDriverAnisotropy_ = renderer && std::strstr(renderer, "llvmpipe");
   const uint8_t white[4] = {255, 255, 255, 255};
   gl::SamplerState s;
   s.minFilter = s.magFilter = GL_NEAREST;

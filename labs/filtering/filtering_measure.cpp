@@ -81,6 +81,10 @@ std::vector<std::string> FilteringLab::warnings() const {
   if (p.anisotropy > 1 && p.mipmaps == MipSelection::Off)
     w.push_back("anisotropic filtering picks finer mip levels for its probes; with mip levels off it has none to "
                 "pick, so it is left out (every probe would read level 0: the same picture at many times the cost)");
+  if (anisotropyMovedToShader())
+    w.push_back("llvmpipe's anisotropic filtering takes about twice as long for each level finer than the "
+                "footprint (a negative LOD bias or a chosen level): seconds a frame here, so the probes are the "
+                "shader's (in_shader=on) instead of the driver's");
   if (hardware && anisotropyLimit_ > 0.0f && float(p.anisotropy) > std::max(anisotropyLimit_, 1.0f))
     w.push_back("anisotropy " + std::to_string(p.anisotropy) + "x clamped to the driver's limit of " +
                 formatNumber(std::max(anisotropyLimit_, 1.0f)) + "x");
