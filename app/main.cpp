@@ -7,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "util/process_memory.h"
 #ifdef SHADELAB_HAS_WINDOW
 #include "ui/window_app.h"
 #endif
@@ -89,6 +90,7 @@ int run(int argc, char** argv) {
 // What no command could handle (a render target the driver cannot allocate) ends the run with one
 // line and a non-zero exit, never an abort.
 int main(int argc, char** argv) {
+  shadelab::keepLargeBlocksApart();
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {

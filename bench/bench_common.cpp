@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "context/gl_context.h"
+#include "util/process_memory.h"
 
 namespace shadelab {
 
@@ -45,6 +46,7 @@ void depthMapSampling(unsigned target) {
 using namespace shadelab;
 
 int main(int argc, char** argv) {
+  keepLargeBlocksApart();  // the allocator as the application sets it
   benchmark::Initialize(&argc, argv);
   const char* backend = std::getenv("SHADELAB_BACKEND");
   std::string err;

@@ -41,4 +41,6 @@ double heapInUseMb() {
 
 void returnFreePages() { ::malloc_trim(0); }
 
+void keepLargeBlocksApart() { ::mallopt(M_MMAP_THRESHOLD, 1 << 20); }  // a fixed threshold is never raised
+
 }  // namespace shadelab

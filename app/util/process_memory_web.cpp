@@ -14,6 +14,7 @@ double heapInUseMb() {
   return double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
 }
 
+void keepLargeBlocksApart() {}  // one linear memory: nothing to map apart
 void returnFreePages() {}  // WebAssembly memory only grows
 
 }  // namespace shadelab

@@ -7,12 +7,14 @@
 #include <string>
 
 #include "gl_test.h"
+#include "util/process_memory.h"
 
 namespace shadelab::test {
 GlContext* g_context = nullptr;
 }
 
 int main(int argc, char** argv) {
+  shadelab::keepLargeBlocksApart();  // the allocator as the application sets it
   ::testing::InitGoogleTest(&argc, argv);
   const char* chosen = std::getenv("SHADELAB_BACKEND");
   const std::string backend = chosen ? chosen : "osmesa";
