@@ -25,11 +25,18 @@ std::string Measurer::labelOf(const Settings& settings) {
   return label.empty() ? "defaults" : label;
 }
 
+void Measurer::followLab() {
+  if (labId_ == host_.lab().id()) return;
+  // Another lab: its measurements and truths are its own. Truths are kept for the lab in use
+  // only (up to kCachedTruths images of the view's size; 8 of a full-HD view are 265 MB).
+  history_.clear();
+  truths_.clear();
+  last_.reset();
+  labId_ = std::string(host_.lab().id());
+}
+
 const std::vector<Measurement>& Measurer::history() {
-  if (labId_ != host_.lab().id()) {
-    history_.clear();
-    labId_ = std::string(host_.lab().id());
-  }
+  followLab();
   return history_;
 }
 
@@ -65,6 +72,7 @@ void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const Ima
 }
 
 std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
+  followLab();
   Lab& lab = host_.lab();
   const ReferenceSpec spec = referenceOf(lab);
   if (spec.kind == TruthKind::None)

@@ -51,12 +51,14 @@ class Measurer {
   // This lab's measurements this session, oldest first, without images.
   const std::vector<Measurement>& history();
   void clear() { history_.clear(); }
+  size_t cachedTruths() const { return truths_.size(); }  // truths kept for this lab's next measurements
   // Called on the GL thread for every finished measurement (the window prints a line).
   std::function<void(const Measurement&)> onMeasured;
 
   static constexpr const char* kJobKey = "measure";
 
  private:
+  void followLab();  // a lab switch drops the last lab's measurements and truths
   void finish(Measurement m, const std::vector<std::shared_ptr<const ImageF>>& truths);
   std::shared_ptr<const ImageF> cachedTruth(const std::string& key) const;
   void cacheTruth(const std::string& key, std::shared_ptr<const ImageF> image);

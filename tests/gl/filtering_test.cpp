@@ -197,3 +197,18 @@ TEST(Filtering, AnisotropyAtFineLevelsLeavesLlvmpipesProbesForTheShaders) {
   ASSERT_FALSE(passes.empty());
   EXPECT_EQ(passes.front().name.find("in shader"), std::string::npos) << passes.front().name;
 }
+
+// Truths are cached for the lab in use only: a lab switch lets them go (a full-HD view's eight
+// are 265 MB), as it lets the last lab's measurements go.
+TEST(Filtering, ALabSwitchLetsTheCachedTruthsGo) {
+  auto host = filteringHost({});
+  Measurer measurer(*host);
+  host->renderFrame({160, 90});
+  ASSERT_TRUE(measurer.measureNow({160, 90}, 0.0f, {{"gpu_ms", 1.0}}));
+  EXPECT_GE(measurer.cachedTruths(), 1u);
+  EXPECT_EQ(measurer.history().size(), 1u);
+  ASSERT_EQ(host->selectLab("shading"), "");
+  host->renderFrame({160, 90});
+  EXPECT_TRUE(measurer.history().empty());
+  EXPECT_EQ(measurer.cachedTruths(), 0u);
+}
