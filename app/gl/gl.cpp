@@ -13,13 +13,12 @@ bool loadFunctions(ShlGetProcAddress getProc, const char** missing) {
   return usable;
 }
 
-bool softwareRenderer() {
+bool rendererIs(const char* name) {
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (!renderer) return false;
-  for (const char* name : {"llvmpipe", "softpipe", "SwiftShader"})
-    if (std::strstr(renderer, name)) return true;
-  return false;
+  return renderer && std::strstr(renderer, name);
 }
+
+bool softwareRenderer() { return rendererIs("llvmpipe") || rendererIs("softpipe") || rendererIs("SwiftShader"); }
 
 bool esContext() {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));

@@ -16,6 +16,8 @@ namespace gl {
 // The current context draws in software (llvmpipe, softpipe, SwiftShader): fragment work costs
 // 10-50x a GPU's, so timers and the choice of truth tracer differ.
 bool softwareRenderer();
+// Whether GL_RENDERER names `name` ("llvmpipe"): for a driver's known behaviour.
+bool rendererIs(const char* name);
 
 // An OpenGL ES or WebGL context (the page's): what differs there is asked through the functions below.
 bool esContext();

@@ -260,14 +260,11 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     passed = passed && (flat || !judgeSlope);
   }
   // All samples, whatever state they caught: the range the run went through.
-  if (!samples_.empty()) {
-    double peak = 0;
-    for (auto& x : samples_) peak = std::max(peak, x.residentMb);
+  if (!samples_.empty())
     s << "soak: resident memory over the run " << formatNumber(samples_.front().residentMb) << " -> "
-      << formatNumber(samples_.back().residentMb) << " MB, peak " << formatNumber(peak) << " MB\n";
-  }
-  if (!peakState_.empty())
-    s << "soak: the largest resident set after a frame: " << formatNumber(peakMb_) << " MB at "
+      << formatNumber(samples_.back().residentMb) << " MB\n";
+  if (!peakState_.empty())  // every frame is looked at, not only the samples
+    s << "soak: the largest resident set after a frame (the peak): " << formatNumber(peakMb_) << " MB at "
       << formatNumber(peakSeconds_) << " s, drawing " << peakState_ << "\n";
   if (!slowestState_.empty())
     s << "soak: the longest step and frame: " << formatNumber(slowestSeconds_) << " s, ending in " << slowestState_ << "\n";

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "lab/technique.h"
 #include "labs/filtering/filtering_scenes.h"
@@ -181,8 +180,7 @@ std::string FilteringLab::setup(LabContext& ctx) {
   probeTarget_ = gl::RenderTarget::create({2, 2}, GL_RGBA32F);
   glGetFloatv(GL_MAX_TEXTURE_LOD_BIAS, &maxBias_);
   anisotropyLimit_ = gl::maxAnisotropy();
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  slowDriverAnisotropy_ = renderer && std::strstr(renderer, "llvmpipe");
+  slowDriverAnisotropy_ = gl::rendererIs("llvmpipe");
   const uint8_t white[4] = {255, 255, 255, 255};
   gl::SamplerState s;
   s.minFilter = s.magFilter = GL_NEAREST;
