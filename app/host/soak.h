@@ -51,6 +51,9 @@ class SoakDriver {
   };
   Verdict finish(const std::filesystem::path& csv, bool judgeSlope) const;
   double seconds() const;
+  // A lab was entered and its entry is counted after the next frame: nothing that starts jobs of
+  // its own (the window's Measure) should begin before then.
+  bool countingLabEntry() const { return countAfterSwitch_; }
 
  private:
   void switchLab(LabHost& host);

@@ -396,7 +396,8 @@ bool WindowSession::drawFrame() {
   if (soak) {
     soak->afterFrame(host);
     if (frame % 2 == 0) soak->step(host);
-    if (frame % 97 == 0) app.measure.requested = true;  // Measure pressed now and then; later steps supersede it
+    // Measure pressed now and then (later steps supersede it), never between a lab switch and its count
+    if (frame % 97 == 0 && !soak->countingLabEntry()) app.measure.requested = true;
     if (soak->seconds() >= wopt.soakMinutes * 60.0) {
       const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
       const SoakDriver::Verdict verdict = soak->finish(csv, wopt.soakMinutes >= 10.0);

@@ -3,8 +3,22 @@
 #include <malloc.h>
 #include <unistd.h>
 
+#include <cstddef>
 #include <fstream>
 #include <string>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SHADELAB_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SHADELAB_ASAN 1
+#endif
+#endif
+#ifdef SHADELAB_ASAN
+// The sanitizers' public interface (compiler-rt's sanitizer/allocator_interface.h, which GCC does
+// not install).
+extern "C" size_t __sanitizer_get_current_allocated_bytes();
+#endif
 
 namespace shadelab {
 
@@ -35,8 +49,13 @@ ResidentParts residentParts() {
 }
 
 double heapInUseMb() {
+#ifdef SHADELAB_ASAN
+  // AddressSanitizer's allocator serves malloc; glibc's mallinfo2 then counts nothing.
+  return double(__sanitizer_get_current_allocated_bytes()) / (1024.0 * 1024.0);
+#else
   const struct mallinfo2 heap = ::mallinfo2();
   return double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
+#endif
 }
 
 void returnFreePages() { ::malloc_trim(0); }
