@@ -40,6 +40,7 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
   shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
   labReady_ = true;
+  ++labEntries_;
   const std::string scene = firstScene.empty() ? std::string(lab_->defaultScene()) : firstScene;
   heightMap_.clear();
   const std::string err = rebuildScene(scene, lab_->needs(), true);

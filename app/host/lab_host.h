@@ -85,6 +85,9 @@ class LabHost {
   const std::string& sceneId() const { return sceneId_; }
   // Counts scene loads (a new id or file), not rebuilds for new needs: truth caches key on it.
   int sceneLoads() const { return sceneLoads_; }
+  // Counts lab entries (a lab left and entered again counts twice): what belongs to one stay in a
+  // lab (a measurer's truths) is let go when it changes.
+  int labEntries() const { return labEntries_; }
   const Scene& scene() const { return built_.scene; }
   const GpuScene& gpuScene() const { return built_.gpu; }
   OrbitCamera& camera() { return camera_; }
@@ -125,6 +128,7 @@ class LabHost {
   bool labReady_ = false;
   std::string sceneId_;
   int sceneLoads_ = 0;
+  int labEntries_ = 0;
   // The scene for the current needs and the one built before it: flipping between two sets of
   // needs (a reference's tessellation and the view's) swaps them instead of rebuilding.
   Built built_;

@@ -26,13 +26,14 @@ std::string Measurer::labelOf(const Settings& settings) {
 }
 
 void Measurer::followLab() {
-  if (labId_ == host_.lab().id()) return;
-  // Another lab: its measurements and truths are its own. Truths are kept for the lab in use
-  // only (up to kCachedTruths images of the view's size; 8 of a full-HD view are 265 MB).
+  if (labEntry_ == host_.labEntries()) return;
+  // Another lab (or the same one entered again): its measurements and truths are its own. Truths
+  // are kept for the lab in use only (up to kCachedTruths images of the view's size; 8 of a
+  // full-HD view are 265 MB).
   history_.clear();
   truths_.clear();
   last_.reset();
-  labId_ = std::string(host_.lab().id());
+  labEntry_ = host_.labEntries();
 }
 
 const std::vector<Measurement>& Measurer::history() {
@@ -63,11 +64,9 @@ void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const Ima
   for (auto& c : costs) m.values.push_back(std::move(c));
   if (onMeasured) onMeasured(m);
   history();  // drops another lab's history first
-  Measurement kept = m;
-  kept.image = kept.reference = ImageF{};
-  kept.images.clear();
-  kept.references.clear();
-  history_.push_back(std::move(kept));
+  // The numbers without the images (a copy cleared afterwards would keep each image's buffer:
+  // assigning an empty vector keeps the capacity).
+  history_.push_back(Measurement{m.lab, m.settings, m.label, m.truth, m.values, {}, {}, {}, {}});
   last_ = std::move(m);
 }
 

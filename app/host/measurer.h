@@ -51,6 +51,10 @@ class Measurer {
   // This lab's measurements this session, oldest first, without images.
   const std::vector<Measurement>& history();
   void clear() { history_.clear(); }
+  // After a lab switch, lets the last lab's measurements, truths and images go. start() and
+  // history() call it; a window calls it every frame, so that a lab without a truth (whose panel
+  // never asks for the history) does not keep the last lab's images.
+  void followLab();
   size_t cachedTruths() const { return truths_.size(); }  // truths kept for this lab's next measurements
   // Called on the GL thread for every finished measurement (the window prints a line).
   std::function<void(const Measurement&)> onMeasured;
@@ -58,14 +62,13 @@ class Measurer {
   static constexpr const char* kJobKey = "measure";
 
  private:
-  void followLab();  // a lab switch drops the last lab's measurements and truths
   void finish(Measurement m, const std::vector<std::shared_ptr<const ImageF>>& truths);
   std::shared_ptr<const ImageF> cachedTruth(const std::string& key) const;
   void cacheTruth(const std::string& key, std::shared_ptr<const ImageF> image);
   std::string labelOf(const Settings& settings);
 
   LabHost& host_;
-  std::string labId_;
+  int labEntry_ = -1;  // LabHost::labEntries() when the measurements began
   std::vector<Measurement> history_;
   std::optional<Measurement> last_;  // with images, for measureNow
   std::deque<std::pair<std::string, std::shared_ptr<const ImageF>>> truths_;  // newest first

@@ -393,6 +393,7 @@ bool WindowSession::drawFrame() {
   // 2. the lab's frame (at the viewport size the last layout gave it)
   const float time = float(glfwGetTime());
   const auto& passes = host.renderFrame(app.viewport, time, dt);
+  measurer.followLab();  // after a lab switch, the last lab's truths and images go now
   if (soak) {
     soak->afterFrame(host);
     if (frame % 2 == 0) soak->step(host);

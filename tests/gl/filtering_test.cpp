@@ -198,16 +198,30 @@ TEST(Filtering, AnisotropyAtFineLevelsLeavesLlvmpipesProbesForTheShaders) {
 }
 
 // Truths are cached for the lab in use only: a lab switch lets them go (a full-HD view's eight
-// are 265 MB), as it lets the last lab's measurements go.
+// are 265 MB), as it lets the last lab's measurements go. So does leaving the lab and coming back
+// before anything asked the measurer (a window on a lab without a truth never does).
 TEST(Filtering, ALabSwitchLetsTheCachedTruthsGo) {
   auto host = filteringHost({});
   Measurer measurer(*host);
-  host->renderFrame({160, 90});
-  ASSERT_TRUE(measurer.measureNow({160, 90}, 0.0f, {{"gpu_ms", 1.0}}));
-  EXPECT_GE(measurer.cachedTruths(), 1u);
-  EXPECT_EQ(measurer.history().size(), 1u);
+  auto measure = [&] {
+    host->renderFrame({160, 90});
+    ASSERT_TRUE(measurer.measureNow({160, 90}, 0.0f, {{"gpu_ms", 1.0}}));
+    EXPECT_GE(measurer.cachedTruths(), 1u);
+    EXPECT_EQ(measurer.history().size(), 1u);
+  };
+  measure();
+  for (const Measurement& m : measurer.history())  // the numbers are kept, not the images' memory
+    EXPECT_EQ(m.image.rgba.capacity() + m.reference.rgba.capacity() + m.images.capacity() + m.references.capacity(), 0u);
   ASSERT_EQ(host->selectLab("shading"), "");
   host->renderFrame({160, 90});
   EXPECT_TRUE(measurer.history().empty());
   EXPECT_EQ(measurer.cachedTruths(), 0u);
+
+  ASSERT_EQ(host->selectLab("filtering"), "");
+  measure();
+  ASSERT_EQ(host->selectLab("shading"), "");
+  ASSERT_EQ(host->selectLab("filtering"), "");
+  measurer.followLab();
+  EXPECT_EQ(measurer.cachedTruths(), 0u);
+  EXPECT_TRUE(measurer.history().empty());
 }
