@@ -56,6 +56,7 @@ class SoakDriver {
   bool countingLabEntry() const { return countAfterSwitch_; }
 
  private:
+  void settle(LabHost& host);  // host.settle(), its time left out of the longest step
   void switchLab(LabHost& host);
   void breakOrFixShader(LabHost& host);
   void loadOrDropMesh(LabHost& host);
@@ -71,7 +72,8 @@ class SoakDriver {
   // gigabytes names its configuration so that it can be reproduced and capped.
   double peakMb_ = 0.0, peakSeconds_ = 0.0;
   std::string peakState_;
-  // The longest wait between two frames (a step and its frame), and the state that ended it.
+  // The longest wait between two frames (a step and its frame), and the state that ended it; the
+  // soak's own waits for jobs to end are left out.
   double lastFrameAt_ = 0.0, slowestSeconds_ = 0.0;
   std::string slowestState_;
   std::string brokenFile_;   // relative path of the scratch file now broken, or ""
