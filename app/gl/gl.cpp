@@ -63,12 +63,15 @@ std::string drainErrors() {
 }
 
 void releaseDriverHeldTextures() {
-  // Big enough that every rasteriser thread gets tiles of it (llvmpipe's threads hold their own).
+  // Big enough that every rasteriser thread gets tiles of it (llvmpipe's threads hold their own);
+  // one byte a texel, since the driver then holds these (3 MB; RGBA8 was 11 MB, and whether the
+  // driver held them or the next lab's own came and went with the threads: a step of 11 MB on
+  // some lab entries and not others in the window's soak).
   constexpr int kSide = 512;
   GLuint texture[2] = {0, 0}, framebuffer = 0;
   glGenTextures(2, texture);
   glBindTexture(GL_TEXTURE_2D, texture[0]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSide, kSide, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kSide, kSide, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
   glBindTexture(GL_TEXTURE_2D, 0);
   glGenFramebuffers(1, &framebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -84,7 +87,7 @@ void releaseDriverHeldTextures() {
   constexpr int kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture[1]);
   for (int level = 0; level < kLevels; ++level)
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_RGBA8, kSide >> level, kSide >> level, kLayers, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_R8, kSide >> level, kSide >> level, kLayers, 0, GL_RED, GL_UNSIGNED_BYTE,
                  nullptr);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
   glGenerateMipmap(GL_TEXTURE_2D_ARRAY);

@@ -42,9 +42,9 @@ std::string drainErrors();
 // last, until another texture takes its place. A lab that leaves with a 1 GB shadow map cleared
 // last, or 360 MB of mipmapped moment maps, would hold that memory while the next lab runs. This
 // clears a 512^2 texture through a framebuffer of its own and generates the mipmaps of a 512^2
-// array of eight layers (both deleted again), which moves those references onto them (the driver
-// then holds about 11 MB of them). Smaller ones did not always reach every rasteriser thread: at
-// 128^2 half the runs kept the old 360 MB. The host
+// array of eight layers (both deleted again, both one byte a texel), which moves those references
+// onto them (the driver then holds about 3 MB of them). Smaller ones did not always reach every
+// rasteriser thread: at 128^2 half the runs kept the old 360 MB. The host
 // calls it when a lab is torn down. Leaves framebuffer 0 and no texture bound on the active unit.
 void releaseDriverHeldTextures();
 

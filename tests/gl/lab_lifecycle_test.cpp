@@ -65,7 +65,8 @@ TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
 // host's "previous build", found by the soak.)
 // The memory a lab's textures took comes back when it goes: llvmpipe would otherwise keep textures
 // alive after the lab deleted them (gl::releaseDriverHeldTextures; here the cascades' EVSM moment
-// maps, four layers of 2048^2 RGBA32F with their mips: 357 MB, and the depth maps).
+// maps, four layers of 2048^2 RGBA32F with their mips: 357 MB, and the depth maps), and what the
+// driver then holds instead is small (its RGBA8 stand-ins held 11 MB).
 TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
   LabHost host(test::builtinShaders());
   auto heapAfterFrame = [&] {
@@ -83,7 +84,7 @@ TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
   const double after = heapAfterFrame();
   std::printf("heap in use: %.1f MB, %.1f MB with the moment maps, %.1f MB after leaving\n", before, inShadows, after);
   EXPECT_GT(inShadows, before + 300.0);
-  EXPECT_LT(after, before + 16.0);
+  EXPECT_LT(after, before + 6.0);
 }
 
 TEST(Lifecycle, EnteringALabKeepsNothingOfTheLabBefore) {
