@@ -58,6 +58,13 @@ std::string describeState(LabHost& host) {
          settingsAsArgs(host.lab().id(), host.currentSettings());
 }
 
+// A CSV field between double quotes: a quote in it (a mesh's file name) doubled.
+std::string quotable(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out;
+}
+
 }  // namespace
 
 SoakDriver::SoakDriver(fs::path scratch, unsigned seed)
@@ -119,6 +126,7 @@ void SoakDriver::settle(LabHost& host) {
 void SoakDriver::switchLab(LabHost& host) {
   const auto ids = labIds();
   const std::string id = ids[std::uniform_int_distribution<size_t>(0, ids.size() - 1)(rng_)];
+  leftState_ = describeState(host);
   if (auto err = host.selectLab(id); !err.empty()) problems_.push_back("switch to " + id + ": " + err);
   ++labSwitches_;
   countAfterSwitch_ = true;  // counted after the new lab's first frame
@@ -173,7 +181,7 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
     // The lab entry is counted once its jobs are done, the same state every time.
     if (host.jobs().busy()) settle(host);
     countAfterSwitch_ = false;
-    LabEntry entry{seconds(), 0.0, 0.0, {}, {}};
+    LabEntry entry{seconds(), 0.0, 0.0, {}, {}, leftState_};
     for (int k = 0; k < int(gl::Kind::Count); ++k) entry.glObjects.push_back(gl::liveObjects(gl::Kind(k)));
     returnFreePages();
     entry.residentMb = residentMb();
@@ -212,11 +220,12 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     for (auto& e : entries) byTime.emplace_back(lab, &e);
   std::sort(byTime.begin(), byTime.end(), [](auto& a, auto& b) { return a.second->seconds < b.second->seconds; });
   std::ostringstream entryRows;
-  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects,anonymous_mb,file_mb\n";
+  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects,anonymous_mb,file_mb,left\n";
   for (auto& [lab, e] : byTime)
     entryRows << formatNumber(e->seconds) << "," << lab << "," << formatNumber(e->residentMb) << ","
               << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << ","
-              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << "\n";
+              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << ",\""
+              << quotable(e->left) << "\"\n";
   const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
   if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
@@ -269,6 +278,25 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
       << " MB per 10 min, pages of mapped files (libraries' code) " << formatNumber(fileSlope) << " MB per 10 min\n";
     passed = passed && (flat || !judgeSlope);
   }
+  // The entry furthest above its lab's median heap, and the lab it came from: memory the lab
+  // before kept past the switch.
+  const LabEntry* outlier = nullptr;
+  double above = 0.0;
+  std::string outlierLab;
+  for (auto& [lab, entries] : entries_) {
+    std::vector<double> heap;
+    for (auto& e : entries) heap.push_back(e.heapMb);
+    std::nth_element(heap.begin(), heap.begin() + std::ptrdiff_t(heap.size() / 2), heap.end());
+    for (auto& e : entries)
+      if (e.heapMb - heap[heap.size() / 2] > above) {
+        above = e.heapMb - heap[heap.size() / 2];
+        outlier = &e;
+        outlierLab = lab;
+      }
+  }
+  if (outlier)
+    s << "soak: the lab entry furthest above its lab's median heap: " << outlierLab << " at "
+      << formatNumber(outlier->seconds) << " s, " << formatNumber(above) << " MB above, after " << outlier->left << "\n";
   // All samples, whatever state they caught: the range the run went through.
   if (!samples_.empty())
     s << "soak: resident memory over the run " << formatNumber(samples_.front().residentMb) << " -> "

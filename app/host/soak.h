@@ -78,6 +78,7 @@ class SoakDriver {
   std::string slowestState_;
   std::string brokenFile_;   // relative path of the scratch file now broken, or ""
   bool countAfterSwitch_ = false;
+  std::string leftState_;  // describeState() just before the last lab switch
   std::vector<std::filesystem::path> meshes_;  // what loadOrDropMesh picks from besides the lab's scenes
   // Each time a lab is entered, after its first frame (a fresh lab, its default scene): the same
   // state every time, so what grows here is kept, not the current scene's size.
@@ -87,6 +88,8 @@ class SoakDriver {
     double heapMb;               // allocated and in use (mallinfo2): tells memory kept from pages kept
     ResidentParts resident;      // residentMb as anonymous and file-backed pages
     std::vector<int> glObjects;  // live GL objects of each gl::Kind
+    std::string left;            // the state of the lab left for this one: an entry far above the
+                                 // lab's others names what to reproduce
   };
   std::map<std::string, std::vector<LabEntry>> entries_;  // lab -> its entries in order
   std::vector<Sample> samples_;
