@@ -1,5 +1,7 @@
 #include "host/soak.h"
 
+#include "grade/class_report.h"  // csvField
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -56,13 +58,6 @@ double leastSquaresSlope(const std::vector<std::pair<double, double>>& xy) {
 std::string describeState(LabHost& host) {
   return "scene " + host.sceneId() + " --lab " + std::string(host.lab().id()) + " " +
          settingsAsArgs(host.lab().id(), host.currentSettings());
-}
-
-// A CSV field between double quotes: a quote in it (a mesh's file name) doubled.
-std::string quotable(const std::string& text) {
-  std::string out;
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out;
 }
 
 }  // namespace
@@ -224,8 +219,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   for (auto& [lab, e] : byTime)
     entryRows << formatNumber(e->seconds) << "," << lab << "," << formatNumber(e->residentMb) << ","
               << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << ","
-              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << ",\""
-              << quotable(e->left) << "\"\n";
+              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << ","
+              << csvField(e->left) << "\n";
   const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
   if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
