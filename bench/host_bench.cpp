@@ -4,6 +4,9 @@
 // program? Measured from just before the write to the end of the first frame whose program build
 // count went up, through the real path: inotify -> debounce -> preprocess -> compile -> link -> draw.
 // BM_CompileProgram: the compile + link part of that, for one program.
+// BM_ImageBuffer/<huge pages>: a 1280x720 RGBA float buffer allocated and filled, as a read-back
+// or a truth is, with the allocator as the application sets it (keepLargeBlocksApart): a plain
+// vector (0) or largeBuffer, which asks for huge pages (1).
 #include <benchmark/benchmark.h>
 
 #include <unistd.h>
@@ -12,6 +15,7 @@
 #include <fstream>
 
 #include "bench_common.h"
+#include "util/process_memory.h"
 #include "util/read_file.h"
 
 namespace fs = std::filesystem;
@@ -50,5 +54,16 @@ void BM_CompileProgram(benchmark::State& state) {
   for (auto _ : state) host.shaders().rebuild(p, /*force=*/true);
 }
 BENCHMARK(BM_CompileProgram)->Unit(benchmark::kMillisecond)->Iterations(10);
+
+void BM_ImageBuffer(benchmark::State& state) {
+  const size_t count = size_t(1280) * 720 * 4;
+  for (auto _ : state) {
+    std::vector<float> image = state.range(0) ? largeBuffer<float>(count) : std::vector<float>(count);
+    for (size_t i = 0; i < count; i += 4) image[i] = float(i);
+    benchmark::DoNotOptimize(image.data());
+  }
+  state.SetLabel(state.range(0) ? "largeBuffer (huge pages asked for)" : "std::vector");
+}
+BENCHMARK(BM_ImageBuffer)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
 }  // namespace

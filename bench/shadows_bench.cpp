@@ -11,6 +11,7 @@
 
 #include "bench_common.h"
 #include "labs/shadows/shadow_options.h"
+#include "labs/shadows/shadows_lab.h"
 
 using namespace shadelab;
 
@@ -202,5 +203,36 @@ void BM_ShadowTruth(benchmark::State& state) {
   state.SetLabel(std::string(gpu ? "gpu" : "embree") + (area ? ", hard + area (64 samples)" : ", hard only"));
 }
 BENCHMARK(BM_ShadowTruth)->ArgsProduct({{0, 1}, {0, 1}})->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// BM_GpuTruthShape/<samples a draw>/<walk width>/<leaf size>/<cone>: the GPU tracer's 64-sample
+// area truth of the default 1280x720 frame (as BM_ShadowTruth/1/1), cut into draws, walks and
+// leaves of each size, with or without the cone test (GpuTraceShape). Wall ms of the whole truth (g-buffer, trace, read-back); counter
+// trace_ms: the trace's own steps.
+void BM_GpuTruthShape(benchmark::State& state) {
+  LabHost host(ShaderSearchPath({builtinShaderDir()}));
+  host.selectLab("shadows");
+  host.set("shadows.truth_tracer=gpu");
+  auto& lab = dynamic_cast<ShadowsLab&>(host.lab());
+  const GpuTraceShape shape{int(state.range(0)), int(state.range(1)), int(state.range(2)), state.range(3) != 0};
+  lab.setTracerShape(shape);
+  host.renderFrame({1280, 720});
+  host.renderReference({1280, 720});  // compiles the program, builds the BVH
+  double traceMs = 0.0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const ImageF truth = host.renderReference({1280, 720});
+    benchmark::DoNotOptimize(truth.rgba.data());
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    traceMs += lab.gpuTracer() ? lab.gpuTracer()->traceMs() : 0.0;
+  }
+  state.counters["trace_ms"] = traceMs / double(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  state.SetLabel(std::to_string(shape.samplesPerDraw) + " samples a draw, walks of " + std::to_string(shape.walkWidth) +
+                 ", leaves of " + std::to_string(shape.leafSize) + (shape.coneCull ? ", cone" : ""));
+}
+BENCHMARK(BM_GpuTruthShape)
+    ->ArgsProduct({{16}, {4, 8, 16}, {1, 2, 4}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 }  // namespace

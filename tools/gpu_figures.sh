@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The figures a GPU gives, through EGL (a GPU server with no display): every lab's default frame
 # at 1920x1080 with each pass's GPU time, the shadows lab's truth by Embree and by the GPU tracer
-# side by side (BM_ShadowTruth), the shadows frame beside a bare two-pass program, and the GL
+# side by side (BM_ShadowTruth), the GPU tracer's draws and walks of each size (BM_GpuTruthShape),
+# the shadows frame beside a bare two-pass program, and the GL
 # tests that hold the GPU tracer to Embree, run on the GPU's own driver.
 #
 #   tools/gpu_figures.sh [BUILD_DIR] [OUT_DIR]      (defaults: build, gpu-figures)
@@ -30,7 +31,9 @@ for lab in shading shadows surface denoise filtering; do
   step "frame-$lab" "$build/shadelab" render --backend egl --lab "$lab" --size 1920x1080 --frames 20 \
     --out "$out/$lab.png"
 done
-step bench-shadow-truth "$build/bench/shadelab_bench" --benchmark_filter='BM_ShadowTruth' \
+step bench-shadow-truth "$build/bench/shadelab_bench" --benchmark_filter='BM_ShadowTruth|BM_ImageBuffer' \
+  --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+step bench-gpu-truth-shape "$build/bench/shadelab_bench" --benchmark_filter='BM_GpuTruthShape' \
   --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 step bench-shadow-frame "$build/bench/shadelab_bench" \
   --benchmark_filter='BM_ShadowFrameworkOverhead|BM_ShadowFilter/0/' --benchmark_repetitions=3 \

@@ -1,6 +1,10 @@
 // The process's memory, for the soak's records: what the system holds for it and what the
-// allocator has handed out. Linux reads /proc and glibc; the page, its WebAssembly heap.
+// allocator has handed out; and image-sized buffers that are cheap to fill. Linux reads /proc and
+// glibc; the page, its WebAssembly heap.
 #pragma once
+
+#include <cstddef>
+#include <vector>
 
 namespace shadelab {
 
@@ -21,5 +25,21 @@ void returnFreePages();   // the allocator gives its free pages back (before a r
 // blocks, and the pages they leave cannot be returned: over a 30-minute soak the resident set
 // kept 47 MB more than the heap held in use, 12 MB with the threshold fixed (10-minute runs).
 void keepLargeBlocksApart();
+
+// Asks the kernel to back [data, data + bytes) with huge pages where it offers them on request
+// (transparent huge pages in "madvise" mode, as on Debian); nothing for a block under 2 MiB, or on
+// the page.
+void adviseHugePages(void* data, size_t bytes);
+// `count` zeroed values for an image-sized buffer filled at once (a read-back, a truth). Such a
+// block is mapped afresh each time (keepLargeBlocksApart), and each of its small pages faults on
+// first touch: a 1280x720 RGBA float image is 3,600 of them (BM_ImageBuffer measures both).
+template <typename T>
+std::vector<T> largeBuffer(size_t count) {
+  std::vector<T> values;
+  values.reserve(count);
+  adviseHugePages(values.data(), count * sizeof(T));
+  values.resize(count);
+  return values;
+}
 
 }  // namespace shadelab

@@ -1,9 +1,11 @@
 #include "util/process_memory.h"
 
 #include <malloc.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <fstream>
 #include <string>
 
@@ -61,5 +63,12 @@ double heapInUseMb() {
 void returnFreePages() { ::malloc_trim(0); }
 
 void keepLargeBlocksApart() { ::mallopt(M_MMAP_THRESHOLD, 1 << 20); }  // a fixed threshold is never raised
+
+void adviseHugePages(void* data, size_t bytes) {
+  constexpr uintptr_t kHugePage = uintptr_t(2) << 20, kPage = 4096;
+  if (!data || bytes < kHugePage) return;
+  const uintptr_t begin = (uintptr_t(data) + kPage - 1) & ~(kPage - 1), end = (uintptr_t(data) + bytes) & ~(kPage - 1);
+  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // advice: a refusal costs nothing
+}
 
 }  // namespace shadelab

@@ -16,5 +16,6 @@ double heapInUseMb() {
 
 void keepLargeBlocksApart() {}  // one linear memory: nothing to map apart
 void returnFreePages() {}  // WebAssembly memory only grows
+void adviseHugePages(void*, size_t) {}  // no pages to choose
 
 }  // namespace shadelab

@@ -1,22 +1,19 @@
 #include "labs/shadows/gpu_tracer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <thread>
 
 #include "labs/shadows/ray_visibility.h"
+#include "util/process_memory.h"
 
 namespace shadelab {
 namespace {
 
 constexpr int kTextureWidthLog2 = 10;  // 1024 texels per row of the BVH textures (within every GL 3.3 and WebGL2 limit)
-// Disk samples a draw after the first (trace.frag's u_disks): the first pass is one sample, so
-// that a whole first estimate is on screen soon where a pass is slow. A draw's rays walk the BVH
-// together, so more of them a draw read the tree fewer times: 16 a draw traced the 64-sample truth
-// in 0.71 of the time 8 took (llvmpipe; BM_ShadowTruth/1/1).
-constexpr int kSamplesPerDraw = 16;
-
 gl::Texture2D floatTexture(const std::vector<glm::vec4>& texels, int width) {
   const int rows = std::max(1, int((texels.size() + size_t(width) - 1) / size_t(width)));
   std::vector<glm::vec4> padded(size_t(width) * size_t(rows), glm::vec4(0.0f));
@@ -37,11 +34,26 @@ glm::vec2 diskSampleAt(int pass, int perAxis) {
 
 }  // namespace
 
-ProgramSpec GpuShadowTracer::programSpec(bool oneRay) {
+GpuShadowTracer::GpuShadowTracer(Shape shape) : shape_(shape) {
+  shape_.samplesPerDraw = std::clamp(shape_.samplesPerDraw, 1, kMaxSamplesPerDraw);
+  shape_.walkWidth = std::clamp(shape_.walkWidth, 1, kMaxSamplesPerDraw);  // a draw traces 16 rays at most
+  shape_.leafSize = std::clamp(shape_.leafSize, 1, 64);
+}
+
+ProgramSpec GpuShadowTracer::resolveSpec() {
+  ProgramSpec spec;
+  spec.name = "shadows/trace_resolve";
+  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace_resolve.frag"}};
+  return spec;
+}
+
+ProgramSpec GpuShadowTracer::programSpec(bool oneRay, const GpuTraceShape& shape) {
   ProgramSpec spec;
   spec.name = "shadows/trace";
   spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace.frag"}};
   if (oneRay) spec.defines.emplace_back("ONE_RAY", "1");
+  spec.defines.emplace_back("WALK_WIDTH", std::to_string(oneRay ? 1 : shape.walkWidth));
+  if (shape.coneCull) spec.defines.emplace_back("CONE_CULL", "1");
   return spec;
 }
 
@@ -58,7 +70,7 @@ std::vector<BvhTriangle> sceneTriangles(const Scene& scene) {
 
 void GpuShadowTracer::prepare(const Scene& scene) {
   if (bvh_ && revision_ == scene.revision) return;
-  bvh_ = std::make_shared<const Bvh>(sceneTriangles(scene));
+  bvh_ = std::make_shared<const Bvh>(sceneTriangles(scene), shape_.leafSize);
   const std::vector<glm::vec4> nodes = bvh_->nodeTexels();
   nodeCount_ = int(nodes.size() / 2);
   nodes_ = floatTexture(nodes, 1 << kTextureWidthLog2);
@@ -66,28 +78,42 @@ void GpuShadowTracer::prepare(const Scene& scene) {
   revision_ = scene.revision;
 }
 
-void GpuShadowTracer::begin(gl::RenderTarget positions, gl::RenderTarget normals, const LightFrame& light,
-                            int samplesPerAxis, float epsilon) {
+namespace {
+
+// `target` as a render target of `size` and `format`, kept where it already is one.
+const gl::RenderTarget& targetOf(std::optional<gl::RenderTarget>& target, glm::ivec2 size, GLenum format) {
+  if (!target || target->size() != size) target.emplace(gl::RenderTarget::create(size, format));
+  return *target;
+}
+
+}  // namespace
+
+const gl::RenderTarget& GpuShadowTracer::positions(glm::ivec2 size) { return targetOf(positions_, size, GL_RGBA32F); }
+
+const gl::RenderTarget& GpuShadowTracer::normals(glm::ivec2 size) { return targetOf(normals_, size, GL_RGBA32F); }
+
+void GpuShadowTracer::begin(const LightFrame& light, int samplesPerAxis, float epsilon) {
   light_ = light;
-  perAxis_ = light.radiusWorld > 0.0f ? std::max(samplesPerAxis, 1) : 1;
+  perAxis_ = light.radiusWorld > 0.0f ? std::clamp(samplesPerAxis, 1, 15) : 1;
   samples_ = perAxis_ * perAxis_;
   pass_ = 0;
   bandStart_ = 0;
   epsilon_ = epsilon;
-  sum_.emplace(gl::RenderTarget::create(positions.size(), GL_RGBA32F));
-  positions_.emplace(std::move(positions));
-  normals_.emplace(std::move(normals));
-  sum_->bind();
+  traceMs_ = 0.0;
+  if (!positions_ || !normals_) return;  // no g-buffer drawn: nothing to trace
+  const glm::ivec2 size = positions_->size();
+  targetOf(packed_, size, GL_RGBA8);
+  targetOf(sum_, size, GL_RGBA32F).bind();  // (creating a target binds none)
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (!vao_) vao_ = gl::VertexArray::make();
 }
 
-bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double budgetMs) {
-  if (!sum_ || pass_ >= samples_ || !bvh_) return false;
+bool GpuShadowTracer::step(ShaderLibrary& shaders, Programs& programs, double budgetMs) {
+  if (!sum_ || !positions_ || pass_ >= samples_ || !bvh_) return false;
   const auto start = std::chrono::steady_clock::now();
-  Program& prog = slot.get(shaders, programSpec(light_.radiusWorld <= 0.0f));
+  Program& prog = programs.trace.get(shaders, programSpec(light_.radiusWorld <= 0.0f, shape_));
   sum_->bind();
   glViewport(0, 0, sum_->size().x, sum_->size().y);
   glDisable(GL_DEPTH_TEST);
@@ -117,9 +143,10 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
   // whole passes where it is fast (a GPU draws all 64 area samples of a frame within one step).
   const int height = sum_->size().y;
   auto since = [](auto t) { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count(); };
-  // The samples of a pass: one in the first, up to kSamplesPerDraw after it (fixed for all the
-  // pass's bands, which trace the same disk points).
-  const auto batchAt = [&](int pass) { return pass == 0 ? 1 : std::min(kSamplesPerDraw, samples_ - pass); };
+  // The samples of a pass: one in the first, so that a whole first estimate is on screen soon
+  // where a pass is slow; up to shape_.samplesPerDraw after it (fixed for all the pass's bands,
+  // which trace the same disk points).
+  const auto batchAt = [&](int pass) { return pass == 0 ? 1 : std::min(shape_.samplesPerDraw, samples_ - pass); };
   for (;;) {
     const auto bandBegin = std::chrono::steady_clock::now();
     const int batch = batchAt(pass_);
@@ -133,7 +160,7 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
     glFinish();
     // The next band's size from this one's time, in rows times samples: about budgetMs a band.
     const double ms = since(bandBegin), perRowSample = std::max(ms, 0.1) / double(rows * batch);
-    bandRowSamples_ = std::clamp(int(budgetMs / perRowSample), 4, height * kSamplesPerDraw);
+    bandRowSamples_ = std::clamp(int(budgetMs / perRowSample), 4, height * kMaxSamplesPerDraw);
     bandStart_ += rows;
     if (bandStart_ >= height) {
       bandStart_ = 0;
@@ -147,26 +174,69 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, ProgramSlot& slot, double bud
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  traceMs_ += since(start);
   return pass_ < samples_;
 }
 
-ImageF GpuShadowTracer::result(double* standardError) const {
-  if (!sum_) return {};
-  gaveUp_ = 0;
-  ImageF out{sum_->size(), sum_->readRgba()};
-  const float n = float(std::max(pass_, 1));
+ImageF GpuShadowTracer::result(ShaderLibrary& shaders, Programs& programs, double* standardError) {
+  if (!sum_ || !packed_) return {};
+  Program& prog = programs.resolve.get(shaders, resolveSpec());
+  packed_->bind();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  prog.use();
+  sum_->color().bind(0);
+  prog.set("u_sum", 0);
+  glBindVertexArray(vao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  // A pixel's values follow from its bytes alone: tables of them, and per band of rows a histogram
+  // of the covered pixels' counts (the mean standard error from it) and the rays that gave up.
+  const int n = std::max(pass_, 1);
+  std::array<float, 256> visible{}, meanOf{};
+  for (int b = 0; b < 256; ++b) {
+    visible[size_t(b)] = b > 127 ? 1.0f : 0.0f;
+    meanOf[size_t(b)] = float(double(std::min(b, n)) / double(n));
+  }
+  const glm::ivec2 size = sum_->size();
+  ImageF out{size, largeBuffer<float>(size_t(size.x) * size_t(size.y) * 4)};
+  struct Band {
+    std::array<size_t, 256> coveredWith{};
+    size_t gaveUp = 0;
+  };
+  const int bands = std::clamp(int(std::thread::hardware_concurrency()), 1, 8);
+  std::vector<Band> tally(static_cast<size_t>(bands));
+  packed_->withRgba8([&](const uint8_t* bottomUp) {
+    auto decode = [&](int band) {
+      Band& t = tally[size_t(band)];
+      for (int y = size.y * band / bands; y < size.y * (band + 1) / bands; ++y) {
+        const uint8_t* in = bottomUp + size_t(size.y - 1 - y) * size_t(size.x) * 4;
+        float* px = &out.rgba[size_t(y) * size_t(size.x) * 4];
+        for (int x = 0; x < size.x; ++x, in += 4, px += 4) {
+          px[0] = visible[in[0]];
+          px[1] = px[2] = meanOf[in[1]];
+          px[3] = visible[in[2]];
+          t.coveredWith[in[1]] += in[2] > 127;
+          t.gaveUp += in[3] > 127;
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int band = 1; band < bands; ++band) pool.emplace_back(decode, band);
+    decode(0);
+    for (auto& thread : pool) thread.join();
+  });
   double seSum = 0.0, covered = 0.0;
-  for (size_t i = 0; i + 3 < out.rgba.size(); i += 4) {
-    float* px = &out.rgba[i];
-    const float mean = px[1] / n, meanSq = px[2] / n;
-    if (px[3] > 0.5f && pass_ > 1) {
-      seSum += std::sqrt(std::max(0.0f, meanSq - mean * mean) / (n - 1.0f));
-      covered += 1.0;
+  gaveUp_ = 0;
+  for (const Band& t : tally) {
+    gaveUp_ += t.gaveUp;
+    for (int c = 0; c < 256; ++c) {
+      const double mean = double(std::min(c, n)) / double(n);  // samples are 0 or 1: the mean square is the mean
+      if (n > 1) seSum += double(t.coveredWith[size_t(c)]) * std::sqrt(mean * (1.0 - mean) / double(n - 1));
+      covered += double(t.coveredWith[size_t(c)]);
     }
-    const float gaveUp = std::floor(px[3] / 1024.0f);
-    gaveUp_ += gaveUp > 0.0f;
-    px[1] = px[2] = mean;
-    px[3] = px[3] - 1024.0f * gaveUp > 0.5f ? 1.0f : 0.0f;
   }
   if (standardError) *standardError = covered > 0 ? seSum / covered : 0.0;
   return out;

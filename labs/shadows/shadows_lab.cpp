@@ -102,7 +102,7 @@ void ShadowsLab::teardown() {
   rayScene_.reset();
   rayRevision_ = -1;
   tracer_.reset();
-  traceProgram_.reset();
+  tracePrograms_.reset();
   cascades_.clear();
   shaders_ = nullptr;
 }

@@ -144,6 +144,10 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   std::vector<ProgramSpec> currentPrograms() const;
   // The unit-disk samples the shaders get for `count` taps (8, 16, 32, 64).
   static const std::vector<glm::vec2>& disk(int count);
+  // How the GPU tracer cuts its work (BM_GpuTruthShape tries each on the machine at hand); the
+  // tracer, once a truth has been asked of it.
+  void setTracerShape(GpuShadowTracer::Shape shape);
+  const GpuShadowTracer* gpuTracer() const { return tracer_.get(); }
 
  private:
   enum class InternalView { None, Position, Normal };  // G-buffer for the ray-traced reference
@@ -181,6 +185,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.map.size(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   std::unique_ptr<GpuShadowTracer> tracer_;   // truth_tracer = gpu
+  GpuShadowTracer::Shape tracerShape_;
   bool softwareRenderer_ = true;              // the context draws in software (gl::softwareRenderer)
   bool geometryShaders_ = true;               // the context has them (not WebGL2): else six cube passes
   bool sixCubePasses() const { return params.map.sixCubePasses || !geometryShaders_; }
@@ -188,7 +193,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   bool tracesOnGpu() const {
     return params.truth.tracer == TruthTracer::Gpu || (params.truth.tracer == TruthTracer::Auto && !softwareRenderer_);
   }
-  ProgramSlot traceProgram_;
+  GpuShadowTracer::Programs tracePrograms_;
   // The GPU trace's area truth: its standard error (mean over its pixels) as of the last read-back,
   // and the sample count it was read at.
   double standardError_ = 0.0;

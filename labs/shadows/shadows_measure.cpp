@@ -74,14 +74,18 @@ TraceWork ShadowsLab::traceReference(Frame& frame) {
           epsilon](JobContext& job) { return rayTracedVisibility(*scene, key, positions, normals, 8, epsilon, &job); };
 }
 
+void ShadowsLab::setTracerShape(GpuShadowTracer::Shape shape) {
+  tracerShape_ = shape;
+  tracer_.reset();  // the next truth starts a tracer of this shape (its BVH is built anew)
+}
+
 GlTraceStep ShadowsLab::traceReferenceOnGl(Frame& frame) {
-  if (!tracer_) tracer_ = std::make_unique<GpuShadowTracer>();
+  if (!tracer_) tracer_ = std::make_unique<GpuShadowTracer>(tracerShape_);
   tracer_->prepare(frame.scene);
   sceneLight_ = frame.scene.suggestedLight;
   // The g-buffer as the Embree truth reads it, kept on the GPU for the tracer's passes.
-  gl::RenderTarget positions = gl::RenderTarget::create(frame.size(), GL_RGBA32F);
-  gl::RenderTarget normals = gl::RenderTarget::create(frame.size(), GL_RGBA32F);
-  for (auto [target, view] : {std::pair{&positions, InternalView::Position}, std::pair{&normals, InternalView::Normal}}) {
+  for (auto [target, view] : {std::pair{&tracer_->positions(frame.size()), InternalView::Position},
+                              std::pair{&tracer_->normals(frame.size()), InternalView::Normal}}) {
     Frame g{*target, frame.scene, frame.gpu, frame.camera, frame.timer, frame.time};
     internalView_ = view;
     render(g);
@@ -91,22 +95,22 @@ GlTraceStep ShadowsLab::traceReferenceOnGl(Frame& frame) {
   const Bounds bounds = frame.scene.bounds;
   std::vector<std::string> ignored;
   const LightFrame key = buildLight(keySetup(), bounds, ignored);
-  tracer_->begin(std::move(positions), std::move(normals), key, 8, 2e-4f * bounds.radius());
+  tracer_->begin(key, 8, 2e-4f * bounds.radius());
   standardError_ = 0.0;
   errorAt_ = 0;
   GpuShadowTracer* tracer = tracer_.get();
   auto lastRead = std::chrono::steady_clock::now();
   return [this, tracer, lastRead](JobContext& job) mutable -> std::optional<ImageF> {
     if (tracer_.get() != tracer || !shaders_) return ImageF{};  // the lab was torn down: nothing to trace with
-    const bool more = tracer->step(*shaders_, traceProgram_) && !job.cancelled();
+    const bool more = tracer->step(*shaders_, tracePrograms_) && !job.cancelled();
     const int done = tracer->samplesDone();
     std::optional<ImageF> image;
     if (!more) {
-      image = tracer->result(&standardError_);
+      image = tracer->result(*shaders_, tracePrograms_, &standardError_);
     } else if (done >= errorAt_ + 8 && std::chrono::steady_clock::now() - lastRead > std::chrono::milliseconds(250)) {
       // The error bar so far: a read-back of the whole sum, so a few times a second at most (a GPU
       // finishes the 64 passes before the first is due).
-      tracer->result(&standardError_);
+      tracer->result(*shaders_, tracePrograms_, &standardError_);
       lastRead = std::chrono::steady_clock::now();
       errorAt_ = done;
     }

@@ -88,7 +88,8 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard), depthSpec(true, false, ShadowFilter::Hard),
                                   depthSpec(true, true, ShadowFilter::Hard), linesSpec(), blurSpec(),
-                                  GpuShadowTracer::programSpec(false), GpuShadowTracer::programSpec(true)};
+                                  GpuShadowTracer::programSpec(false), GpuShadowTracer::programSpec(true),
+                                  GpuShadowTracer::resolveSpec()};
   for (const ShadowFilterRow& row : kShadowFilters)
     if (isMomentFilter(row.value)) all.push_back(depthSpec(false, false, row.value));
   ShadowsParams p;

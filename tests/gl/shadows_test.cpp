@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <random>
 
 #include "gl_test.h"
+#include "labs/shadows/shadows_lab.h"
 
 using namespace shadelab;
 
@@ -208,6 +210,39 @@ TEST(Shadows, TheGpuTracerAgreesWithEmbree) {
     for (auto& s : c.sets) name += " " + s;
     auto host = test::labHost("shadows", c.scene, c.sets);
     expectTracersAgree(*host, name, c.penumbra);
+  }
+  EXPECT_EQ(gl::drainErrors(), "");
+}
+
+// How the tracer cuts its work (samples a draw, rays a walk, triangles a leaf, the cone test)
+// changes its speed alone: whether a ray meets a triangle is one test whatever the tree, each ray's
+// answer is the one a walk of its own gives, the cone turns away only nodes no ray enters, and the sums are of 0s and 1s, so every shape's truth is the same to the
+// bit, the hard ray (pass 0's first) and a last pass of fewer samples included.
+TEST(Shadows, TheGpuTracersShapesGiveTheSameTruth) {
+  for (const char* light : {"directional", "point"}) {
+    auto host = test::labHost("shadows", "shadow-test", {"shadows.truth_tracer=gpu", std::string("shadows.light_type=") + light});
+    auto& lab = dynamic_cast<ShadowsLab&>(host->lab());
+    host->renderFrame({96, 64});
+    std::optional<ImageF> first;
+    for (GpuTraceShape shape : {GpuTraceShape{16, 16, 4, false}, GpuTraceShape{16, 1, 4, false}, GpuTraceShape{8, 4, 1, true},
+                                GpuTraceShape{5, 3, 8, false}, GpuTraceShape{16, 16, 2, true}, GpuTraceShape{16, 1, 1, true}}) {
+      lab.setTracerShape(shape);
+      const ImageF truth = host->renderReference({96, 64});
+      ASSERT_NE(lab.gpuTracer(), nullptr);
+      EXPECT_EQ(lab.gpuTracer()->shape().walkWidth, shape.walkWidth);
+      EXPECT_EQ(lab.gpuTracer()->shape().leafSize, shape.leafSize);
+      ASSERT_FALSE(truth.rgba.empty());
+      if (!first) {
+        first = truth;
+        double area = 0.0;
+        for (size_t i = 1; i < truth.rgba.size(); i += 4) area += truth.rgba[i] > 0.0f && truth.rgba[i] < 1.0f;
+        EXPECT_GT(area, 10.0) << light << ": the test needs a penumbra";
+        continue;
+      }
+      EXPECT_EQ(truth.rgba, first->rgba) << light << ": " << shape.samplesPerDraw << " samples a draw, walks of "
+                                         << shape.walkWidth << ", leaves of " << shape.leafSize
+                                         << (shape.coneCull ? ", cone" : "");
+    }
   }
   EXPECT_EQ(gl::drainErrors(), "");
 }
