@@ -1,6 +1,9 @@
 #include "gl/gl.h"
 
+#include <cstdint>
 #include <cstring>
+#include <iterator>
+#include <string>
 
 namespace gl {
 
@@ -62,6 +65,84 @@ std::string drainErrors() {
   return out;
 }
 
+namespace {
+
+GLuint compiledStage(GLenum type, const std::string& source) {
+  const GLuint shader = glCreateShader(type);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  return shader;
+}
+
+// One pixel drawn by a program that samples a 1x1 stand-in on each of the sixteen texture units a
+// fragment shader is sure to have, into the framebuffer bound. The driver's references to the last
+// draw's textures are per unit, and only a draw that samples a unit moves them on: a point light's
+// lit program samples its fill light's map on units 4 and 5, which nothing else reached, and the
+// 8192^2 map (256 MB) stayed held. Restores what it changes but leaves no texture bound.
+void drawSamplingEveryUnit() {
+  constexpr int kUnits = 16;
+  std::string fragment = "#version 330 core\nout vec4 o_color;\n";
+  for (int u = 0; u < kUnits; ++u) fragment += "uniform sampler2D u_unit" + std::to_string(u) + ";\n";
+  fragment += "void main() {\n  vec4 sum = vec4(0.0);\n";
+  for (int u = 0; u < kUnits; ++u) fragment += "  sum += texture(u_unit" + std::to_string(u) + ", vec2(0.5));\n";
+  fragment += "  o_color = sum;\n}\n";
+  const std::string vertex =
+      "#version 330 core\nvoid main() { gl_Position = vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0); }\n";
+  const GLuint program = glCreateProgram(), vs = compiledStage(GL_VERTEX_SHADER, vertex),
+               fs = compiledStage(GL_FRAGMENT_SHADER, fragment);
+  glAttachShader(program, vs);
+  glAttachShader(program, fs);
+  glLinkProgram(program);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint linked = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &linked);
+  if (linked) {
+    GLint previousProgram = 0, previousVao = 0, previousUnit = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
+    const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
+    bool enabled[std::size(caps)];
+    for (size_t i = 0; i < std::size(caps); ++i) {
+      enabled[i] = glIsEnabled(caps[i]);
+      glDisable(caps[i]);
+    }
+    GLuint standIn = 0, vao = 0;
+    glGenTextures(1, &standIn);
+    glGenVertexArrays(1, &vao);
+    const uint8_t texel = 0;
+    glBindTexture(GL_TEXTURE_2D, standIn);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &texel);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glUseProgram(program);
+    for (int u = 0; u < kUnits; ++u) {
+      glActiveTexture(GLenum(GL_TEXTURE0 + u));
+      glBindTexture(GL_TEXTURE_2D, standIn);
+      glBindSampler(GLuint(u), 0);
+      glUniform1i(glGetUniformLocation(program, ("u_unit" + std::to_string(u)).c_str()), u);
+    }
+    glBindVertexArray(vao);
+    glViewport(0, 0, 1, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    for (int u = 0; u < kUnits; ++u) {
+      glActiveTexture(GLenum(GL_TEXTURE0 + u));
+      glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GLenum(previousUnit));
+    glBindVertexArray(GLuint(previousVao));
+    glUseProgram(GLuint(previousProgram));
+    for (size_t i = 0; i < std::size(caps); ++i)
+      if (enabled[i]) glEnable(caps[i]);
+    glDeleteVertexArrays(1, &vao);
+    glDeleteTextures(1, &standIn);
+  }
+  glDeleteProgram(program);
+}
+
+}  // namespace
+
 void releaseDriverHeldTextures() {
   // Big enough that every rasteriser thread gets tiles of it (llvmpipe's threads hold their own);
   // one byte a texel, since the driver then holds these (3 MB; RGBA8 was 11 MB, and whether the
@@ -80,6 +161,7 @@ void releaseDriverHeldTextures() {
   glGetIntegerv(GL_VIEWPORT, viewport);
   glViewport(0, 0, kSide, kSide);
   glClear(GL_COLOR_BUFFER_BIT);
+  if (!esContext()) drawSamplingEveryUnit();
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteFramebuffers(1, &framebuffer);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "gl_test.h"
 #include "gl/pass_timer.h"
@@ -64,27 +66,36 @@ TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
 // the same whichever lab (and scene) came before. (The old lab's scene was once kept as the
 // host's "previous build", found by the soak.)
 // The memory a lab's textures took comes back when it goes: llvmpipe would otherwise keep textures
-// alive after the lab deleted them (gl::releaseDriverHeldTextures; here the cascades' EVSM moment
-// maps, four layers of 2048^2 RGBA32F with their mips: 357 MB, and the depth maps), and what the
-// driver then holds instead is small (its RGBA8 stand-ins held 11 MB).
+// alive after the lab deleted them (gl::releaseDriverHeldTextures), and what the driver then holds
+// instead is small (its RGBA8 stand-ins held 11 MB). Two configurations: the cascades' EVSM moment
+// maps (four layers of 2048^2 RGBA32F with their mips: 357 MB, and the depth maps), and a point
+// light's cube map beside a casting fill light's 8192^2 map, sampled on units that the stand-ins
+// once left alone (the fill's 256 MB stayed held).
 TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
-  LabHost host(test::builtinShaders());
-  auto heapAfterFrame = [&] {
-    host.renderFrame({160, 90});
-    glFinish();
-    returnFreePages();
-    return heapInUseMb();
-  };
-  heapAfterFrame();
-  const double before = heapAfterFrame();
-  ASSERT_EQ(host.selectLab("shadows"), "");
-  for (const char* s : {"shadows.fit=cascades", "shadows.filter=evsm"}) ASSERT_EQ(host.set(s), "");
-  const double inShadows = heapAfterFrame();
-  ASSERT_EQ(host.selectLab("shading"), "");
-  const double after = heapAfterFrame();
-  std::printf("heap in use: %.1f MB, %.1f MB with the moment maps, %.1f MB after leaving\n", before, inShadows, after);
-  EXPECT_GT(inShadows, before + 300.0);
-  EXPECT_LT(after, before + 6.0);
+  const std::vector<std::vector<std::string>> configurations = {
+      {"shadows.fit=cascades", "shadows.filter=evsm"},
+      {"shadows.light_type=point", "shadows.fill_light=on", "shadows.fill_casts=on", "shadows.map_size=8192",
+       "shadows.depth_format=24", "shadows.filter=hardware-pcf"}};
+  for (const auto& configuration : configurations) {
+    LabHost host(test::builtinShaders());
+    auto heapAfterFrame = [&] {
+      host.renderFrame({160, 90});
+      glFinish();
+      returnFreePages();
+      return heapInUseMb();
+    };
+    heapAfterFrame();
+    const double before = heapAfterFrame();
+    ASSERT_EQ(host.selectLab("shadows"), "");
+    for (const std::string& s : configuration) ASSERT_EQ(host.set(s), "") << s;
+    const double inShadows = heapAfterFrame();
+    ASSERT_EQ(host.selectLab("shading"), "");
+    const double after = heapAfterFrame();
+    std::printf("%s: heap in use %.1f MB, %.1f MB in the shadows lab, %.1f MB after leaving\n",
+                configuration.front().c_str(), before, inShadows, after);
+    EXPECT_GT(inShadows, before + 250.0) << configuration.front();
+    EXPECT_LT(after, before + 6.0) << configuration.front();
+  }
 }
 
 TEST(Lifecycle, EnteringALabKeepsNothingOfTheLabBefore) {
