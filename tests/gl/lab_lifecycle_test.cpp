@@ -70,12 +70,19 @@ TEST(Lifecycle, SetupFramesTeardownLeaveNoObjectsAndNoErrors) {
 // instead is small (its RGBA8 stand-ins held 11 MB). Two configurations: the cascades' EVSM moment
 // maps (four layers of 2048^2 RGBA32F with their mips: 357 MB, and the depth maps), and a point
 // light's cube map beside a casting fill light's 8192^2 map, sampled on units that the stand-ins
-// once left alone (the fill's 256 MB stayed held).
+// once left alone (the fill's 256 MB stayed held), plainly and as the window's soak had it.
 TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
   const std::vector<std::vector<std::string>> configurations = {
       {"shadows.fit=cascades", "shadows.filter=evsm"},
       {"shadows.light_type=point", "shadows.fill_light=on", "shadows.fill_casts=on", "shadows.map_size=8192",
-       "shadows.depth_format=24", "shadows.filter=hardware-pcf"}};
+       "shadows.depth_format=24", "shadows.filter=hardware-pcf"},
+      // The state the window's soak left before its largest heap on a lab entry (10 minutes, seed 11).
+      {"shadows.light_type=point", "shadows.key_casts=on", "shadows.scene_light=off", "shadows.light_elevation=40",
+       "shadows.light_distance=3", "shadows.light_radius=10", "shadows.fill_light=on", "shadows.fill_casts=on",
+       "shadows.map_size=8192", "shadows.depth_format=24", "shadows.auto_fit=off", "shadows.fit=view",
+       "shadows.cull_front=on", "shadows.filter=hardware-pcf", "shadows.pcf_size=15", "shadows.show_frustum=on",
+       "shadows.tessellation=256", "shadows.scene_scale=2.8909566", "shadows.offset_factor=20", "shadows.offset_units=5860.6978",
+       "shadows.bias=22.870691", "shadows.slope_bias=50", "shadows.border_clamp=on", "shadows.far=8606.267", "shadows.near=0.5"}};
   for (const auto& configuration : configurations) {
     LabHost host(test::builtinShaders());
     auto heapAfterFrame = [&] {
