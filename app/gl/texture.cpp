@@ -138,29 +138,19 @@ void RenderTarget::bind() const {
   glViewport(0, 0, size_.x, size_.y);
 }
 
-namespace {
-
-// The colour attachment of `fbo` as `type`, four channels a pixel, rows top-down: flipped in
-// place (a second image-sized buffer would cost as much as the read).
-template <typename T>
-std::vector<T> readColor(GLuint fbo, glm::ivec2 size, GLenum type) {
-  std::vector<T> rows = shadelab::largeBuffer<T>(size_t(size.x) * size_t(size.y) * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+std::vector<float> RenderTarget::readRgba() const {
+  std::vector<float> rows = shadelab::largeBuffer<float>(size_t(size_.x) * size_t(size_.y) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.get());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size.x, size.y, GL_RGBA, type, rows.data());
+  glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, rows.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  const size_t stride = size_t(size.x) * 4;
-  for (int y = 0; y < size.y / 2; ++y)
-    std::swap_ranges(rows.begin() + y * stride, rows.begin() + (y + 1) * stride, rows.begin() + (size.y - 1 - y) * stride);
+  // Top row first, flipped in place (a second image-sized buffer costs as much as the read).
+  const size_t stride = size_t(size_.x) * 4;
+  for (int y = 0; y < size_.y / 2; ++y)
+    std::swap_ranges(rows.begin() + y * stride, rows.begin() + (y + 1) * stride, rows.begin() + (size_.y - 1 - y) * stride);
   return rows;
 }
-
-}  // namespace
-
-std::vector<float> RenderTarget::readRgba() const { return readColor<float>(fbo_.get(), size_, GL_FLOAT); }
-
-std::vector<uint8_t> RenderTarget::readRgba8() const { return readColor<uint8_t>(fbo_.get(), size_, GL_UNSIGNED_BYTE); }
 
 std::array<float, 4> RenderTarget::readPixel(int x, int y) const {
   std::array<float, 4> px{};

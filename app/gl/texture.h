@@ -63,10 +63,8 @@ class RenderTarget {
   GLuint fbo() const { return fbo_.get(); }
   // Reads the colour attachment as RGBA float, rows top-down (image order).
   std::vector<float> readRgba() const;
-  // As bytes (an 8-bit target's own values: a quarter of the float read), rows top-down.
-  std::vector<uint8_t> readRgba8() const;
-  // The same bytes handed to `use` where the driver puts them, rows bottom-up as GL numbers them,
-  // valid during the call: no copy to flip them (read_back_desktop.cpp maps a pixel buffer;
+  // An 8-bit target's bytes (a quarter of the float read) handed to `use` where the driver puts
+  // them, rows bottom-up as GL numbers them, valid during the call: no copy to flip them (read_back_desktop.cpp maps a pixel buffer;
   // WebGL2 cannot map one for reading, so the page reads into memory of its own).
   void withRgba8(const std::function<void(const uint8_t* bottomUpRows)>& use) const;
   // One pixel, (x, y) from the top-left as images are; all zero outside the target.
