@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+
 #include <stb_image.h>
 
 namespace shadelab {
@@ -21,6 +23,22 @@ Bounds Scene::computeBounds() const {
       b.extend(ib.max);
     }
   return b;
+}
+
+std::vector<size_t> Scene::nearestFirst(glm::vec3 eye) const {
+  std::vector<std::pair<float, size_t>> keyed;
+  keyed.reserve(instances.size());
+  for (size_t i = 0; i < instances.size(); ++i) {
+    const Bounds b = i < instanceBounds.size() ? instanceBounds[i] : boundsOfInstance(i);
+    const glm::vec3 centre = b.empty() ? glm::vec3(instances[i].model[3]) : 0.5f * (b.min + b.max);
+    const glm::vec3 d = centre - eye;
+    keyed.emplace_back(glm::dot(d, d), i);
+  }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<size_t> order;
+  order.reserve(keyed.size());
+  for (const auto& k : keyed) order.push_back(k.second);
+  return order;
 }
 
 size_t Scene::triangleCount() const {

@@ -212,7 +212,8 @@ void ShadingLab::render(Frame& frame) {
     unweldedRevision_ = frame.scene.revision;
   }
 
-  for (const Instance& inst : frame.scene.instances) {
+  for (size_t i : frame.scene.nearestFirst(frame.camera.eye())) {
+    const Instance& inst = frame.scene.instances[i];
     const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
     const gl::Texture2D* tex = params.textures ? frame.gpu.baseColorTexture(mat) : nullptr;
     Program& prog = programs_[tex != nullptr].get(*shaders_, programSpec(params, tex != nullptr));

@@ -226,7 +226,8 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
     const float r2 = glm::dot(fill->position - b.center(), fill->position - b.center());
     prog.set("u_fillPower", glm::vec3(0.35f, 0.45f, 0.6f) * r2);
   }
-  for (const Instance& inst : frame.scene.instances) {
+  for (size_t i : frame.scene.nearestFirst(frame.camera.eye())) {
+    const Instance& inst = frame.scene.instances[i];
     const Material& mat = frame.scene.materials[size_t(frame.scene.meshes[size_t(inst.mesh)].material)];
     prog.set("u_model", inst.model);
     prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(inst.model)));

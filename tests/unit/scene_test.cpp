@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/camera.h"
 #include "scene/loaders.h"
@@ -124,6 +125,21 @@ TEST(Scenes, LeaveOutUvsAndTangentsUnlessNeeded) {
   ASSERT_EQ(buildScene("shading", needs, s), "");
   for (auto& m : s.meshes) EXPECT_EQ(m.tangents.size(), m.positions.size());
   EXPECT_NE(buildScene("nowhere", needs, s).find("unknown scene 'nowhere' (valid: shading, sphere"), std::string::npos);
+}
+
+TEST(Scenes, OpaquePassesDrawTheNearestInstanceFirst) {
+  // LearnOpenGL's layout: a 50 x 50 floor listed first, then a cube on it, seen from above and behind.
+  Scene s;
+  s.meshes = {makePlane(50.0f, 1, 1.0f), makeBox(glm::vec3(0.5f))};
+  s.instances = {{0, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.5f, 0.0f))},
+                 {1, glm::translate(glm::mat4(1.0f), glm::vec3(2.0f, 0.0f, 1.0f))},
+                 {1, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 1.5f, -8.0f))}};
+  const glm::vec3 eye(0.0f, 2.96f, 6.84f);
+  EXPECT_EQ(s.nearestFirst(eye), (std::vector<size_t>{1, 0, 2}));  // the cube hides floor; the far cube last
+  for (size_t i = 0; i < s.instances.size(); ++i) s.instanceBounds.push_back(s.boundsOfInstance(i));
+  EXPECT_EQ(s.nearestFirst(eye), (std::vector<size_t>{1, 0, 2}));
+  EXPECT_EQ(s.nearestFirst(glm::vec3(0.0f, 1.5f, -12.0f)), (std::vector<size_t>{2, 0, 1}));
+  EXPECT_TRUE(Scene().nearestFirst(eye).empty());
 }
 
 TEST(Mesh, SphereNormalsPointOutAndTessellationScales) {
