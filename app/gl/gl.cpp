@@ -141,52 +141,48 @@ void drawSamplingEveryUnit() {
   glDeleteProgram(program);
 }
 
-void replaceDriverHeldTextures() {
-  // Big enough that every rasteriser thread gets tiles of it (llvmpipe's threads hold their own);
+}  // namespace
+
+void releaseDriverHeldTextures() {
+  // Big enough that the rasteriser threads get tiles of them (llvmpipe's threads hold their own);
   // one byte a texel, since the driver then holds these (3 MB; RGBA8 was 11 MB, and whether the
   // driver held them or the next lab's own came and went with the threads: a step of 11 MB on
   // some lab entries and not others in the window's soak).
-  constexpr int kSide = 512;
+  constexpr int kSide = 512, kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
   GLuint texture[2] = {0, 0}, framebuffer = 0;
   glGenTextures(2, texture);
   glBindTexture(GL_TEXTURE_2D, texture[0]);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kSide, kSide, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
   glBindTexture(GL_TEXTURE_2D, 0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, texture[1]);
+  for (int level = 0; level < kLevels; ++level)
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_R8, kSide >> level, kSide >> level, kLayers, 0, GL_RED, GL_UNSIGNED_BYTE,
+                 nullptr);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
   glGenFramebuffers(1, &framebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture[0], 0);
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
   glViewport(0, 0, kSide, kSide);
-  glClear(GL_COLOR_BUFFER_BIT);
+  // The references per unit move with one draw (it reaches no particular thread). Those per thread
+  // move only for a thread that takes tiles of the clear and of the mipmaps, and which thread takes
+  // which is up to the threads: one that the machine's load keeps away gets none and keeps what it
+  // held (the cascades' 357 MB of moment maps, in one lifecycle test run of six with a second one
+  // running beside it). So the clear and the mipmaps are made in rounds, each finished before the
+  // next: every round is another chance for every thread.
   if (!esContext()) drawSamplingEveryUnit();
+  constexpr int kRounds = 3;
+  for (int round = 0; round < kRounds; ++round) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+    glFinish();
+  }
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteFramebuffers(1, &framebuffer);
-
-  constexpr int kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
-  glBindTexture(GL_TEXTURE_2D_ARRAY, texture[1]);
-  for (int level = 0; level < kLevels; ++level)
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_R8, kSide >> level, kSide >> level, kLayers, 0, GL_RED, GL_UNSIGNED_BYTE,
-                 nullptr);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
-  glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
   glDeleteTextures(2, texture);
-}
-
-}  // namespace
-
-void releaseDriverHeldTextures() {
-  // Which rasteriser thread takes which tiles of the stand-ins is up to the threads: one that the
-  // machine's load keeps away from a round gets none of its tiles and keeps what it held (the
-  // cascades' 357 MB of moment maps, in one lifecycle test run of six with a second one running
-  // beside it). Each further round, after the last one has finished, is another chance for every thread.
-  constexpr int kRounds = 3;
-  for (int round = 0; round < kRounds; ++round) {
-    replaceDriverHeldTextures();
-    glFinish();
-  }
 }
 
 }  // namespace gl

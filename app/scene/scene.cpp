@@ -29,9 +29,10 @@ std::vector<size_t> Scene::nearestFirst(glm::vec3 eye) const {
   std::vector<std::pair<float, size_t>> keyed;
   keyed.reserve(instances.size());
   for (size_t i = 0; i < instances.size(); ++i) {
-    const Bounds b = i < instanceBounds.size() ? instanceBounds[i] : boundsOfInstance(i);
-    const glm::vec3 centre = b.empty() ? glm::vec3(instances[i].model[3]) : 0.5f * (b.min + b.max);
-    const glm::vec3 d = centre - eye;
+    // The boxes the host keeps; without them (a scene not built by the host) the model's origin,
+    // rather than a walk over every vertex each frame.
+    const bool boxed = i < instanceBounds.size() && !instanceBounds[i].empty();
+    const glm::vec3 d = (boxed ? instanceBounds[i].center() : glm::vec3(instances[i].model[3])) - eye;
     keyed.emplace_back(glm::dot(d, d), i);
   }
   std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });

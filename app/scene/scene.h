@@ -96,7 +96,7 @@ struct Scene {
   std::vector<Bounds> instanceBounds;  // each instance's world box, kept beside `bounds`
   Bounds computeBounds() const;  // walks every vertex: call once per build, not per frame
   Bounds boundsOfInstance(size_t i) const;  // its mesh's box through its model matrix
-  // Instance indices, nearest box centre to `eye` first. Opaque passes draw in this order so that
+  // Instance indices, nearest box centre (instanceBounds) to `eye` first. Opaque passes draw in this order so that
   // the depth test turns hidden fragments away before they are shaded: a floor drawn after the
   // objects standing on it shades only what they leave visible.
   std::vector<size_t> nearestFirst(glm::vec3 eye) const;
