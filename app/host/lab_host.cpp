@@ -32,6 +32,7 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
     return std::string(id) + ": setup failed: " + err;
   }
   jobs_.cancelAll();  // nothing of the old lab may be delivered to the new one
+  jobErrors_.clear();  // nor shown in it: its failed jobs were about its own settings
   if (lab_ && labReady_) {
     lab_->teardown();
     gl::releaseDriverHeldTextures();  // else the driver may keep the old lab's biggest maps (gl/gl.h)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -134,6 +135,26 @@ TEST(Lifecycle, EnteringALabKeepsNothingOfTheLabBefore) {
     host.renderFrame({64, 36});
     EXPECT_EQ(enter("shading"), fresh) << "after " << before;
   }
+}
+
+TEST(Lifecycle, AFailedJobIsShownUntilTheLabIsLeft) {
+  LabHost host(test::builtinShaders());
+  ASSERT_EQ(host.selectLab("denoise"), "");
+  auto shows = [&](const std::string& text) {
+    for (auto& w : host.warnings())
+      if (w.find(text) != std::string::npos) return true;
+    return false;
+  };
+  host.jobs().submit("test", "a job that fails", [](JobContext&) -> int { throw std::runtime_error("bake failed"); },
+                     [](int) {});
+  host.settle();
+  host.renderFrame({64, 36});
+  EXPECT_TRUE(shows("bake failed"));
+  host.renderFrame({64, 36});
+  EXPECT_TRUE(shows("bake failed")) << "shown for one frame only";
+  ASSERT_EQ(host.selectLab("shading"), "");
+  host.renderFrame({64, 36});
+  EXPECT_FALSE(shows("bake failed")) << "the denoise lab's failure is shown in the shading lab";
 }
 
 TEST(Needs, TexturesDecodedOnlyWhenUsed) {
