@@ -26,7 +26,8 @@ struct ConfigurationCosts {
 
 // Frame times with and without jobs running (the UI must stay responsive while they work), and the
 // lab's own passes per frame, so that a frame can be compared with the same lab's frame elsewhere
-// (tools/web_bench.sh: the page against the desktop).
+// (tools/web_bench.sh: the page against the desktop). Kept only in runs of a set number of frames
+// (--exit-after), which report them: an open-ended session would grow them frame by frame.
 struct Responsiveness {
   std::vector<float> idleMs, busyMs, labMs;
   // "frames: N, M while jobs ran; median frame ... ms idle, ... ms while jobs ran; the lab's passes ... ms"

@@ -166,6 +166,9 @@ void viewportControls(AppState& app) {
 
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
 constexpr ImGuiWindowFlags kSidePanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+// The viewport's window: the lab's frame covers all of it, so it draws no background of its own
+// (on a software rasteriser a blended fill of the whole viewport, each frame, under an opaque image).
+constexpr ImGuiWindowFlags kViewport = kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBackground;
 
 // The lab's frame filling the current window, and the camera controls over it.
 void viewportImage(AppState& app) {
@@ -412,7 +415,7 @@ bool WindowSession::drawFrame() {
   if (!resumed) app.history.push(dt * 1000.0f, float(gpu));
   resumed = false;
   app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
-  if (frame > 2) {
+  if (frame > 2 && wopt.exitAfterFrames > 0) {  // reported when a timed run ends; a lecture keeps none
     (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
     app.responsiveness.labMs.push_back(float(gpu));
   }
@@ -436,7 +439,7 @@ bool WindowSession::drawFrame() {
     ImGui::SetNextWindowPos({0, 0});
     ImGui::SetNextWindowSize({float(fbw), float(fbh)});
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-    ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar);
+    ImGui::Begin("Viewport", nullptr, kViewport | ImGuiWindowFlags_NoTitleBar);
     viewportImage(app);
     ImGui::End();
     ImGui::PopStyleVar();
@@ -479,7 +482,7 @@ bool WindowSession::drawFrame() {
     ImGui::SetNextWindowPos({app.leftW, 0});
     ImGui::SetNextWindowSize({viewW, float(fbh)});
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0, 0});
-    ImGui::Begin("Viewport", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
+    ImGui::Begin("Viewport", nullptr, kViewport);
     viewportImage(app);
     ImGui::End();
     ImGui::PopStyleVar();
@@ -502,8 +505,10 @@ bool WindowSession::drawFrame() {
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, fbw, fbh);
-  glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
+  if (!app.presenting) {  // presenting, the lab's frame covers the whole window: nothing to clear
+    glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uiStart).count();
 
