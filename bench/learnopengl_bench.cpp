@@ -16,7 +16,9 @@
 // the lab's passes' GPU time, and the plain program drawing into the lab's half-float target.
 // Args: the plain program's floor: 0 = it samples its diffuse texture, as the chapter does; 1 = it
 // reads a constant colour, as the lab's scene does (the lab's floor has no image); the lab's map:
-// 0 = one map fitted to the view, 1 = the scene's default (cascades).
+// 0 = one map fitted to the view, 1 = the scene's default (cascades), 2 = one map fitted to the
+// view with the receiver plane off: the chapter's settings in full (its taps compare against the
+// centre depth).
 //
 // BM_DefaultFit/<scene>: how sharp each scene's default shadows are beside the best the map's
 // fits do there: the percentage of pixels misclassified (lit against shadowed) against Embree's
@@ -171,9 +173,10 @@ double median(std::vector<double> v) {
 void BM_LearnOpenGLFrame(benchmark::State& state) {
   const glm::ivec2 size(800, 600);
   const int mapSize = 1024;
-  const bool textured = state.range(0) == 0, oneMap = state.range(1) == 0;
+  const bool textured = state.range(0) == 0, oneMap = state.range(1) != 1, plane = state.range(1) != 2;
   LabHost host(ShaderSearchPath({builtinShaderDir()}), "shadows", "learnopengl");
   if (oneMap) host.set("shadows.fit=view");
+  if (!plane) host.set("shadows.receiver_plane=off");
   host.set("shadows.map_size=1024");
   host.set("shadows.filter=pcf");
   host.set("shadows.pcf_size=3");
@@ -316,7 +319,8 @@ void BM_LearnOpenGLFrame(benchmark::State& state) {
   state.counters["lab_depth_gpu_ms"] = median(labDepthMs);
   state.counters["lab_lighting_gpu_ms"] = median(labLitMs);
   state.SetLabel(std::string("learnopengl 800x600, 1024^2, 3x3 PCF; lab: ") +
-                 (oneMap ? "one map fitted to the view" : "4 cascades (the scene's default)") + "; chapter's floor " +
+                 (oneMap ? "one map fitted to the view" : "4 cascades (the scene's default)") +
+                 (plane ? "" : ", no receiver plane") + "; chapter's floor " +
                  (textured ? "textured" : "a constant colour") + "; median of " + std::to_string(labMs.size()) +
                  " frames each, interleaved");
 }
@@ -324,6 +328,7 @@ BENCHMARK(BM_LearnOpenGLFrame)
     ->Args({0, 0})
     ->Args({1, 0})
     ->Args({0, 1})
+    ->Args({0, 2})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
