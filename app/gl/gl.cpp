@@ -1,8 +1,6 @@
 #include "gl/gl.h"
 
-#include <cstdint>
 #include <cstring>
-#include <iterator>
 #include <string>
 
 namespace gl {
@@ -63,126 +61,6 @@ std::string drainErrors() {
     out += errorString(e);
   }
   return out;
-}
-
-namespace {
-
-GLuint compiledStage(GLenum type, const std::string& source) {
-  const GLuint shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  return shader;
-}
-
-// One pixel drawn by a program that samples a 1x1 stand-in on each of the sixteen texture units a
-// fragment shader is sure to have, into the framebuffer bound. The driver's references to the last
-// draw's textures are per unit, and only a draw that samples a unit moves them on: a point light's
-// lit program samples its fill light's map on units 4 and 5, which nothing else reached, and the
-// 8192^2 map (256 MB) stayed held. Restores what it changes but leaves no texture bound.
-void drawSamplingEveryUnit() {
-  constexpr int kUnits = 16;
-  std::string fragment = "#version 330 core\nout vec4 o_color;\n";
-  for (int u = 0; u < kUnits; ++u) fragment += "uniform sampler2D u_unit" + std::to_string(u) + ";\n";
-  fragment += "void main() {\n  vec4 sum = vec4(0.0);\n";
-  for (int u = 0; u < kUnits; ++u) fragment += "  sum += texture(u_unit" + std::to_string(u) + ", vec2(0.5));\n";
-  fragment += "  o_color = sum;\n}\n";
-  const std::string vertex =
-      "#version 330 core\nvoid main() { gl_Position = vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0); }\n";
-  const GLuint program = glCreateProgram(), vs = compiledStage(GL_VERTEX_SHADER, vertex),
-               fs = compiledStage(GL_FRAGMENT_SHADER, fragment);
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint linked = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  if (linked) {
-    GLint previousProgram = 0, previousVao = 0, previousUnit = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
-    const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
-    bool enabled[std::size(caps)];
-    for (size_t i = 0; i < std::size(caps); ++i) {
-      enabled[i] = glIsEnabled(caps[i]);
-      glDisable(caps[i]);
-    }
-    GLuint standIn = 0, vao = 0;
-    glGenTextures(1, &standIn);
-    glGenVertexArrays(1, &vao);
-    const uint8_t texel = 0;
-    glBindTexture(GL_TEXTURE_2D, standIn);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &texel);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glUseProgram(program);
-    for (int u = 0; u < kUnits; ++u) {
-      glActiveTexture(GLenum(GL_TEXTURE0 + u));
-      glBindTexture(GL_TEXTURE_2D, standIn);
-      glBindSampler(GLuint(u), 0);
-      glUniform1i(glGetUniformLocation(program, ("u_unit" + std::to_string(u)).c_str()), u);
-    }
-    glBindVertexArray(vao);
-    glViewport(0, 0, 1, 1);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    for (int u = 0; u < kUnits; ++u) {
-      glActiveTexture(GLenum(GL_TEXTURE0 + u));
-      glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GLenum(previousUnit));
-    glBindVertexArray(GLuint(previousVao));
-    glUseProgram(GLuint(previousProgram));
-    for (size_t i = 0; i < std::size(caps); ++i)
-      if (enabled[i]) glEnable(caps[i]);
-    glDeleteVertexArrays(1, &vao);
-    glDeleteTextures(1, &standIn);
-  }
-  glDeleteProgram(program);
-}
-
-}  // namespace
-
-void releaseDriverHeldTextures() {
-  // Big enough that the rasteriser threads get tiles of them (llvmpipe's threads hold their own);
-  // one byte a texel, since the driver then holds these (3 MB; RGBA8 was 11 MB, and whether the
-  // driver held them or the next lab's own came and went with the threads: a step of 11 MB on
-  // some lab entries and not others in the window's soak).
-  constexpr int kSide = 512, kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
-  GLuint texture[2] = {0, 0}, framebuffer = 0;
-  glGenTextures(2, texture);
-  glBindTexture(GL_TEXTURE_2D, texture[0]);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kSide, kSide, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, texture[1]);
-  for (int level = 0; level < kLevels; ++level)
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_R8, kSide >> level, kSide >> level, kLayers, 0, GL_RED, GL_UNSIGNED_BYTE,
-                 nullptr);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
-  glGenFramebuffers(1, &framebuffer);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture[0], 0);
-  GLint viewport[4];
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  glViewport(0, 0, kSide, kSide);
-  // The references per unit move with one draw (it reaches no particular thread). Those per thread
-  // move only for a thread that takes tiles of the clear and of the mipmaps, and which thread takes
-  // which is up to the threads: one that the machine's load keeps away gets none and keeps what it
-  // held (the cascades' 357 MB of moment maps, in one lifecycle test run of six with a second one
-  // running beside it). So the clear and the mipmaps are made in rounds, each finished before the
-  // next: every round is another chance for every thread.
-  if (!esContext()) drawSamplingEveryUnit();
-  constexpr int kRounds = 3;
-  for (int round = 0; round < kRounds; ++round) {
-    glClear(GL_COLOR_BUFFER_BIT);
-    glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
-    glFinish();
-  }
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glDeleteFramebuffers(1, &framebuffer);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-  glDeleteTextures(2, texture);
 }
 
 }  // namespace gl

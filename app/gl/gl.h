@@ -37,18 +37,4 @@ const char* errorString(GLenum error);  // "GL_INVALID_ENUM", ...
 // Drains glGetError; returns "" or a comma-separated list such as "GL_INVALID_ENUM".
 std::string drainErrors();
 
-// llvmpipe (Mesa 22.3) keeps textures alive after they and their framebuffers are deleted: the
-// one last cleared through a framebuffer, and the layers of the one whose mipmaps were generated
-// last, until another texture takes its place. A lab that leaves with a 1 GB shadow map cleared
-// last, or 360 MB of mipmapped moment maps, would hold that memory while the next lab runs. This
-// clears a 512^2 texture through a framebuffer of its own and generates the mipmaps of a 512^2
-// array of eight layers (both deleted again, both one byte a texel), which moves those references
-// onto them (the driver then holds about 3 MB of them). Smaller ones did not always reach every
-// rasteriser thread: at 128^2 half the runs kept the old 360 MB. It also holds the textures the
-// last draw sampled, unit by unit, so on a desktop context one pixel is drawn sampling a 1x1
-// stand-in on each of sixteen units (a point light's fill map on units 4 and 5 kept 256 MB). The
-// host calls it when a lab is torn down. Leaves framebuffer 0 and no texture bound on the active
-// unit.
-void releaseDriverHeldTextures();
-
 }  // namespace gl

@@ -35,7 +35,7 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
   jobErrors_.clear();  // nor shown in it: its failed jobs were about its own settings
   if (lab_ && labReady_) {
     lab_->teardown();
-    gl::releaseDriverHeldTextures();  // else the driver may keep the old lab's biggest maps (gl/gl.h)
+    standIns_.takeDriverReferences();  // else the driver may keep the old lab's biggest maps (gl/stand_ins.h)
   }
   sideTarget_.reset();  // the old lab's measured views: a lab starts with the objects it makes itself
   shaders_->forgetRecent();  // the old lab's variants

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gl/stand_ins.h"
 #include "util/job_runner.h"
 #include "host/preset.h"
 #include "lab/lab.h"
@@ -123,6 +124,7 @@ class LabHost {
   std::string heightMap_;  // setHeightMap's image, applied to every build of the current scene
 
   std::unique_ptr<ShaderLibrary> shaders_;
+  gl::DriverStandIns standIns_;  // made with the host: what the driver holds in place of a left lab's textures
   JobRunner jobs_;  // before lab_: jobs are cancelled before a lab goes
   std::unique_ptr<Lab> lab_;
   bool labReady_ = false;
