@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace gl {
 
@@ -17,70 +19,120 @@ GLuint compiledStage(GLenum type, const std::string& source) {
   return shader;
 }
 
-// One pixel drawn by a program that samples a 1x1 stand-in on each of the sixteen texture units a
-// fragment shader is sure to have, into the framebuffer bound. The driver's references to the last
-// draw's textures are per unit, and only a draw that samples a unit moves them on: a point light's
-// lit program samples its fill light's map on units 4 and 5, which nothing else reached, and the
-// 8192^2 map (256 MB) stayed held. Restores what it changes but leaves no texture bound.
-void drawSamplingEveryUnit() {
-  constexpr int kUnits = 16;
-  std::string fragment = "#version 330 core\nout vec4 o_color;\n";
-  for (int u = 0; u < kUnits; ++u) fragment += "uniform sampler2D u_unit" + std::to_string(u) + ";\n";
-  fragment += "void main() {\n  vec4 sum = vec4(0.0);\n";
-  for (int u = 0; u < kUnits; ++u) fragment += "  sum += texture(u_unit" + std::to_string(u) + ", vec2(0.5));\n";
-  fragment += "  o_color = sum;\n}\n";
-  const std::string vertex =
-      "#version 330 core\nvoid main() { gl_Position = vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0); }\n";
-  const GLuint program = glCreateProgram(), vs = compiledStage(GL_VERTEX_SHADER, vertex),
-               fs = compiledStage(GL_FRAGMENT_SHADER, fragment);
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint linked = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  if (linked) {
-    GLint previousProgram = 0, previousVao = 0, previousUnit = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
-    const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
-    bool enabled[std::size(caps)];
-    for (size_t i = 0; i < std::size(caps); ++i) {
-      enabled[i] = glIsEnabled(caps[i]);
-      glDisable(caps[i]);
-    }
-    GLuint standIn = 0, vao = 0;
-    glGenTextures(1, &standIn);
-    glGenVertexArrays(1, &vao);
-    const uint8_t texel = 0;
-    glBindTexture(GL_TEXTURE_2D, standIn);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &texel);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glUseProgram(program);
-    for (int u = 0; u < kUnits; ++u) {
-      glActiveTexture(GLenum(GL_TEXTURE0 + u));
-      glBindTexture(GL_TEXTURE_2D, standIn);
-      glBindSampler(GLuint(u), 0);
-      glUniform1i(glGetUniformLocation(program, ("u_unit" + std::to_string(u)).c_str()), u);
-    }
-    glBindVertexArray(vao);
-    glViewport(0, 0, 1, 1);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    for (int u = 0; u < kUnits; ++u) {
-      glActiveTexture(GLenum(GL_TEXTURE0 + u));
-      glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    glActiveTexture(GLenum(previousUnit));
-    glBindVertexArray(GLuint(previousVao));
-    glUseProgram(GLuint(previousProgram));
-    for (size_t i = 0; i < std::size(caps); ++i)
-      if (enabled[i]) glEnable(caps[i]);
-    glDeleteVertexArrays(1, &vao);
-    glDeleteTextures(1, &standIn);
+constexpr int kUnits = 16;  // the texture units every stage is sure to have
+
+// GLSL declaring the sixteen units' samplers, and an expression summing a lookup of each (an
+// explicit level: vertex and tessellation stages have no derivatives).
+std::string unitSamplers() {
+  std::string out;
+  for (int u = 0; u < kUnits; ++u) out += "uniform sampler2D u_unit" + std::to_string(u) + ";\n";
+  return out;
+}
+std::string sumOfUnits() {
+  std::string out = "vec4(0.0)";
+  for (int u = 0; u < kUnits; ++u) out += " + textureLod(u_unit" + std::to_string(u) + ", vec2(0.5), 0.0)";
+  return out;
+}
+
+// A triangle covering the viewport, from gl_VertexID.
+constexpr const char* kCorner = "vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0)";
+
+// The programs of drawSamplingEveryUnit: one whose fragment stage samples every unit; where the
+// context has tessellation, a second one whose evaluation stage does (its sum goes to the colour
+// written, so no compiler drops a lookup).
+std::vector<std::vector<std::pair<GLenum, std::string>>> samplingPrograms() {
+  const std::string vertex = std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n";
+  const std::string fragment = "#version 330 core\n" + unitSamplers() + "out vec4 o_color;\nvoid main() { o_color = " +
+                               sumOfUnits() + "; }\n";
+  std::vector<std::vector<std::pair<GLenum, std::string>>> programs = {{{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}};
+  if (hasTessellation()) {
+    programs.push_back({
+        {GL_VERTEX_SHADER, std::string("#version 400 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
+        {GL_TESS_CONTROL_SHADER,
+         "#version 400 core\nlayout(vertices = 3) out;\nvoid main() {\n"
+         "  gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;\n"
+         "  gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelInner[0] = 1.0;\n}\n"},
+        {GL_TESS_EVALUATION_SHADER,
+         "#version 400 core\nlayout(triangles) in;\n" + unitSamplers() + "out vec4 v_sum;\nvoid main() {\n  v_sum = " +
+             sumOfUnits() + ";\n  gl_Position = gl_TessCoord.x * gl_in[0].gl_Position + gl_TessCoord.y * gl_in[1].gl_Position + "
+                            "gl_TessCoord.z * gl_in[2].gl_Position;\n}\n"},
+        {GL_FRAGMENT_SHADER, "#version 400 core\nin vec4 v_sum;\nout vec4 o_color;\nvoid main() { o_color = v_sum; }\n"}});
   }
-  glDeleteProgram(program);
+  return programs;
+}
+
+// One pixel drawn, into the framebuffer bound, by programs that sample a 1x1 stand-in on each of
+// the sixteen units in the fragment stage and in the tessellation evaluation stage. The driver's
+// references to the last draw's textures are per unit and per stage, and only a draw that samples
+// a unit in that stage moves them on: a point light's lit program samples its fill light's map on
+// units 4 and 5, which nothing else reached, and the 8192^2 map (256 MB) stayed held; a texture
+// sampled in an evaluation stage (the surface lab's height map) stayed held through every later
+// program without one, or whose one sampled nothing (the window's soak: steps of 1-2 MB on lab
+// entries after the surface lab). The vertex stage's go with the next draw on their own.
+// Restores what it changes but leaves no texture bound.
+void drawSamplingEveryUnit() {
+  GLint previousProgram = 0, previousVao = 0, previousUnit = 0, previousPatch = 3;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
+  if (hasTessellation()) glGetIntegerv(GL_PATCH_VERTICES, &previousPatch);
+  const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
+  bool enabled[std::size(caps)];
+  for (size_t i = 0; i < std::size(caps); ++i) {
+    enabled[i] = glIsEnabled(caps[i]);
+    glDisable(caps[i]);
+  }
+  GLuint standIn = 0, vao = 0;
+  glGenTextures(1, &standIn);
+  glGenVertexArrays(1, &vao);
+  const uint8_t texel = 0;
+  glBindTexture(GL_TEXTURE_2D, standIn);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &texel);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  for (int u = 0; u < kUnits; ++u) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + u));
+    glBindTexture(GL_TEXTURE_2D, standIn);
+    glBindSampler(GLuint(u), 0);
+  }
+  glBindVertexArray(vao);
+  glViewport(0, 0, 1, 1);
+  for (const auto& stages : samplingPrograms()) {
+    const GLuint program = glCreateProgram();
+    bool tessellated = false;
+    for (const auto& [type, source] : stages) {
+      const GLuint shader = compiledStage(type, source);
+      glAttachShader(program, shader);
+      glDeleteShader(shader);
+      tessellated = tessellated || type == GL_TESS_EVALUATION_SHADER;
+    }
+    glLinkProgram(program);
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (linked) {
+      glUseProgram(program);
+      for (int u = 0; u < kUnits; ++u) glUniform1i(glGetUniformLocation(program, ("u_unit" + std::to_string(u)).c_str()), u);
+      if (tessellated) {
+        glPatchParameteri(GL_PATCH_VERTICES, 3);
+        glDrawArrays(GL_PATCHES, 0, 3);
+      } else {
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+    }
+    glUseProgram(0);
+    glDeleteProgram(program);
+  }
+  for (int u = 0; u < kUnits; ++u) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + u));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  glActiveTexture(GLenum(previousUnit));
+  glBindVertexArray(GLuint(previousVao));
+  glUseProgram(GLuint(previousProgram));
+  if (hasTessellation()) glPatchParameteri(GL_PATCH_VERTICES, previousPatch);
+  for (size_t i = 0; i < std::size(caps); ++i)
+    if (enabled[i]) glEnable(caps[i]);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteTextures(1, &standIn);
 }
 
 }  // namespace
