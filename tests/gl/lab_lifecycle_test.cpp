@@ -84,6 +84,14 @@ GLuint linkedProgram(std::vector<std::pair<GLenum, std::string>> stages) {
   return program;
 }
 
+// The heap in use after a frame of the host's, its free pages given back: what the process holds.
+double heapAfterFrame(LabHost& host, glm::ivec2 size) {
+  host.renderFrame(size);
+  glFinish();
+  returnFreePages();
+  return heapInUseMb();
+}
+
 }  // namespace
 
 // A texture sampled in a tessellation evaluation stage stays held by llvmpipe after it is
@@ -94,14 +102,8 @@ TEST(Lifecycle, ATextureSampledInATessellationStageIsLetGo) {
   if (!gl::hasTessellation()) GTEST_SKIP() << "no tessellation stages in this context";
   LabHost host(test::builtinShaders());
   ASSERT_EQ(host.selectLab("shading"), "");
-  auto heap = [&] {
-    host.renderFrame({64, 36});
-    glFinish();
-    returnFreePages();
-    return heapInUseMb();
-  };
-  heap();
-  const double before = heap();
+  heapAfterFrame(host, {64, 36});
+  const double before = heapAfterFrame(host, {64, 36});
   const GLuint program = linkedProgram(
       {{GL_VERTEX_SHADER, "#version 400 core\nvoid main() { gl_Position = vec4(gl_VertexID & 1, gl_VertexID >> 1, 0.0, 1.0); }\n"},
        {GL_TESS_CONTROL_SHADER,
@@ -134,7 +136,7 @@ TEST(Lifecycle, ATextureSampledInATessellationStageIsLetGo) {
   glDeleteProgram(program);
   ASSERT_EQ(host.selectLab("filtering"), "");  // leaving a lab hands the driver's references to the stand-ins
   ASSERT_EQ(host.selectLab("shading"), "");
-  const double after = heap();
+  const double after = heapAfterFrame(host, {64, 36});
   std::printf("heap %.1f MB before, %.1f MB after\n", before, after);
   EXPECT_LT(after, before + 16.0) << "the evaluation stage's 64 MB texture is still held";
   EXPECT_EQ(gl::drainErrors(), "");
@@ -174,19 +176,13 @@ TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
   }
   for (const auto& configuration : configurations) {
     LabHost host(test::builtinShaders());
-    auto heapAfterFrame = [&] {
-      host.renderFrame({160, 90});
-      glFinish();
-      returnFreePages();
-      return heapInUseMb();
-    };
-    heapAfterFrame();
-    const double before = heapAfterFrame();
+    heapAfterFrame(host, {160, 90});
+    const double before = heapAfterFrame(host, {160, 90});
     ASSERT_EQ(host.selectLab("shadows"), "");
     for (const std::string& s : configuration) ASSERT_EQ(host.set(s), "") << s;
-    const double inShadows = heapAfterFrame();
+    const double inShadows = heapAfterFrame(host, {160, 90});
     ASSERT_EQ(host.selectLab("shading"), "");
-    const double after = heapAfterFrame();
+    const double after = heapAfterFrame(host, {160, 90});
     std::printf("%s: heap in use %.1f MB, %.1f MB in the shadows lab, %.1f MB after leaving\n",
                 configuration.front().c_str(), before, inShadows, after);
     EXPECT_GT(inShadows, before + 250.0) << configuration.front();
