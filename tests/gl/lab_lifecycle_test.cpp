@@ -187,7 +187,7 @@ TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
                 configuration.front().c_str(), before, inShadows, after);
     EXPECT_GT(inShadows, before + 250.0) << configuration.front();
     // The maps are 256-700 MB; nothing of them may stay. The host's stand-ins are made with it,
-    // before the baseline: six runs, three of them beside a second one, left 4.4-4.6 MB less than
+    // before the baseline: six runs, in pairs side by side, left 4.4-4.6 MB less than
     // the baseline. (Deleted after each use, the stand-ins were held or not as the rasteriser
     // threads fell: steps of 3 MB, +6.3 MB at most in 30 runs.)
     EXPECT_LT(after, before + 4.0) << configuration.front();
