@@ -11,15 +11,29 @@ namespace gl {
 
 namespace {
 
-GLuint compiledStage(GLenum type, const std::string& source) {
-  const GLuint shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  return shader;
-}
-
 constexpr int kUnits = 16;  // the texture units every stage is sure to have
+
+// The program of these stages with its sixteen samplers on units 0-15; empty if it does not link.
+ProgramName linkedSamplingProgram(const std::vector<std::pair<GLenum, std::string>>& stages) {
+  ProgramName program = ProgramName::make();
+  for (const auto& [type, source] : stages) {
+    const GLuint shader = glCreateShader(type);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    glAttachShader(program.get(), shader);
+    glDeleteShader(shader);
+  }
+  glLinkProgram(program.get());
+  GLint linked = 0, previous = 0;
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &linked);
+  if (!linked) return {};
+  glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+  glUseProgram(program.get());
+  for (int u = 0; u < kUnits; ++u) glUniform1i(glGetUniformLocation(program.get(), ("u_unit" + std::to_string(u)).c_str()), u);
+  glUseProgram(GLuint(previous));
+  return program;
+}
 
 // GLSL declaring the sixteen units' samplers, and an expression summing a lookup of each (an
 // explicit level: vertex and tessellation stages have no derivatives).
@@ -37,7 +51,7 @@ std::string sumOfUnits() {
 // A triangle covering the viewport, from gl_VertexID.
 constexpr const char* kCorner = "vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID & 2) * 2.0 - 1.0, 0.0, 1.0)";
 
-// The programs of drawSamplingEveryUnit: one whose fragment stage samples every unit; where the
+// The stand-ins' sampling programs: one whose fragment stage samples every unit; where the
 // context has tessellation, a second one whose evaluation stage does (its sum goes to the colour
 // written, so no compiler drops a lookup).
 std::vector<std::vector<std::pair<GLenum, std::string>>> samplingPrograms() {
@@ -61,80 +75,6 @@ std::vector<std::vector<std::pair<GLenum, std::string>>> samplingPrograms() {
   return programs;
 }
 
-// One pixel drawn, into the framebuffer bound, by programs that sample a 1x1 stand-in on each of
-// the sixteen units in the fragment stage and in the tessellation evaluation stage. The driver's
-// references to the last draw's textures are per unit and per stage, and only a draw that samples
-// a unit in that stage moves them on: a point light's lit program samples its fill light's map on
-// units 4 and 5, which nothing else reached, and the 8192^2 map (256 MB) stayed held; a texture
-// sampled in an evaluation stage (the surface lab's height map) stayed held through every later
-// program without one, or whose one sampled nothing (the window's soak: steps of 1-2 MB on lab
-// entries after the surface lab). The vertex stage's go with the next draw on their own.
-// Restores what it changes but leaves no texture bound.
-void drawSamplingEveryUnit() {
-  GLint previousProgram = 0, previousVao = 0, previousUnit = 0, previousPatch = 3;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
-  glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
-  if (hasTessellation()) glGetIntegerv(GL_PATCH_VERTICES, &previousPatch);
-  const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
-  bool enabled[std::size(caps)];
-  for (size_t i = 0; i < std::size(caps); ++i) {
-    enabled[i] = glIsEnabled(caps[i]);
-    glDisable(caps[i]);
-  }
-  GLuint standIn = 0, vao = 0;
-  glGenTextures(1, &standIn);
-  glGenVertexArrays(1, &vao);
-  const uint8_t texel = 0;
-  glBindTexture(GL_TEXTURE_2D, standIn);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &texel);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  for (int u = 0; u < kUnits; ++u) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + u));
-    glBindTexture(GL_TEXTURE_2D, standIn);
-    glBindSampler(GLuint(u), 0);
-  }
-  glBindVertexArray(vao);
-  glViewport(0, 0, 1, 1);
-  for (const auto& stages : samplingPrograms()) {
-    const GLuint program = glCreateProgram();
-    bool tessellated = false;
-    for (const auto& [type, source] : stages) {
-      const GLuint shader = compiledStage(type, source);
-      glAttachShader(program, shader);
-      glDeleteShader(shader);
-      tessellated = tessellated || type == GL_TESS_EVALUATION_SHADER;
-    }
-    glLinkProgram(program);
-    GLint linked = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    if (linked) {
-      glUseProgram(program);
-      for (int u = 0; u < kUnits; ++u) glUniform1i(glGetUniformLocation(program, ("u_unit" + std::to_string(u)).c_str()), u);
-      if (tessellated) {
-        glPatchParameteri(GL_PATCH_VERTICES, 3);
-        glDrawArrays(GL_PATCHES, 0, 3);
-      } else {
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      }
-    }
-    glUseProgram(0);
-    glDeleteProgram(program);
-  }
-  for (int u = 0; u < kUnits; ++u) {
-    glActiveTexture(GLenum(GL_TEXTURE0 + u));
-    glBindTexture(GL_TEXTURE_2D, 0);
-  }
-  glActiveTexture(GLenum(previousUnit));
-  glBindVertexArray(GLuint(previousVao));
-  glUseProgram(GLuint(previousProgram));
-  if (hasTessellation()) glPatchParameteri(GL_PATCH_VERTICES, previousPatch);
-  for (size_t i = 0; i < std::size(caps); ++i)
-    if (enabled[i]) glEnable(caps[i]);
-  glDeleteVertexArrays(1, &vao);
-  glDeleteTextures(1, &standIn);
-}
-
 }  // namespace
 
 // Big enough that the rasteriser threads get tiles of them (llvmpipe's threads hold their own);
@@ -142,11 +82,20 @@ void drawSamplingEveryUnit() {
 constexpr int kSide = 512, kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
 
 DriverStandIns::DriverStandIns()
-    : plain_(TextureName::make()), array_(TextureName::make()), framebuffer_(FramebufferName::make()) {
+    : plain_(TextureName::make()), array_(TextureName::make()), texel_(TextureName::make()),
+      framebuffer_(FramebufferName::make()), vao_(VertexArray::make()) {
+  if (!esContext())  // OpenGL ES and WebGL do not keep the last draw's textures
+    for (const auto& stages : samplingPrograms())
+      if (ProgramName program = linkedSamplingProgram(stages))
+        programs_.push_back({std::move(program), stages.size() > 2});
   GLint texture2d = 0, textureArray = 0, framebuffer = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2d);
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &textureArray);
   glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+  const uint8_t zero = 0;
+  glBindTexture(GL_TEXTURE_2D, texel_.get());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glBindTexture(GL_TEXTURE_2D, plain_.get());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kSide, kSide, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
   glBindTexture(GL_TEXTURE_2D_ARRAY, array_.get());
@@ -173,7 +122,7 @@ void DriverStandIns::takeDriverReferences() {
   // held (the cascades' 357 MB of moment maps, in one lifecycle test run of six with a second one
   // running beside it). So the clear and the mipmaps are made in rounds, each finished before the
   // next: every round is another chance for every thread.
-  if (!esContext()) drawSamplingEveryUnit();
+  drawSamplingEveryUnit();
   constexpr int kRounds = 3;
   for (int round = 0; round < kRounds; ++round) {
     glClear(GL_COLOR_BUFFER_BIT);
@@ -183,6 +132,46 @@ void DriverStandIns::takeDriverReferences() {
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
+void DriverStandIns::drawSamplingEveryUnit() {
+  GLint previousProgram = 0, previousVao = 0, previousUnit = 0, previousPatch = 3;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
+  if (hasTessellation()) glGetIntegerv(GL_PATCH_VERTICES, &previousPatch);
+  const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
+  bool enabled[std::size(caps)];
+  for (size_t i = 0; i < std::size(caps); ++i) {
+    enabled[i] = glIsEnabled(caps[i]);
+    glDisable(caps[i]);
+  }
+  for (int u = 0; u < kUnits; ++u) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + u));
+    glBindTexture(GL_TEXTURE_2D, texel_.get());
+    glBindSampler(GLuint(u), 0);
+  }
+  glBindVertexArray(vao_.get());
+  glViewport(0, 0, 1, 1);
+  for (const SamplingProgram& p : programs_) {
+    glUseProgram(p.program.get());
+    if (p.patches) {
+      glPatchParameteri(GL_PATCH_VERTICES, 3);
+      glDrawArrays(GL_PATCHES, 0, 3);
+    } else {
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+  }
+  for (int u = 0; u < kUnits; ++u) {
+    glActiveTexture(GLenum(GL_TEXTURE0 + u));
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  glActiveTexture(GLenum(previousUnit));
+  glBindVertexArray(GLuint(previousVao));
+  glUseProgram(GLuint(previousProgram));
+  if (hasTessellation()) glPatchParameteri(GL_PATCH_VERTICES, previousPatch);
+  for (size_t i = 0; i < std::size(caps); ++i)
+    if (enabled[i]) glEnable(caps[i]);
 }
 
 }  // namespace gl

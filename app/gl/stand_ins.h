@@ -13,6 +13,8 @@
 // held by some threads and not others, and a lab entry's heap differed by their 3 MB from one
 // entry to the next.
 #pragma once
+#include <vector>
+
 #include "gl/handle.h"
 
 namespace gl {
@@ -25,8 +27,25 @@ class DriverStandIns {
   void takeDriverReferences();
 
  private:
-  TextureName plain_, array_;
+  // One pixel, into the framebuffer bound, drawn by programs that sample the 1x1 `texel_` on each
+  // of sixteen units in the fragment stage and in a tessellation evaluation stage. The driver's
+  // references to the last draw's textures are per unit and per stage, and only a draw that
+  // samples a unit in that stage moves them on: a point light's lit program samples its fill
+  // light's map on units 4 and 5, which nothing else reached, and the 8192^2 map (256 MB) stayed
+  // held; a texture sampled in an evaluation stage (the surface lab's height map) stayed held
+  // through every later program without one, or whose one sampled nothing (the window's soak:
+  // steps of 1-2 MB on lab entries after the surface lab). A vertex stage's go with the next draw
+  // on their own. Restores what it changes but leaves no texture bound.
+  void drawSamplingEveryUnit();
+
+  struct SamplingProgram {
+    ProgramName program;
+    bool patches = false;  // drawn as one patch: it has tessellation stages
+  };
+  TextureName plain_, array_, texel_;
   FramebufferName framebuffer_;
+  VertexArray vao_;
+  std::vector<SamplingProgram> programs_;  // linked once, with the stand-ins (none on OpenGL ES)
 };
 
 }  // namespace gl
