@@ -13,8 +13,9 @@ namespace {
 
 constexpr int kUnits = 16;  // the texture units every stage is sure to have
 
-// The program of these stages with its sixteen samplers on units 0-15; empty if it does not link.
-ProgramName linkedSamplingProgram(const std::vector<std::pair<GLenum, std::string>>& stages) {
+// The program of these stages, its samplers u_unit0-15 (if it has them) on units 0-15; empty if it
+// does not link.
+ProgramName linkedProgram(const std::vector<std::pair<GLenum, std::string>>& stages) {
   ProgramName program = ProgramName::make();
   for (const auto& [type, source] : stages) {
     const GLuint shader = glCreateShader(type);
@@ -75,6 +76,17 @@ std::vector<std::vector<std::pair<GLenum, std::string>>> samplingPrograms() {
   return programs;
 }
 
+// A loop of `u_work` dependent steps per pixel: a scene that keeps the rasteriser busy.
+constexpr const char* kLongSceneFragment = R"(#version 330 core
+uniform int u_work;
+out vec4 o_color;
+void main() {
+  float s = gl_FragCoord.x;
+  for (int i = 0; i < u_work; ++i) s = sin(s) * 1.01 + 0.5;
+  o_color = vec4(s);
+}
+)";
+
 }  // namespace
 
 // Big enough that the rasteriser threads get tiles of them (llvmpipe's threads hold their own);
@@ -86,8 +98,14 @@ DriverStandIns::DriverStandIns()
       framebuffer_(FramebufferName::make()), vao_(VertexArray::make()) {
   if (!esContext())  // OpenGL ES and WebGL do not keep the last draw's textures
     for (const auto& stages : samplingPrograms())
-      if (ProgramName program = linkedSamplingProgram(stages))
+      if (ProgramName program = linkedProgram(stages))
         programs_.push_back({std::move(program), stages.size() > 2});
+  if (rendererIs("llvmpipe")) {
+    sceneTarget_ = TextureName::make();
+    sceneFramebuffer_ = FramebufferName::make();
+    longScene_ = linkedProgram({{GL_VERTEX_SHADER, std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
+                                        {GL_FRAGMENT_SHADER, kLongSceneFragment}});
+  }
   GLint texture2d = 0, textureArray = 0, framebuffer = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2d);
   glGetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &textureArray);
@@ -105,6 +123,12 @@ DriverStandIns::DriverStandIns()
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, plain_.get(), 0);
+  if (sceneTarget_) {
+    glBindTexture(GL_TEXTURE_2D, sceneTarget_.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, 1, 1, 0, GL_RED, GL_UNSIGNED_BYTE, &zero);
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFramebuffer_.get());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, sceneTarget_.get(), 0);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
   glBindTexture(GL_TEXTURE_2D_ARRAY, GLuint(textureArray));
   glBindTexture(GL_TEXTURE_2D, GLuint(texture2d));
@@ -116,6 +140,7 @@ void DriverStandIns::takeDriverReferences() {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
   glViewport(0, 0, kSide, kSide);
   glBindTexture(GL_TEXTURE_2D_ARRAY, array_.get());
+  handOutEveryScene();
   // The references per unit move with one draw (it reaches no particular thread). Those per thread
   // move only for a thread that takes tiles of the clear and of the mipmaps, and which thread takes
   // which is up to the threads: one that the machine's load keeps away gets none and keeps what it
@@ -132,6 +157,41 @@ void DriverStandIns::takeDriverReferences() {
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
+void DriverStandIns::handOutEveryScene() {
+  if (!longScene_) return;
+  // Mesa 22.3 makes at most 64 scenes, and once it has 64 it waits for the first and reuses only
+  // that one: the rest are never reached again and every flush waits for the one before. So this
+  // never asks for more than 48 behind the long one, and a pool it grows stays below 64.
+  constexpr int kScenes = 48;
+  GLint previousProgram = 0, previousVao = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
+  glUseProgram(longScene_.get());
+  glBindVertexArray(vao_.get());
+  const GLint work = glGetUniformLocation(longScene_.get(), "u_work");
+  // 32 steps on 512^2 pixels outlast the 48 flushes on two cores (the whole walk: 12-22 ms a lab
+  // switch); a machine that draws it sooner gets one more round, four times as long.
+  for (int steps = 32; steps <= 128; steps *= 4) {
+    glUniform1i(work, steps);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    const GLsync longScene = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);  // flushes it
+    // Cleared scenes of a target of their own: clearing the long scene's would wait for it.
+    glBindFramebuffer(GL_FRAMEBUFFER, sceneFramebuffer_.get());
+    int handedOut = 0;
+    for (; handedOut < kScenes; ++handedOut) {
+      glClear(GL_COLOR_BUFFER_BIT);
+      glFlush();
+      if (glClientWaitSync(longScene, 0, 0) != GL_TIMEOUT_EXPIRED) break;  // drawn: the next would reuse it
+    }
+    glDeleteSync(longScene);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    if (handedOut == kScenes) break;
+  }
+  glFinish();
+  glBindVertexArray(GLuint(previousVao));
+  glUseProgram(GLuint(previousProgram));
 }
 
 void DriverStandIns::drawSamplingEveryUnit() {
