@@ -176,12 +176,13 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
     // The lab entry is counted once its jobs are done, the same state every time.
     if (host.jobs().busy()) settle(host);
     countAfterSwitch_ = false;
-    LabEntry entry{seconds(), 0.0, 0.0, {}, {}, leftState_};
+    LabEntry entry{seconds(), 0.0, 0.0, {}, {}, 0, leftState_};
     for (int k = 0; k < int(gl::Kind::Count); ++k) entry.glObjects.push_back(gl::liveObjects(gl::Kind(k)));
     returnFreePages();
     entry.residentMb = residentMb();
     entry.heapMb = heapInUseMb();
     entry.resident = residentParts();
+    entry.programs = distinctProgramsLinked();
     entries_[std::string(host.lab().id())].push_back(std::move(entry));
   }
   const double t = seconds();
@@ -215,12 +216,12 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     for (auto& e : entries) byTime.emplace_back(lab, &e);
   std::sort(byTime.begin(), byTime.end(), [](auto& a, auto& b) { return a.second->seconds < b.second->seconds; });
   std::ostringstream entryRows;
-  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects,anonymous_mb,file_mb,left\n";
+  entryRows << "seconds,lab,resident_mb,heap_mb,gl_objects,anonymous_mb,file_mb,programs,left\n";
   for (auto& [lab, e] : byTime)
     entryRows << formatNumber(e->seconds) << "," << lab << "," << formatNumber(e->residentMb) << ","
               << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << ","
               << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << ","
-              << csvField(e->left) << "\n";
+              << e->programs << "," << csvField(e->left) << "\n";
   const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
   if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
@@ -272,6 +273,14 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     s << "soak: the resident slope in parts: anonymous pages " << formatNumber(anonymousSlope)
       << " MB per 10 min, pages of mapped files (libraries' code) " << formatNumber(fileSlope) << " MB per 10 min\n";
     passed = passed && (flat || !judgeSlope);
+    // What the driver keeps per program it meets rises with this count, not with time.
+    size_t atWarm = 0, atEnd = 0;
+    for (auto& [lab, entries] : entries_)
+      for (auto& e : entries) {
+        if (e.seconds < warm) atWarm = std::max(atWarm, e.programs);
+        atEnd = std::max(atEnd, e.programs);
+      }
+    s << "soak: distinct programs linked: " << atWarm << " by the end of warm-up, " << atEnd << " by the last lab entry\n";
   }
   // The entry furthest above its lab's median heap, and the lab it came from: memory the lab
   // before kept past the switch.

@@ -88,6 +88,7 @@ class SoakDriver {
     double heapMb;               // allocated and in use (mallinfo2): tells memory kept from pages kept
     ResidentParts resident;      // residentMb as anonymous and file-backed pages
     std::vector<int> glObjects;  // live GL objects of each gl::Kind
+    size_t programs = 0;         // distinctProgramsLinked() then: the driver's compiler keeps some per program
     std::string left;            // the state of the lab left for this one: an entry far above the
                                  // lab's others names what to reproduce
   };

@@ -1,6 +1,7 @@
 #include "shader/shader_library.h"
 
 #include <cstdio>
+#include <unordered_set>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -67,7 +68,15 @@ gl::ProgramName buildProgram(const std::vector<std::pair<GLenum, std::string>>& 
   return program;
 }
 
+// The hashes of every program linked so far (the GL thread's alone: programs are built there).
+std::unordered_set<size_t>& linkedSources() {
+  static std::unordered_set<size_t> seen;
+  return seen;
+}
+
 }  // namespace
+
+size_t distinctProgramsLinked() { return linkedSources().size(); }
 
 const char* stageName(GLenum type) {
   switch (type) {
@@ -229,6 +238,7 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
   }
   p.good_ = std::move(built);
   p.sourceHash_ = hash;
+  linkedSources().insert(hash);
   p.bound_ = 0;
   p.locations_.clear();
   ++p.generation_;

@@ -169,4 +169,10 @@ class ProgramSlot {
 GLenum stageFromExtension(const std::string& path);  // .vert .geom .frag .tesc .tese .comp; 0 if unknown
 const char* stageName(GLenum type);                  // "vertex", "fragment", ... as drivers' logs say
 
+// Distinct programs (told apart by their preprocessed sources) this process has linked. A driver
+// may keep memory for every program it ever compiled: llvmpipe keeps each constant its LLVM
+// compiler made until the context goes (about 1 KB a program), so memory that rises with this
+// count is the driver meeting new programs, not a leak. The soak records it on every lab entry.
+size_t distinctProgramsLinked();
+
 }  // namespace shadelab
