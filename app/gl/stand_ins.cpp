@@ -87,6 +87,33 @@ void main() {
 }
 )";
 
+// What a lab may leave set that would keep the stand-ins' draws and clears from reaching a pixel
+// (the front-face culling of a shadow pass, a scissor, a colour mask): off while this lives, and
+// as it was after.
+class PlainRaster {
+ public:
+  PlainRaster() {
+    for (size_t i = 0; i < std::size(kCaps); ++i) {
+      enabled_[i] = glIsEnabled(kCaps[i]);
+      glDisable(kCaps[i]);
+    }
+    glGetBooleanv(GL_COLOR_WRITEMASK, mask_);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  ~PlainRaster() {
+    for (size_t i = 0; i < std::size(kCaps); ++i)
+      if (enabled_[i]) glEnable(kCaps[i]);
+    glColorMask(mask_[0], mask_[1], mask_[2], mask_[3]);
+  }
+  PlainRaster(const PlainRaster&) = delete;
+  PlainRaster& operator=(const PlainRaster&) = delete;
+
+ private:
+  static constexpr GLenum kCaps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
+  GLboolean enabled_[std::size(kCaps)] = {};
+  GLboolean mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+};
+
 }  // namespace
 
 // Big enough that the rasteriser threads get tiles of them (llvmpipe's threads hold their own);
@@ -104,7 +131,7 @@ DriverStandIns::DriverStandIns()
     sceneTarget_ = TextureName::make();
     sceneFramebuffer_ = FramebufferName::make();
     longScene_ = linkedProgram({{GL_VERTEX_SHADER, std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
-                                        {GL_FRAGMENT_SHADER, kLongSceneFragment}});
+                                {GL_FRAGMENT_SHADER, kLongSceneFragment}});
   }
   GLint texture2d = 0, textureArray = 0, framebuffer = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2d);
@@ -135,6 +162,7 @@ DriverStandIns::DriverStandIns()
 }
 
 void DriverStandIns::takeDriverReferences() {
+  const PlainRaster plain;
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
@@ -200,12 +228,6 @@ void DriverStandIns::drawSamplingEveryUnit() {
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
   if (hasTessellation()) glGetIntegerv(GL_PATCH_VERTICES, &previousPatch);
-  const GLenum caps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
-  bool enabled[std::size(caps)];
-  for (size_t i = 0; i < std::size(caps); ++i) {
-    enabled[i] = glIsEnabled(caps[i]);
-    glDisable(caps[i]);
-  }
   for (int u = 0; u < kUnits; ++u) {
     glActiveTexture(GLenum(GL_TEXTURE0 + u));
     glBindTexture(GL_TEXTURE_2D, texel_.get());
@@ -230,8 +252,6 @@ void DriverStandIns::drawSamplingEveryUnit() {
   glBindVertexArray(GLuint(previousVao));
   glUseProgram(GLuint(previousProgram));
   if (hasTessellation()) glPatchParameteri(GL_PATCH_VERTICES, previousPatch);
-  for (size_t i = 0; i < std::size(caps); ++i)
-    if (enabled[i]) glEnable(caps[i]);
 }
 
 }  // namespace gl
