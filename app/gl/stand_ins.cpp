@@ -89,10 +89,12 @@ void main() {
 
 // What a lab may leave set that would keep the stand-ins' draws and clears from reaching a pixel
 // (the front-face culling of a shadow pass, a scissor, a colour mask): off while this lives, and
-// as it was after.
+// as it was after, with the program and vertex array bound.
 class PlainRaster {
  public:
   PlainRaster() {
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
     for (size_t i = 0; i < std::size(kCaps); ++i) {
       enabled_[i] = glIsEnabled(kCaps[i]);
       glDisable(kCaps[i]);
@@ -104,6 +106,8 @@ class PlainRaster {
     for (size_t i = 0; i < std::size(kCaps); ++i)
       if (enabled_[i]) glEnable(kCaps[i]);
     glColorMask(mask_[0], mask_[1], mask_[2], mask_[3]);
+    glBindVertexArray(GLuint(vao_));
+    glUseProgram(GLuint(program_));
   }
   PlainRaster(const PlainRaster&) = delete;
   PlainRaster& operator=(const PlainRaster&) = delete;
@@ -112,6 +116,7 @@ class PlainRaster {
   static constexpr GLenum kCaps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
   GLboolean enabled_[std::size(kCaps)] = {};
   GLboolean mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+  GLint program_ = 0, vao_ = 0;
 };
 
 }  // namespace
@@ -193,9 +198,6 @@ void DriverStandIns::handOutEveryScene() {
   // that one: the rest are never reached again and every flush waits for the one before. So this
   // never asks for more than 48 behind the long one, and a pool it grows stays below 64.
   constexpr int kScenes = 48;
-  GLint previousProgram = 0, previousVao = 0;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
   glUseProgram(longScene_.get());
   glBindVertexArray(vao_.get());
   const GLint work = glGetUniformLocation(longScene_.get(), "u_work");
@@ -218,14 +220,10 @@ void DriverStandIns::handOutEveryScene() {
     if (handedOut == kScenes) break;
   }
   glFinish();
-  glBindVertexArray(GLuint(previousVao));
-  glUseProgram(GLuint(previousProgram));
 }
 
 void DriverStandIns::drawSamplingEveryUnit() {
-  GLint previousProgram = 0, previousVao = 0, previousUnit = 0, previousPatch = 3;
-  glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-  glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &previousVao);
+  GLint previousUnit = 0, previousPatch = 3;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &previousUnit);
   if (hasTessellation()) glGetIntegerv(GL_PATCH_VERTICES, &previousPatch);
   for (int u = 0; u < kUnits; ++u) {
@@ -249,8 +247,6 @@ void DriverStandIns::drawSamplingEveryUnit() {
     glBindTexture(GL_TEXTURE_2D, 0);
   }
   glActiveTexture(GLenum(previousUnit));
-  glBindVertexArray(GLuint(previousVao));
-  glUseProgram(GLuint(previousProgram));
   if (hasTessellation()) glPatchParameteri(GL_PATCH_VERTICES, previousPatch);
 }
 

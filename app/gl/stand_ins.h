@@ -37,8 +37,8 @@ class DriverStandIns {
   // held; a texture sampled in an evaluation stage (the surface lab's height map) stayed held
   // through every later program without one, or whose one sampled nothing (the window's soak:
   // steps of 1-2 MB on lab entries after the surface lab). A vertex stage's go with the next draw
-  // on their own. Restores what it changes but leaves no texture bound; the caller turns the tests
-  // and culling off.
+  // on their own. Restores the active unit and patch size but leaves no texture bound; the caller
+  // turns the tests and culling off and restores the program and vertex array.
   void drawSamplingEveryUnit();
   // llvmpipe bins draws into scenes that its rasteriser threads then draw. It makes a scene when
   // every one it has is still queued or being drawn, and keeps each for the life of the context;
