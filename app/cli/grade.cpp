@@ -11,6 +11,7 @@
 #include "cli/grade_render.h"
 #include "cli/grade_student.h"
 #include "grade/configuration_frames.h"
+#include "grade/diagnosis.h"
 #include "grade/grading.h"
 #include "grade/watchdog.h"
 #include "measure/report.h"
@@ -68,7 +69,6 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
   out.notes = g.notes;
   std::printf("%s: %s (%s)\n", ex.id.c_str(), ex.title.c_str(), (ex.dir / "statement.md").c_str());
   lookUpSubmission(ex, g.shaderDirs, out);
-  std::vector<std::string> printed;
   for (size_t i = 0; i < ex.configurations.size(); ++i) {
     const Configuration& c = ex.configurations[i];
     ConfigurationResult result;
@@ -88,11 +88,15 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
       if (renderer.empty()) renderer = solution.value("renderer", "");
       ++(solution.value("from_cache", false) ? cache.fromCache : cache.rendered);
     }
-    for (auto& line : configurationLines(result, printed)) std::printf("%s\n", line.c_str());
     for (auto& r : result.checks) out.earned += r.earned;
-    std::fflush(stdout);
     out.configurations.push_back(std::move(result));
   }
+  // The lines once every configuration is in: a hint may rest on another configuration's checks.
+  diagnose(ex, out);
+  for (auto& line : diagnosisLines(out)) std::printf("%s\n", line.c_str());
+  std::vector<std::string> printed;
+  for (auto& c : out.configurations)
+    for (auto& line : configurationLines(c, printed)) std::printf("%s\n", line.c_str());
   for (auto& f : out.missingFiles) std::printf("  not submitted: %s is in none of the --shaders folders\n", f.c_str());
   for (auto& n : out.notes) std::printf("  note: %s\n", n.c_str());
   std::printf("%s\n\n", exerciseTotalLine(out).c_str());

@@ -115,7 +115,8 @@ std::string readStudentRows(const fs::path& reportJson, const std::string& stude
       if (!e.is_object()) return reportJson.string() + ": an exercise that is not an object";
       ClassRow row;
       row.student = student;
-      for (auto [key, member] : {std::pair{"id", &ClassRow::exercise}, {"title", &ClassRow::title}, {"status", &ClassRow::status}})
+      for (auto [key, member] : {std::pair{"id", &ClassRow::exercise}, {"title", &ClassRow::title}, {"status", &ClassRow::status},
+                                 {"diagnosis", &ClassRow::diagnosis}, {"mistake", &ClassRow::mistake}})
         row.*member = text(e, key);
       for (auto [key, member] : {std::pair{"score", &ClassRow::score}, {"total", &ClassRow::total},
                                  {"percent", &ClassRow::percent}, {"pass_mark", &ClassRow::passMark}})
@@ -180,7 +181,7 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
       "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
       "td:first-child,th:first-child{text-align:left}.no{color:#c00}.yes{color:#1a7f37}"
       "figure{display:inline-block;margin:4px}img{image-rendering:pixelated}figcaption{font-size:85%;text-align:center}"
-      ".miss{border-left:3px solid #c05621;padding-left:.8em;margin:1em 0}.hint{color:#444}"
+      ".miss{border-left:3px solid #c05621;padding-left:.8em;margin:1em 0}.hint{color:#444}td.diag{text-align:left}"
       ".who p{margin:.6em 0 .1em}.who img{width:240px}</style></head><body>\n"
       "<h1>ShadeLab class report</h1>\n<p>" +
       std::to_string(students.size()) + " submissions, " + std::to_string(exercises.size()) +
@@ -208,6 +209,27 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
          format("%.1f", median) + " %.</p>\n" + histogram(percents) + "\n<table><tr><th>status</th><th>submissions</th></tr>";
     for (const char* s : kStatuses) h += "<tr><td>" + std::string(s) + "</td><td>" + std::to_string(statuses[s]) + "</td></tr>";
     h += "</table>\n";
+
+    // The students per diagnosis, the most common first (a tie: by the first student's name).
+    std::vector<std::pair<std::string, std::vector<const ClassRow*>>> diagnoses;
+    for (auto* r : of) {
+      if (r->diagnosis.empty()) continue;
+      auto it = std::find_if(diagnoses.begin(), diagnoses.end(), [&](auto& d) { return d.first == r->diagnosis; });
+      if (it == diagnoses.end()) diagnoses.push_back({r->diagnosis, {r}});
+      else it->second.push_back(r);
+    }
+    std::stable_sort(diagnoses.begin(), diagnoses.end(), [](auto& a, auto& b) { return a.second.size() > b.second.size(); });
+    if (!diagnoses.empty()) {
+      h += "<h3>Diagnoses</h3>\n<table><tr><th>students</th><th>diagnosis</th><th>who</th></tr>\n";
+      for (auto& [text, who] : diagnoses) {
+        std::string names;
+        for (size_t i = 0; i < who.size() && i < 8; ++i) names += (i ? ", " : "") + reportLink(who[i]->student);
+        if (who.size() > 8) names += ", ...";
+        h += "<tr><td>" + std::to_string(who.size()) + (who.size() == 1 ? " student" : " students") +
+             "</td><td class='diag'>" + htmlEscape(text) + "</td><td class='diag'>" + names + "</td></tr>\n";
+      }
+      h += "</table>\n";
+    }
 
     // The checks, most often missed first (a tie: in rubric order).
     struct Missed {

@@ -1,6 +1,6 @@
 // What a class's grading adds up to: a gradebook (CSV, one row per student and exercise, the
 // points of every check) and a class page (self-contained HTML: the scores' spread, how many
-// submissions ended in each state, and the checks most often missed with their hints and the
+// submissions ended in each state, the students per diagnosis, and the checks most often missed with their hints and the
 // three submissions that missed each by the most, with their images).
 //
 // Both are made from the students' report.json files alone, in the order of the students' names,
@@ -25,6 +25,7 @@ struct ClassRow {
   std::string student, exercise, title, status;  // status: outcomeName()
   double score = 0.0, total = 0.0, percent = 0.0, passMark = 0.0;
   bool passed = false;
+  std::string diagnosis, mistake;  // grade/diagnosis.h; empty for full marks
   std::vector<ClassCheck> checks;
 };
 

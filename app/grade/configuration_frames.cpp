@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <unistd.h>
+
+#include "grade/frame_properties.h"
 #include "host/configure.h"
 #include "host/measurer.h"
 #include "measure/report.h"
@@ -22,6 +25,36 @@ nlohmann::json metricsJson(const Metrics& metrics) {
 
 std::string where(const Exercise& ex, const Configuration& c) {
   return (ex.dir / "rubric.json").string() + ": configuration '" + c.name + "'";
+}
+
+// Each of the rubric's mistakes drawn in the configuration: the solution with that one change,
+// from a shader folder of its own searched before the built-in one.
+std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolution& out) {
+  out.mistakes.clear();
+  out.numbers["mistakes"] = nlohmann::json::array();
+  struct Scratch {  // removed however the loop ends
+    fs::path dir = fs::temp_directory_path() / ("shadelab-mistakes-" + std::to_string(getpid()));
+    ~Scratch() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } scratch;
+  for (auto& m : ex.mistakes) {
+    const fs::path dir = scratch.dir / m.name;
+    if (auto e = writeMistakeFolder(ex, m, dir); !e.empty()) return e;
+    std::string configError;
+    const auto host = configuredHost({dir, builtinShaderDir()}, ex, c, configError);
+    if (!configError.empty()) return where(ex, c) + ": " + configError;
+    host->settle();
+    host->renderFrame(ex.size);
+    ImageF frame = host->readImage();
+    const std::vector<std::string> errors = buildErrors(*host);
+    if (!errors.empty())
+      return (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "' does not build: " + errors.front();
+    out.numbers["mistakes"].push_back({{"name", m.name}, {"distance", frameDistance(frame, out.frame)}});
+    out.mistakes.push_back(std::move(frame));
+  }
+  return {};
 }
 
 }  // namespace
@@ -74,6 +107,7 @@ std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolut
   out.frame = host.readImage();
   if (auto errors = buildErrors(host); !errors.empty())
     return where(ex, c) + ": the lab's own shaders did not build: " + errors.front();
+  if (auto e = drawMistakes(ex, c, out); !e.empty()) return e;
   if (c.needsTruth()) {
     Measurer measurer(host);
     auto m = measurer.measureNow(ex.size, 0.0f, {});
@@ -100,8 +134,22 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   image = host.readImage();
   nlohmann::json student{{"errors", buildErrors(host)}, {"non_finite", countNonFinite(image)}};
   const ImageError e = compareImages(image, solution.frame);
-  student["vs_solution"] = metricsJson({{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
-                                        {"bad_pixel_pct", e.badPixelPct}});
+  const FrameProperties properties = measureFrameProperties(
+      image, solution.frame, solution.truths.empty() ? nullptr : &solution.truths.front(), {c.bounded, c.low, c.high});
+  Metrics vsSolution{{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
+                     {"bad_pixel_pct", e.badPixelPct}};
+  for (auto& m : properties.metrics(image)) vsSolution.push_back(m);
+  student["vs_solution"] = metricsJson(vsSolution);
+  // The evidence a diagnosis rests on: how far the frame lies from the solution's and from each
+  // mistake's, and what its properties say.
+  student["distance"] = frameDistance(image, solution.frame);
+  student["mistakes"] = nlohmann::json::array();
+  for (size_t i = 0; i < solution.mistakes.size(); ++i) student["mistakes"].push_back(frameDistance(image, solution.mistakes[i]));
+  student["properties"] = {{"nan_pixels", properties.nanPixels},
+                           {"inf_pixels", properties.infPixels},
+                           {"non_finite", properties.nonFiniteText()},
+                           {"edge_shift", {properties.edgeShift.x, properties.edgeShift.y}},
+                           {"edge_width_ratio", properties.edgeWidthRatio}};
   if (c.needsTruth() && student["errors"].empty()) {
     const Judge& judge = *host.lab().judge();  // the solution was measured against its truth: the lab judges
     std::vector<ImageF> views;

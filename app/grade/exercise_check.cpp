@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grade/configuration_frames.h"
+#include "grade/diagnosis.h"
 #include "shader/preprocessor.h"
 #include "util/contained_path.h"
 #include "util/output_files.h"
@@ -83,10 +84,11 @@ void ExerciseCheck::step() {
   for (auto& r : out.checks) result_.earned += r.earned;
   result_.configurations.push_back(std::move(out));
   running_ = result_.configurations.size() < exercise_.configurations.size();
+  if (!running_) diagnose(exercise_, result_);
 }
 
 std::vector<std::string> ExerciseCheck::lines() const {
-  std::vector<std::string> out, printed;
+  std::vector<std::string> out = diagnosisLines(result_), printed;
   for (auto& c : result_.configurations)
     for (auto& line : configurationLines(c, printed)) out.push_back(std::move(line));
   for (auto& n : result_.notes) out.push_back("  note: " + n);

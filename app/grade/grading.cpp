@@ -105,6 +105,23 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
       out.outcome = Outcome::DidNotBuild;
     }
   }
+  if (student.is_object() && why.empty() && student.contains("distance")) {
+    out.drawn = true;
+    out.distance = student["distance"].get<double>();
+    for (auto& d : student["mistakes"]) out.mistakeDistances.push_back(d.get<double>());
+    if (solution.contains("mistakes"))
+      for (auto& m : solution["mistakes"]) out.mistakeSeparations.push_back(m["distance"].get<double>());
+    const auto& p = student["properties"];
+    out.nanPixels = p["nan_pixels"].get<size_t>();
+    out.infPixels = p["inf_pixels"].get<size_t>();
+    out.nonFiniteText = p["non_finite"].get<std::string>();
+    out.edgeShiftX = p["edge_shift"][0].get<int>();
+    out.edgeShiftY = p["edge_shift"][1].get<int>();
+    out.edgeWidthRatio = p["edge_width_ratio"].get<double>();
+    out.outOfRangePct = number(student["vs_solution"], "out_of_range_pct");
+    out.umbraLevel = number(student["vs_solution"], "umbra_level");
+    out.litLevel = number(student["vs_solution"], "lit_level");
+  }
   for (auto& check : c.checks) {
     const bool truth = check.against == Against::Truth;
     const double solutionValue = truth ? number(solution["vs_truth"], check.metric) : 0.0;
@@ -198,6 +215,11 @@ std::vector<std::string> configurationLines(const ConfigurationResult& c, std::v
   return out;
 }
 
+std::vector<std::string> diagnosisLines(const ExerciseResult& e) {
+  if (e.diagnosis.empty()) return {};
+  return {"  diagnosis: " + e.diagnosis};
+}
+
 std::string exerciseTotalLine(const ExerciseResult& e) {
   char line[96];
   std::snprintf(line, sizeof line, " points (%.1f%%), pass mark %.0f%%: ", e.percent(), e.passMark);
@@ -215,6 +237,7 @@ std::string gradeMarkdown(const GradeReport& report) {
          percent(e.passMark) + " | " + (e.passed() ? "passed" : "**not passed**") + " |\n";
   for (auto& e : report.exercises) {
     m += "\n## " + e.id + ": " + e.title + "\n\n";
+    if (!e.diagnosis.empty()) m += "diagnosis: " + e.diagnosis + "\n\n";
     m += "Score " + points(e.earned) + " / " + points(e.total) + " (" + percent(e.percent()) + "), pass mark " +
          percent(e.passMark) + ".\n\n";
     for (auto& f : e.missingFiles) m += "- **Not submitted**: `" + f + "` is in none of the graded folders.\n";
@@ -258,7 +281,8 @@ std::string gradeHtml(const GradeReport& report, const std::filesystem::path& di
       "tr.PASS,tr.PARTIAL,tr.FAIL{color:inherit}tr.PASS td:nth-child(7){color:#1a7f37}"
       "tr.PARTIAL td:nth-child(7){color:#b35900}tr.FAIL td:nth-child(7){color:#c00}"
       "pre{background:#f6f6f6;padding:.6em;overflow-x:auto}figure{display:inline-block;margin:4px}"
-      "img{image-rendering:pixelated}figcaption{font-size:90%;text-align:center}</style></head><body>\n"
+      "img{image-rendering:pixelated}figcaption{font-size:90%;text-align:center}"
+      ".diagnosis{border-left:4px solid #c00;padding:.3em .8em;background:#fff4f4}</style></head><body>\n"
       "<h1>ShadeLab grade report</h1>\n<p>Command: <code>" +
       htmlEscape(report.command) + "</code><br>Renderer: " + htmlEscape(report.renderer) + "<br>Date: " +
       htmlEscape(report.date) + "</p>\n<table><tr><th>exercise</th><th>score</th><th>pass mark</th><th>result</th></tr>\n";
@@ -269,6 +293,7 @@ std::string gradeHtml(const GradeReport& report, const std::filesystem::path& di
   h += "</table>\n";
   for (auto& e : report.exercises) {
     h += "<h2>" + htmlEscape(e.id + ": " + e.title) + "</h2>\n";
+    if (!e.diagnosis.empty()) h += "<p class='diagnosis'><b>diagnosis:</b> " + htmlEscape(e.diagnosis) + "</p>\n";
     for (auto& f : e.missingFiles) h += "<p class='FAIL'>Not submitted: <code>" + htmlEscape(f) + "</code></p>\n";
     for (auto& n : e.notes) h += "<p>" + htmlEscape(n) + "</p>\n";
     for (auto& c : e.configurations) {
@@ -311,6 +336,8 @@ std::string gradeJson(const GradeReport& report) {
                       {"pass_mark", e.passMark}, {"passed", e.passed()}, {"status", outcomeName(e.outcome())},
                       {"missing_files", e.missingFiles},
                       {"notes", e.notes},     {"checks", nlohmann::json::array()}};
+    if (!e.diagnosis.empty()) je["diagnosis"] = e.diagnosis;
+    if (!e.mistake.empty()) je["mistake"] = e.mistake;
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
         je["checks"].push_back({{"configuration", c.name},

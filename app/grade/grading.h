@@ -43,6 +43,16 @@ struct ConfigurationResult {
   std::string description;  // "scene shadow-test, filter=pcf pcf_size=5"
   std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
   size_t nonFinite = 0;      // NaN/Inf values in the student's frame
+  // The evidence a diagnosis rests on (grade/diagnosis.h), when the student's frame was drawn:
+  bool drawn = false;
+  double distance = 0.0;                   // frameDistance of the student's frame to the solution's
+  std::vector<double> mistakeDistances;    // ... to each of the rubric's mistakes' frames, in order
+  std::vector<double> mistakeSeparations;  // each mistake's frame to the solution's
+  std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52"
+  size_t nanPixels = 0, infPixels = 0;
+  int edgeShiftX = 0, edgeShiftY = 0;      // the best-matching shift of the frame, in pixels
+  double edgeWidthRatio = 1.0;             // its edges' width over the solution's
+  double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;
   std::vector<CheckResult> checks;
@@ -69,6 +79,9 @@ struct ExerciseResult {
   std::vector<std::string> missingFiles;  // the submission lacks them: not graded, 0 points
   std::vector<std::string> notes;         // e.g. a file identical to the lab's own
   std::vector<ConfigurationResult> configurations;
+  // One cause in a sentence or two (grade/diagnosis.h); empty when every point was earned.
+  std::string diagnosis;
+  std::string mistake;  // the rubric's mistake that explains the frames, when one does
   double earned = 0.0, total = 0.0, passMark = 0.0;
   double percent() const { return total > 0 ? 100.0 * earned / total : 0.0; }
   bool passed() const { return percent() + 1e-9 >= passMark; }
@@ -92,6 +105,8 @@ std::string errorWithoutProgram(const std::string& error);
 // the ones said already: every configuration and program variant compiles the same file), then
 // one checkLine per check with the check's hint under it when it lost points.
 std::vector<std::string> configurationLines(const ConfigurationResult& c, std::vector<std::string>& printed);
+// "  diagnosis: The bias has the wrong sign ..." (nothing when there is no diagnosis).
+std::vector<std::string> diagnosisLines(const ExerciseResult& e);
 // "shadows/pcf: 6 / 11 points (54.5%), pass mark 60%: NOT PASSED"
 std::string exerciseTotalLine(const ExerciseResult& e);
 std::string gradeMarkdown(const GradeReport& report);

@@ -6,8 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "measure/report.h"
+#include "shader/preprocessor.h"
 #include "util/contained_path.h"
 #include "util/format.h"
+#include "util/read_file.h"
 
 namespace shadelab {
 
@@ -75,7 +78,11 @@ std::vector<std::string> listExercises(const fs::path& root) {
 
 namespace {
 
-const char* kSolutionMetrics[] = {"rmse", "covered_rmse", "max_error", "bad_pixel_pct"};
+// Against the solution's frame: the frames' differences, then the properties of the student's frame
+// (grade/frame_properties.h).
+const char* kSolutionMetrics[] = {"rmse",          "covered_rmse",     "max_error",   "bad_pixel_pct",
+                                  "non_finite_pct", "out_of_range_pct", "umbra_level", "lit_level",
+                                  "edge_shift_px", "edge_width_change"};
 
 // Reads `key` of `j` as text (strings as they are, numbers formatted), or returns false.
 bool text(const nlohmann::json& j, const char* key, std::string& out) {
@@ -99,7 +106,11 @@ std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& 
   c.against = against == "truth" ? Against::Truth : Against::Solution;
   if (c.against == Against::Solution &&
       std::find(std::begin(kSolutionMetrics), std::end(kSolutionMetrics), c.metric) == std::end(kSolutionMetrics))
-    return at + ": metric '" + c.metric + "' against the solution (valid: rmse, covered_rmse, max_error, bad_pixel_pct)";
+  {
+    std::string valid;
+    for (auto* m : kSolutionMetrics) valid += (valid.empty() ? "" : ", ") + std::string(m);
+    return at + ": metric '" + c.metric + "' against the solution (valid: " + valid + ")";
+  }
   std::string full, partial;
   if (!text(j, "full", full)) return at + ": \"full\" (the threshold for full marks) is missing";
   if (auto e = parseThreshold(full, c.full); !e.empty()) return at + ": \"full\": " + e;
@@ -117,6 +128,19 @@ std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& 
   }
   text(j, "hint", c.hint);
   text(j, "requires", c.requiredCheck);
+  if (j.contains("hint_when")) {
+    const auto& w = j["hint_when"];
+    if (!w.is_object()) return at + ": \"hint_when\" must be an object {\"passed\": [...], \"failed\": [...]}";
+    for (auto& [key, list] : w.items()) {
+      if (key != "passed" && key != "failed") return at + ": \"hint_when\"." + key + " (valid: passed, failed)";
+      if (!list.is_array()) return at + ": \"hint_when\"." + key + " must be an array of check names";
+      for (auto& name : list) {
+        if (!name.is_string() || name.get<std::string>().empty())
+          return at + ": \"hint_when\"." + key + " must hold check names (\"check\" or \"configuration: check\")";
+        (key == "passed" ? c.hintIfPassed : c.hintIfFailed).push_back(name.get<std::string>());
+      }
+    }
+  }
   return {};
 }
 
@@ -126,6 +150,14 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   const std::string at = where + " (" + c.name + ")";
   text(j, "scene", c.scene);
   text(j, "camera", c.camera);
+  if (j.contains("range")) {
+    const auto& r = j["range"];
+    if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() || !(r[0].get<double>() < r[1].get<double>()))
+      return at + ": \"range\" must be [low, high] with low < high (the values a right frame holds)";
+    c.bounded = true;
+    c.low = r[0].get<float>();
+    c.high = r[1].get<float>();
+  }
   if (j.contains("set")) {
     if (!j["set"].is_object()) return at + ": \"set\" must be an object of parameter -> value";
     for (auto& [key, value] : j["set"].items()) {
@@ -146,7 +178,63 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   return {};
 }
 
+// "configuration: check" or "check" (in `here`): whether it names a check of the exercise.
+bool checkExists(const std::vector<Configuration>& all, const Configuration& here, const std::string& ref) {
+  const auto has = [](const Configuration& c, const std::string& name) {
+    return std::any_of(c.checks.begin(), c.checks.end(), [&](const Check& k) { return k.name == name; });
+  };
+  for (auto& c : all)
+    if (ref.rfind(c.name + ": ", 0) == 0 && has(c, ref.substr(c.name.size() + 2))) return true;
+  return has(here, ref);
+}
+
+std::string loadMistake(const nlohmann::json& j, const std::string& where, const std::vector<std::string>& files,
+                        Mistake& m) {
+  if (!j.is_object()) return where + ": not an object";
+  if (!text(j, "name", m.name) || m.name.empty()) return where + ": \"name\" is missing";
+  const std::string at = where + " (" + m.name + ")";
+  if (!text(j, "diagnosis", m.diagnosis) || m.diagnosis.empty())
+    return at + ": \"diagnosis\" is missing: one sentence naming the cause and the fix";
+  m.file = files.front();
+  if (text(j, "file", m.file) && std::find(files.begin(), files.end(), m.file) == files.end())
+    return at + ": \"file\" '" + m.file + "' is not one of the exercise's \"files\"";
+  const bool body = text(j, "body", m.body), find = text(j, "find", m.find), replace = text(j, "replace", m.replace);
+  if (body == (find || replace) || find != replace || (find && m.find.empty()))
+    return at + ": give either \"body\" (the TODO region's replacement) or \"find\" and \"replace\" (in the lab's file)";
+  return {};
+}
+
 }  // namespace
+
+std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out) {
+  const std::string at = (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "'";
+  if (m.find.empty()) {
+    const std::string starter = readWholeFile(ex.dir / "starter" / m.file);
+    const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
+    const size_t b = starter.find(begin), e = starter.find(end);
+    if (b == std::string::npos || e == std::string::npos || e < b)
+      return at + ": the starter " + m.file + " has no TODO region (lines holding '" + begin + "' and '" + end + "')";
+    const size_t from = starter.rfind('\n', b) + 1, to = starter.find('\n', e);  // whole lines, markers included
+    std::string body = m.body;
+    if (!body.empty() && body.back() != '\n') body += '\n';
+    out = starter.substr(0, from) + body + (to == std::string::npos ? "" : starter.substr(to + 1));
+    return {};
+  }
+  std::string text = readWholeFile(builtinShaderDir() / m.file);
+  const size_t at1 = text.find(m.find);
+  if (at1 == std::string::npos) return at + ": \"find\" does not occur in the lab's " + m.file;
+  if (text.find(m.find, at1 + 1) != std::string::npos) return at + ": \"find\" occurs more than once in the lab's " + m.file;
+  out = text.replace(at1, m.find.size(), m.replace);
+  return {};
+}
+
+std::string writeMistakeFolder(const Exercise& ex, const Mistake& m, const fs::path& dir) {
+  std::string source;
+  if (auto e = mistakeSource(ex, m, source); !e.empty()) return e;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  return writeTextFile((dir / m.file).string(), source);
+}
 
 std::string loadExercise(const fs::path& root, const std::string& id, Exercise& out) {
   const fs::path dir = root / id;
@@ -195,6 +283,26 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
         !e.empty())
       return e;
     out.configurations.push_back(std::move(c));
+  }
+  for (auto& c : out.configurations)
+    for (auto& k : c.checks)
+      for (auto* list : {&k.hintIfPassed, &k.hintIfFailed})
+        for (auto& ref : *list)
+          if (!checkExists(out.configurations, c, ref))
+            return where + ": configuration '" + c.name + "': check '" + k.name + "': \"hint_when\" names '" + ref +
+                   "', which is no check (\"check\" in the same configuration, or \"configuration: check\")";
+  if (j.contains("mistakes")) {
+    if (!j["mistakes"].is_array()) return where + ": \"mistakes\" must be an array";
+    for (size_t i = 0; i < j["mistakes"].size(); ++i) {
+      Mistake m;
+      if (auto e = loadMistake(j["mistakes"][i], where + ": mistakes[" + std::to_string(i) + "]", out.files, m); !e.empty())
+        return e;
+      if (std::any_of(out.mistakes.begin(), out.mistakes.end(), [&](const Mistake& o) { return o.name == m.name; }))
+        return where + ": mistakes[" + std::to_string(i) + "]: the name '" + m.name + "' is used twice";
+      std::string source;
+      if (auto e = mistakeSource(out, m, source); !e.empty()) return e;
+      out.mistakes.push_back(std::move(m));
+    }
   }
   return {};
 }

@@ -9,6 +9,10 @@
 // ground truth (`acne_pct`, `visibility_rmse_area`, `normal_angle_deg`, ...). Lower is better.
 // A threshold is a number, or relative to what the solution scores on the same check:
 // "solution+0.5", "solution*1.1".
+//
+// A rubric also lists the mistakes students make, each a small change to the solution with one
+// sentence naming the cause and the fix: the grader draws their frames beside the solution's, and
+// a student whose frames one of them explains is told that sentence first (grade/diagnosis.h).
 #pragma once
 #include <filesystem>
 #include <string>
@@ -38,6 +42,10 @@ struct Check {
   double points = 1.0;
   double partialCredit = 0.5;
   std::string hint;  // shown when the check is not passed in full: what is likely wrong
+  // The evidence the hint's cause needs: checks that must have passed in full, or failed, for it to
+  // be shown ("check" in the same configuration, "configuration: check" in another). A hint whose
+  // evidence is missing stays silent rather than guessing.
+  std::vector<std::string> hintIfPassed, hintIfFailed;
   // Another check of the same configuration that must not fail for this one to score: "no acne"
   // means nothing in a frame with no shadow at all.
   std::string requiredCheck;
@@ -50,7 +58,23 @@ struct Configuration {
   std::string camera;  // OrbitCamera::parse text, "" = framed
   std::vector<std::pair<std::string, std::string>> settings;  // lab param -> value, in order
   std::vector<Check> checks;
+  // The range the view's values lie in when the frame is right ("range": [0, 1] for visibility):
+  // values outside it, an umbra that does not reach its low end and a lit region that does not
+  // reach its high end are then measured. Unbounded (shaded colour, say) when absent.
+  bool bounded = false;
+  float low = 0.0f, high = 1.0f;
   bool needsTruth() const;
+};
+
+// A mistake students make, written as a change to the solution: either the starter's TODO region
+// replaced by `body`, or `find` (which must occur exactly once) replaced by `replace` in the lab's
+// own file. `diagnosis` names the cause and the fix in a sentence or two.
+struct Mistake {
+  std::string name;       // "bias-sign"
+  std::string diagnosis;  // "The bias has the wrong sign: ..."
+  std::string file;       // which of the exercise's files it changes (the first by default)
+  std::string body;       // the TODO region's replacement, or
+  std::string find, replace;
 };
 
 struct Exercise {
@@ -62,6 +86,7 @@ struct Exercise {
   double passMark = 60.0;          // percent
   glm::ivec2 size{320, 240};
   std::vector<Configuration> configurations;
+  std::vector<Mistake> mistakes;
   double totalPoints() const;
 };
 
@@ -71,5 +96,11 @@ std::filesystem::path exercisesRoot();
 std::vector<std::string> listExercises(const std::filesystem::path& root);
 // Reads root/<id>/rubric.json. "" on success, else one line naming the file and the key.
 std::string loadExercise(const std::filesystem::path& root, const std::string& id, Exercise& out);
+
+// The text of the mistake's file: the starter with its TODO region replaced, or the lab's own file
+// with `find` replaced. "" on success, else one line naming the rubric's mistake and what is wrong.
+std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out);
+// A shader folder holding the mistake's file alone, laid out like shaders/, at `dir` (made afresh).
+std::string writeMistakeFolder(const Exercise& ex, const Mistake& m, const std::filesystem::path& dir);
 
 }  // namespace shadelab

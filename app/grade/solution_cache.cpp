@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kMagic = "SHADELAB-SOLUTION 1\n";
+constexpr std::string_view kMagic = "SHADELAB-SOLUTION 2\n";
 constexpr int kMaxSide = 16384;
 
 template <typename T>
@@ -101,16 +101,18 @@ bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
   Reader in{bytes};
   if (bytes.compare(0, kMagic.size(), kMagic) != 0) return false;
   in.at = kMagic.size();
-  uint32_t jsonBytes = 0, images = 0;
+  uint32_t jsonBytes = 0, truths = 0, mistakes = 0;
   if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
   CachedSolution entry;
   entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
   in.at += jsonBytes;
   if (entry.numbers.is_discarded() || !entry.numbers.is_object()) return false;
-  if (!in.get(images) || images < 1 || images > 64 || !getImage(in, entry.frame)) return false;
-  entry.truths.resize(images - 1);
-  for (auto& t : entry.truths)
-    if (!getImage(in, t)) return false;
+  if (!in.get(truths) || !in.get(mistakes) || truths > 64 || mistakes > 256 || !getImage(in, entry.frame)) return false;
+  entry.truths.resize(truths);
+  entry.mistakes.resize(mistakes);
+  for (auto* images : {&entry.truths, &entry.mistakes})
+    for (auto& image : *images)
+      if (!getImage(in, image)) return false;
   if (in.at != bytes.size()) return false;
   out = std::move(entry);
   return true;
@@ -122,9 +124,11 @@ std::string SolutionCache::store(const std::string& key, const CachedSolution& e
   const std::string json = entry.numbers.dump();
   put<uint32_t>(bytes, uint32_t(json.size()));
   bytes += json;
-  put<uint32_t>(bytes, uint32_t(1 + entry.truths.size()));
+  put<uint32_t>(bytes, uint32_t(entry.truths.size()));
+  put<uint32_t>(bytes, uint32_t(entry.mistakes.size()));
   putImage(bytes, entry.frame);
-  for (auto& t : entry.truths) putImage(bytes, t);
+  for (auto* images : {&entry.truths, &entry.mistakes})
+    for (auto& image : *images) putImage(bytes, image);
 
   std::error_code ec;
   fs::create_directories(dir_, ec);

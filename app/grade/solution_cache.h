@@ -1,5 +1,6 @@
 // What grading renders with the built-in shaders, kept between runs: for one rubric configuration,
-// the solution's frame, the lab's ground truths and the solution's numbers against them. A class of
+// the solution's frame, the lab's ground truths and the solution's numbers against them, and the
+// frame of every mistake the rubric lists (the solution with that one change). A class of
 // 500 students needs them once, not 500 times.
 //
 // An entry is named by a key over everything that could change it: the contents of every built-in
@@ -42,7 +43,10 @@ class ContentHash {
 struct CachedSolution {
   ImageF frame;                 // the solution's frame
   std::vector<ImageF> truths;   // the lab's references for the configuration (empty when no check needs them)
-  nlohmann::json numbers;       // what the solution's phase reports: renderer, vs_truth
+  std::vector<ImageF> mistakes; // each of the rubric's mistakes drawn in the configuration, in its order
+  // What the solution's phase reports: renderer, vs_truth, and "mistakes": [{name, distance}], each
+  // mistake's frame against the solution's (frameDistance).
+  nlohmann::json numbers;
 };
 
 class SolutionCache {

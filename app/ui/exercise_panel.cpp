@@ -128,6 +128,7 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   if (check.finished())
     ImGui::TextColored(r.passed() ? kPass : kFail, "%.4g / %.4g points (%.1f%%), pass mark %.0f%%: %s", r.earned, r.total,
                        r.percent(), r.passMark, r.passed() ? "passed" : "not passed");
+  if (check.finished() && !r.diagnosis.empty()) ImGui::TextColored(kFail, "diagnosis: %s", r.diagnosis.c_str());
   for (auto& f : r.missingFiles) ImGui::TextColored(kFail, "%s is not in your folder: open the starter.", f.c_str());
   std::vector<std::string> said;  // each build error once: every configuration compiles the same file
   for (auto& c : r.configurations) {
