@@ -208,6 +208,10 @@ std::string loadMistake(const nlohmann::json& j, const std::string& where, const
 
 std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out) {
   const std::string at = (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "'";
+  if (m.starter) {
+    if (!readWholeFile(ex.dir / "starter" / m.file, out)) return (ex.dir / "starter" / m.file).string() + " is missing";
+    return {};
+  }
   if (m.find.empty()) {
     const std::string starter = readWholeFile(ex.dir / "starter" / m.file);
     const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
@@ -229,11 +233,16 @@ std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out
 }
 
 std::string writeMistakeFolder(const Exercise& ex, const Mistake& m, const fs::path& dir) {
-  std::string source;
-  if (auto e = mistakeSource(ex, m, source); !e.empty()) return e;
   std::error_code ec;
   fs::remove_all(dir, ec);
-  return writeTextFile((dir / m.file).string(), source);
+  for (auto& file : m.starter ? ex.files : std::vector<std::string>{m.file}) {
+    Mistake one = m;
+    one.file = file;
+    std::string source;
+    if (auto e = mistakeSource(ex, one, source); !e.empty()) return e;
+    if (auto e = writeTextFile((dir / file).string(), source); !e.empty()) return e;
+  }
+  return {};
 }
 
 std::string loadExercise(const fs::path& root, const std::string& id, Exercise& out) {
@@ -291,6 +300,13 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
           if (!checkExists(out.configurations, c, ref))
             return where + ": configuration '" + c.name + "': check '" + k.name + "': \"hint_when\" names '" + ref +
                    "', which is no check (\"check\" in the same configuration, or \"configuration: check\")";
+  Mistake starter;
+  starter.starter = true;
+  starter.name = "starter";
+  starter.file = out.files.front();
+  starter.diagnosis = "Your frames are the starter's: the TODO region still holds its placeholder, so nothing you "
+                      "wrote has changed the picture yet.";
+  out.mistakes.push_back(std::move(starter));
   if (j.contains("mistakes")) {
     if (!j["mistakes"].is_array()) return where + ": \"mistakes\" must be an array";
     for (size_t i = 0; i < j["mistakes"].size(); ++i) {

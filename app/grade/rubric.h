@@ -68,8 +68,10 @@ struct Configuration {
 
 // A mistake students make, written as a change to the solution: either the starter's TODO region
 // replaced by `body`, or `find` (which must occur exactly once) replaced by `replace` in the lab's
-// own file. `diagnosis` names the cause and the fix in a sentence or two.
+// own file. `diagnosis` names the cause and the fix in a sentence or two. Every exercise also has
+// the starter itself as its first mistake (`starter`): a submission that has not changed it.
 struct Mistake {
+  bool starter = false;   // the starter's files as they are
   std::string name;       // "bias-sign"
   std::string diagnosis;  // "The bias has the wrong sign: ..."
   std::string file;       // which of the exercise's files it changes (the first by default)
@@ -86,7 +88,7 @@ struct Exercise {
   double passMark = 60.0;          // percent
   glm::ivec2 size{320, 240};
   std::vector<Configuration> configurations;
-  std::vector<Mistake> mistakes;
+  std::vector<Mistake> mistakes;  // the starter first, then the rubric's in order
   double totalPoints() const;
 };
 
@@ -100,7 +102,8 @@ std::string loadExercise(const std::filesystem::path& root, const std::string& i
 // The text of the mistake's file: the starter with its TODO region replaced, or the lab's own file
 // with `find` replaced. "" on success, else one line naming the rubric's mistake and what is wrong.
 std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out);
-// A shader folder holding the mistake's file alone, laid out like shaders/, at `dir` (made afresh).
+// A shader folder holding the mistake's file alone (the starter: all its files), laid out like
+// shaders/, at `dir` (made afresh).
 std::string writeMistakeFolder(const Exercise& ex, const Mistake& m, const std::filesystem::path& dir);
 
 }  // namespace shadelab
