@@ -124,8 +124,11 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
     case Outcome::DidNotBuild:
       for (auto& c : e.configurations)
         if (!c.errors.empty()) {
-          const std::string first = errorWithoutProgram(c.errors.front());
-          e.diagnosis = "Your shader does not build: " + first.substr(0, first.find('\n')) + ". Nothing it draws can be scored.";
+          // The message without its file and line, which the error itself shows below.
+          std::string first = c.errors.front().substr(0, c.errors.front().find('\n'));
+          if (const size_t at = first.find("error: "); at != std::string::npos) first = first.substr(at + 7);
+          e.diagnosis = "Your shader does not build (" + first + "; the error is shown at its file and line). Nothing "
+                        "it draws can be scored.";
           return;
         }
       break;

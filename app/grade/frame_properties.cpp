@@ -73,11 +73,15 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
   const double none = mismatch(0, 0);
   double best = none;
   for (int dy = -kMostShift; dy <= kMostShift; ++dy)
-    for (int dx = -kMostShift; dx <= kMostShift; ++dx)
-      if (double m = (dx || dy) ? mismatch(dx, dy) : none; m < best) {
-        best = m;
+    for (int dx = -kMostShift; dx <= kMostShift; ++dx) {
+      const double m = (dx || dy) ? mismatch(dx, dy) : none;
+      // Of shifts that match equally (an edge along one axis matches at any shift along it), the shortest.
+      const bool tie = m <= best * (1.0 + 1e-9) && dx * dx + dy * dy < out.edgeShift.x * out.edgeShift.x + out.edgeShift.y * out.edgeShift.y;
+      if (m < best * (1.0 - 1e-9) || tie) {
+        best = std::min(best, m);
         out.edgeShift = {dx, dy};
       }
+    }
   if (!(none > 1e-6 && best < kClearlyBetter * none)) out.edgeShift = glm::ivec2(0);
   out.edgeShiftPx = std::sqrt(double(out.edgeShift.x * out.edgeShift.x + out.edgeShift.y * out.edgeShift.y));
 

@@ -74,6 +74,19 @@ void writeZip(const fs::path& zipFile, const std::map<std::string, std::string>&
   ASSERT_EQ(zip_close(z), 0);
 }
 
+// The PCF rubric's points in all.
+double pcfTotal() {
+  Exercise ex;
+  EXPECT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
+  return ex.totalPoints();
+}
+
+size_t pcfConfigurations() {
+  Exercise ex;
+  EXPECT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
+  return ex.configurations.size();
+}
+
 // The class: name -> what it holds and the status and score its row must have.
 struct Expected {
   std::string status;
@@ -94,9 +107,9 @@ std::map<std::string, Expected> makeClass(const fs::path& dir, bool withSlowOnes
   fs::create_directories(dir / "eve");
   // A zip with the solution inside a folder of the student's name, as students zip it.
   writeZip(dir / "gus.zip", {{"gus/shadows/pcf.glsl", solution}});
-  std::map<std::string, Expected> expected = {{"ana", {"graded", 11}},         {"ben", {"graded", -1}},
-                                              {"cara", {"graded", -1}},        {"dan", {"did not build", 0}},
-                                              {"eve", {"not submitted", 0}},   {"gus", {"graded", 11}}};
+  std::map<std::string, Expected> expected = {{"ana", {"graded", pcfTotal()}},  {"ben", {"graded", -1}},
+                                              {"cara", {"graded", -1}},         {"dan", {"did not build", 0}},
+                                              {"eve", {"not submitted", 0}},    {"gus", {"graded", pcfTotal()}}};
   if (withSlowOnes) {
     // Reaching into a neighbour's folder: refused by the sandbox, so it does not build.
     writeText(dir / "fay/shadows/pcf.glsl", "#include \"../../ana/shadows/pcf.glsl\"\n");
@@ -164,18 +177,24 @@ TEST(GradeClass, EverySubmissionGetsTheRightRowAndTheClassPageShowsTheMisses) {
     ASSERT_TRUE(rows.count(student)) << student << " has no row\n" << r.output;
     EXPECT_EQ(rows.at(student).first, want.status) << student;
     if (want.score >= 0) EXPECT_DOUBLE_EQ(rows.at(student).second, want.score) << student;
-    else EXPECT_LT(rows.at(student).second, 0.6 * 11) << student;
+    else EXPECT_LT(rows.at(student).second, 0.7 * pcfTotal()) << student;
     EXPECT_TRUE(fs::exists(out / "students" / student / "report.html")) << student;
   }
-  // The bias of the wrong sign loses the acne check and keeps the shadows.
+  // The bias of the wrong sign loses the acne check and keeps the shadows, and is named first.
   const std::string cara = readText(out / "students/cara/report.json");
   EXPECT_NE(cara.find("sign of the bias"), std::string::npos);
+  EXPECT_NE(cara.find("\"mistake\": \"bias-sign\""), std::string::npos) << cara;
+  EXPECT_EQ(readText(out / "students/ana/report.json").find("\"diagnosis\""), std::string::npos) << "full marks: no diagnosis";
   // The neighbour's file is never read, so never quoted: not in the report, not on the page.
   const std::string fay = readText(out / "students/fay/report.json");
   EXPECT_NE(fay.find(kSandboxRule), std::string::npos) << fay;
   EXPECT_EQ(fay.find("tapCompare"), std::string::npos) << "quotes ana's solution";
   const std::string page = readText(out / "class.html");
   EXPECT_NE(page.find("missed by"), std::string::npos);
+  // Students counted per diagnosis: cara's mistake, ben's untouched starter.
+  EXPECT_NE(page.find("<h3>Diagnoses</h3>"), std::string::npos);
+  EXPECT_NE(page.find("<td>1 student</td><td class='diag'>The bias has the wrong sign"), std::string::npos);
+  EXPECT_NE(page.find("<td class='diag'>Your frames are the starter's"), std::string::npos);
   EXPECT_NE(page.find("check the sign of the bias"), std::string::npos) << "the acne check's hint";
   EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos) << "the misses' images are embedded";
   EXPECT_NE(page.find("stopped by the watchdog"), std::string::npos);
@@ -230,15 +249,19 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
                                (root / ("out" + std::to_string(++n))).string() + "'",
                            env);
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("ana                      shadows/pcf               11 / 11  graded"), std::string::npos) << r.output;
+    const std::string points = std::to_string(int(pcfTotal()));
+    EXPECT_NE(r.output.find("ana                      shadows/pcf               " + points + " / " + points + "  graded"),
+              std::string::npos)
+        << r.output;
     return fromCache(r.output);
   };
   EXPECT_EQ(run(), 0) << "a cold cache";
-  EXPECT_EQ(run(), 3) << "every configuration from the cache";
+  const int configurations = int(pcfConfigurations());
+  EXPECT_EQ(run(), configurations) << "every configuration from the cache";
   // A comment added to a built-in file the exercise does not even use: every entry misses.
   writeText(root / "shaders/common/lighting.glsl", readText(root / "shaders/common/lighting.glsl") + "\n// changed\n");
   EXPECT_EQ(run(), 0) << "a changed built-in shader file";
-  EXPECT_EQ(run(), 3);
+  EXPECT_EQ(run(), configurations);
   const fs::path rubric = root / "exercises/shadows/pcf/rubric.json";
   writeText(rubric, readText(rubric) + "\n");
   EXPECT_EQ(run(), 0) << "a changed rubric";
@@ -247,7 +270,10 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
                                "' --out '" + (root / "one").string() + "'",
                            env);
   EXPECT_EQ(one.exitCode, 0) << one.output;
-  EXPECT_NE(one.output.find("solutions: 3 of 3 configurations from the cache"), std::string::npos) << one.output;
+  EXPECT_NE(one.output.find("solutions: " + std::to_string(configurations) + " of " + std::to_string(configurations) +
+                            " configurations from the cache"),
+            std::string::npos)
+      << one.output;
   // A damaged entry is a miss, not an error.
   for (auto& e : fs::directory_iterator(cache)) fs::resize_file(e.path(), fs::file_size(e.path()) / 2);
   EXPECT_EQ(run(), 0) << "damaged entries";

@@ -28,6 +28,7 @@ struct Graded {
     throw std::runtime_error("no check '" + name + "' in the report");
   }
   double percent() const { return report["exercises"][0]["percent"].get<double>(); }
+  const nlohmann::json& exercise() const { return report["exercises"][0]; }
 };
 
 std::string slug(std::string s) {
@@ -97,6 +98,7 @@ TEST_P(EveryExercise, TheStarterRendersButScoresLow) {
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.exitCode, 1) << g.output;
   EXPECT_LT(g.percent(), 30.0) << g.output;
+  EXPECT_EQ(g.exercise()["mistake"], "starter") << "an untouched starter is told so";
   for (auto& c : g.report["exercises"][0]["checks"]) {
     EXPECT_TRUE(c["errors"].empty()) << "the starter must compile and draw: " << c["errors"];
     EXPECT_TRUE(c["value"].is_number()) << c["check"];
@@ -112,7 +114,10 @@ TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
   const Graded g = grade("shading/blinn-phong", student, reportDir("half-vector"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.check("highlight")["result"], "FAIL");
-  EXPECT_NE(g.check("highlight")["message"].get<std::string>().find("normalised"), std::string::npos);
+  EXPECT_EQ(g.exercise()["mistake"], "half-vector-not-normalised") << g.output;
+  EXPECT_NE(g.exercise()["diagnosis"].get<std::string>().find("not normalised"), std::string::npos);
+  // The diagnosis is the first line under the exercise, on the terminal and in report.md.
+  EXPECT_NE(g.output.find("statement.md)\n  diagnosis: The half vector is not normalised"), std::string::npos) << g.output;
 }
 
 TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
@@ -135,7 +140,9 @@ TEST(GradeMistakes, TapsInTextureCoordinatesInsteadOfTexelsFailTheSoftEdge) {
   const Graded g = grade("shadows/pcf", student, reportDir("tap-space"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.check("soft edge")["result"], "FAIL");
-  EXPECT_NE(g.check("soft edge")["message"].get<std::string>().find("in texels"), std::string::npos);
+  EXPECT_EQ(g.check("penumbra width")["result"], "FAIL") << "a hard edge";
+  EXPECT_EQ(g.exercise()["mistake"], "offsets-in-uv") << g.output;
+  EXPECT_NE(g.exercise()["diagnosis"].get<std::string>().find("take texels"), std::string::npos);
   EXPECT_EQ(g.check("no acne")["result"], "PASS");
   EXPECT_EQ(g.check("shadow where the truth has one")["result"], "PASS");
 }

@@ -1,0 +1,194 @@
+// The mistakes each rubric lists, graded as a class of students who made them: every one scores
+// below the pass mark and is diagnosed as itself; three correct submissions per exercise, written
+// differently from the lab's file (tests/grade/correct_variants.json: other loop forms, integer
+// radii, step(), while-loops), score full marks with no diagnosis. Then what the diagnosis rests on:
+// a frame with NaN is named as such where no mistake explains it, a hint whose evidence is missing
+// stays silent, and the mistakes' frames live in the solution cache, so a second run draws none.
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "grade/rubric.h"
+#include "grade/solution_cache.h"
+#include "shader/preprocessor.h"
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string slug(std::string s) {
+  for (auto& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  return s;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(SHADELAB_TEST_OUT) / "grade-mistakes" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Runs the shadelab binary with `args`; returns its exit code, the output in `output`.
+int runShadelab(const std::string& args, std::string& output, const std::string& env = "") {
+  const fs::path log = fs::path(SHADELAB_TEST_OUT) / "grade-mistakes" / ("run-" + std::to_string(getpid()) + ".log");
+  const int status = std::system((env + " " + SHADELAB_BINARY + " " + args + " > '" + log.string() + "' 2>&1").c_str());
+  output = readText(log);
+  fs::remove(log);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+nlohmann::json exerciseReport(const fs::path& reportJson) {
+  const nlohmann::json j = nlohmann::json::parse(readText(reportJson), nullptr, false);
+  return j.is_object() && j.contains("exercises") && !j["exercises"].empty() ? j["exercises"][0] : nlohmann::json();
+}
+
+// A submission written as a replacement of the starter's TODO region (a rubric mistake's "body").
+Mistake todoBody(const Exercise& ex, const std::string& name, const std::string& body) {
+  Mistake m;
+  m.name = name;
+  m.file = ex.files.front();
+  m.body = body;
+  return m;
+}
+
+class EveryExercisesMistakes : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+TEST_P(EveryExercisesMistakes, EachMistakeFailsWithItsOwnDiagnosisAndCorrectVariantsScoreFull) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(exercisesRoot(), GetParam(), ex), "");
+  const fs::path root = scratch(slug(GetParam())), cls = root / "class";
+  size_t listed = 0;
+  for (auto& m : ex.mistakes) {
+    if (m.starter) continue;
+    ++listed;
+    ASSERT_EQ(writeMistakeFolder(ex, m, cls / ("mistake-" + m.name)), "");
+  }
+  EXPECT_GE(listed, 5u) << "at least five mistakes students make";
+  const nlohmann::json variants =
+      nlohmann::json::parse(readText(fs::path(SHADELAB_SOURCE_DIR) / "tests/grade/correct_variants.json"))[GetParam()];
+  ASSERT_GE(variants.size(), 3u) << "three correct submissions written differently from the lab's file";
+  for (auto& v : variants)
+    ASSERT_EQ(writeMistakeFolder(ex, todoBody(ex, v["name"], v["body"]), cls / ("correct-" + v["name"].get<std::string>())), "");
+
+  std::string output;
+  ASSERT_EQ(runShadelab("grade --class '" + cls.string() + "' --exercise " + GetParam() + " --jobs 2 --out '" +
+                         (root / "out").string() + "'",
+                     output),
+            0)
+      << output;
+  for (auto& m : ex.mistakes) {
+    if (m.starter) continue;
+    SCOPED_TRACE("mistake " + m.name);
+    const nlohmann::json e = exerciseReport(root / "out/students" / ("mistake-" + m.name) / "report.json");
+    ASSERT_TRUE(e.is_object()) << output;
+    EXPECT_LT(e["percent"].get<double>(), ex.passMark) << "a real mistake must not pass";
+    EXPECT_EQ(e.value("mistake", ""), m.name) << e.value("diagnosis", "(no diagnosis)");
+    EXPECT_EQ(e.value("diagnosis", ""), m.diagnosis);
+  }
+  for (auto& v : variants) {
+    SCOPED_TRACE("correct variant " + v["name"].get<std::string>());
+    const nlohmann::json e = exerciseReport(root / "out/students" / ("correct-" + v["name"].get<std::string>()) / "report.json");
+    ASSERT_TRUE(e.is_object()) << output;
+    EXPECT_DOUBLE_EQ(e["percent"].get<double>(), 100.0) << e.dump(1);
+    EXPECT_FALSE(e.contains("diagnosis")) << e.value("diagnosis", "");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Grade, EveryExercisesMistakes, ::testing::ValuesIn(listExercises(exercisesRoot())),
+                         [](const auto& info) { return slug(info.param); });
+
+// Where no listed mistake explains the frames, a NaN is named for what it is: an exercise whose
+// rubric lists no mistakes, and a highlight that pow()s a negative N.H.
+TEST(Diagnosis, ANanFrameIsNamedWhereNoMistakeExplainsIt) {
+  const fs::path root = scratch("nan");
+  fs::copy(exercisesRoot() / "shading", root / "exercises/shading", fs::copy_options::recursive);
+  const fs::path rubric = root / "exercises/shading/blinn-phong/rubric.json";
+  nlohmann::json r = nlohmann::json::parse(readText(rubric));
+  r.erase("mistakes");
+  std::ofstream(rubric) << r.dump(2);
+  Exercise ex;
+  ASSERT_EQ(loadExercise(root / "exercises", "shading/blinn-phong", ex), "");
+  ASSERT_EQ(writeMistakeFolder(ex, todoBody(ex, "nan", "  return dot(N, normalize(L + V));"), root / "student"), "");
+  std::string output;
+  runShadelab("grade --exercise shading/blinn-phong --shaders '" + (root / "student").string() + "' --out '" +
+               (root / "out").string() + "'",
+           output, "SHADELAB_EXERCISES='" + (root / "exercises").string() + "'");
+  const nlohmann::json e = exerciseReport(root / "out/report.json");
+  ASSERT_TRUE(e.is_object()) << output;
+  const std::string diagnosis = e.value("diagnosis", "");
+  EXPECT_NE(diagnosis.find("non-finite values"), std::string::npos) << diagnosis;
+  EXPECT_NE(diagnosis.find(" NaN pixel"), std::string::npos) << diagnosis;
+  EXPECT_NE(diagnosis.find("0/0"), std::string::npos) << "the usual causes: " << diagnosis;
+  EXPECT_FALSE(e.contains("mistake"));
+  EXPECT_LT(e["percent"].get<double>(), ex.passMark);
+}
+
+// The PCF rubric's point-light hint speaks only when the directional configurations pass: offsets
+// in texture coordinates are wrong for every light, and that student is not sent to the cube map.
+TEST(Diagnosis, AHintWhoseEvidenceIsMissingStaysSilent) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
+  const auto it = std::find_if(ex.mistakes.begin(), ex.mistakes.end(), [](const Mistake& m) { return m.name == "offsets-in-uv"; });
+  ASSERT_NE(it, ex.mistakes.end());
+  const fs::path root = scratch("silent");
+  ASSERT_EQ(writeMistakeFolder(ex, *it, root / "student"), "");
+  std::string output;
+  runShadelab("grade --exercise shadows/pcf --shaders '" + (root / "student").string() + "' --out '" + (root / "out").string() + "'",
+           output);
+  const nlohmann::json e = exerciseReport(root / "out/report.json");
+  ASSERT_TRUE(e.is_object()) << output;
+  bool seen = false;
+  for (auto& c : e["checks"])
+    if (c["check"] == "cube-map taps") {
+      seen = true;
+      EXPECT_NE(c["result"], "PASS") << "the mistake shows with a point light too";
+      EXPECT_EQ(c["message"], "") << "the cube-map hint, with the directional configurations failing";
+      EXPECT_FALSE(c["hint"].get<std::string>().empty());
+    }
+  EXPECT_TRUE(seen);
+  EXPECT_EQ(output.find("go round a cube map"), std::string::npos) << output;
+}
+
+// The mistakes' frames are drawn with the solution's, once, and kept in its cache entry: a second
+// run takes every configuration from the cache and so draws no mistake again.
+TEST(Diagnosis, TheCacheHoldsTheMistakesFramesAndASecondRunDrawsNone) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(exercisesRoot(), "filtering/bilinear", ex), "");
+  const fs::path root = scratch("cache"), cache = root / "cache";
+  const auto run = [&](const std::string& out) {
+    std::string output;
+    runShadelab("grade --exercise filtering/bilinear --shaders '" + (ex.dir / "starter").string() + "' --cache '" +
+                 cache.string() + "' --out '" + (root / out).string() + "'",
+             output);
+    return output;
+  };
+  const std::string n = std::to_string(ex.configurations.size());
+  const std::string cold = run("cold");
+  EXPECT_NE(cold.find("solutions: 0 of " + n + " configurations from the cache"), std::string::npos) << cold;
+  const std::string warm = run("warm");
+  EXPECT_NE(warm.find("solutions: " + n + " of " + n + " configurations from the cache"), std::string::npos) << warm;
+  EXPECT_EQ(exerciseReport(root / "warm/report.json").value("mistake", ""), "starter") << warm;
+  size_t entries = 0;
+  for (auto& entry : fs::directory_iterator(cache)) {
+    CachedSolution s;
+    ASSERT_TRUE(SolutionCache(cache).load(entry.path().stem().string(), s)) << entry.path();
+    EXPECT_EQ(s.mistakes.size(), ex.mistakes.size()) << "the starter's and every listed mistake's frame";
+    EXPECT_EQ(s.numbers["mistakes"].size(), ex.mistakes.size());
+    for (auto& m : s.mistakes) EXPECT_EQ(m.size, s.frame.size);
+    ++entries;
+  }
+  EXPECT_EQ(entries, ex.configurations.size());
+}
