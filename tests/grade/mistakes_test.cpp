@@ -114,6 +114,7 @@ INSTANTIATE_TEST_SUITE_P(Grade, EveryExercisesMistakes, ::testing::ValuesIn(list
 // rubric lists no mistakes, and a highlight that pow()s a negative N.H.
 TEST(Diagnosis, ANanFrameIsNamedWhereNoMistakeExplainsIt) {
   const fs::path root = scratch("nan");
+  fs::create_directories(root / "exercises/shading");
   fs::copy(exercisesRoot() / "shading", root / "exercises/shading", fs::copy_options::recursive);
   const fs::path rubric = root / "exercises/shading/blinn-phong/rubric.json";
   nlohmann::json r = nlohmann::json::parse(readText(rubric));
