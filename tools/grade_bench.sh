@@ -7,6 +7,9 @@
 #   cold     `grade --class` with an empty cache (the solutions rendered once, then every student)
 #   warm     the same again: the solutions from the cache
 #   warm -j2 warm with --jobs 2
+# each twice, side by side: with the rubrics as they are (their mistakes' frames drawn with the
+# solution's) and with a copy of exercises/ whose rubrics list no mistakes (the starter alone), so
+# the mistakes' share of the cost is read off one run;
 # and a projection for 500 students x 6 exercises on one machine and on a 20-node array job
 # (each node: one cold start of its own cache, then its share warm, at the best --jobs measured).
 # Medians of 3 for the single grade of EXERCISE, one run each otherwise (a class run is itself
@@ -50,7 +53,15 @@ run() {  # run LABEL ARGS...: prints the wall seconds of `shadelab grade ARGS` (
   seconds "$t0" "$t1"
 }
 
+# The same exercises without their listed mistakes.
+cp -r "$root/exercises" "$work/no-mistakes"
+for rubric in "$work"/no-mistakes/*/*/rubric.json; do
+  python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); r.pop("mistakes", None); json.dump(r, open(sys.argv[1], "w"))' "$rubric"
+done
+
 declare -A result
+for rubrics in with without; do
+if [ $rubrics = with ]; then unset SHADELAB_EXERCISES; else export SHADELAB_EXERCISES=$work/no-mistakes; fi
 for scope in one all; do
   if [ $scope = one ]; then sel=(--exercise "$exercise"); label=$exercise; reps=3; else sel=(--all); label="--all"; reps=1; fi
   times=()
@@ -60,11 +71,18 @@ for scope in one all; do
   result[$scope.cold]=$(per "$(run cold "${sel[@]}" --class "$work/class" --cache "$work/cache")" "$students")
   result[$scope.warm]=$(per "$(run warm "${sel[@]}" --class "$work/class" --cache "$work/cache")" "$students")
   result[$scope.warm2]=$(per "$(run warm2 "${sel[@]}" --class "$work/class" --cache "$work/cache" --jobs 2)" "$students")
-  printf '\n%s, %d submissions (seconds per submission)\n' "$label" "$students"
+  printf '\n%s, %d submissions, rubrics %s their mistakes (seconds per submission)\n' "$label" "$students" "$rubrics"
   printf '| single grade, no cache | class, cold cache | class, warm | class, warm, --jobs 2 | single / warm |\n|---|---|---|---|---|\n'
   printf '| %s | %s | %s | %s | %sx |\n' "${result[$scope.single]}" "${result[$scope.cold]}" "${result[$scope.warm]}" \
     "${result[$scope.warm2]}" "$(per "${result[$scope.single]}" "${result[$scope.warm]}")"
+  for k in single cold warm warm2; do result[$rubrics.$scope.$k]=${result[$scope.$k]}; done
 done
+done
+unset SHADELAB_EXERCISES
+printf '\nWith the mistakes against without (same run): single %sx, cold %sx, warm %sx (--all)\n' \
+  "$(per "${result[with.all.single]}" "${result[without.all.single]}")" "$(per "${result[with.all.cold]}" "${result[without.all.cold]}")" \
+  "$(per "${result[with.all.warm]}" "${result[without.all.warm]}")"
+for k in single cold warm warm2; do result[all.$k]=${result[with.all.$k]}; done
 
 python3 - "${result[all.single]}" "${result[all.cold]}" "${result[all.warm]}" "${result[all.warm2]}" "$students" <<'EOF'
 import sys

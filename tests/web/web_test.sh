@@ -98,7 +98,7 @@ sed -n '/--- reloaded ---/,$p' "$out/student.log" | grep -qE "/student/shading/s
 echo "the student's folder survives a reload"
 
 # An exercise checked in the page: the starter saved into the student's folder, the page reloaded on
-# the exercise's link with "check", and Check's lines are the grader's (a number per check, the hint).
+# the exercise's link with "check", and Check's lines are the grader's (the diagnosis, a number per check).
 starter=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' \
   "$repo/exercises/shading/blinn-phong/starter/common/specular.glsl")
 save="(async () => { Module.FS.mkdirTree('/student/common'); Module.FS.writeFile('/student/common/specular.glsl', $starter);
@@ -106,8 +106,9 @@ save="(async () => { Module.FS.mkdirTree('/student/common'); Module.FS.writeFile
 drive check "lab=shading&exercise=shading/blinn-phong&check" --frames 10 --eval "$save" \
   --wait-console "shading/blinn-phong: " --reload --wait-console-after-reload "shading/blinn-phong: "
 checked=$(sed -n '/--- reloaded ---/,$p' "$out/check.log")
-grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" && grep -q "Is H normalised" <<<"$checked" &&
-  grep -qE "shading/blinn-phong: 0 / 8 points .*NOT PASSED" <<<"$checked" ||
+grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" &&
+  grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
+  grep -qE "shading/blinn-phong: 3 / 12 points .*NOT PASSED" <<<"$checked" ||
   { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
