@@ -55,8 +55,9 @@ std::string reportLink(const std::string& student) {
   return "<a href='" + href + "/report.html'>" + htmlEscape(student) + "</a>";
 }
 
-// A bar chart of scores in ten bins of 10 % (the last holds 100 %), as inline SVG.
-std::string histogram(const std::vector<double>& percents) {
+// A bar chart of scores in ten bins of 10 % (the last holds 100 %), as inline SVG; the bins that
+// lie at or above the pass mark are green.
+std::string histogram(const std::vector<double>& percents, double passMark) {
   int bins[10] = {};
   for (double p : percents) ++bins[std::clamp(int(p / 10.0), 0, 9)];
   const int most = std::max(1, *std::max_element(std::begin(bins), std::end(bins)));
@@ -66,7 +67,7 @@ std::string histogram(const std::vector<double>& percents) {
   for (int i = 0; i < 10; ++i) {
     const int bh = (h - bottom - 14) * bins[i] / most, x = left + i * bar, y = h - bottom - bh;
     svg += "<rect x='" + std::to_string(x + 2) + "' y='" + std::to_string(y) + "' width='" + std::to_string(bar - 4) +
-           "' height='" + std::to_string(bh) + "' fill='" + (i >= 6 ? "#1a7f37" : "#c05621") + "'/>";
+           "' height='" + std::to_string(bh) + "' fill='" + (i * 10.0 + 1e-9 >= passMark ? "#1a7f37" : "#c05621") + "'/>";
     if (bins[i])
       svg += "<text x='" + std::to_string(x + bar / 2) + "' y='" + std::to_string(y - 3) +
              "' font-size='11' text-anchor='middle'>" + std::to_string(bins[i]) + "</text>";
@@ -75,7 +76,8 @@ std::string histogram(const std::vector<double>& percents) {
   }
   svg += "<line x1='" + std::to_string(left) + "' y1='" + std::to_string(h - bottom) + "' x2='" + std::to_string(w) + "' y2='" +
          std::to_string(h - bottom) + "' stroke='#444'/><text x='" + std::to_string(left) + "' y='" + std::to_string(h + 6) +
-         "' font-size='10'>score, % of the points (green: 60 % and up)</text></svg>";
+         "' font-size='10'>score, % of the points (green: at or above the pass mark, " + format("%.0f", passMark) +
+         " %)</text></svg>";
   return svg;
 }
 
@@ -181,7 +183,7 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
       "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
       "td:first-child,th:first-child{text-align:left}.no{color:#c00}.yes{color:#1a7f37}"
       "figure{display:inline-block;margin:4px}img{image-rendering:pixelated}figcaption{font-size:85%;text-align:center}"
-      ".miss{border-left:3px solid #c05621;padding-left:.8em;margin:1em 0}.hint{color:#444}td.diag{text-align:left}"
+      ".miss{border-left:3px solid #c05621;padding-left:.8em;margin:1em 0}.hint{color:#444}td.diag,th.diag{text-align:left}"
       ".who p{margin:.6em 0 .1em}.who img{width:240px}</style></head><body>\n"
       "<h1>ShadeLab class report</h1>\n<p>" +
       std::to_string(students.size()) + " submissions, " + std::to_string(exercises.size()) +
@@ -206,7 +208,7 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
                                                              : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
     h += "<h2>" + htmlEscape(ex + ": " + of.front()->title) + "</h2>\n<p>Passed: " + std::to_string(passed) + " of " +
          std::to_string(of.size()) + " (pass mark " + format("%.0f", of.front()->passMark) + " %). Median score " +
-         format("%.1f", median) + " %.</p>\n" + histogram(percents) + "\n<table><tr><th>status</th><th>submissions</th></tr>";
+         format("%.1f", median) + " %.</p>\n" + histogram(percents, of.front()->passMark) + "\n<table><tr><th>status</th><th>submissions</th></tr>";
     for (const char* s : kStatuses) h += "<tr><td>" + std::string(s) + "</td><td>" + std::to_string(statuses[s]) + "</td></tr>";
     h += "</table>\n";
 
@@ -220,7 +222,7 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
     }
     std::stable_sort(diagnoses.begin(), diagnoses.end(), [](auto& a, auto& b) { return a.second.size() > b.second.size(); });
     if (!diagnoses.empty()) {
-      h += "<h3>Diagnoses</h3>\n<table><tr><th>students</th><th>diagnosis</th><th>who</th></tr>\n";
+      h += "<h3>Diagnoses</h3>\n<table><tr><th>students</th><th class='diag'>diagnosis</th><th class='diag'>who</th></tr>\n";
       for (auto& [text, who] : diagnoses) {
         std::string names;
         for (size_t i = 0; i < who.size() && i < 8; ++i) names += (i ? ", " : "") + reportLink(who[i]->student);

@@ -58,8 +58,9 @@ void silenceUnsupportedHints(ExerciseResult& e) {
 std::string nonFiniteCause(const ConfigurationResult& c) {
   std::string s = "Your frame holds non-finite values in " + quoted(c.name) + ": " + c.nonFiniteText + ". ";
   if (c.nanPixels)
-    return s + "A NaN comes from 0/0 (an average over no samples), normalize() of a zero vector, or sqrt() or log() "
-               "of a negative number: guard the case that makes the divisor or the length 0.";
+    return s +
+           "A NaN comes from 0/0 (an average over no samples), normalize() of a zero vector, or sqrt() or log() "
+           "of a negative number: guard the case that makes the divisor or the length 0.";
   return s + "An Inf comes from dividing a non-zero value by 0 or from log(0): guard the divisor.";
 }
 
@@ -71,13 +72,15 @@ std::string propertyCause(const ConfigurationResult& c) {
            " % of the pixels): a sum where an average was meant, or weights that do not add up to 1.";
   if (c.umbraLevel > 0.1)
     return "Where the truth and the solution are in full shadow, yours is not" + in + " (it averages " +
-           fixed(c.umbraLevel, "%.2f") + " of the way to lit): an occluder closer than the receiver must count as in shadow.";
+           fixed(c.umbraLevel, "%.2f") +
+           " of the way to lit): an occluder closer than the receiver must count as in shadow.";
   if (c.litLevel > 0.1)
     return "Where the truth and the solution are fully lit, yours is not" + in + " (" + fixed(c.litLevel, "%.2f") +
            " of the way to shadow): surfaces shadow themselves (the bias) or the taps are scaled wrong.";
   if (c.edgeShiftX || c.edgeShiftY)
     return "Your edges" + in + " sit (" + std::to_string(c.edgeShiftX) + ", " + std::to_string(c.edgeShiftY) +
-           ") pixels from the solution's: everything is offset, as by a sample grid that is not centred or a coordinate "
+           ") pixels from the solution's: everything is offset, as by a sample grid that is not centred or a "
+           "coordinate "
            "off by half a step.";
   if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
     return "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
@@ -127,17 +130,22 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
           // The message without its file and line, which the error itself shows below.
           std::string first = c.errors.front().substr(0, c.errors.front().find('\n'));
           if (const size_t at = first.find("error: "); at != std::string::npos) first = first.substr(at + 7);
-          e.diagnosis = "Your shader does not build (" + first + "; the error is shown at its file and line). Nothing "
+          e.diagnosis = "Your shader does not build (" + first +
+                        "; the error is shown at its file and line). Nothing "
                         "it draws can be scored.";
           return;
         }
       break;
     case Outcome::TimedOut:
-      e.diagnosis = "Your shader ran too long and was stopped: a loop whose bound is never reached (a condition that "
-                    "stays true, a counter that does not move).";
+      e.diagnosis =
+          "Your shader ran too long and was stopped: a loop whose bound is never reached (a condition that "
+          "stays true, a counter that does not move).";
       return;
-    case Outcome::Crashed: e.diagnosis = "The renderer crashed drawing your shader; nothing it drew could be scored."; return;
-    case Outcome::Graded: break;
+    case Outcome::Crashed:
+      e.diagnosis = "The renderer crashed drawing your shader; nothing it drew could be scored.";
+      return;
+    case Outcome::Graded:
+      break;
   }
 
   if (const int k = explainingMistake(ex, e); k >= 0) {
@@ -164,8 +172,10 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
       only = &c;
     }
   if (losing == 1 && e.configurations.size() > 1) {
-    e.diagnosis = "Only " + quoted(only->name) + " loses points; in the other configurations your frames match the "
-                  "solution's. The cause lies in what this one alone uses: " + only->description + ".";
+    e.diagnosis = "Only " + quoted(only->name) +
+                  " loses points; in the other configurations your frames match the "
+                  "solution's. The cause lies in what this one alone uses: " +
+                  only->description + ".";
     return;
   }
   const CheckResult* worst = nullptr;
@@ -178,8 +188,8 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
       }
   e.diagnosis = "No known mistake matches your frames; the check that lost most is " +
                 quoted(where->name + ": " + worst->check.name) + " (" + worst->check.metric + " " +
-                (std::isfinite(worst->value) ? fixed(worst->value, "%.4g") : std::string("n/a")) + ", full marks at <= " +
-                fixed(worst->fullBound, "%.4g") + ").";
+                (std::isfinite(worst->value) ? fixed(worst->value, "%.4g") : std::string("n/a")) +
+                ", full marks at <= " + fixed(worst->fullBound, "%.4g") + ").";
 }
 
 }  // namespace shadelab

@@ -8,9 +8,9 @@ namespace shadelab {
 
 namespace {
 
-constexpr int kMostShift = 4;         // pixels searched each way for the best-matching shift
+constexpr int kMostShift = 4;           // pixels searched each way for the best-matching shift
 constexpr double kClearlyBetter = 0.5;  // a shift counts when it halves the mismatch of none
-constexpr size_t kFewestPixels = 16;  // a mask or an edge smaller than this says nothing
+constexpr size_t kFewestPixels = 16;    // a mask or an edge smaller than this says nothing
 
 bool finitePixel(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 double value(const float* p) { return (double(p[0]) + p[1] + p[2]) / 3.0; }
@@ -34,7 +34,8 @@ std::string FrameProperties::nonFiniteText() const {
   if (nanPixels) what += std::to_string(nanPixels) + " NaN";
   if (infPixels) what += std::string(what.empty() ? "" : " and ") + std::to_string(infPixels) + " Inf";
   return what + " pixel" + (nonFinitePixels() == 1 ? "" : "s") + " in x " + std::to_string(nonFiniteBox.x) + "-" +
-         std::to_string(nonFiniteBox.z) + ", y " + std::to_string(nonFiniteBox.y) + "-" + std::to_string(nonFiniteBox.w);
+         std::to_string(nonFiniteBox.z) + ", y " + std::to_string(nonFiniteBox.y) + "-" +
+         std::to_string(nonFiniteBox.w);
 }
 
 FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solution, const ImageF* truth,
@@ -76,7 +77,8 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
     for (int dx = -kMostShift; dx <= kMostShift; ++dx) {
       const double m = (dx || dy) ? mismatch(dx, dy) : none;
       // Of shifts that match equally (an edge along one axis matches at any shift along it), the shortest.
-      const bool tie = m <= best * (1.0 + 1e-9) && dx * dx + dy * dy < out.edgeShift.x * out.edgeShift.x + out.edgeShift.y * out.edgeShift.y;
+      const bool tie = m <= best * (1.0 + 1e-9) &&
+                       dx * dx + dy * dy < out.edgeShift.x * out.edgeShift.x + out.edgeShift.y * out.edgeShift.y;
       if (m < best * (1.0 - 1e-9) || tie) {
         best = std::min(best, m);
         out.edgeShift = {dx, dy};

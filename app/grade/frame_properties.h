@@ -14,12 +14,11 @@
 // Every function here is pure CPU work on images, so it is unit-tested without a context.
 #pragma once
 #include <cstddef>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <glm/vec2.hpp>
-#include <glm/vec4.hpp>
 
 #include "measure/image.h"
 
@@ -30,12 +29,12 @@ struct FrameProperties {
   glm::ivec4 nonFiniteBox{0};           // x0, y0, x1, y1 (inclusive) of those pixels
   // The rest read as right (0, or a ratio of 1) where they do not apply: no range, an empty mask,
   // no edge in the solution.
-  double outOfRangePct = 0.0;  // covered pixels with a channel outside [low, high], in percent
-  double umbraLevel = 0.0;     // mean (value - low) / (high - low) over the umbra mask; 0 when right
-  double litLevel = 0.0;       // mean (high - value) / (high - low) over the lit mask; 0 when right
-  glm::ivec2 edgeShift{0};     // the best-matching shift of the student's frame, in pixels
-  double edgeShiftPx = 0.0;    // its length: 0 when no shift matches clearly better than none
-  double edgeWidthRatio = 1.0; // pixels strictly inside the range, the student's over the solution's
+  double outOfRangePct = 0.0;   // covered pixels with a channel outside [low, high], in percent
+  double umbraLevel = 0.0;      // mean (value - low) / (high - low) over the umbra mask; 0 when right
+  double litLevel = 0.0;        // mean (high - value) / (high - low) over the lit mask; 0 when right
+  glm::ivec2 edgeShift{0};      // the best-matching shift of the student's frame, in pixels
+  double edgeShiftPx = 0.0;     // its length: 0 when no shift matches clearly better than none
+  double edgeWidthRatio = 1.0;  // pixels strictly inside the range, the student's over the solution's
 
   size_t nonFinitePixels() const { return nanPixels + infPixels; }
   // The numbers checks can use, lower is better: non_finite_pct, out_of_range_pct, umbra_level,

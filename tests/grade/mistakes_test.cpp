@@ -4,12 +4,12 @@
 // radii, step(), while-loops), score full marks with no diagnosis. Then what the diagnosis rests on:
 // a frame with NaN is named as such where no mistake explains it, a hint whose evidence is missing
 // stays silent, and the mistakes' frames live in the solution cache, so a second run draws none.
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
-
-#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "grade/rubric.h"
 #include "grade/solution_cache.h"
@@ -81,12 +81,14 @@ TEST_P(EveryExercisesMistakes, EachMistakeFailsWithItsOwnDiagnosisAndCorrectVari
       nlohmann::json::parse(readText(fs::path(SHADELAB_SOURCE_DIR) / "tests/grade/correct_variants.json"))[GetParam()];
   ASSERT_GE(variants.size(), 3u) << "three correct submissions written differently from the lab's file";
   for (auto& v : variants)
-    ASSERT_EQ(writeMistakeFolder(ex, todoBody(ex, v["name"], v["body"]), cls / ("correct-" + v["name"].get<std::string>())), "");
+    ASSERT_EQ(
+        writeMistakeFolder(ex, todoBody(ex, v["name"], v["body"]), cls / ("correct-" + v["name"].get<std::string>())),
+        "");
 
   std::string output;
   ASSERT_EQ(runShadelab("grade --class '" + cls.string() + "' --exercise " + GetParam() + " --jobs 2 --out '" +
-                         (root / "out").string() + "'",
-                     output),
+                            (root / "out").string() + "'",
+                        output),
             0)
       << output;
   for (auto& m : ex.mistakes) {
@@ -100,7 +102,8 @@ TEST_P(EveryExercisesMistakes, EachMistakeFailsWithItsOwnDiagnosisAndCorrectVari
   }
   for (auto& v : variants) {
     SCOPED_TRACE("correct variant " + v["name"].get<std::string>());
-    const nlohmann::json e = exerciseReport(root / "out/students" / ("correct-" + v["name"].get<std::string>()) / "report.json");
+    const nlohmann::json e =
+        exerciseReport(root / "out/students" / ("correct-" + v["name"].get<std::string>()) / "report.json");
     ASSERT_TRUE(e.is_object()) << output;
     EXPECT_DOUBLE_EQ(e["percent"].get<double>(), 100.0) << e.dump(1);
     EXPECT_FALSE(e.contains("diagnosis")) << e.value("diagnosis", "");
@@ -125,8 +128,8 @@ TEST(Diagnosis, ANanFrameIsNamedWhereNoMistakeExplainsIt) {
   ASSERT_EQ(writeMistakeFolder(ex, todoBody(ex, "nan", "  return dot(N, normalize(L + V));"), root / "student"), "");
   std::string output;
   runShadelab("grade --exercise shading/blinn-phong --shaders '" + (root / "student").string() + "' --out '" +
-               (root / "out").string() + "'",
-           output, "SHADELAB_EXERCISES='" + (root / "exercises").string() + "'");
+                  (root / "out").string() + "'",
+              output, "SHADELAB_EXERCISES='" + (root / "exercises").string() + "'");
   const nlohmann::json e = exerciseReport(root / "out/report.json");
   ASSERT_TRUE(e.is_object()) << output;
   const std::string diagnosis = e.value("diagnosis", "");
@@ -142,13 +145,15 @@ TEST(Diagnosis, ANanFrameIsNamedWhereNoMistakeExplainsIt) {
 TEST(Diagnosis, AHintWhoseEvidenceIsMissingStaysSilent) {
   Exercise ex;
   ASSERT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
-  const auto it = std::find_if(ex.mistakes.begin(), ex.mistakes.end(), [](const Mistake& m) { return m.name == "offsets-in-uv"; });
+  const auto it =
+      std::find_if(ex.mistakes.begin(), ex.mistakes.end(), [](const Mistake& m) { return m.name == "offsets-in-uv"; });
   ASSERT_NE(it, ex.mistakes.end());
   const fs::path root = scratch("silent");
   ASSERT_EQ(writeMistakeFolder(ex, *it, root / "student"), "");
   std::string output;
-  runShadelab("grade --exercise shadows/pcf --shaders '" + (root / "student").string() + "' --out '" + (root / "out").string() + "'",
-           output);
+  runShadelab("grade --exercise shadows/pcf --shaders '" + (root / "student").string() + "' --out '" +
+                  (root / "out").string() + "'",
+              output);
   const nlohmann::json e = exerciseReport(root / "out/report.json");
   ASSERT_TRUE(e.is_object()) << output;
   bool seen = false;
@@ -172,8 +177,8 @@ TEST(Diagnosis, TheCacheHoldsTheMistakesFramesAndASecondRunDrawsNone) {
   const auto run = [&](const std::string& out) {
     std::string output;
     runShadelab("grade --exercise filtering/bilinear --shaders '" + (ex.dir / "starter").string() + "' --cache '" +
-                 cache.string() + "' --out '" + (root / out).string() + "'",
-             output);
+                    cache.string() + "' --out '" + (root / out).string() + "'",
+                output);
     return output;
   };
   const std::string n = std::to_string(ex.configurations.size());

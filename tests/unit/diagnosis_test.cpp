@@ -1,12 +1,13 @@
 // The evidence a diagnosis rests on, on images made here: non-finite pixels counted and boxed,
 // values out of the view's range, umbra and lit levels, an edge shifted or widened against the
 // solution's; then which mistake explains a set of frames, and hints that need evidence.
-#include <cmath>
-#include <limits>
+#include "grade/diagnosis.h"
 
 #include <gtest/gtest.h>
 
-#include "grade/diagnosis.h"
+#include <cmath>
+#include <limits>
+
 #include "grade/frame_properties.h"
 
 using namespace shadelab;
@@ -59,7 +60,8 @@ TEST(FrameProperties, ASumInsteadOfAnAverageLeavesTheRange) {
 TEST(FrameProperties, UmbraAndLitLevelsSayHowFarTheRegionsStayFromTheirEnds) {
   const ImageF solution = edgeImage(32, 4);
   ImageF lifted = solution;
-  for (size_t i = 0; i < lifted.rgba.size(); i += 4) lifted.rgba[i] = lifted.rgba[i + 1] = lifted.rgba[i + 2] = 0.3f + 0.4f * lifted.rgba[i];
+  for (size_t i = 0; i < lifted.rgba.size(); i += 4)
+    lifted.rgba[i] = lifted.rgba[i + 1] = lifted.rgba[i + 2] = 0.3f + 0.4f * lifted.rgba[i];
   const FrameProperties p = measureFrameProperties(lifted, solution, nullptr, kVisibility);
   EXPECT_NEAR(p.umbraLevel, 0.3, 1e-6);
   EXPECT_NEAR(p.litLevel, 0.3, 1e-6);
@@ -81,8 +83,10 @@ TEST(FrameProperties, AShiftedEdgeIsFoundByItsBestMatchingShift) {
 }
 
 TEST(FrameProperties, AWiderOrAHardEdgeChangesTheWidthRatio) {
-  EXPECT_NEAR(measureFrameProperties(edgeImage(32, 16), edgeImage(32, 8), nullptr, kVisibility).edgeWidthRatio, 2.0, 0.3);
-  EXPECT_NEAR(measureFrameProperties(edgeImage(32, 0), edgeImage(32, 8), nullptr, kVisibility).edgeWidthRatio, 0.0, 1e-9);
+  EXPECT_NEAR(measureFrameProperties(edgeImage(32, 16), edgeImage(32, 8), nullptr, kVisibility).edgeWidthRatio, 2.0,
+              0.3);
+  EXPECT_NEAR(measureFrameProperties(edgeImage(32, 0), edgeImage(32, 8), nullptr, kVisibility).edgeWidthRatio, 0.0,
+              1e-9);
   // No edge in the solution: nothing to compare, the ratio reads as right.
   EXPECT_EQ(measureFrameProperties(edgeImage(32, 8), edgeImage(-10, 0), nullptr, kVisibility).edgeWidthRatio, 1.0);
 }
@@ -137,7 +141,8 @@ TEST(Diagnosis, TheMistakeClearlyCloserThanTheSolutionWhereItDiffersExplainsTheF
   ExerciseResult e;
   e.total = 2.0;
   // "sign" differs from the solution in both configurations; the student sits on it.
-  e.configurations = {drawn("a", 0.10, {0.2, 0.001, 0.09}, {0.2, 0.1, 0.02}), drawn("b", 0.12, {0.2, 0.002, 0.12}, {0.2, 0.12, 0.0})};
+  e.configurations = {drawn("a", 0.10, {0.2, 0.001, 0.09}, {0.2, 0.1, 0.02}),
+                      drawn("b", 0.12, {0.2, 0.002, 0.12}, {0.2, 0.12, 0.0})};
   diagnose(ex, e);
   EXPECT_EQ(e.mistake, "sign");
   EXPECT_EQ(e.diagnosis, "because sign");
@@ -149,7 +154,8 @@ TEST(Diagnosis, NothingCloseEnoughFallsBackToTheEvidence) {
   const Exercise ex = twoMistakes();
   ExerciseResult e;
   e.total = 2.0;
-  e.configurations = {drawn("a", 0.10, {0.2, 0.09, 0.12}, {0.2, 0.1, 0.05}), drawn("b", 0.0, {0.2, 0.1, 0.0}, {0.2, 0.1, 0.0}, 1.0)};
+  e.configurations = {drawn("a", 0.10, {0.2, 0.09, 0.12}, {0.2, 0.1, 0.05}),
+                      drawn("b", 0.0, {0.2, 0.1, 0.0}, {0.2, 0.1, 0.0}, 1.0)};
   e.configurations[0].nanPixels = 12;
   e.configurations[0].nonFiniteText = "12 NaN pixels in x 1-4, y 2-5";
   diagnose(ex, e);
