@@ -67,17 +67,18 @@ std::string histogram(const std::vector<double>& percents, double passMark) {
   for (int i = 0; i < 10; ++i) {
     const int bh = (h - bottom - 14) * bins[i] / most, x = left + i * bar, y = h - bottom - bh;
     svg += "<rect x='" + std::to_string(x + 2) + "' y='" + std::to_string(y) + "' width='" + std::to_string(bar - 4) +
-           "' height='" + std::to_string(bh) + "' fill='" + (i * 10.0 + 1e-9 >= passMark ? "#1a7f37" : "#c05621") + "'/>";
+           "' height='" + std::to_string(bh) + "' fill='" + (i * 10.0 + 1e-9 >= passMark ? "#1a7f37" : "#c05621") +
+           "'/>";
     if (bins[i])
       svg += "<text x='" + std::to_string(x + bar / 2) + "' y='" + std::to_string(y - 3) +
              "' font-size='11' text-anchor='middle'>" + std::to_string(bins[i]) + "</text>";
     svg += "<text x='" + std::to_string(x + bar / 2) + "' y='" + std::to_string(h - bottom + 14) +
            "' font-size='10' text-anchor='middle'>" + std::to_string(i * 10) + (i == 9 ? "-100" : "") + "</text>";
   }
-  svg += "<line x1='" + std::to_string(left) + "' y1='" + std::to_string(h - bottom) + "' x2='" + std::to_string(w) + "' y2='" +
-         std::to_string(h - bottom) + "' stroke='#444'/><text x='" + std::to_string(left) + "' y='" + std::to_string(h + 6) +
-         "' font-size='10'>score, % of the points (green: at or above the pass mark, " + format("%.0f", passMark) +
-         " %)</text></svg>";
+  svg += "<line x1='" + std::to_string(left) + "' y1='" + std::to_string(h - bottom) + "' x2='" + std::to_string(w) +
+         "' y2='" + std::to_string(h - bottom) + "' stroke='#444'/><text x='" + std::to_string(left) + "' y='" +
+         std::to_string(h + 6) + "' font-size='10'>score, % of the points (green: at or above the pass mark, " +
+         format("%.0f", passMark) + " %)</text></svg>";
   return svg;
 }
 
@@ -117,8 +118,11 @@ std::string readStudentRows(const fs::path& reportJson, const std::string& stude
       if (!e.is_object()) return reportJson.string() + ": an exercise that is not an object";
       ClassRow row;
       row.student = student;
-      for (auto [key, member] : {std::pair{"id", &ClassRow::exercise}, {"title", &ClassRow::title}, {"status", &ClassRow::status},
-                                 {"diagnosis", &ClassRow::diagnosis}, {"mistake", &ClassRow::mistake}})
+      for (auto [key, member] : {std::pair{"id", &ClassRow::exercise},
+                                 {"title", &ClassRow::title},
+                                 {"status", &ClassRow::status},
+                                 {"diagnosis", &ClassRow::diagnosis},
+                                 {"mistake", &ClassRow::mistake}})
         row.*member = text(e, key);
       for (auto [key, member] : {std::pair{"score", &ClassRow::score}, {"total", &ClassRow::total},
                                  {"percent", &ClassRow::percent}, {"pass_mark", &ClassRow::passMark}})
@@ -183,11 +187,13 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
       "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}"
       "td:first-child,th:first-child{text-align:left}.no{color:#c00}.yes{color:#1a7f37}"
       "figure{display:inline-block;margin:4px}img{image-rendering:pixelated}figcaption{font-size:85%;text-align:center}"
-      ".miss{border-left:3px solid #c05621;padding-left:.8em;margin:1em 0}.hint{color:#444}td.diag,th.diag{text-align:left}"
+      ".miss{border-left:3px solid #c05621;padding-left:.8em;margin:1em 0}.hint{color:#444}"
+      "td.diag,th.diag{text-align:left}"
       ".who p{margin:.6em 0 .1em}.who img{width:240px}</style></head><body>\n"
       "<h1>ShadeLab class report</h1>\n<p>" +
       std::to_string(students.size()) + " submissions, " + std::to_string(exercises.size()) +
-      (exercises.size() == 1 ? " exercise" : " exercises") + ". Each student's own report: the links in the last table.</p>\n";
+      (exercises.size() == 1 ? " exercise" : " exercises") +
+      ". Each student's own report: the links in the last table.</p>\n";
 
   for (auto& ex : exercises) {
     std::vector<const ClassRow*> of;
@@ -208,7 +214,8 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
                                                              : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
     h += "<h2>" + htmlEscape(ex + ": " + of.front()->title) + "</h2>\n<p>Passed: " + std::to_string(passed) + " of " +
          std::to_string(of.size()) + " (pass mark " + format("%.0f", of.front()->passMark) + " %). Median score " +
-         format("%.1f", median) + " %.</p>\n" + histogram(percents, of.front()->passMark) + "\n<table><tr><th>status</th><th>submissions</th></tr>";
+         format("%.1f", median) + " %.</p>\n" + histogram(percents, of.front()->passMark) +
+         "\n<table><tr><th>status</th><th>submissions</th></tr>";
     for (const char* s : kStatuses) h += "<tr><td>" + std::string(s) + "</td><td>" + std::to_string(statuses[s]) + "</td></tr>";
     h += "</table>\n";
 
@@ -217,12 +224,16 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
     for (auto* r : of) {
       if (r->diagnosis.empty()) continue;
       auto it = std::find_if(diagnoses.begin(), diagnoses.end(), [&](auto& d) { return d.first == r->diagnosis; });
-      if (it == diagnoses.end()) diagnoses.push_back({r->diagnosis, {r}});
-      else it->second.push_back(r);
+      if (it == diagnoses.end())
+        diagnoses.push_back({r->diagnosis, {r}});
+      else
+        it->second.push_back(r);
     }
-    std::stable_sort(diagnoses.begin(), diagnoses.end(), [](auto& a, auto& b) { return a.second.size() > b.second.size(); });
+    std::stable_sort(diagnoses.begin(), diagnoses.end(),
+                     [](auto& a, auto& b) { return a.second.size() > b.second.size(); });
     if (!diagnoses.empty()) {
-      h += "<h3>Diagnoses</h3>\n<table><tr><th>students</th><th class='diag'>diagnosis</th><th class='diag'>who</th></tr>\n";
+      h += "<h3>Diagnoses</h3>\n<table><tr><th>students</th><th class='diag'>diagnosis</th><th "
+           "class='diag'>who</th></tr>\n";
       for (auto& [text, who] : diagnoses) {
         std::string names;
         for (size_t i = 0; i < who.size() && i < 8; ++i) names += (i ? ", " : "") + reportLink(who[i]->student);

@@ -1,7 +1,7 @@
 // What a class's grading adds up to: a gradebook (CSV, one row per student and exercise, the
 // points of every check) and a class page (self-contained HTML: the scores' spread, how many
-// submissions ended in each state, the students per diagnosis, and the checks most often missed with their hints and the
-// three submissions that missed each by the most, with their images).
+// submissions ended in each state, the students per diagnosis, and the checks most often missed with their hints and
+// the three submissions that missed each by the most, with their images).
 //
 // Both are made from the students' report.json files alone, in the order of the students' names,
 // so a run split into shards and merged gives the same bytes as one run over the whole class.

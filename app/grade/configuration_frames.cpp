@@ -1,9 +1,9 @@
 #include "grade/configuration_frames.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <unistd.h>
 
 #include "grade/frame_properties.h"
 #include "host/configure.h"
@@ -136,15 +136,16 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   const ImageError e = compareImages(image, solution.frame);
   const FrameProperties properties = measureFrameProperties(
       image, solution.frame, solution.truths.empty() ? nullptr : &solution.truths.front(), {c.bounded, c.low, c.high});
-  Metrics vsSolution{{"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError},
-                     {"bad_pixel_pct", e.badPixelPct}};
+  Metrics vsSolution{
+      {"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError}, {"bad_pixel_pct", e.badPixelPct}};
   for (auto& m : properties.metrics(image)) vsSolution.push_back(m);
   student["vs_solution"] = metricsJson(vsSolution);
   // The evidence a diagnosis rests on: how far the frame lies from the solution's and from each
   // mistake's, and what its properties say.
   student["distance"] = frameDistance(image, solution.frame);
   student["mistakes"] = nlohmann::json::array();
-  for (size_t i = 0; i < solution.mistakes.size(); ++i) student["mistakes"].push_back(frameDistance(image, solution.mistakes[i]));
+  for (size_t i = 0; i < solution.mistakes.size(); ++i)
+    student["mistakes"].push_back(frameDistance(image, solution.mistakes[i]));
   student["properties"] = {{"nan_pixels", properties.nanPixels},
                            {"inf_pixels", properties.infPixels},
                            {"non_finite", properties.nonFiniteText()},

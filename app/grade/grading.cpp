@@ -284,8 +284,9 @@ std::string gradeHtml(const GradeReport& report, const std::filesystem::path& di
       "img{image-rendering:pixelated}figcaption{font-size:90%;text-align:center}"
       ".diagnosis{border-left:4px solid #c00;padding:.3em .8em;background:#fff4f4}</style></head><body>\n"
       "<h1>ShadeLab grade report</h1>\n<p>Command: <code>" +
-      htmlEscape(report.command) + "</code><br>Renderer: " + htmlEscape(report.renderer) + "<br>Date: " +
-      htmlEscape(report.date) + "</p>\n<table><tr><th>exercise</th><th>score</th><th>pass mark</th><th>result</th></tr>\n";
+      htmlEscape(report.command) + "</code><br>Renderer: " + htmlEscape(report.renderer) +
+      "<br>Date: " + htmlEscape(report.date) +
+      "</p>\n<table><tr><th>exercise</th><th>score</th><th>pass mark</th><th>result</th></tr>\n";
   for (auto& e : report.exercises)
     h += "<tr><td>" + htmlEscape(e.id) + "</td><td>" + points(e.earned) + " / " + points(e.total) + " (" +
          percent(e.percent()) + ")</td><td>" + percent(e.passMark) + "</td><td class='" +

@@ -50,8 +50,8 @@ struct ConfigurationResult {
   std::vector<double> mistakeSeparations;  // each mistake's frame to the solution's
   std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52"
   size_t nanPixels = 0, infPixels = 0;
-  int edgeShiftX = 0, edgeShiftY = 0;      // the best-matching shift of the frame, in pixels
-  double edgeWidthRatio = 1.0;             // its edges' width over the solution's
+  int edgeShiftX = 0, edgeShiftY = 0;                            // the best-matching shift of the frame, in pixels
+  double edgeWidthRatio = 1.0;                                   // its edges' width over the solution's
   double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "measure/report.h"
@@ -80,9 +79,9 @@ namespace {
 
 // Against the solution's frame: the frames' differences, then the properties of the student's frame
 // (grade/frame_properties.h).
-const char* kSolutionMetrics[] = {"rmse",          "covered_rmse",     "max_error",   "bad_pixel_pct",
+const char* kSolutionMetrics[] = {"rmse",           "covered_rmse",     "max_error",   "bad_pixel_pct",
                                   "non_finite_pct", "out_of_range_pct", "umbra_level", "lit_level",
-                                  "edge_shift_px", "edge_width_change"};
+                                  "edge_shift_px",  "edge_width_change"};
 
 // Reads `key` of `j` as text (strings as they are, numbers formatted), or returns false.
 bool text(const nlohmann::json& j, const char* key, std::string& out) {
@@ -105,8 +104,7 @@ std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& 
   if (against != "solution" && against != "truth") return at + ": \"against\" is '" + against + "' (valid: solution, truth)";
   c.against = against == "truth" ? Against::Truth : Against::Solution;
   if (c.against == Against::Solution &&
-      std::find(std::begin(kSolutionMetrics), std::end(kSolutionMetrics), c.metric) == std::end(kSolutionMetrics))
-  {
+      std::find(std::begin(kSolutionMetrics), std::end(kSolutionMetrics), c.metric) == std::end(kSolutionMetrics)) {
     std::string valid;
     for (auto* m : kSolutionMetrics) valid += (valid.empty() ? "" : ", ") + std::string(m);
     return at + ": metric '" + c.metric + "' against the solution (valid: " + valid + ")";
@@ -152,7 +150,8 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   text(j, "camera", c.camera);
   if (j.contains("range")) {
     const auto& r = j["range"];
-    if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() || !(r[0].get<double>() < r[1].get<double>()))
+    if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
+        !(r[0].get<double>() < r[1].get<double>()))
       return at + ": \"range\" must be [low, high] with low < high (the values a right frame holds)";
     c.bounded = true;
     c.low = r[0].get<float>();
@@ -200,7 +199,8 @@ std::string loadMistake(const nlohmann::json& j, const std::string& where, const
     return at + ": \"file\" '" + m.file + "' is not one of the exercise's \"files\"";
   const bool body = text(j, "body", m.body), find = text(j, "find", m.find), replace = text(j, "replace", m.replace);
   if (body == (find || replace) || find != replace || (find && m.find.empty()))
-    return at + ": give either \"body\" (the TODO region's replacement) or \"find\" and \"replace\" (in the lab's file)";
+    return at +
+           ": give either \"body\" (the TODO region's replacement) or \"find\" and \"replace\" (in the lab's file)";
   return {};
 }
 
@@ -227,7 +227,8 @@ std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out
   std::string text = readWholeFile(builtinShaderDir() / m.file);
   const size_t at1 = text.find(m.find);
   if (at1 == std::string::npos) return at + ": \"find\" does not occur in the lab's " + m.file;
-  if (text.find(m.find, at1 + 1) != std::string::npos) return at + ": \"find\" occurs more than once in the lab's " + m.file;
+  if (text.find(m.find, at1 + 1) != std::string::npos)
+    return at + ": \"find\" occurs more than once in the lab's " + m.file;
   out = text.replace(at1, m.find.size(), m.replace);
   return {};
 }
@@ -304,14 +305,16 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
   starter.starter = true;
   starter.name = "starter";
   starter.file = out.files.front();
-  starter.diagnosis = "Your frames are the starter's: the TODO region still holds its placeholder, so nothing you "
-                      "wrote has changed the picture yet.";
+  starter.diagnosis =
+      "Your frames are the starter's: the TODO region still holds its placeholder, so nothing you "
+      "wrote has changed the picture yet.";
   out.mistakes.push_back(std::move(starter));
   if (j.contains("mistakes")) {
     if (!j["mistakes"].is_array()) return where + ": \"mistakes\" must be an array";
     for (size_t i = 0; i < j["mistakes"].size(); ++i) {
       Mistake m;
-      if (auto e = loadMistake(j["mistakes"][i], where + ": mistakes[" + std::to_string(i) + "]", out.files, m); !e.empty())
+      if (auto e = loadMistake(j["mistakes"][i], where + ": mistakes[" + std::to_string(i) + "]", out.files, m);
+          !e.empty())
         return e;
       if (std::any_of(out.mistakes.begin(), out.mistakes.end(), [&](const Mistake& o) { return o.name == m.name; }))
         return where + ": mistakes[" + std::to_string(i) + "]: the name '" + m.name + "' is used twice";

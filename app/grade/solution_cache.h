@@ -43,7 +43,7 @@ class ContentHash {
 struct CachedSolution {
   ImageF frame;                 // the solution's frame
   std::vector<ImageF> truths;   // the lab's references for the configuration (empty when no check needs them)
-  std::vector<ImageF> mistakes; // each of the rubric's mistakes drawn in the configuration, in its order
+  std::vector<ImageF> mistakes;  // each of the rubric's mistakes drawn in the configuration, in its order
   // What the solution's phase reports: renderer, vs_truth, and "mistakes": [{name, distance}], each
   // mistake's frame against the solution's (frameDistance).
   nlohmann::json numbers;

@@ -107,9 +107,9 @@ std::map<std::string, Expected> makeClass(const fs::path& dir, bool withSlowOnes
   fs::create_directories(dir / "eve");
   // A zip with the solution inside a folder of the student's name, as students zip it.
   writeZip(dir / "gus.zip", {{"gus/shadows/pcf.glsl", solution}});
-  std::map<std::string, Expected> expected = {{"ana", {"graded", pcfTotal()}},  {"ben", {"graded", -1}},
-                                              {"cara", {"graded", -1}},         {"dan", {"did not build", 0}},
-                                              {"eve", {"not submitted", 0}},    {"gus", {"graded", pcfTotal()}}};
+  std::map<std::string, Expected> expected = {{"ana", {"graded", pcfTotal()}}, {"ben", {"graded", -1}},
+                                              {"cara", {"graded", -1}},        {"dan", {"did not build", 0}},
+                                              {"eve", {"not submitted", 0}},   {"gus", {"graded", pcfTotal()}}};
   if (withSlowOnes) {
     // Reaching into a neighbour's folder: refused by the sandbox, so it does not build.
     writeText(dir / "fay/shadows/pcf.glsl", "#include \"../../ana/shadows/pcf.glsl\"\n");
@@ -177,14 +177,16 @@ TEST(GradeClass, EverySubmissionGetsTheRightRowAndTheClassPageShowsTheMisses) {
     ASSERT_TRUE(rows.count(student)) << student << " has no row\n" << r.output;
     EXPECT_EQ(rows.at(student).first, want.status) << student;
     if (want.score >= 0) EXPECT_DOUBLE_EQ(rows.at(student).second, want.score) << student;
-    else EXPECT_LT(rows.at(student).second, 0.7 * pcfTotal()) << student;
+    else
+      EXPECT_LT(rows.at(student).second, 0.7 * pcfTotal()) << student;
     EXPECT_TRUE(fs::exists(out / "students" / student / "report.html")) << student;
   }
   // The bias of the wrong sign loses the acne check and keeps the shadows, and is named first.
   const std::string cara = readText(out / "students/cara/report.json");
   EXPECT_NE(cara.find("sign of the bias"), std::string::npos);
   EXPECT_NE(cara.find("\"mistake\": \"bias-sign\""), std::string::npos) << cara;
-  EXPECT_EQ(readText(out / "students/ana/report.json").find("\"diagnosis\""), std::string::npos) << "full marks: no diagnosis";
+  EXPECT_EQ(readText(out / "students/ana/report.json").find("\"diagnosis\""), std::string::npos)
+      << "full marks: no diagnosis";
   // The neighbour's file is never read, so never quoted: not in the report, not on the page.
   const std::string fay = readText(out / "students/fay/report.json");
   EXPECT_NE(fay.find(kSandboxRule), std::string::npos) << fay;
@@ -250,8 +252,9 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
                            env);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     const std::string points = std::to_string(int(pcfTotal()));
-    EXPECT_NE(r.output.find("ana                      shadows/pcf               " + points + " / " + points + "  graded"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find("ana                      shadows/pcf               " + points + " / " + points + "  graded"),
+        std::string::npos)
         << r.output;
     return fromCache(r.output);
   };

@@ -117,7 +117,8 @@ TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
   EXPECT_EQ(g.exercise()["mistake"], "half-vector-not-normalised") << g.output;
   EXPECT_NE(g.exercise()["diagnosis"].get<std::string>().find("not normalised"), std::string::npos);
   // The diagnosis is the first line under the exercise, on the terminal and in report.md.
-  EXPECT_NE(g.output.find("statement.md)\n  diagnosis: The half vector is not normalised"), std::string::npos) << g.output;
+  EXPECT_NE(g.output.find("statement.md)\n  diagnosis: The half vector is not normalised"), std::string::npos)
+      << g.output;
 }
 
 TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
