@@ -27,6 +27,8 @@ std::string solutionKeyBase(const Exercise& ex, size_t configuration) {
       .add("\nrubric ")
       .add(ex.id)
       .addFile(ex.dir / "rubric.json")
+      .add("\nstarter ")  // drawn as the exercise's first mistake
+      .addTree(ex.dir / "starter")
       .add("\nconfiguration " + std::to_string(configuration) + "\nprogram " + program)
       .hex();
 }

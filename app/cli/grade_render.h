@@ -33,7 +33,7 @@ struct ConfigurationJob {
 };
 
 // The part of a configuration's cache key known before a context exists: the built-in shaders,
-// the rubric, the configuration's index and the executable.
+// the rubric, the starter (drawn as a mistake), the configuration's index and the executable.
 std::string solutionKeyBase(const Exercise& ex, size_t configuration);
 
 // Runs in the child. `enter` announces the phases "solution" and "student". Exit code 0, or 2

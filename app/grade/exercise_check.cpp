@@ -40,8 +40,9 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return error_ = e;
   exercise_ = std::move(ex);
   studentDirs_ = std::move(studentDirs);
-  // The kept solutions hold only while the built-in shaders they were drawn with are unchanged.
-  const std::string hash = ContentHash().addTree(builtinShaderDir()).hex();
+  // The kept solutions (and mistakes) hold only while the built-in shaders and the exercises (rubrics,
+  // starters) they were drawn from are unchanged.
+  const std::string hash = ContentHash().addTree(builtinShaderDir()).add("\nexercises ").addTree(exercisesRoot()).hex();
   if (hash != shadersHash_) solutions_.clear();
   shadersHash_ = hash;
   result_.id = exercise_.id;

@@ -1,8 +1,9 @@
 // Checking an exercise where the student works: the window's (and the page's) Check button. The
 // rubric's configurations are drawn one per step() in the window's own GL context, between its
 // frames, and scored exactly as `shadelab grade` scores them (grade/configuration_frames.h, then
-// scoreChecks), so the lines and hints are the grader's. The solution's side is kept for the next
-// Check: after the first one only the student's frames are drawn.
+// scoreChecks, then the diagnosis), so the lines, hints and diagnosis are the grader's. The
+// solution's side (its frame, truth and the mistakes' frames) is kept for the next Check: after the
+// first one only the student's frames are drawn.
 //
 // There is no watchdog here: a shader that never returns stalls the window (in the page the
 // browser stops it and the context is lost, which the page reports). The desktop `shadelab grade`,
@@ -53,7 +54,7 @@ class ExerciseCheck {
   ExerciseResult result_;
   std::string error_;
   bool running_ = false;
-  std::string shadersHash_;                          // the built-in shaders the kept solutions were drawn with
+  std::string shadersHash_;                          // the built-in shaders and exercises they were drawn from
   std::map<std::string, CachedSolution> solutions_;  // "id#configuration" -> the built-in side
 };
 

@@ -18,18 +18,14 @@
 #include "grade/rubric.h"
 #include "util/zip_writer.h"
 #include "shader/preprocessor.h"
+#include "test_files.h"
 
 namespace fs = std::filesystem;
 using namespace shadelab;
 
 namespace {
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::readText;
 
 void writeText(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());

@@ -12,6 +12,7 @@
 
 #include "grade/rubric.h"
 #include "shader/preprocessor.h"
+#include "test_files.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -31,17 +32,9 @@ struct Graded {
   const nlohmann::json& exercise() const { return report["exercises"][0]; }
 };
 
-std::string slug(std::string s) {
-  for (auto& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-  return s;
-}
+using test::slug;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(SHADELAB_TEST_OUT) / "grade" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return test::freshFolder("grade", name); }
 
 // Where a test's report goes, beside its student folder (grade() clears it first).
 fs::path reportDir(const std::string& name) { return fs::path(SHADELAB_TEST_OUT) / "grade" / name / "report"; }

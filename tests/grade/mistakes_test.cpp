@@ -4,40 +4,27 @@
 // radii, step(), while-loops), score full marks with no diagnosis. Then what the diagnosis rests on:
 // a frame with NaN is named as such where no mistake explains it, a hint whose evidence is missing
 // stays silent, and the mistakes' frames live in the solution cache, so a second run draws none.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <fstream>
+
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sstream>
+#include <unistd.h>
 
 #include "grade/rubric.h"
 #include "grade/solution_cache.h"
 #include "shader/preprocessor.h"
+#include "test_files.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::readText;
+using test::slug;
 
-std::string slug(std::string s) {
-  for (auto& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
-  return s;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(SHADELAB_TEST_OUT) / "grade-mistakes" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return test::freshFolder("grade-mistakes", name); }
 
 // Runs the shadelab binary with `args`; returns its exit code, the output in `output`.
 int runShadelab(const std::string& args, std::string& output, const std::string& env = "") {
