@@ -108,7 +108,8 @@ int runList(const Options& o) {
   for (auto& id : listExercises(exercisesRoot())) {
     Exercise ex;
     const std::string err = loadExercise(exercisesRoot(), id, ex);
-    std::printf("  %-26s %s\n", id.c_str(), err.empty() ? ex.title.c_str() : err.c_str());
+    if (err.empty()) std::printf("  %-26s %-13s %s\n", id.c_str(), ex.level.c_str(), ex.title.c_str());
+    else std::printf("  %-26s %s\n", id.c_str(), err.c_str());
   }
   std::printf("\nheadless backends: %s\n", std::string(kHeadlessBackends).c_str());
   return 0;

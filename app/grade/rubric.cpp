@@ -264,6 +264,9 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
   out.dir = dir;
   if (!text(j, "lab", out.lab)) return where + ": \"lab\" is missing";
   if (!text(j, "title", out.title)) return where + ": \"title\" is missing";
+  text(j, "level", out.level);
+  if (out.level != "guided" && out.level != "from-scratch")
+    return where + ": \"level\" is '" + out.level + "' (valid: guided, from-scratch)";
   if (!j.contains("files") || !j["files"].is_array() || j["files"].empty())
     return where + ": \"files\" must list the shader files the student submits";
   for (auto& f : j["files"]) {

@@ -83,6 +83,9 @@ struct Exercise {
   std::string id;  // "shadows/pcf"
   std::string lab;
   std::string title;
+  // "guided": helpers do the coordinate spaces; "from-scratch": the inputs a real shader has and
+  // no helper that does the hard part.
+  std::string level = "guided";
   std::filesystem::path dir;
   std::vector<std::string> files;  // shader files the student submits, relative to a shader root
   double passMark = 60.0;          // percent

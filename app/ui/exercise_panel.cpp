@@ -60,6 +60,10 @@ void ExercisePanel::select(const std::string& id) {
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
   if (!panel.listed) {  // once: the exercises ship with the program
     panel.ids = listExercises(exercisesRoot());
+    for (auto& id : panel.ids) {
+      Exercise ex;
+      panel.labels.push_back(loadExercise(exercisesRoot(), id, ex).empty() ? id + " (" + ex.level + ")" : id);
+    }
     panel.listed = true;
   }
   if (panel.ids.empty()) {
@@ -73,10 +77,11 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   const std::string lab(host.lab().id());
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##exercise", panel.selected.empty() ? "Pick an exercise" : panel.selected.c_str())) {
-    for (auto& id : panel.ids) {
+    for (size_t i = 0; i < panel.ids.size(); ++i) {
+      const std::string& id = panel.ids[i];
       const bool thisLab = id.rfind(lab + "/", 0) == 0;  // the lab on screen first to the eye
       if (!thisLab) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-      if (ImGui::Selectable(id.c_str(), id == panel.selected)) panel.select(id);
+      if (ImGui::Selectable(panel.labels[i].c_str(), id == panel.selected)) panel.select(id);
       if (!thisLab) ImGui::PopStyleColor();
     }
     ImGui::EndCombo();

@@ -14,7 +14,8 @@ class LabHost;
 struct ShaderEditor;
 
 struct ExercisePanel {
-  std::vector<std::string> ids;  // every exercise, read once
+  std::vector<std::string> ids;     // every exercise, read once
+  std::vector<std::string> labels;  // "shadows/pcf (guided)": each id with its level
   bool listed = false;
   std::string selected;          // the exercise shown ("" = none)
   std::string statement;         // its statement.md
