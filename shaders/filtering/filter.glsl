@@ -5,8 +5,9 @@
 //   bilinearLookup   the four nearest texel centres, two horizontal lerps and one vertical
 //   bicubicLookup    sixteen texels, Catmull-Rom weights (what hardware does not offer)
 //   levelOfDetail    L = log2(max(|dUV/dx|, |dUV/dy|)), lengths measured in texels of level 0
+//                    (mip_level.glsl)
 //   filteredLookup   the level(s) chosen from L: level 0 only, the nearest level, or a blend of
-//                    the two around L (trilinear); with anisotropy, several probes along the
+//                    the two around L (trilinear, trilinear.glsl); with anisotropy, several probes along the
 //                    footprint's long axis (the EXT_texture_filter_anisotropic model)
 //
 // Texel centres sit at half-integers of uv * size, so a sample at a texel's centre returns that
@@ -81,10 +82,7 @@ void footprint(vec2 uv, sampler2D s, out vec2 dx, out vec2 dy) {
   dy = dFdy(uv) * size0;
 }
 
-float levelOfDetail(vec2 dx, vec2 dy) {
-  float rho2 = max(dot(dx, dx), dot(dy, dy));
-  return 0.5 * log2(rho2);  // log2(rho) without a square root; -inf for rho = 0, clamped later
-}
+#include "filtering/mip_level.glsl"  // levelOfDetail()
 
 // How many probes and at what level the anisotropic filter takes (EXT_texture_filter_anisotropic):
 // N = min(ceil(Pmax / Pmin), max anisotropy) probes of a footprint Pmax / N across.
@@ -97,12 +95,13 @@ void anisotropicProbes(vec2 dx, vec2 dy, out int n, out float lod, out vec2 axis
   axis = px >= py ? dx : dy;  // in texels of level 0
 }
 
-// The level the configured filter reads at (before rounding), clamped to the chain.
-float selectedLevel(vec2 dx, vec2 dy) {
+// The level the configured filter reads at (before rounding), clamped to the chain. dx and dy are
+// footprint()'s, which the anisotropic filter takes its probes from.
+float selectedLevel(sampler2D s, vec2 uv, vec2 dx, vec2 dy) {
 #if defined(MANUAL_LEVEL)
   float lod = u_level;
 #else
-  float lod = levelOfDetail(dx, dy);
+  float lod = levelOfDetail(s, uv);
   if (u_maxAnisotropy > 1.0) {
     int n;
     vec2 axis;
@@ -114,6 +113,8 @@ float selectedLevel(vec2 dx, vec2 dy) {
   return clamp(lod, 0.0, float(u_maxLevel));
 }
 
+#include "filtering/trilinear.glsl"  // trilinearLookup()
+
 vec4 mipLookup(sampler2D s, vec2 uv, float lod) {
 #if defined(MIP_NONE)
   return levelLookup(s, uv, 0);
@@ -121,16 +122,14 @@ vec4 mipLookup(sampler2D s, vec2 uv, float lod) {
   // The spec's rounding: level ceil(L + 1/2) - 1, so L = 0.5 reads level 0.
   return levelLookup(s, uv, int(max(ceil(lod + 0.5) - 1.0, 0.0)));
 #else
-  int l0 = int(floor(lod));
-  int l1 = min(l0 + 1, u_maxLevel);
-  return mix(levelLookup(s, uv, l0), levelLookup(s, uv, l1), lod - float(l0));
+  return trilinearLookup(s, uv, lod);
 #endif
 }
 
 vec4 filteredLookup(sampler2D s, vec2 uv) {
   vec2 dx, dy;
   footprint(uv, s, dx, dy);
-  float lod = selectedLevel(dx, dy);
+  float lod = selectedLevel(s, uv, dx, dy);
 #if !defined(MIP_NONE) && !defined(MANUAL_LEVEL)
   if (u_maxAnisotropy > 1.0) {
     int n;

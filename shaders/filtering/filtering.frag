@@ -51,7 +51,7 @@ void main() {
   vec4 c = lookup(v_uv) * u_baseColor;
   vec3 color = c.rgb;
 #if defined(VIEW_MIP_LEVEL)
-  float lod = selectedLevel(dx, dy);
+  float lod = selectedLevel(u_map, v_uv, dx, dy);
 #if defined(MIP_NONE)
   lod = 0.0;
 #elif defined(MIP_NEAREST)

@@ -207,6 +207,7 @@ vec2 rotated(vec2 v, float a) {
 #endif
 #if defined(FILTER_PCSS)
 #include "shadows/pcss_blocker.glsl"
+#include "shadows/pcss_penumbra.glsl"
 #endif
 
 #if defined(FILTER_VSM) || defined(FILTER_ESM) || defined(FILTER_EVSM)
@@ -332,9 +333,8 @@ float visibility(int type, ShadowLight L, sampler2DArray map, samplerCube cube, 
   if (blockers < 0.0) return 1.0;
   float dB = max(blockers, 1e-30);  // > 0 by construction; guarded for the division below
   dbg.blocker = clamp((dB - n) / (L.farPlane - n), 0.0, 1.0);
-  // 2. Penumbra width by similar triangles; zero when the blocker touches the receiver.
-  float penumbra = type == LIGHT_DIRECTIONAL ? L.radius * max(dR - dB, 0.0) : L.radius * max(dR - dB, 0.0) / (dB * dR);
-  float filterTexels = penumbra * toTexels;
+  // 2. Penumbra width by similar triangles (shadows/pcss_penumbra.glsl), as a filter size in texels.
+  float filterTexels = penumbraTexels(type, L, dR, dB, toTexels);
   dbg.penumbra = filterTexels;
   // 3. PCF over that width.
   float lit = 0.0;

@@ -80,6 +80,8 @@ vec3 toWorld(mat3 tbn, vec3 nTs) {
 #endif
 }
 
+#include "surface/normal_map.glsl"  // normalFromMap()
+
 void main() {
 #ifdef USES_HEIGHT
   initHeightGradients(fin.uv);
@@ -114,8 +116,12 @@ void main() {
   vec3 N = tbn[2];
 #if defined(NORMAL_MAP)
   vec3 c = texture(u_normalMap, uv).rgb;
-  vec3 nTs = vec3((2.0 * c.xy - 1.0) * u_normalStrength * vec2(1.0, u_greenSign), 2.0 * c.z - 1.0);
-  N = toWorld(tbn, nTs);
+#if defined(WRONG_ADD_TO_NORMAL) || defined(WRONG_NO_RENORMALIZE)
+  // The lab's wrong steps, shown on purpose: toWorld() takes them.
+  N = toWorld(tbn, vec3((2.0 * c.xy - 1.0) * u_normalStrength * vec2(1.0, u_greenSign), 2.0 * c.z - 1.0));
+#else
+  N = normalFromMap(tbn, c);
+#endif
 #elif defined(BUMP)
 #ifdef BUMP_GAMES101
   N = toWorld(tbn, bumpNormalGames101(uv, u_kh, u_kn));

@@ -112,6 +112,21 @@ grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" 
   { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
+# The exercises added since: each starter checked in the page, told it is the starter, not passed.
+for exercise in filtering/mip-level filtering/trilinear shadows/pcss-penumbra surface/normal-map; do
+  name=check-${exercise//\//-}
+  file=$(cd "$repo/exercises/$exercise/starter" && find . -type f | sed 's|^\./||' | head -1)
+  starter=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$repo/exercises/$exercise/starter/$file")
+  save="(async () => { Module.FS.mkdirTree('/student/$(dirname "$file")'); Module.FS.writeFile('/student/$file', $starter);
+    await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
+  drive "$name" "lab=${exercise%%/*}&exercise=$exercise&check" --frames 10 --eval "$save" \
+    --wait-console "$exercise: " --reload --wait-console-after-reload "$exercise: "
+  checked=$(sed -n '/--- reloaded ---/,$p' "$out/$name.log")
+  grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
+    grep -qE "$exercise: [0-9.]+ / [0-9.]+ points .*NOT PASSED" <<<"$checked" ||
+    { cat "$out/$name.log"; echo "Check in the page did not grade the $exercise starter"; exit 1; }
+  grep -m1 -E "$exercise: [0-9.]+ / " <<<"$checked"
+done
 # A shader that runs too long makes the browser take the WebGL context away (here: asked for with
 # WEBGL_lose_context): the page stops drawing, says why and offers a reload without the student's folder.
 lose="(async () => { Module.canvas.getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();

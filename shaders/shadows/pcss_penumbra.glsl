@@ -1,0 +1,12 @@
+// PCSS's second step (Fernando 2005): the penumbra's width from the average blocker depth dB and
+// the receiver's depth dR by similar triangles, as the size of the PCF filter in texels. A light
+// of radius R seen past a blocker at dB spreads its shadow on a receiver at dR over
+//   w = R (dR - dB) / dB           on the map plane of a perspective map (spot, point), in
+//                                  tangent units after dividing by dR: R (dR - dB) / (dB dR)
+//   w = R (dR - dB)                for a directional light, R the tangent of its angular radius
+// zero where the blocker touches the receiver. `toTexels` turns map-plane units into texels.
+// Included by shadow_filters.glsl.
+float penumbraTexels(int type, ShadowLight L, float dR, float dB, float toTexels) {
+  float penumbra = type == LIGHT_DIRECTIONAL ? L.radius * max(dR - dB, 0.0) : L.radius * max(dR - dB, 0.0) / (dB * dR);
+  return penumbra * toTexels;
+}
