@@ -80,7 +80,9 @@ vec3 toWorld(mat3 tbn, vec3 nTs) {
 #endif
 }
 
+#ifdef NORMAL_MAP
 #include "surface/normal_map.glsl"  // normalFromMap()
+#endif
 
 void main() {
 #ifdef USES_HEIGHT
