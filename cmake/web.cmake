@@ -62,6 +62,10 @@ target_link_options(shadelab PRIVATE -pthread -fexceptions -sPTHREAD_POOL_SIZE=6
   --profiling-funcs  # function names in the .wasm: a stack trace in the console names them
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/shaders@/shadelab/shaders"
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/exercises@/shadelab/exercises")
+# The preloaded folders go into shadelab.data when the program links: a changed shader or exercise
+# file must link it again, or the page keeps the old one.
+file(GLOB_RECURSE WEB_PRELOADED CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/* ${CMAKE_SOURCE_DIR}/exercises/*)
+set_property(TARGET shadelab APPEND PROPERTY LINK_DEPENDS ${WEB_PRELOADED})
 # The page around it: copied whenever it changes, whether or not the program was rebuilt.
 add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/index.html ${CMAKE_BINARY_DIR}/isolation.js
   COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/web/index.html ${CMAKE_SOURCE_DIR}/web/isolation.js ${CMAKE_BINARY_DIR}
