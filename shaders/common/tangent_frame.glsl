@@ -27,17 +27,4 @@ mat3 vertexFrame(vec3 normal, vec4 tangent, bool orthogonalize, bool renormalize
   return mat3(t, cross(n, t) * w, n);
 }
 
-mat3 screenSpaceFrame(vec3 normal, vec3 position, vec2 uv) {
-  vec3 n = normalize(normal);
-  vec3 dp1 = dFdx(position), dp2 = dFdy(position);
-  vec2 duv1 = dFdx(uv), duv2 = dFdy(uv);
-  vec3 dp2perp = cross(dp2, n), dp1perp = cross(n, dp1);
-  vec3 t = dp2perp * duv1.x + dp1perp * duv2.x;
-  vec3 b = dp2perp * duv1.y + dp1perp * duv2.y;
-  t -= n * dot(n, t);
-  float lt = length(t);
-  if (!(lt > 1e-20)) return mat3(anyPerpendicular(n), cross(n, anyPerpendicular(n)), n);
-  t /= lt;
-  float w = dot(cross(n, t), b) < 0.0 ? -1.0 : 1.0;
-  return mat3(t, cross(n, t) * w, n);
-}
+#include "common/screen_tangent_frame.glsl"  // screenSpaceFrame()
