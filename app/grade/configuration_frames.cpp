@@ -132,7 +132,7 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   host.settle();
   host.renderFrame(ex.size);
   image = host.readImage();
-  nlohmann::json student{{"errors", buildErrors(host)}, {"non_finite", countNonFinite(image)}};
+  nlohmann::json student{{"errors", buildErrors(host)}};
   const ImageError e = compareImages(image, solution.frame);
   const FrameProperties properties = measureFrameProperties(
       image, solution.frame, solution.truths.empty() ? nullptr : &solution.truths.front(), {c.bounded, c.low, c.high});

@@ -36,7 +36,8 @@ std::vector<std::string> buildErrors(LabHost& host);
 std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolution& out);
 
 // The student's side against the solution's: their frame in `image` and its numbers
-// {"errors": [...], "non_finite": N, "vs_solution": {rmse, covered_rmse, max_error, bad_pixel_pct},
+// {"errors": [...], "vs_solution": {rmse, covered_rmse, max_error, bad_pixel_pct, the frame's
+//  properties}, "distance", "mistakes": [distances], "properties": {NaN and Inf pixels, where, edges},
 //  "vs_truth": {the lab's metrics}}; "vs_truth" only when a check needs it and the frame built.
 // `error` receives what the rubric asked that could not be applied.
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<std::filesystem::path>& studentDirs,

@@ -98,7 +98,6 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
   if (!why.empty()) out.errors.push_back(why);
   if (student.is_object()) {
     for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
-    out.nonFinite = student["non_finite"].get<size_t>();
     if (!student["errors"].empty()) {
       const std::string first = student["errors"][0].get<std::string>();
       why = "did not build: " + first.substr(0, first.find('\n'));  // the message line, without the caret
@@ -137,8 +136,8 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
       continue;
     }
     CheckResult r = scoreCheck(check, number(student[truth ? "vs_truth" : "vs_solution"], check.metric), solutionValue);
-    if (out.nonFinite && r.grade != Grade::Full)
-      r.message = std::to_string(out.nonFinite) + " NaN/Inf values in the frame. " + r.message;
+    if (!out.nonFiniteText.empty() && r.grade != Grade::Full)
+      r.message = "The frame holds " + out.nonFiniteText + ". " + r.message;
     out.checks.push_back(std::move(r));
   }
   applyRequirements(out.checks);
@@ -245,7 +244,7 @@ std::string gradeMarkdown(const GradeReport& report) {
     for (auto& c : e.configurations) {
       m += "\n### " + c.name + "\n\n" + c.description + "\n\n";
       for (auto& err : c.errors) m += "```\n" + err + "\n```\n\n";
-      if (c.nonFinite) m += "The frame holds " + std::to_string(c.nonFinite) + " NaN/Inf values.\n\n";
+      if (!c.nonFiniteText.empty()) m += "The frame holds " + c.nonFiniteText + ".\n\n";
       m += "|";
       for (auto& h : kCheckColumns) m += std::string(" ") + h + " |";
       m += "\n|---|---|---|---|---|---|---|---|\n";

@@ -42,14 +42,13 @@ struct ConfigurationResult {
   Outcome outcome = Outcome::Graded;
   std::string description;  // "scene shadow-test, filter=pcf pcf_size=5"
   std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
-  size_t nonFinite = 0;      // NaN/Inf values in the student's frame
   // The evidence a diagnosis rests on (grade/diagnosis.h), when the student's frame was drawn:
   bool drawn = false;
   double distance = 0.0;                   // frameDistance of the student's frame to the solution's
   std::vector<double> mistakeDistances;    // ... to each of the rubric's mistakes' frames, in order
   std::vector<double> mistakeSeparations;  // each mistake's frame to the solution's
-  std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52"
-  size_t nanPixels = 0, infPixels = 0;
+  std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52" ("" when none)
+  size_t nanPixels = 0, infPixels = 0;     // pixels of the student's frame holding NaN, or Inf
   int edgeShiftX = 0, edgeShiftY = 0;                            // the best-matching shift of the frame, in pixels
   double edgeWidthRatio = 1.0;                                   // its edges' width over the solution's
   double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
@@ -65,7 +64,7 @@ std::string describeConfiguration(const Configuration& c);
 // reports them (`student` null when nothing of the student's came back). `why`, when not empty, is
 // why nothing the student drew can be scored (the watchdog, a crash): every check then scores 0
 // with it; a frame that did not build does the same with its first error. Fills out.checks,
-// out.errors, out.nonFinite and out.outcome. Returns "" or why the rubric is at fault (a metric
+// out.errors, the evidence fields and out.outcome. Returns "" or why the rubric is at fault (a metric
 // the lab does not report).
 std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
                         const nlohmann::json& student, std::string why, ConfigurationResult& out);
