@@ -388,6 +388,55 @@ void ShadowsLab::render(Frame& frame) {
   if (params.view.showFrustum && !gbuffer) drawFrustum(frame, key);
 }
 
+// The square of each cube face (in its [-1, 1]^2 coordinates: centre, half size) that holds what the
+// scene's boxes project to, a little padded, and {0, 0, 0} where the face sees no box at all. The
+// faces follow depth_view.frag's cross: direction = axis + x U + y V.
+std::array<glm::vec3, 6> cubeFaceWindows(std::span<const Bounds> boxes, glm::vec3 light, bool frame) {
+  struct Face {
+    glm::vec3 axis, u, v;
+  };
+  static constexpr Face kFaces[6] = {{{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},  {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},
+                                     {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+                                     {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}};
+  std::array<glm::vec3, 6> out;
+  for (int i = 0; i < 6; ++i) {
+    const Face& f = kFaces[i];
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (const Bounds& box : boxes) {
+      if (box.empty() || !frame) continue;
+      // The box's part in front of the face's plane projects inside the hull of its front corners
+      // and of the points where its edges cross the plane (taken a hair in front: far out, then
+      // clamped to the face).
+      const auto depthOf = [&](int c) { return glm::dot(box.corner(c) - light, f.axis); };
+      const auto project = [&](glm::vec3 p) {
+        const float depth = glm::dot(p, f.axis);
+        const glm::vec2 q(glm::dot(p, f.u) / depth, glm::dot(p, f.v) / depth);
+        lo = glm::min(lo, q), hi = glm::max(hi, q);
+      };
+      const float hair = 1e-5f * glm::length(box.max - box.min) + 1e-12f;
+      for (int c = 0; c < 8; ++c) {
+        if (depthOf(c) > hair) project(box.corner(c) - light);
+        for (int bit : {1, 2, 4}) {
+          if (c & bit) continue;
+          const float da = depthOf(c), db = depthOf(c | bit);
+          if ((da > hair) == (db > hair)) continue;
+          const float t = (hair - da) / (db - da);
+          project(glm::mix(box.corner(c), box.corner(c | bit), t) - light);
+        }
+      }
+    }
+    lo = glm::max(lo, glm::vec2(-1.0f)), hi = glm::min(hi, glm::vec2(1.0f));
+    if (!frame) out[size_t(i)] = {0.0f, 0.0f, 1.0f};
+    else if (!(hi.x > lo.x && hi.y > lo.y)) out[size_t(i)] = glm::vec3(0.0f);  // sees nothing
+    else {
+      const float half = std::min(0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * 1.08f, 1.0f);
+      const glm::vec2 centre = glm::clamp(0.5f * (lo + hi), glm::vec2(half - 1.0f), glm::vec2(1.0f - half));
+      out[size_t(i)] = {centre, half};
+    }
+  }
+  return out;
+}
+
 void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill) {
   auto pass = frame.pass("depth map view");
   const bool showFill = params.view.depthLight == 1;
@@ -425,7 +474,17 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   }
   if (!showFill && !cascades_.empty()) range = cascades_[size_t(layer)].contentDepth;
   prog.set("u_range", range);
-  const float aspect = frame.aspect(), cells = map.cube() ? 4.0f / 3.0f : 1.0f;
+  if (map.cube()) {
+    const auto windows = cubeFaceWindows(frame.scene.instanceBounds, shown.position, params.view.frameFaces);
+    int shown = 0;
+    for (int face = 0; face < 6; ++face) {
+      prog.set(("u_faceWindow[" + std::to_string(face) + "]").c_str(), windows[size_t(face)]);
+      if (params.view.frameFaces && windows[size_t(face)].z > 0.0f) prog.set(("u_faces[" + std::to_string(shown++) + "]").c_str(), face);
+    }
+    prog.set("u_faceCount", shown);
+    faceCells_ = shown == 0 ? glm::vec2(4.0f, 3.0f) : glm::vec2(std::min(shown, 3), (shown + 2) / 3);
+  }
+  const float aspect = frame.aspect(), cells = map.cube() ? faceCells_.x / faceCells_.y : 1.0f;
   prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
   prog.set("u_zoom", params.view.depthZoom);
   prog.set("u_centre", glm::vec2(params.view.depthCentreU, params.view.depthCentreV));
@@ -450,7 +509,11 @@ std::vector<std::string> ShadowsLab::warnings() const {
     w.push_back("no bias at all: lit surfaces shadow themselves (acne)");
   if (p.bias.constant + p.bias.slope > 12.0f || p.bias.normalOffset > 6.0f)
     w.push_back("large bias: shadows detach from their casters (peter-panning)");
-  if (!p.map.borderClamp) w.push_back("border clamp off: outside the map the edge texels repeat and stretch shadows");
+  if (!p.map.borderClamp)
+    w.push_back(p.filter.type == ShadowFilter::Hard && p.map.farFix
+                    ? "border clamp off: the hard test checks the map's bounds itself (shadow_lookup.glsl); the other "
+                      "filters' taps repeat the edge texels"
+                    : "border clamp off: outside the map the edge texels repeat and stretch shadows");
   if (!p.map.farFix) w.push_back("far-plane fix off: receivers beyond the light's far plane come out shadowed");
   if (p.filter.type == ShadowFilter::Pcss && p.key.radius == 0.0f)
     w.push_back("light radius 0: PCSS reduces to a hard shadow");

@@ -7,6 +7,8 @@
 // (ESM); Lauritzen and McCool 2008 (EVSM).
 // Read next: shaders/shadows/shadow_filters.glsl, tutorials/shadows.md.
 #pragma once
+#include <array>
+#include <span>
 #include <bit>
 #include <memory>
 #include <optional>
@@ -86,6 +88,7 @@ struct ShadowsParams {
     float depthZoom = 1.0f;
     float depthCentreU = 0.5f;
     float depthCentreV = 0.5f;
+    bool frameFaces = true;       // a cube's faces each zoomed to the geometry they see
     bool showFrustum = false;
   } view;
   struct Truth {
@@ -98,6 +101,11 @@ struct ShadowsParams {
   } scene;
 };
 
+
+// The part of each face of a cube map centred at `light` that the boxes project to, as (centre,
+// half size) in the face's [-1, 1]^2 (the depth view's cross order: -X +Z +X -Z +Y -Y); (0, 0, 0)
+// where a face sees none of them. frame = false: every face whole.
+std::array<glm::vec3, 6> cubeFaceWindows(std::span<const Bounds> boxes, glm::vec3 light, bool frame);
 
 class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
  public:
@@ -160,6 +168,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   void setFilterUniforms(Program& prog) const;
   void renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format);
   void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);
+  glm::vec2 faceCells_{4.0f, 3.0f};  // the cube's depth view: cells across and down
   Program& fetch(size_t slot, const ProgramSpec& spec) { return programs_[slot].get(*shaders_, spec); }
   static ProgramSpec linesSpec();
   void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);

@@ -71,7 +71,8 @@ void visitMap(ParamVisitor& v, ShadowsParams::Map& map, LightType keyType) {
   v.floatParam({"near", "Light near", "radii", "Light near plane when auto-fit is off."}, map.nearPlane, 1e-6f, 1e3f, true);
   v.floatParam({"far", "Light far", "radii", "Light far plane when auto-fit is off."}, map.farPlane, 1e-3f, 1e4f, true);
   v.boolParam({"border_clamp", "Border clamp", "", "Outside the map reads depth 1 (lit). Off: CLAMP_TO_EDGE repeats "
-               "edge texels, stretching shadows past the map."}, map.borderClamp);
+               "edge texels, stretching shadows past the map. The hard filter with the far fix checks the map's bounds in "
+               "its shader (shadows/shadow_lookup.glsl), as WebGL2 must: no border colour there."}, map.borderClamp);
   v.boolParam({"far_fix", "Far-plane fix", "", "Receivers beyond the light's far plane are lit. Off: they compare as "
                "shadowed."}, map.farFix);
   v.boolParam({"cull_front", "Cull front faces", "", "Depth pass draws back faces: closed meshes lose acne, thin "
@@ -149,6 +150,9 @@ void visitView(ParamVisitor& v, ShadowsParams::View& view, MapFit fit) {
                view.depthCentreU, 0.0f, 1.0f);
   v.floatParam({"depth_centre_v", "Depth view centre v", "", "Map coordinate at the middle of the view."},
                view.depthCentreV, 0.0f, 1.0f);
+  v.boolParam({"frame_faces", "Frame cube faces", "", "A point light's cube: each face zoomed to the geometry it "
+               "sees (its cell's border says how far: the brighter, the closer the zoom); off: the plain cross, "
+               "each face whole."}, view.frameFaces);
   v.boolParam({"show_frustum", "Show light frustum", "", "Draw the key light's frustum (directional, spot)."}, view.showFrustum);
 }
 

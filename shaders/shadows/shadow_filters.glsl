@@ -209,6 +209,13 @@ vec2 rotated(vec2 v, float a) {
 #include "shadows/pcss_blocker.glsl"
 #include "shadows/pcss_penumbra.glsl"
 #endif
+// The hard test written whole from the light's matrices, its guards included; with the far fix
+// off the lab shows what the guard prevents through tapCompare instead.
+#if defined(FILTER_HARD) && defined(FAR_FIX)
+#define HARD_LOOKUP 1
+#include "shadows/shadow_lookup.glsl"
+#include "shadows/cube_lookup.glsl"
+#endif
 
 #if defined(FILTER_VSM) || defined(FILTER_ESM) || defined(FILTER_EVSM)
 #define FILTER_MOMENTS 1
@@ -288,6 +295,10 @@ float visibility(int type, ShadowLight L, sampler2DArray map, samplerCube cube, 
   dbg.gap = gap / max(q.texelWorld, 1e-30);
   dbg.blocker = -1.0;
   dbg.penumbra = 0.0;
+#if defined(HARD_LOOKUP)
+  // shadows/shadow_lookup.glsl and cube_lookup.glsl: the receiver point and bias are all they take.
+  return type == LIGHT_POINT ? cubeShadowLookup(L, cube, q.point, q.bias) : shadowLookup(type, L, map, q.point, q.bias);
+#endif
 #ifdef FAR_FIX
   if (q.beyondFar) return 1.0;  // nothing beyond the far plane was drawn into the map: call it lit
 #endif

@@ -10,6 +10,7 @@ uniform mat3 u_normalMatrix;
 uniform sampler2D u_heightMap;
 uniform float u_heightScale;
 uniform float u_heightBase;
+#include "surface/displace.glsl"  // displacedPosition()
 
 in Surface {
   vec3 world;
@@ -35,7 +36,7 @@ void main() {
   vec3 p = LERP(world);  // object space (surface.vert with TESSELLATED)
   vec3 n = normalize(LERP(normal));
   vec2 uv = LERP(uv);
-  p += n * u_heightScale * (textureLod(u_heightMap, uv, 0.0).r - u_heightBase);
+  p = displacedPosition(p, n, uv);
   vec4 world = u_model * vec4(p, 1.0);
   teout.world = world.xyz;
   teout.normal = u_normalMatrix * n;

@@ -20,6 +20,7 @@ uniform mat3 u_normalMatrix;
 uniform sampler2D u_heightMap;
 uniform float u_heightScale;
 uniform float u_heightBase;
+#include "surface/displace.glsl"  // displacedPosition()
 #endif
 
 out Surface {
@@ -35,7 +36,7 @@ void main() {
   vec3 p = a_position;
   vec3 n = a_normal;
 #ifdef DISPLACE_VERTEX
-  p += n * u_heightScale * (textureLod(u_heightMap, a_uv, 0.0).r - u_heightBase);  // no derivatives here: level 0
+  p = displacedPosition(p, n, a_uv);
 #endif
   vec4 world = u_model * vec4(p, 1.0);
   vout.world = world.xyz;

@@ -206,3 +206,31 @@ TEST(Cascades, CameraThatSeesNoSceneFallsBackToTheSceneFit) {
   ASSERT_EQ(cascades.size(), 1u);
   EXPECT_EQ(cascades[0].light.viewProj, base.viewProj);
 }
+
+// The point light's depth view shows only the cube faces that see the scene, each zoomed to it.
+TEST(CubeFaceWindows, FramesOnlyTheFacesThatSeeTheBoxes) {
+  Bounds below;  // a floor tile straight under the light, well inside the -Y face's view
+  below.min = glm::vec3(-0.5f, -2.0f, -0.5f);
+  below.max = glm::vec3(0.5f, -1.9f, 0.5f);
+  const std::vector<Bounds> boxes = {below};
+  const auto w = cubeFaceWindows(boxes, glm::vec3(0.0f), true);
+  for (int face = 0; face < 5; ++face) EXPECT_EQ(w[size_t(face)].z, 0.0f) << "face " << face;
+  // -Y sees the tile at |x|, |z| <= 0.5 / 1.9 of the face: a zoomed window around the centre.
+  EXPECT_NEAR(w[5].x, 0.0f, 1e-5f);
+  EXPECT_NEAR(w[5].y, 0.0f, 1e-5f);
+  EXPECT_GT(w[5].z, 0.5f / 1.9f);
+  EXPECT_LT(w[5].z, 0.35f);
+
+  // A box that reaches past the light's side plane projects to the face's edge on that side.
+  Bounds beside;
+  beside.min = glm::vec3(-1.0f, -2.0f, 0.2f);
+  beside.max = glm::vec3(1.0f, -1.0f, 3.0f);
+  const auto v = cubeFaceWindows(std::vector<Bounds>{beside}, glm::vec3(0.0f), true);
+  EXPECT_GT(v[1].z, 0.0f);  // +Z sees it
+  EXPECT_GT(v[5].z, 0.0f);  // so does -Y
+  EXPECT_EQ(v[4].z, 0.0f);  // +Y does not
+  EXPECT_NEAR(v[1].y - v[1].z, -1.0f, 1e-4f);  // +Z's window reaches the face's bottom edge
+
+  // frame = false: every face whole, the plain cross.
+  for (const glm::vec3& whole : cubeFaceWindows(boxes, glm::vec3(0.0f), false)) EXPECT_EQ(whole, glm::vec3(0, 0, 1));
+}
