@@ -24,7 +24,7 @@ constexpr ShadingModeRow kShadingModes[] = {
 };
 static_assert(coversEnum<ShadingMode>(kShadingModes));
 constexpr std::string_view kSpecularNames[] = {"blinn-phong", "phong"};
-constexpr std::string_view kUvNames[] = {"perspective", "affine"};
+constexpr std::string_view kUvNames[] = {"perspective", "affine", "by-hand"};
 constexpr std::string_view kFlatFacesNames[] = {"geometry_shader", "unwelded"};
 
 // Flat mode drawn from unwelded faces: asked for, or where there are no geometry shaders (WebGL2).
@@ -91,9 +91,10 @@ void ShadingLab::visitParams(ParamVisitor& v) {
                "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, namesOf<kShadingModes>());
   v.enumParam({"specular", "Specular model", "", "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
                "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."}, p.specular, kSpecularNames);
-  if (glslDialect() == GlslDialect::Es300) v.unavailable("GLSL ES 3.00 (WebGL2) has no noperspective: UVs are perspective-correct");
   v.enumParam({"uv_interpolation", "UV interpolation", "", "perspective: correct (divide by w); affine: "
-               "linear in screen space (noperspective), bends the checker on large triangles."}, p.uvInterpolation, kUvNames);
+               "linear in screen space (noperspective), bends the checker on large triangles; by-hand: perspective-"
+               "correct from screen-linear inputs, written in shading/perspective_correct.glsl (an exercise). "
+               "WebGL2 has no noperspective: screen-linear values travel as (v w, w) there."}, p.uvInterpolation, kUvNames);
   if (p.mode != ShadingMode::Flat) v.unavailable("only for mode flat");
   else if (glslDialect() == GlslDialect::Es300) v.unavailable("WebGL2 has no geometry shaders: faces are always unwelded");
   v.enumParam({"flat_faces", "Flat faces from", "", "How flat mode gives a triangle one normal and one colour. "
@@ -141,6 +142,7 @@ ProgramSpec ShadingLab::programSpec(const ShadingParams& p, bool textured) const
   spec.defines.emplace_back("NUM_LIGHTS", std::to_string(p.lights));
   if (p.specular == SpecularModel::Phong) spec.defines.emplace_back("SPECULAR_PHONG", "1");
   if (p.uvInterpolation == UvInterpolation::Affine) spec.defines.emplace_back("AFFINE_UV", "1");
+  if (p.uvInterpolation == UvInterpolation::ByHand) spec.defines.emplace_back("UV_BY_HAND", "1");
   if (textured) spec.defines.emplace_back("BASE_COLOR_MAP", "1");
   return spec;
 }
@@ -150,7 +152,7 @@ std::vector<ProgramSpec> ShadingLab::allPrograms() const {
   ShadingParams p;
   for (int mode = 0; mode < int(ShadingMode::Count); ++mode)
     for (int spec = 0; spec < 2; ++spec)
-      for (int uv = 0; uv < 2; ++uv)
+      for (int uv = 0; uv < int(std::size(kUvNames)); ++uv)
         for (int textured = 0; textured < 2; ++textured) {
           p.mode = ShadingMode(mode);
           p.specular = SpecularModel(spec);

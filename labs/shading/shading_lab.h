@@ -13,7 +13,7 @@ namespace shadelab {
 
 enum class ShadingMode { Flat, Gouraud, Phong, Count };  // a table in shading_lab.cpp
 enum class SpecularModel { BlinnPhong, Phong };
-enum class UvInterpolation { Perspective, Affine };
+enum class UvInterpolation { Perspective, Affine, ByHand };
 // How flat mode gives each triangle one normal and one colour.
 enum class FlatFaces { GeometryShader, Unwelded };
 

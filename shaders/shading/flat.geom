@@ -17,13 +17,19 @@ uniform vec3 u_eye;
 in Vertex {
   vec3 worldPos;
   vec3 normal;
-  UV_INTERP vec2 uv;
+  vec2 uv;
+#ifdef SCREEN_LINEAR_UV
+  SCREEN_LINEAR uvLinear;  // interpolation.glsl
+#endif
 } gin[];
 
 out Surface {
   vec3 worldPos;
   vec3 normal;
-  UV_INTERP vec2 uv;
+  vec2 uv;
+#ifdef SCREEN_LINEAR_UV
+  SCREEN_LINEAR uvLinear;  // interpolation.glsl
+#endif
   flat vec3 diffuse;
   flat vec3 specular;
 } gout;
@@ -40,6 +46,9 @@ void main() {
     gout.worldPos = gin[i].worldPos;
     gout.normal = N;
     gout.uv = gin[i].uv;
+#ifdef SCREEN_LINEAR_UV
+    gout.uvLinear = gin[i].uvLinear;
+#endif
     gout.diffuse = lit.diffuse;
     gout.specular = lit.specular;
     gl_Position = gl_in[i].gl_Position;

@@ -16,7 +16,10 @@ uniform sampler2D u_baseColorMap;  // sRGB texture: sampled values are already l
 in Surface {
   vec3 worldPos;
   vec3 normal;
-  UV_INTERP vec2 uv;
+  vec2 uv;
+#ifdef SCREEN_LINEAR_UV
+  SCREEN_LINEAR uvLinear;  // interpolation.glsl
+#endif
 #if defined(MODE_GOURAUD) || defined(MODE_FLAT)
   LIGHT_INTERP vec3 diffuse;
   LIGHT_INTERP vec3 specular;
@@ -42,7 +45,14 @@ out vec4 o_color;
 void main() {
   vec3 albedo = u_baseColor.rgb;
 #ifdef BASE_COLOR_MAP
-  albedo *= texture(u_baseColorMap, fin.uv).rgb;
+#if defined(UV_BY_HAND)
+  vec2 uv = perspectiveUV(fromScreenLinear(fin.uvLinear));
+#elif defined(AFFINE_UV)
+  vec2 uv = fromScreenLinear(fin.uvLinear).xy;
+#else
+  vec2 uv = fin.uv;
+#endif
+  albedo *= texture(u_baseColorMap, uv).rgb;
 #endif
   bool front = seenFromNormalSide(fin.worldPos, fin.normal);
 #if defined(MODE_FLAT)

@@ -26,7 +26,10 @@ out Surface {  // straight to shade.frag
 #endif
   vec3 worldPos;
   vec3 normal;
-  UV_INTERP vec2 uv;
+  vec2 uv;
+#ifdef SCREEN_LINEAR_UV
+  SCREEN_LINEAR uvLinear;  // interpolation.glsl
+#endif
 #ifdef MODE_GOURAUD
   vec3 diffuse;       // lit on the normal's side ...
   vec3 specular;
@@ -61,4 +64,9 @@ void main() {
   vout.specular = lit.specular;
 #endif
   gl_Position = u_viewProj * world;
+#if defined(UV_BY_HAND)
+  vout.uvLinear = toScreenLinear(screenLinearUV(a_uv, gl_Position), gl_Position);
+#elif defined(AFFINE_UV)
+  vout.uvLinear = toScreenLinear(vec3(a_uv, 0.0), gl_Position);
+#endif
 }

@@ -113,7 +113,7 @@ grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" 
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
 # The exercises added since: each starter checked in the page, told it is the starter, not passed.
-for exercise in filtering/mip-level filtering/trilinear shadows/pcss-penumbra shadows/shadow-lookup shadows/point-light surface/normal-map surface/screen-tbn; do
+for exercise in filtering/mip-level filtering/trilinear shading/perspective-correct shadows/pcss-penumbra shadows/shadow-lookup shadows/point-light surface/displacement surface/normal-map surface/screen-tbn; do
   name=check-${exercise//\//-}
   file=$(cd "$repo/exercises/$exercise/starter" && find . -type f | sed 's|^\./||' | head -1)
   starter=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$repo/exercises/$exercise/starter/$file")
