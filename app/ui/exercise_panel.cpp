@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "host/lab_host.h"
 #include "ui/platform.h"
@@ -59,10 +60,26 @@ void ExercisePanel::select(const std::string& id) {
 
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
   if (!panel.listed) {  // once: the exercises ship with the program
-    panel.ids = listExercises(exercisesRoot());
-    for (auto& id : panel.ids) {
+    // Grouped as exercises/README.md lists them: per lab, the guided exercises before those written
+    // from scratch.
+    struct Entry {
+      std::string lab, level, id;
+    };
+    std::vector<Entry> entries;
+    for (auto& id : listExercises(exercisesRoot())) {
       Exercise ex;
-      panel.labels.push_back(loadExercise(exercisesRoot(), id, ex).empty() ? id + " (" + ex.level + ")" : id);
+      const bool loaded = loadExercise(exercisesRoot(), id, ex).empty();
+      entries.push_back({id.substr(0, id.find('/')), loaded ? ex.level : "", id});
+    }
+    const auto rank = [](const Entry& e) { return e.level == "guided" ? 0 : e.level == "from-scratch" ? 1 : 2; };
+    std::stable_sort(entries.begin(), entries.end(), [&](const Entry& a, const Entry& b) {
+      return std::tuple(a.lab, rank(a), a.id) < std::tuple(b.lab, rank(b), b.id);
+    });
+    for (size_t i = 0; i < entries.size(); ++i) {
+      const Entry& e = entries[i];
+      const bool first = i == 0 || e.lab != entries[i - 1].lab || e.level != entries[i - 1].level;
+      panel.headers.push_back(first ? e.lab + (e.level.empty() ? "" : ": " + e.level) : "");
+      panel.ids.push_back(e.id);
     }
     panel.listed = true;
   }
@@ -80,8 +97,12 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     for (size_t i = 0; i < panel.ids.size(); ++i) {
       const std::string& id = panel.ids[i];
       const bool thisLab = id.rfind(lab + "/", 0) == 0;  // the lab on screen first to the eye
+      if (!panel.headers[i].empty()) {
+        if (i > 0) ImGui::Separator();
+        ImGui::TextDisabled("%s", panel.headers[i].c_str());
+      }
       if (!thisLab) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-      if (ImGui::Selectable(panel.labels[i].c_str(), id == panel.selected)) panel.select(id);
+      if (ImGui::Selectable(("  " + id).c_str(), id == panel.selected)) panel.select(id);
       if (!thisLab) ImGui::PopStyleColor();
     }
     ImGui::EndCombo();

@@ -14,8 +14,8 @@ class LabHost;
 struct ShaderEditor;
 
 struct ExercisePanel {
-  std::vector<std::string> ids;     // every exercise, read once
-  std::vector<std::string> labels;  // "shadows/pcf (guided)": each id with its level
+  std::vector<std::string> ids;      // every exercise, read once, grouped by lab, then level
+  std::vector<std::string> headers;  // "shadows: from scratch" above the first of each group, else ""
   bool listed = false;
   std::string selected;          // the exercise shown ("" = none)
   std::string statement;         // its statement.md
