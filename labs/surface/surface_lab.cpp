@@ -30,7 +30,7 @@ constexpr TextureFilterRow kTextureFilters[] = {
 };
 static_assert(coversEnum<TextureFilter>(kTextureFilters));
 constexpr std::string_view kBumpForms[] = {"consistent", "games101"};
-constexpr std::string_view kDisplacedNormals[] = {"from-height", "unchanged"};
+constexpr std::string_view kDisplacedNormals[] = {"from-height", "unchanged", "per-vertex"};
 constexpr std::string_view kSources[] = {"generated", "mesh", "screen"};
 
 // Texture units of surface.frag's samplers.
@@ -89,8 +89,10 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.intParam({"subdivision", "Subdivision", "levels", "Midpoint subdivisions of the mesh for vertex displacement (each "
               "quadruples the triangles; capped at 2.5 M)."}, p.subdivision, 0, 10);
   v.intParam({"tess_level", "Tessellation level", "", "Parts per patch edge and inside, 1..64."}, p.tessLevel, 1, 64);
-  v.enumParam({"displaced_normals", "Displaced normals", "", "from-height: the normal from the height field's slope; "
-               "unchanged: the base mesh's, so the displaced bricks are lit like a flat wall."},
+  v.enumParam({"displaced_normals", "Displaced normals", "", "from-height: the normal from the height field's slope, "
+               "per pixel; unchanged: the base mesh's, so the displaced bricks are lit like a flat wall; per-vertex: the "
+               "slope's normal computed at each vertex (surface/displace.glsl) and interpolated, as fine as the mesh "
+               "(displacement only: the tessellated surface takes from-height)."},
               p.displacedNormals, kDisplacedNormals);
   v.section("Parallax");
   v.intParam({"layers", "Layers", "", "Depth slices the steep parallax and POM march through (the loop's bound)."},
@@ -133,6 +135,7 @@ bool SurfaceLab::needsTangents() const {
   const SurfaceChange changes = rowOf(kSurfaceTechniques, t).changes;
   const bool tangentSpace = changes == SurfaceChange::Normal || changes == SurfaceChange::Lookup ||
                             (changes == SurfaceChange::Geometry && params.displacedNormals == DisplacedNormals::FromHeight);
+  if (isDisplacing(t) && params.displacedNormals == DisplacedNormals::PerVertex) return true;  // read in the vertex stage
   const bool compared = params.view == SurfaceView::TangentAngle &&
                         (params.tangents != TangentSource::Screen || params.compareWith != TangentSource::Screen);
   return (tangentSpace && params.tangents != TangentSource::Screen) || compared || params.overlay;
@@ -171,7 +174,13 @@ ProgramSpec SurfaceLab::programSpec(const SurfaceParams& p, bool hasUvs) const {
   auto define = [&](std::string_view name) { spec.defines.emplace_back(name, "1"); };
   if (const std::string_view own = rowOf(kSurfaceTechniques, t).define; !own.empty()) define(own);
   if (t == SurfaceTechnique::Bump && p.bumpForm == BumpForm::Games101) define("BUMP_GAMES101");
-  if (isDisplacing(t) && p.displacedNormals == DisplacedNormals::FromHeight) define("HEIGHT_NORMALS");
+  // The tessellated surface's vertices are made in the evaluation stage, which takes no tangents:
+  // per-vertex normals there are the height field's per pixel.
+  const bool perVertex = p.displacedNormals == DisplacedNormals::PerVertex && !tess;
+  const bool fromHeight = p.displacedNormals == DisplacedNormals::FromHeight ||
+                          (p.displacedNormals == DisplacedNormals::PerVertex && tess);
+  if (isDisplacing(t) && fromHeight) define("HEIGHT_NORMALS");
+  if (isDisplacing(t) && perVertex) define("VERTEX_NORMALS");
   if (isParallax(t) && p.selfShadow) define("SELF_SHADOW");
   if (t == SurfaceTechnique::Truth && p.selfShadow) define("TRUE_SHADOW");
   if (p.tangents == TangentSource::Screen) define("TANGENTS_SCREEN");
@@ -202,7 +211,7 @@ std::vector<ProgramSpec> SurfaceLab::allPrograms() const {
       p.tangents = TangentSource((t + view) % 3);
       p.compareWith = TangentSource((t + view + 1) % 3);
       p.bumpForm = BumpForm(view % 2);
-      p.displacedNormals = DisplacedNormals(view % 2);
+      p.displacedNormals = DisplacedNormals(view % 3);
       all.push_back(programSpec(p, true));
     }
   for (int wrong = 1; wrong < 8; ++wrong) {  // every combination of the three wrong steps

@@ -48,7 +48,7 @@ enum class GreenConvention { OpenGl, DirectX };
 enum class MapDecoding { Linear, Srgb };
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic, Count };  // kTextureFilters in surface_lab.cpp
 enum class BumpForm { Consistent, Games101 };
-enum class DisplacedNormals { FromHeight, Unchanged };
+enum class DisplacedNormals { FromHeight, Unchanged, PerVertex };
 enum class SurfaceView { Shaded, Normals, TangentAngle, Height, Uv, Count };
 inline constexpr NamedDefine<SurfaceView> kSurfaceViews[] = {
     {SurfaceView::Shaded, "shaded", "VIEW_SHADED"},

@@ -10,7 +10,7 @@ uniform mat3 u_normalMatrix;
 uniform sampler2D u_heightMap;
 uniform float u_heightScale;
 uniform float u_heightBase;
-#include "surface/displace.glsl"  // displacedPosition()
+#include "surface/displace.glsl"  // displacedPosition(); the normals come from the fragment stage
 
 in Surface {
   vec3 world;

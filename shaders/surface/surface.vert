@@ -4,6 +4,8 @@
 // surface sits at the top of the field (parallax's convention), 0 when at its bottom (the
 // GAMES101 form p + n s h). How fine that is depends on the mesh: the lab subdivides it.
 // With TESSELLATED the displacement waits for the evaluation stage (surface.tese).
+// VERTEX_NORMALS gives the vertex the displaced surface's normal as well (displaced_normals =
+// per-vertex), interpolated across each triangle like any mesh normal.
 // Read next: surface.tese, surface.frag.
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -20,7 +22,8 @@ uniform mat3 u_normalMatrix;
 uniform sampler2D u_heightMap;
 uniform float u_heightScale;
 uniform float u_heightBase;
-#include "surface/displace.glsl"  // displacedPosition()
+uniform vec2 u_heightTexel;  // 1 / the height map's size
+#include "surface/displace.glsl"  // displacedPosition(), displacedNormal()
 #endif
 
 out Surface {
@@ -37,6 +40,9 @@ void main() {
   vec3 n = a_normal;
 #ifdef DISPLACE_VERTEX
   p = displacedPosition(p, n, a_uv);
+#ifdef VERTEX_NORMALS
+  n = displacedNormal(n, a_tangent, a_uv, vec2(a_uvScaleU, a_uvScaleV), u_heightTexel);
+#endif
 #endif
   vec4 world = u_model * vec4(p, 1.0);
   vout.world = world.xyz;
