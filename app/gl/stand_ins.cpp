@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "gl/driver_caveats.h"
+
 namespace gl {
 
 namespace {
@@ -122,7 +124,7 @@ class PlainRaster {
 }  // namespace
 
 // Big enough that the rasteriser threads get tiles of them (llvmpipe's threads hold their own);
-// one byte a texel (3 MB; RGBA8 was 11 MB).
+// one byte a texel (3 MB).
 constexpr int kSide = 512, kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
 
 DriverStandIns::DriverStandIns()
@@ -132,7 +134,7 @@ DriverStandIns::DriverStandIns()
     for (const auto& stages : samplingPrograms())
       if (ProgramName program = linkedProgram(stages))
         programs_.push_back({std::move(program), stages.size() > 2});
-  if (rendererIs("llvmpipe")) {
+  if (applies(Caveat::HeldScenes)) {
     sceneTarget_ = TextureName::make();
     sceneFramebuffer_ = FramebufferName::make();
     longScene_ = linkedProgram({{GL_VERTEX_SHADER, std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
@@ -167,6 +169,7 @@ DriverStandIns::DriverStandIns()
 }
 
 void DriverStandIns::takeDriverReferences() {
+  noteWorkaround(Caveat::HeldTextures);
   const PlainRaster plain;
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
@@ -174,12 +177,10 @@ void DriverStandIns::takeDriverReferences() {
   glViewport(0, 0, kSide, kSide);
   glBindTexture(GL_TEXTURE_2D_ARRAY, array_.get());
   handOutEveryScene();
-  // The references per unit move with one draw (it reaches no particular thread). Those per thread
-  // move only for a thread that takes tiles of the clear and of the mipmaps, and which thread takes
-  // which is up to the threads: one that the machine's load keeps away gets none and keeps what it
-  // held (the cascades' 357 MB of moment maps, in one lifecycle test run of six with a second one
-  // running beside it). So the clear and the mipmaps are made in rounds, each finished before the
-  // next: every round is another chance for every thread.
+  // The references per unit move with one draw. Those per rasteriser thread move only for a thread
+  // that takes tiles of the clear and of the mipmaps, which is up to the threads: so the clear and
+  // the mipmaps are made in rounds, each finished before the next, each another chance for every
+  // thread.
   drawSamplingEveryUnit();
   constexpr int kRounds = 3;
   for (int round = 0; round < kRounds; ++round) {
@@ -194,6 +195,7 @@ void DriverStandIns::takeDriverReferences() {
 
 void DriverStandIns::handOutEveryScene() {
   if (!longScene_) return;
+  noteWorkaround(Caveat::HeldScenes);
   // Mesa 22.3 makes at most 64 scenes, and once it has 64 it waits for the first and reuses only
   // that one: the rest are never reached again and every flush waits for the one before. So this
   // never asks for more than 48 behind the long one, and a pool it grows stays below 64.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gl/driver_caveats.h"
 #include "host/truth.h"
 #include "scene/scene_catalog.h"
 
@@ -9,6 +10,7 @@ namespace shadelab {
 
 LabHost::LabHost(ShaderSearchPath shaderPath, std::string_view firstLab, const std::string& firstScene)
     : shaders_(std::make_unique<ShaderLibrary>(std::move(shaderPath))) {
+  if (gl::applies(gl::Caveat::HeldTextures)) standIns_ = std::make_unique<gl::DriverStandIns>();
   const std::vector<std::string> ids = labIds();
   const bool known = std::find(ids.begin(), ids.end(), firstLab) != ids.end();
   if (!known || !enterLab(firstLab, firstScene).empty()) selectLab(known ? firstLab : std::string_view(ids.front()));
@@ -35,7 +37,7 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
   jobErrors_.clear();  // nor shown in it: its failed jobs were about its own settings
   if (lab_ && labReady_) {
     lab_->teardown();
-    standIns_.takeDriverReferences();  // else the driver may keep the old lab's biggest maps (gl/stand_ins.h)
+    if (standIns_) standIns_->takeDriverReferences();  // else llvmpipe keeps the old lab's biggest maps
   }
   sideTarget_.reset();  // the old lab's measured views: a lab starts with the objects it makes itself
   shaders_->forgetRecent();  // the old lab's variants

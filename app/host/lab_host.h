@@ -124,7 +124,9 @@ class LabHost {
   std::string heightMap_;  // setHeightMap's image, applied to every build of the current scene
 
   std::unique_ptr<ShaderLibrary> shaders_;
-  gl::DriverStandIns standIns_;  // made with the host: what the driver holds in place of a left lab's textures
+  // What llvmpipe holds in place of a left lab's textures (gl/driver_caveats.h, HeldTextures):
+  // made with the host where that driver runs, absent on any other.
+  std::unique_ptr<gl::DriverStandIns> standIns_;
   JobRunner jobs_;  // before lab_: jobs are cancelled before a lab goes
   std::unique_ptr<Lab> lab_;
   bool labReady_ = false;

@@ -1,6 +1,11 @@
 #include "shader/shader_library.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string_view>
 #include <unordered_set>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -117,10 +122,63 @@ void Program::use() {
   glUseProgram(id);
 }
 
+namespace {
+
+std::optional<bool>& uniformChecksSetting() {
+  static std::optional<bool> on;
+  return on;
+}
+
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+bool mentionsWord(const std::string& text, std::string_view word) {
+  if (word.empty()) return false;
+  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+    const bool before = at == 0 || !isIdentifierChar(text[at - 1]);
+    const bool after = at + word.size() >= text.size() || !isIdentifierChar(text[at + word.size()]);
+    if (before && after) return true;
+  }
+  return false;
+}
+
+std::string_view baseName(std::string_view name) { return name.substr(0, name.find_first_of("[.")); }
+
+}  // namespace
+
+bool uniformChecks() {
+  auto& on = uniformChecksSetting();
+  if (!on) {
+#ifndef NDEBUG
+    on = true;
+#else
+    const char* env = std::getenv("SHADELAB_CHECK_UNIFORMS");
+    on = env && std::string_view(env) == "1";
+#endif
+  }
+  return *on;
+}
+
+void setUniformChecks(bool on) { uniformChecksSetting() = on; }
+
+bool sourceMentionsUniform(const std::string& source, const std::string& name) {
+  const std::string_view n(name);
+  if (!mentionsWord(source, baseName(n))) return false;
+  // Struct members, as in "u_key.viewProj" or "u_cascade[2].layer": each must appear too.
+  for (size_t dot = n.find('.'); dot != std::string_view::npos; dot = n.find('.', dot + 1))
+    if (!mentionsWord(source, baseName(n.substr(dot + 1)))) return false;
+  return true;
+}
+
 GLint Program::location(const char* name) {
   auto it = locations_.find(name);
-  if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(bound_, name)).first;
-  return it->second;
+  if (it != locations_.end()) return it->second;
+  const GLint at = glGetUniformLocation(bound_, name);
+  const std::string base(baseName(name));
+  if (std::find(uniformsSet_.begin(), uniformsSet_.end(), base) == uniformsSet_.end()) uniformsSet_.push_back(base);
+  if (at < 0 && good_ && bound_ == good_.get() && builtinFiles_ && uniformChecks() && !sourceMentionsUniform(source_, name))
+    throw UnknownUniform(spec_.name + ": the lab sets the uniform '" + name +
+                         "', which no stage of the program declares (a misspelt name, or one a shader no longer has)");
+  return locations_.emplace(name, at).first->second;
 }
 
 void Program::set(const char* n, int v) { glUniform1i(location(n), v); }
@@ -237,6 +295,13 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
     return false;
   }
   p.good_ = std::move(built);
+  p.source_.clear();
+  for (auto& [type, text] : sources) p.source_ += text;
+  const fs::path builtin = fs::weakly_canonical(builtinShaderDir());
+  p.builtinFiles_ = std::all_of(p.files_.begin(), p.files_.end(), [&](const fs::path& f) {
+    const fs::path rel = fs::weakly_canonical(f).lexically_relative(builtin);
+    return !rel.empty() && *rel.begin() != "..";
+  });
   p.sourceHash_ = hash;
   linkedSources().insert(hash);
   p.bound_ = 0;

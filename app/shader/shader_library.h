@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -52,7 +53,12 @@ class Program {
   // Whether the program reads the uniform `name` (the compiler drops the ones it does not): a lab
   // binds textures only for the samplers its current variant really samples.
   bool uses(const char* name) { return location(name) >= 0; }
-  // Uniforms of the bound program; names it does not use are ignored (as GL does for -1).
+  // Uniforms of the bound program; names it does not use are ignored (as GL does for -1). With
+  // uniform checks on (uniformChecks()) and the program built from the built-in files alone, a
+  // name that appears nowhere in its preprocessed stages throws UnknownUniform instead: a misspelt
+  // name would otherwise leave the uniform at zero without a word. A name the compiler dropped
+  // (declared, unused in this variant) is fine, and so is any name once a student's file stands in
+  // (a shader of their own need not read everything the lab offers).
   void set(const char* name, int v);
   void set(const char* name, float v);
   void set(const char* name, const glm::vec2& v);
@@ -64,6 +70,9 @@ class Program {
   void setArray(const char* name, const glm::vec2* v, int count);
   void setArray(const char* name, const glm::vec3* v, int count);
   void setArray(const char* name, const glm::mat4* v, int count);
+  // The uniforms the lab has set on this program (names as set, array elements and struct members
+  // by their base name, "u_key"), in order: what a student's shader can read (the Shaders panel).
+  const std::vector<std::string>& uniformsSet() const { return uniformsSet_; }
 
  private:
   friend class ShaderLibrary;
@@ -74,6 +83,9 @@ class Program {
   GLuint fallback_ = 0;
   GLuint bound_ = 0;
   std::unordered_map<std::string, GLint> locations_;  // of bound_
+  std::string source_;                                 // the good build's stages, preprocessed
+  bool builtinFiles_ = false;                          // ... read from the built-in folder alone
+  std::vector<std::string> uniformsSet_;
   std::vector<std::filesystem::path> files_;
   std::vector<std::string> relPaths_;
   size_t sourceHash_ = 0;
@@ -84,6 +96,18 @@ class Program {
 };
 
 using ProgramRef = std::shared_ptr<Program>;
+
+// Uniform checks: on in debug builds, and wherever SHADELAB_CHECK_UNIFORMS=1 (the test suite sets
+// it); off in a release build's window, where a student's shader that drops a declaration must
+// not stop the lab.
+bool uniformChecks();
+void setUniformChecks(bool on);
+struct UnknownUniform : std::logic_error {
+  using std::logic_error::logic_error;
+};
+// Whether `name` ("u_key.viewProj", "u_disk[3]") could name a uniform of `source`: its base name
+// and any member appear there as whole words.
+bool sourceMentionsUniform(const std::string& source, const std::string& name);
 
 class ShaderLibrary {
  public:

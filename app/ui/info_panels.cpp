@@ -87,6 +87,14 @@ void drawShaderPanel(LabHost& host, std::string& status) {
       for (auto& f : p->files()) files += f.string() + "\n";
       ImGui::SetTooltip("%s", files.c_str());
     }
+    // What a student's version of this program can read: every uniform the lab sets on it.
+    if (const auto& names = p->uniformsSet(); !names.empty() &&
+                                             ImGui::TreeNode(p.get(), "uniforms the lab sets (%zu)", names.size())) {
+      std::string list;
+      for (auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      ImGui::TextWrapped("%s", list.c_str());
+      ImGui::TreePop();
+    }
     if (!failed) continue;
     for (auto& d : p->diagnostics()) {
       const std::string text = d.format();

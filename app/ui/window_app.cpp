@@ -34,34 +34,10 @@
 #include "ui/shader_editor.h"
 #include "ui/window_events.h"
 #include "ui/window_files.h"
+#include "ui/window_modes.h"
 
 namespace shadelab {
 namespace {
-
-struct AppState {
-  LabHost* host = nullptr;
-  Measurer* measurer = nullptr;
-  std::string message;          // last error or confirmation, shown in the UI
-  std::vector<std::string> dropped;
-  std::string fileParamUnderMouse;  // a file parameter's key, as of the last frame: drops go there
-  // Data scenes not downloaded ("?": not looked up yet): looked up at start and while the scene
-  // list is open, not every frame.
-  std::string missingData = "?";
-  glm::ivec2 viewport{960, 600};
-  FrameHistory history;
-  ConfigurationCosts costs;
-  MeasureUi measure;
-  ShaderEditor editor;
-  ExercisePanel exercises;
-  PixelProbe probe;  // the viewport's readout under the cursor
-  Responsiveness responsiveness;
-  bool screenshotRequested = false;
-  // The layout: side panels the user widens or narrows by their inner edge, or presentation mode
-  // (F11) with the viewport filling the window for a projector; everything scaled by uiScale.
-  float leftW = 380, rightW = 380;
-  bool presenting = false;
-  float uiScale = 1.0f, appliedScale = 0.0f;
-};
 
 void onDrop(GLFWwindow* w, int count, const char** paths) {
   countWindowEvent(w);
@@ -283,6 +259,17 @@ class WindowSession {
   static constexpr int kSettleFrames = 30;
   bool quiet();
   void noteActivity();
+  // Runs one hook of every mode; a mode that ends the run closes the window with its exit code.
+  template <typename Hook>
+  void runModes(Hook hook) {
+    for (auto& mode : modes) {
+      hook(*mode);
+      if (mode->wantsClose && !glfwWindowShouldClose(window)) {
+        exitCode = mode->exitCode;
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+      }
+    }
+  }
 
   GLFWwindow* window;
   const WindowOptions wopt;
@@ -293,7 +280,7 @@ class WindowSession {
   Measurer measurer;
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
   double uiMs = 0;
-  const std::vector<std::string> labs = labIds();
+  std::vector<std::unique_ptr<WindowMode>> modes;  // window_modes.h: what the run does besides drawing
   int frame = 0;
   unsigned seenEvents = 0;
   std::chrono::steady_clock::time_point lastActivity = std::chrono::steady_clock::now();
@@ -302,7 +289,8 @@ class WindowSession {
 };
 
 bool WindowSession::quiet() {
-  if (wopt.soakMinutes > 0 || wopt.cycleLabs || wopt.exitAfterFrames > 0 || app.screenshotRequested) return false;
+  for (auto& mode : modes)
+    if (mode->keepsDrawing(app)) return false;
   if (windowEvents() != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating() ||
       app.exercises.check.running() || app.exercises.checkRequested)
     return false;
@@ -326,7 +314,8 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
       wopt(wopt),
       soak(wopt.soakMinutes > 0 ? std::make_unique<SoakDriver>(SoakDriver::makeScratch(), wopt.soakSeed) : nullptr),
       host(shaderPathFor(options, soak.get())),
-      measurer(host) {
+      measurer(host),
+      modes(windowModes(wopt, soak.get(), labIds())) {
   host.jobs().setLowPriority(true);  // the window's frames come first
   measurer.onMeasured = [](const Measurement& m) {
     std::printf("measured %s (%s), truth: %s:", m.lab.c_str(), m.label.c_str(), m.truth.c_str());
@@ -384,47 +373,24 @@ bool WindowSession::drawFrame() {
   }
   noteActivity();
   handleDrops(app);
-  // A Check draws its configurations between frames, one a frame, in this context.
-  if (frame == 2 && wopt.check) app.exercises.checkRequested = true;
-  stepExerciseCheck(app.exercises, host, app.message);
-  if (wopt.cycleLabs && frame % 3 == 0) app.message = host.selectLab(labs[size_t(frame / 3) % labs.size()]);
   const auto now = std::chrono::steady_clock::now();
   // After a wait the time since the last drawn frame is idle time, not frame time: one refresh.
   const float dt = resumed ? 1.0f / 60.0f : std::chrono::duration<float>(now - last).count();
   last = now;
+  FrameEvent event{host, app, frame, dt * 1000.0f, 0.0};
+  runModes([&](WindowMode& m) { m.beforeLabFrame(event); });
+  // A Check draws its configurations between frames, one a frame, in this context.
+  stepExerciseCheck(app.exercises, host, app.message);
 
   // 2. the lab's frame (at the viewport size the last layout gave it)
   const float time = float(glfwGetTime());
   const auto& passes = host.renderFrame(app.viewport, time, dt);
   measurer.followLab();  // after a lab switch, the last lab's truths and images go now
-  if (soak) {
-    soak->afterFrame(host);
-    if (frame % 2 == 0) soak->step(host);
-    // Measure pressed now and then (later steps supersede it), never between a lab switch and its count
-    if (frame % 97 == 0 && !soak->countingLabEntry()) app.measure.requested = true;
-    if (soak->seconds() >= wopt.soakMinutes * 60.0) {
-      const auto csv = soak->scratch().parent_path() / (soak->scratch().filename().string() + "-window.csv");
-      const SoakDriver::Verdict verdict = soak->finish(csv, wopt.soakMinutes >= 10.0);
-      std::printf("%s", verdict.report.c_str());
-      exitCode = verdict.passed ? 0 : 1;
-      glfwSetWindowShouldClose(window, GLFW_TRUE);
-    }
-  }
-  double gpu = 0;
-  for (auto& p : passes) gpu += p.gpuMs;
-  if (!resumed) app.history.push(dt * 1000.0f, float(gpu));
+  for (auto& p : passes) event.labGpuMs += p.gpuMs;
+  runModes([&](WindowMode& m) { m.afterLabFrame(event); });
+  if (!resumed) app.history.push(dt * 1000.0f, float(event.labGpuMs));
   resumed = false;
   app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
-  if (frame > 2 && wopt.exitAfterFrames > 0) {  // reported when a timed run ends; a lecture keeps none
-    (host.jobs().busy() ? app.responsiveness.busyMs : app.responsiveness.idleMs).push_back(dt * 1000.0f);
-    app.responsiveness.labMs.push_back(float(gpu));
-  }
-  if (app.screenshotRequested) {
-    app.message = saveScreenshot(host, app.viewport);
-    std::printf("%s\n", app.message.c_str());
-    std::fflush(stdout);
-    app.screenshotRequested = false;
-  }
 
   // 3. UI layout
   const auto uiStart = std::chrono::steady_clock::now();
@@ -512,15 +478,7 @@ bool WindowSession::drawFrame() {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   uiMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - uiStart).count();
 
-  if (wopt.exitAfterFrames > 0 && frame + 1 >= wopt.exitAfterFrames) {
-    app.responsiveness.report();
-    if (!wopt.screenshot.empty())
-      if (auto err = saveWindowImage(wopt.screenshot, {fbw, fbh}); !err.empty()) {
-        std::fprintf(stderr, "shadelab: %s\n", err.c_str());
-        exitCode = 1;
-      }
-    glfwSetWindowShouldClose(window, GLFW_TRUE);
-  }
+  runModes([&](WindowMode& m) { m.afterUi(event, {fbw, fbh}); });
   glfwSwapBuffers(window);
   ++frame;
   return !glfwWindowShouldClose(window);

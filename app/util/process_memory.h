@@ -20,10 +20,9 @@ ResidentParts residentParts();
 double heapInUseMb();     // allocated and in use: tells memory kept from pages kept
 void returnFreePages();   // the allocator gives its free pages back (before a residentMb worth comparing)
 // Called once at start: blocks of 1 MiB and more are mapped on their own and given back when
-// freed. glibc otherwise raises that threshold to the largest block freed (up to 32 MiB), after
-// which a frame's transient images and maps are carved from the heap among small long-lived
-// blocks, and the pages they leave cannot be returned: over a 30-minute soak the resident set
-// kept 47 MB more than the heap held in use, 12 MB with the threshold fixed (10-minute runs).
+// freed. glibc otherwise raises that threshold to the largest block freed (up to 32 MiB), and a
+// frame's transient images are then carved from the heap among small long-lived blocks, whose
+// pages cannot be returned (the README's notes have the soak's figures).
 void keepLargeBlocksApart();
 
 // Asks the kernel to back [data, data + bytes) with huge pages where it offers them on request
@@ -31,8 +30,8 @@ void keepLargeBlocksApart();
 // the page.
 void adviseHugePages(void* data, size_t bytes);
 // `count` zeroed values for an image-sized buffer filled at once (a read-back, a truth). Such a
-// block is mapped afresh each time (keepLargeBlocksApart), and each of its small pages faults on
-// first touch: a 1280x720 RGBA float image is 3,600 of them (BM_ImageBuffer measures both).
+// block is mapped afresh each time (keepLargeBlocksApart), and each small page faults on first
+// touch; huge pages make that a few faults (BM_ImageBuffer measures both).
 template <typename T>
 std::vector<T> largeBuffer(size_t count) {
   std::vector<T> values;

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
+#include "gl/driver_caveats.h"
 #include "lab/technique.h"
+#include "lab/variants.h"
 #include "labs/filtering/filtering_scenes.h"
 #include "shader/preprocessor.h"
 
@@ -155,21 +158,24 @@ ProgramSpec FilteringLab::programSpec(const FilteringParams& p, bool probePass) 
   return spec;
 }
 
+// A pairwise cover of the choices the shader is compiled for: every value, and every pair of
+// values, of filter, mip selection, in-shader filtering, view, manual level and probe marker in some
+// program (the test that random settings draw nothing else: gl/lab_lifecycle_test.cpp).
 std::vector<ProgramSpec> FilteringLab::allPrograms() const {
   std::vector<ProgramSpec> all = {programSpec(FilteringParams{}, true)};
-  for (int f = 0; f < int(TexelFilter::Count); ++f)
-    for (int m = 0; m < int(MipSelection::Count); ++m)
-      for (int shader = 0; shader < 2; ++shader)
-        for (int view = 0; view < int(FilteringView::Count); ++view) {
-          FilteringParams p;
-          p.filter = TexelFilter(f);
-          p.mipmaps = MipSelection(m);
-          p.inShader = shader;
-          p.view = FilteringView(view);
-          p.manualLevel = view == 1;
-          p.probe = view != 2;
-          all.push_back(programSpec(p, false));
-        }
+  for (const auto& row : pairwiseCover({int(TexelFilter::Count), int(MipSelection::Count), 2, int(FilteringView::Count), 2, 2})) {
+    FilteringParams p;
+    p.filter = TexelFilter(row[0]);
+    p.mipmaps = MipSelection(row[1]);
+    p.inShader = row[2] == 1;
+    p.view = FilteringView(row[3]);
+    p.manualLevel = row[4] == 1;
+    p.probe = row[5] == 1;
+    all.push_back(programSpec(p, false));
+  }
+  // One of each: rows that differ only in what the program ignores compile the same program.
+  std::set<std::string> seen;
+  std::erase_if(all, [&](const ProgramSpec& spec) { return !seen.insert(spec.key()).second; });
   return all;
 }
 
@@ -180,7 +186,7 @@ std::string FilteringLab::setup(LabContext& ctx) {
   probeTarget_ = gl::RenderTarget::create({2, 2}, GL_RGBA32F);
   glGetFloatv(GL_MAX_TEXTURE_LOD_BIAS, &maxBias_);
   anisotropyLimit_ = gl::maxAnisotropy();
-  slowDriverAnisotropy_ = gl::rendererIs("llvmpipe");
+  slowDriverAnisotropy_ = gl::applies(gl::Caveat::SlowAnisotropy);
   const uint8_t white[4] = {255, 255, 255, 255};
   gl::SamplerState s;
   s.minFilter = s.magFilter = GL_NEAREST;

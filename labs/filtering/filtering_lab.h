@@ -123,10 +123,7 @@ class FilteringLab final : public LabWithParams<FilteringParams>, public Judge {
   std::vector<std::string> frameNotes_;
   float maxBias_ = 16.0f;           // the driver's GL_MAX_TEXTURE_LOD_BIAS
   float anisotropyLimit_ = 0.0f;    // the driver's anisotropy limit; 0 before setup (unknown)
-  // llvmpipe (Mesa 22.3) takes about twice as long for each level its anisotropic probes read
-  // finer than the footprint's: 166 ms for a 320x180 frame at 16x and a LOD bias of -2, 6 s at a
-  // manual level 0, against 4-11 ms for the lab's own probes in the shader.
-  bool slowDriverAnisotropy_ = false;
+  bool slowDriverAnisotropy_ = false;  // gl::Caveat::SlowAnisotropy (gl/driver_caveats.h)
   // Whether the driver's anisotropic filtering is left for the shader's (slowDriverAnisotropy_).
   bool anisotropyMovedToShader() const;
 };

@@ -8,6 +8,7 @@
 
 #include "shader/compile_log.h"
 #include "shader/preprocessor.h"
+#include "shader/shader_library.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -157,4 +158,15 @@ TEST(CompileLog, UnknownSourceStringIsNamedNotDropped) {
   const auto d = parseCompileLog("7:1(1): error: x\n", {"a.frag"});
   ASSERT_EQ(d.size(), 1u);
   EXPECT_EQ(d[0].file, "source-string 7");
+}
+
+TEST(UniformNames, ASourceMentionsBaseNamesAndMembersAsWholeWords) {
+  const std::string src = "struct ShadowLight { mat4 viewProj; float layer; };\nuniform ShadowLight u_key;\n"
+                          "uniform vec2 u_disk[64];\nuniform float u_biasScale;\n";
+  EXPECT_TRUE(sourceMentionsUniform(src, "u_key"));
+  EXPECT_TRUE(sourceMentionsUniform(src, "u_key.viewProj"));
+  EXPECT_TRUE(sourceMentionsUniform(src, "u_disk[3]"));
+  EXPECT_FALSE(sourceMentionsUniform(src, "u_key.viewproj"));  // members are checked too
+  EXPECT_FALSE(sourceMentionsUniform(src, "u_bias"));          // a prefix of another name is not the name
+  EXPECT_FALSE(sourceMentionsUniform(src, "u_dis[0]"));
 }

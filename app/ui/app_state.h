@@ -1,0 +1,44 @@
+// What the window's panels, its frame and its modes share.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl/pixel_probe.h"
+#include "ui/exercise_panel.h"
+#include "ui/frame_records.h"
+#include "ui/panels.h"
+#include "ui/shader_editor.h"
+
+namespace shadelab {
+
+class LabHost;
+class Measurer;
+
+struct AppState {
+  LabHost* host = nullptr;
+  Measurer* measurer = nullptr;
+  std::string message;          // last error or confirmation, shown in the UI
+  std::vector<std::string> dropped;
+  std::string fileParamUnderMouse;  // a file parameter's key, as of the last frame: drops go there
+  // Data scenes not downloaded ("?": not looked up yet): looked up at start and while the scene
+  // list is open, not every frame.
+  std::string missingData = "?";
+  glm::ivec2 viewport{960, 600};
+  FrameHistory history;
+  ConfigurationCosts costs;
+  MeasureUi measure;
+  ShaderEditor editor;
+  ExercisePanel exercises;
+  PixelProbe probe;  // the viewport's readout under the cursor
+  Responsiveness responsiveness;
+  bool screenshotRequested = false;
+  // The layout: side panels the user widens or narrows by their inner edge, or presentation mode
+  // (F11) with the viewport filling the window for a projector; everything scaled by uiScale.
+  float leftW = 380, rightW = 380;
+  bool presenting = false;
+  float uiScale = 1.0f, appliedScale = 0.0f;
+};
+
+}  // namespace shadelab
