@@ -379,11 +379,11 @@ void SurfaceLab::render(Frame& frame) {
       prog.set("u_kh", params.kh);
       prog.set("u_kn", params.kn);
       prog.set("u_layers", params.layers);
-      prog.set("u_tessLevel", float(tessLevel));
-      prog.set("u_angleScale", params.angleScale);
       // A mesh without UVs gets the plain program (programSpec): patches only where tessellation stages are.
-      // A sliced frame (a truth drawn in parts) draws its share of the triangles.
       const bool patches = tess && d.hasUvs;
+      if (patches) prog.set("u_tessLevel", float(tessLevel));  // surface.tesc's
+      prog.set("u_angleScale", params.angleScale);
+      // A sliced frame (a truth drawn in parts) draws its share of the triangles.
       const size_t first = d.triangles * size_t(frame.slice) / size_t(frame.slices);
       const size_t last = d.triangles * size_t(frame.slice + 1) / size_t(frame.slices);
       d.mesh.drawTriangles(patches ? Primitive::Patches : Primitive::Triangles, first, last - first);
