@@ -259,6 +259,7 @@ class WindowSession {
   static constexpr int kSettleFrames = 30;
   bool quiet();
   void noteActivity();
+  void layoutWindows(glm::ivec2 framebuffer, const std::vector<gl::PassTiming>& passes, float time);
   // Runs one hook of every mode; a mode that ends the run closes the window with its exit code.
   template <typename Hook>
   void runModes(Hook hook) {
@@ -357,49 +358,10 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
 }
 
-bool WindowSession::drawFrame() {
-  if (glfwWindowShouldClose(window)) return false;
-  // 1. events; when nothing moves, wait for them instead of drawing the same frame again
-  if (quiet()) {
-    waitForEvents(kIdleWakeSeconds);
-    if (windowEvents() == seenEvents && !host.pollChanges()) {
-      resumed = true;
-      return !glfwWindowShouldClose(window);
-    }
-    lastActivity = std::chrono::steady_clock::now();  // a saved shader or a finished job: draw a while
-    framesSinceActivity = 0;
-  } else {
-    glfwPollEvents();
-  }
-  noteActivity();
-  handleDrops(app);
-  const auto now = std::chrono::steady_clock::now();
-  // After a wait the time since the last drawn frame is idle time, not frame time: one refresh.
-  const float dt = resumed ? 1.0f / 60.0f : std::chrono::duration<float>(now - last).count();
-  last = now;
-  FrameEvent event{host, app, frame, dt * 1000.0f, 0.0};
-  runModes([&](WindowMode& m) { m.beforeLabFrame(event); });
-  // A Check draws its configurations between frames, one a frame, in this context.
-  stepExerciseCheck(app.exercises, host, app.message);
-
-  // 2. the lab's frame (at the viewport size the last layout gave it)
-  const float time = float(glfwGetTime());
-  const auto& passes = host.renderFrame(app.viewport, time, dt);
-  measurer.followLab();  // after a lab switch, the last lab's truths and images go now
-  for (auto& p : passes) event.labGpuMs += p.gpuMs;
-  runModes([&](WindowMode& m) { m.afterLabFrame(event); });
-  if (!resumed) app.history.push(dt * 1000.0f, float(event.labGpuMs));
-  resumed = false;
-  app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
-
-  // 3. UI layout
-  const auto uiStart = std::chrono::steady_clock::now();
-  applyUiScale(app);
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  int fbw = 0, fbh = 0;
-  glfwGetFramebufferSize(window, &fbw, &fbh);
+// The windows of one frame: the side panels and the viewport, or presentation mode's viewport and
+// overlay; the jobs' progress over the viewport.
+void WindowSession::layoutWindows(glm::ivec2 framebuffer, const std::vector<gl::PassTiming>& passes, float time) {
+  const int fbw = framebuffer.x, fbh = framebuffer.y;
   if (app.presenting) {
     // The viewport fills the window; the overlay carries what the class reads.
     ImGui::SetNextWindowPos({0, 0});
@@ -465,6 +427,52 @@ bool WindowSession::drawFrame() {
     }
   }
 
+}
+
+bool WindowSession::drawFrame() {
+  if (glfwWindowShouldClose(window)) return false;
+  // 1. events; when nothing moves, wait for them instead of drawing the same frame again
+  if (quiet()) {
+    waitForEvents(kIdleWakeSeconds);
+    if (windowEvents() == seenEvents && !host.pollChanges()) {
+      resumed = true;
+      return !glfwWindowShouldClose(window);
+    }
+    lastActivity = std::chrono::steady_clock::now();  // a saved shader or a finished job: draw a while
+    framesSinceActivity = 0;
+  } else {
+    glfwPollEvents();
+  }
+  noteActivity();
+  handleDrops(app);
+  const auto now = std::chrono::steady_clock::now();
+  // After a wait the time since the last drawn frame is idle time, not frame time: one refresh.
+  const float dt = resumed ? 1.0f / 60.0f : std::chrono::duration<float>(now - last).count();
+  last = now;
+  FrameEvent event{host, app, frame, dt * 1000.0f, 0.0};
+  runModes([&](WindowMode& m) { m.beforeLabFrame(event); });
+  // A Check draws its configurations between frames, one a frame, in this context.
+  stepExerciseCheck(app.exercises, host, app.message);
+
+  // 2. the lab's frame (at the viewport size the last layout gave it)
+  const float time = float(glfwGetTime());
+  const auto& passes = host.renderFrame(app.viewport, time, dt);
+  measurer.followLab();  // after a lab switch, the last lab's truths and images go now
+  for (auto& p : passes) event.labGpuMs += p.gpuMs;
+  runModes([&](WindowMode& m) { m.afterLabFrame(event); });
+  if (!resumed) app.history.push(dt * 1000.0f, float(event.labGpuMs));
+  resumed = false;
+  app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
+
+  // 3. UI layout
+  const auto uiStart = std::chrono::steady_clock::now();
+  applyUiScale(app);
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  int fbw = 0, fbh = 0;
+  glfwGetFramebufferSize(window, &fbw, &fbh);
+  layoutWindows({fbw, fbh}, passes, time);
   drawShaderEditor(app.editor, host, app.message);
 
   // 4. draw the UI
