@@ -46,7 +46,7 @@ class ParamVisitor {
   //     v.intParam(...); v.floatParam(...); }
   class UnavailableGroup {
    public:
-    UnavailableGroup(ParamVisitor& v, std::string_view reason) : v_(v), outer_(v.groupReason_) {
+    UnavailableGroup(ParamVisitor& v, std::string_view reason) : v_(v), outer_(v.groupReason_) {  // reason is copied
       if (outer_.empty()) v.groupReason_ = reason;
     }
     ~UnavailableGroup() { v_.groupReason_ = outer_; }
@@ -55,7 +55,7 @@ class ParamVisitor {
 
    private:
     ParamVisitor& v_;
-    std::string_view outer_;
+    std::string outer_;
   };
   // Why the parameter being visited can have no effect: its group's reason, else `own` (what
   // unavailable() said for it), else "".
@@ -70,7 +70,7 @@ class ParamVisitor {
   }
 
  private:
-  std::string_view groupReason_;
+  std::string groupReason_;  // owned: a reason built for the group outlives nothing it points into
 };
 
 // Sets one parameter from text ("0.25", "on", "phong"). Returns "" or a one-line error that

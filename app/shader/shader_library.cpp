@@ -195,6 +195,13 @@ void Program::setArray(const char* n, const glm::mat4* v, int count) {
   glUniformMatrix4fv(location(n), count, GL_FALSE, glm::value_ptr(v[0]));
 }
 
+std::vector<ProgramRef> heldPrograms(std::span<const ProgramSlot> slots) {
+  std::vector<ProgramRef> out;
+  for (const ProgramSlot& slot : slots)
+    if (slot.current()) out.push_back(slot.current());
+  return out;
+}
+
 ShaderLibrary::ShaderLibrary(ShaderSearchPath path)
     : path_(std::move(path)), builtinPath_(std::vector<fs::path>{builtinShaderDir()}) {
   onDiagnostic = [](const Diagnostic& d) { std::fprintf(stderr, "%s\n", d.format().c_str()); };

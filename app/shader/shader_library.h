@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <span>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -189,6 +190,9 @@ class ProgramSlot {
   std::string key_;
   ProgramRef program_;
 };
+
+// The programs of these slots that hold one: a lab's activePrograms().
+std::vector<ProgramRef> heldPrograms(std::span<const ProgramSlot> slots);
 
 GLenum stageFromExtension(const std::string& path);  // .vert .geom .frag .tesc .tese .comp; 0 if unknown
 const char* stageName(GLenum type);                  // "vertex", "fragment", ... as drivers' logs say

@@ -458,12 +458,7 @@ void DenoiseLab::render(Frame& frame) {
   }
 }
 
-std::vector<ProgramRef> DenoiseLab::activePrograms() const {
-  std::vector<ProgramRef> out;
-  for (auto& slot : programs_)
-    if (slot.current()) out.push_back(slot.current());
-  return out;
-}
+std::vector<ProgramRef> DenoiseLab::activePrograms() const { return heldPrograms(programs_); }
 
 std::string DenoiseLab::saveMap() {
   if (!result_ || !result_->map) return "no map to save: the mesh has no UVs, or no result yet";

@@ -246,12 +246,7 @@ void ShadingLab::render(Frame& frame) {
   }
 }
 
-std::vector<ProgramRef> ShadingLab::activePrograms() const {
-  std::vector<ProgramRef> out;
-  for (auto& slot : programs_)
-    if (slot.current()) out.push_back(slot.current());
-  return out;
-}
+std::vector<ProgramRef> ShadingLab::activePrograms() const { return heldPrograms(programs_); }
 
 std::vector<std::string> ShadingLab::warnings() const {
   std::vector<std::string> w;

@@ -107,12 +107,7 @@ void ShadowsLab::teardown() {
   shaders_ = nullptr;
 }
 
-std::vector<ProgramRef> ShadowsLab::activePrograms() const {
-  std::vector<ProgramRef> out;
-  for (auto& slot : programs_)
-    if (slot.current()) out.push_back(slot.current());
-  return out;
-}
+std::vector<ProgramRef> ShadowsLab::activePrograms() const { return heldPrograms(programs_); }
 
 const std::vector<glm::vec2>& ShadowsLab::disk(int count) {
   // Each set is made the first time a filter asks for it (dart throwing takes tens of ms for 64).
