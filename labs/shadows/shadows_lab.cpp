@@ -469,17 +469,17 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   }
   if (!showFill && !cascades_.empty()) range = cascades_[size_t(layer)].contentDepth;
   prog.set("u_range", range);
+  glm::vec2 grid(1.0f);  // the view's cells across and down: one map, the cube's cross, or its framed faces
   if (map.cube()) {
     const auto windows = cubeFaceWindows(frame.scene.instanceBounds, shown.position, params.view.frameFaces);
-    int shown = 0;
-    for (int face = 0; face < 6; ++face) {
-      prog.set(("u_faceWindow[" + std::to_string(face) + "]").c_str(), windows[size_t(face)]);
-      if (params.view.frameFaces && windows[size_t(face)].z > 0.0f) prog.set(("u_faces[" + std::to_string(shown++) + "]").c_str(), face);
-    }
-    prog.set("u_faceCount", shown);
-    faceCells_ = shown == 0 ? glm::vec2(4.0f, 3.0f) : glm::vec2(std::min(shown, 3), (shown + 2) / 3);
+    prog.setArray("u_faceWindow", windows.data(), int(windows.size()));
+    int faces = 0;
+    for (int face = 0; face < 6; ++face)
+      if (params.view.frameFaces && windows[size_t(face)].z > 0.0f) prog.set(("u_faces[" + std::to_string(faces++) + "]").c_str(), face);
+    prog.set("u_faceCount", faces);
+    grid = faces == 0 ? glm::vec2(4.0f, 3.0f) : glm::vec2(std::min(faces, 3), (faces + 2) / 3);
   }
-  const float aspect = frame.aspect(), cells = map.cube() ? faceCells_.x / faceCells_.y : 1.0f;
+  const float aspect = frame.aspect(), cells = grid.x / grid.y;
   prog.set("u_aspect", aspect > cells ? glm::vec2(aspect / cells, 1.0f) : glm::vec2(1.0f, cells / aspect));
   prog.set("u_zoom", params.view.depthZoom);
   prog.set("u_centre", glm::vec2(params.view.depthCentreU, params.view.depthCentreV));

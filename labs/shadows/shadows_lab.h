@@ -168,7 +168,6 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   void setFilterUniforms(Program& prog) const;
   void renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format);
   void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);
-  glm::vec2 faceCells_{4.0f, 3.0f};  // the cube's depth view: cells across and down
   Program& fetch(size_t slot, const ProgramSpec& spec) { return programs_[slot].get(*shaders_, spec); }
   static ProgramSpec linesSpec();
   void drawLit(Frame& frame, Program& prog, const LightFrame& key, const LightFrame* fill);

@@ -295,11 +295,7 @@ float visibility(int type, ShadowLight L, sampler2DArray map, samplerCube cube, 
   dbg.gap = gap / max(q.texelWorld, 1e-30);
   dbg.blocker = -1.0;
   dbg.penumbra = 0.0;
-#if defined(HARD_LOOKUP)
-  // shadows/shadow_lookup.glsl and cube_lookup.glsl: the receiver point and bias are all they take.
-  return type == LIGHT_POINT ? cubeShadowLookup(L, cube, q.point, q.bias) : shadowLookup(type, L, map, q.point, q.bias);
-#endif
-#ifdef FAR_FIX
+#if defined(FAR_FIX) && !defined(HARD_LOOKUP)  // the hard lookup guards the far plane itself
   if (q.beyondFar) return 1.0;  // nothing beyond the far plane was drawn into the map: call it lit
 #endif
 #if defined(FILTER_HW_PCF)
@@ -352,6 +348,9 @@ float visibility(int type, ShadowLight L, sampler2DArray map, samplerCube cube, 
   for (int k = 0; k < PCSS_COUNT; ++k)
     lit += tapCompare(type, L, map, cube, q, rotated(u_filterDisk[k], angle) * filterTexels);
   return lit / float(PCSS_COUNT);
+#elif defined(HARD_LOOKUP)
+  // shadows/shadow_lookup.glsl and cube_lookup.glsl: the receiver point and bias are all they take.
+  return type == LIGHT_POINT ? cubeShadowLookup(L, cube, q.point, q.bias) : shadowLookup(type, L, map, q.point, q.bias);
 #else
   return tapCompare(type, L, map, cube, q, vec2(0.0));
 #endif
