@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/commands.h"
-#include "cli/options.h"
-#include "util/process_memory.h"
+#include "app/cli/commands.h"
+#include "app/cli/options.h"
+#include "app/util/process_memory.h"
 #ifdef SHADELAB_HAS_WINDOW
-#include "ui/window_app.h"
+#include "app/ui/window_app.h"
 #endif
 
 namespace {
@@ -22,21 +22,28 @@ int run(int argc, char** argv) {
   WindowOptions window;
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--exit-after" && i + 1 < argc) window.exitAfterFrames = std::atoi(argv[++i]);
-    else if (a == "--screenshot" && i + 1 < argc) window.screenshot = argv[++i];
-    else if (a == "--cycle-labs") window.cycleLabs = true;
-    else if (a == "--auto-measure") window.autoMeasure = true;
-    else if (a == "--soak" && i + 1 < argc) window.soakMinutes = std::atof(argv[++i]);
-    else if (a == "--soak-seed" && i + 1 < argc) window.soakSeed = unsigned(std::atol(argv[++i]));
-    else if (a == "--present") window.present = true;
-    else if (a == "--check") window.check = true;
+    if (a == "--exit-after" && i + 1 < argc)
+      window.exitAfterFrames = std::atoi(argv[++i]);
+    else if (a == "--screenshot" && i + 1 < argc)
+      window.screenshot = argv[++i];
+    else if (a == "--cycle-labs")
+      window.cycleLabs = true;
+    else if (a == "--auto-measure")
+      window.autoMeasure = true;
+    else if (a == "--soak" && i + 1 < argc)
+      window.soakMinutes = std::atof(argv[++i]);
+    else if (a == "--soak-seed" && i + 1 < argc)
+      window.soakSeed = unsigned(std::atol(argv[++i]));
+    else if (a == "--present")
+      window.present = true;
+    else if (a == "--check")
+      window.check = true;
     else if (a == "--window-size" && i + 1 < argc) {
       if (auto err = parseSize("--window-size", argv[++i], window.size, 240); !err.empty()) {
         std::fprintf(stderr, "shadelab: %s\n", err.c_str());
         return 1;
       }
-    }
-    else if (a == "--ui-scale" && i + 1 < argc) {
+    } else if (a == "--ui-scale" && i + 1 < argc) {
       const std::string text = argv[++i];
       char* end = nullptr;
       window.uiScale = std::strtof(text.c_str(), &end);
@@ -44,8 +51,8 @@ int run(int argc, char** argv) {
         std::fprintf(stderr, "shadelab: --ui-scale: invalid value '%s' (valid: a number in [0.5, 4])\n", text.c_str());
         return 1;
       }
-    }
-    else args.push_back(argv[i]);
+    } else
+      args.push_back(argv[i]);
   }
 #else
   args.assign(argv, argv + argc);

@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <memory>
 
-#include "context/gl_context.h"
-#include "util/process_memory.h"
+#include "app/context/gl_context.h"
+#include "app/util/process_memory.h"
 
 namespace shadelab {
 

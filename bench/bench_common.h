@@ -10,7 +10,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "host/lab_host.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab {
 

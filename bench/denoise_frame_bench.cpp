@@ -20,7 +20,7 @@ void BM_DenoiseFrame(benchmark::State& state) {
     state.SkipWithError("bunny-0.2 needs ../shared/data");
     return;
   }
-  host.jobs().setLowPriority(true);  // as in the window
+  host.jobs().setLowPriority(true);      // as in the window
   host.set("denoise.method=bilateral");  // about 0.5 s per job on the Bunny: long enough to overlap frames
   host.settle();
   const glm::ivec2 size(900, 780);

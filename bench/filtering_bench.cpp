@@ -34,7 +34,9 @@ void BM_FilteringFilter(benchmark::State& state) {
 }
 BENCHMARK(BM_FilteringFilter)
     ->DenseRange(0, int(kFilteringConfigs.size()) - 1)
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(10);
 
 // BM_FilteringReference: wall seconds of the supersampled truth of one 1280x720 frame of the
 // grazing plane (16 x 16 jittered frames; the bound is 60 s on llvmpipe).

@@ -14,9 +14,9 @@
 #include <chrono>
 #include <fstream>
 
+#include "app/util/process_memory.h"
+#include "app/util/read_file.h"
 #include "bench_common.h"
-#include "util/process_memory.h"
-#include "util/read_file.h"
 
 namespace fs = std::filesystem;
 using namespace shadelab;

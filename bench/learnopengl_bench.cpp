@@ -37,10 +37,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/gl/handle.h"
+#include "app/host/measurer.h"
+#include "app/scene/procedural.h"
 #include "bench_common.h"
-#include "gl/handle.h"
-#include "host/measurer.h"
-#include "scene/procedural.h"
 
 using namespace shadelab;
 
@@ -237,9 +237,9 @@ void BM_LearnOpenGLFrame(benchmark::State& state) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
   const GLuint depthProgram = compile(kDepthVert, kDepthFrag), litProgram = compile(kLitVert, kLitFrag);
-  const glm::vec3 lightPos(-2.0f, 4.0f, -1.0f), eye = glm::vec3(0.0f, 0.0f, 0.5f) +
-                                                   7.0f * glm::vec3(0.0f, std::sin(glm::radians(25.0f)),
-                                                                    std::cos(glm::radians(25.0f)));
+  const glm::vec3 lightPos(-2.0f, 4.0f, -1.0f),
+      eye = glm::vec3(0.0f, 0.0f, 0.5f) +
+            7.0f * glm::vec3(0.0f, std::sin(glm::radians(25.0f)), std::cos(glm::radians(25.0f)));
   const glm::mat4 lightSpace = glm::ortho(-10.0f, 10.0f, -10.0f, 10.0f, 1.0f, 7.5f) *
                                glm::lookAt(lightPos, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
   const glm::mat4 viewProj = glm::perspective(glm::radians(45.0f), float(size.x) / float(size.y), 0.1f, 100.0f) *
@@ -255,7 +255,8 @@ void BM_LearnOpenGLFrame(benchmark::State& state) {
   glUniform1i(glGetUniformLocation(litProgram, "u_shadowMap"), 1);
   glUniform1i(glGetUniformLocation(litProgram, "u_textured"), textured ? 1 : 0);
   const GLint depthModel = glGetUniformLocation(depthProgram, "u_model"),
-              litModel = glGetUniformLocation(litProgram, "u_model"), litColor = glGetUniformLocation(litProgram, "u_color");
+              litModel = glGetUniformLocation(litProgram, "u_model"),
+              litColor = glGetUniformLocation(litProgram, "u_color");
 
   auto plainFrame = [&](GLuint target) {
     glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo.get());

@@ -29,14 +29,17 @@ void BM_ShadowFilter(benchmark::State& state) {
   host.set("shadows.filter=" + filter);
   host.set("shadows.pcf_size=" + std::to_string(state.range(2)));
   timeFrames(state, host, {1280, 720});
-  state.SetLabel(light + " " + filter +
-                 (state.range(1) == 2 ? " " + std::to_string(state.range(2)) + "x" + std::to_string(state.range(2)) : ""));
+  state.SetLabel(
+      light + " " + filter +
+      (state.range(1) == 2 ? " " + std::to_string(state.range(2)) + "x" + std::to_string(state.range(2)) : ""));
 }
 BENCHMARK(BM_ShadowFilter)
     ->ArgsProduct({{0, 2}, {0, 1, 3, 4}, {3}})
     ->ArgsProduct({{0, 2}, {2}, {3, 5, 9, 15}})
     ->ArgsProduct({{0}, {5, 6, 7}, {3}})  // filtered maps: depth + moments, blur, mips, lighting
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(10);
 
 // BM_ShadowFrameworkOverhead: what the lab's machinery costs per frame. The lab's frame (host,
 // pass timers, uniform lookups by name, light set-up, dummy bindings) beside a bare two-pass
@@ -65,7 +68,10 @@ void BM_ShadowFrameworkOverhead(benchmark::State& state) {
 
   // The bare program's own objects.
   const Scene& scene = host.scene();
-  struct Mesh { GLuint vao, vbo[2], ibo; GLsizei count; };
+  struct Mesh {
+    GLuint vao, vbo[2], ibo;
+    GLsizei count;
+  };
   std::vector<Mesh> meshes;
   for (const MeshData& m : scene.meshes) {
     Mesh g{};
@@ -90,7 +96,8 @@ void BM_ShadowFrameworkOverhead(benchmark::State& state) {
   GLuint shadowTex = 0, shadowFbo = 0, colorTex = 0, depthRb = 0, targetFbo = 0;
   glGenTextures(1, &shadowTex);
   glBindTexture(GL_TEXTURE_2D_ARRAY, shadowTex);
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, mapSize, mapSize, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, mapSize, mapSize, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+               nullptr);
   depthMapSampling(GL_TEXTURE_2D_ARRAY);
   glGenFramebuffers(1, &shadowFbo);
   glBindFramebuffer(GL_FRAMEBUFFER, shadowFbo);
@@ -208,8 +215,8 @@ BENCHMARK(BM_ShadowTruth)->ArgsProduct({{0, 1}, {0, 1}})->UseManualTime()->Unit(
 
 // BM_GpuTruthShape/<samples a draw>/<walk width>/<leaf size>/<cone>: the GPU tracer's 64-sample
 // area truth of the default 1280x720 frame (as BM_ShadowTruth/1/1), cut into draws, walks and
-// leaves of each size, with or without the cone test (GpuTraceShape). Wall ms of the whole truth (g-buffer, trace, read-back); counter
-// trace_ms: the trace's own steps.
+// leaves of each size, with or without the cone test (GpuTraceShape). Wall ms of the whole truth (g-buffer, trace,
+// read-back); counter trace_ms: the trace's own steps.
 void BM_GpuTruthShape(benchmark::State& state) {
   LabHost host(ShaderSearchPath({builtinShaderDir()}));
   host.selectLab("shadows");

@@ -38,6 +38,8 @@ void BM_SurfaceTechnique(benchmark::State& state) {
 }
 BENCHMARK(BM_SurfaceTechnique)
     ->DenseRange(0, int(kSurfaceConfigs.size()) - 1)
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(10);
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(10);
 
 }  // namespace

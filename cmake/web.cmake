@@ -42,7 +42,7 @@ add_executable(shadelab ${WEB_SOURCES} app/cli/options.cpp app/cli/session.cpp a
   ${IMGUI_SOURCES} ${LZ4_SOURCE_DIR}/lib/lz4.c ${LZ4_SOURCE_DIR}/lib/lz4hc.c
   ${GL_LOADER_DIR}/gl_loader.cpp)
 set_target_properties(shadelab PROPERTIES OUTPUT_NAME shadelab SUFFIX ".js")
-target_include_directories(shadelab PRIVATE ${CMAKE_SOURCE_DIR} ${CMAKE_SOURCE_DIR}/app ${GL_LOADER_DIR}
+target_include_directories(shadelab PRIVATE ${CMAKE_SOURCE_DIR} ${GL_LOADER_DIR}
   ${IMGUI_SOURCE_DIR} ${IMGUI_SOURCE_DIR}/backends)
 target_include_directories(shadelab SYSTEM PRIVATE ${WEB_INCLUDE} ${WEB_INCLUDE}/stb ${WEB_INCLUDE}/eigen3)
 # In the page's file system the project's folders sit under /shadelab (the data file below).

@@ -11,14 +11,14 @@
 #include <map>
 #include <string>
 
-#include "cli/commands.h"
-#include "cli/session.h"
-#include "lab/lab.h"
-#include "shader/compile_log.h"
-#include "shader/preprocessor.h"
-#include "shader/shader_library.h"
-#include "util/output_files.h"
-#include "util/read_file.h"
+#include "app/cli/commands.h"
+#include "app/cli/session.h"
+#include "app/lab/lab.h"
+#include "app/shader/compile_log.h"
+#include "app/shader/preprocessor.h"
+#include "app/shader/shader_library.h"
+#include "app/util/output_files.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -28,9 +28,12 @@ namespace {
 
 const char* stageExtension(GLenum stage) {
   switch (stage) {
-    case GL_VERTEX_SHADER: return "vert";
-    case GL_FRAGMENT_SHADER: return "frag";
-    default: return nullptr;  // no such stage in GLSL ES 3.00
+    case GL_VERTEX_SHADER:
+      return "vert";
+    case GL_FRAGMENT_SHADER:
+      return "frag";
+    default:
+      return nullptr;  // no such stage in GLSL ES 3.00
   }
 }
 
@@ -56,7 +59,8 @@ std::string validate(const fs::path& dir, const PreprocessedSource& src, const c
     // then is the aftermath, not the student's.
     if (d.message.find("compilation terminated") != std::string::npos) break;
     if (!out.empty() && d.message.find("missing #endif") != std::string::npos) continue;
-    if (d.line == 0 && (d.raw.empty() || d.raw == file.string() || d.raw.find("compilation errors") != std::string::npos))
+    if (d.line == 0 &&
+        (d.raw.empty() || d.raw == file.string() || d.raw.find("compilation errors") != std::string::npos))
       continue;  // the validator's own header and summary lines
     out += d.formatWithCaret() + "\n";
   }
@@ -67,7 +71,8 @@ std::string validate(const fs::path& dir, const PreprocessedSource& src, const c
 
 int runCheckShadersEs(const Options& o) {
   if (std::system("glslangValidator --version >/dev/null 2>&1") != 0)
-    return fail("check-shaders --dialect es needs glslangValidator (Debian's glslang-tools: tools/install_deps.sh test)");
+    return fail(
+        "check-shaders --dialect es needs glslangValidator (Debian's glslang-tools: tools/install_deps.sh test)");
   std::string err;
   auto context = createHeadlessContext(o.backend, err);  // the labs ask the context what it has
   if (!context) return fail(err);
@@ -112,9 +117,10 @@ int runCheckShadersEs(const Options& o) {
   setGlslDialect(GlslDialect::Desktop);
   std::error_code ec;
   fs::remove_all(dir, ec);
-  std::printf("check-shaders: %d programs, %d failed (GLSL ES 3.00, glslangValidator: %d distinct stages); %d with "
-              "geometry or tessellation stages are desktop-only\n",
-              programs, failed, stages, desktopOnly);
+  std::printf(
+      "check-shaders: %d programs, %d failed (GLSL ES 3.00, glslangValidator: %d distinct stages); %d with "
+      "geometry or tessellation stages are desktop-only\n",
+      programs, failed, stages, desktopOnly);
   return failed ? 1 : 0;
 }
 

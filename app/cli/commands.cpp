@@ -1,12 +1,12 @@
-#include "cli/commands.h"
+#include "app/cli/commands.h"
 
 #include <cstdio>
 #include <fstream>
 
-#include "cli/session.h"
-#include "grade/rubric.h"
-#include "host/measurer.h"
-#include "scene/scene_catalog.h"
+#include "app/cli/session.h"
+#include "app/grade/rubric.h"
+#include "app/host/measurer.h"
+#include "app/scene/scene_catalog.h"
 
 namespace shadelab {
 
@@ -16,7 +16,8 @@ static std::vector<std::string> shaderFailures(LabHost& host) {
   std::vector<std::string> out;
   for (auto& p : host.lab().activePrograms())
     if (p->lastBuildFailed() || !p->hasGoodProgram())
-      out.push_back(p->spec().name + (p->hasGoodProgram() ? " (showing its last good build)" : " (drawing the fallback)") +
+      out.push_back(p->spec().name +
+                    (p->hasGoodProgram() ? " (showing its last good build)" : " (drawing the fallback)") +
                     (p->diagnostics().empty() ? "" : ": " + p->diagnostics().front().format()));
   return out;
 }
@@ -78,7 +79,8 @@ int runRender(const Options& o) {
               std::string(host.lab().id()).c_str(), host.sceneId().c_str(), passSummary(t.passes).c_str(), o.frames);
   for (auto& f : failed) std::fprintf(stderr, "shadelab: render: %s\n", f.c_str());
   if (!failed.empty())
-    return fail("render: " + std::to_string(failed.size()) + " program(s) of this frame did not build (the image was written)");
+    return fail("render: " + std::to_string(failed.size()) +
+                " program(s) of this frame did not build (the image was written)");
   return 0;
 }
 
@@ -91,8 +93,7 @@ int runList(const Options& o) {
     DescribeParams d(id);
     lab->visitParams(d);
     for (auto& line : d.lines) std::printf("  %s\n", line.c_str());
-    for (auto& scene : lab->scenes())
-      std::printf("  scene %-22s %s\n", scene.id.c_str(), scene.description.c_str());
+    for (auto& scene : lab->scenes()) std::printf("  scene %-22s %s\n", scene.id.c_str(), scene.description.c_str());
     std::printf("  stress cases:");
     for (auto& c : stressCasesOf(*lab)) std::printf(" %s", c.name.c_str());
     std::printf("\n");
@@ -108,8 +109,10 @@ int runList(const Options& o) {
   for (auto& id : listExercises(exercisesRoot())) {
     Exercise ex;
     const std::string err = loadExercise(exercisesRoot(), id, ex);
-    if (err.empty()) std::printf("  %-26s %-13s %s\n", id.c_str(), ex.level.c_str(), ex.title.c_str());
-    else std::printf("  %-26s %s\n", id.c_str(), err.c_str());
+    if (err.empty())
+      std::printf("  %-26s %-13s %s\n", id.c_str(), ex.level.c_str(), ex.title.c_str());
+    else
+      std::printf("  %-26s %s\n", id.c_str(), err.c_str());
   }
   std::printf("\nheadless backends: %s\n", std::string(kHeadlessBackends).c_str());
   return 0;

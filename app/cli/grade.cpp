@@ -7,15 +7,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli/commands.h"
-#include "cli/grade_render.h"
-#include "cli/grade_student.h"
-#include "grade/configuration_frames.h"
-#include "grade/diagnosis.h"
-#include "grade/grading.h"
-#include "grade/watchdog.h"
-#include "measure/report.h"
-#include "util/output_files.h"
+#include "app/cli/commands.h"
+#include "app/cli/grade_render.h"
+#include "app/cli/grade_student.h"
+#include "app/grade/configuration_frames.h"
+#include "app/grade/diagnosis.h"
+#include "app/grade/grading.h"
+#include "app/grade/watchdog.h"
+#include "app/measure/report.h"
+#include "app/util/output_files.h"
 
 namespace shadelab {
 
@@ -29,7 +29,8 @@ constexpr double kSolutionSeconds = 600.0;  // the built-in solution and its tru
 // The checks of one configuration, from what its child wrote and how it ended. Returns "" or why
 // the grader itself cannot go on (a rubric or solution at fault).
 std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& run, double watchdog,
-                               const nlohmann::json& solution, const nlohmann::json& student, ConfigurationResult& out) {
+                               const nlohmann::json& solution, const nlohmann::json& student,
+                               ConfigurationResult& out) {
   const Configuration& c = *job.configuration;
   if (solution.contains("error")) return solution["error"].get<std::string>();
   if (!solution.contains("renderer"))
@@ -77,11 +78,14 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
     if (!out.missingFiles.empty()) {
       notSubmitted(c, out.missingFiles.front() + " is in none of the --shaders folders", result);
     } else {
-      ConfigurationJob job{&ex,   &c, g.shaderDirs, g.backend, g.dir, gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(c.name),
-                           g.cache, solutionKeyBase(ex, i)};
-      const WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
-                                        [&](const std::string& phase) { return phase == "student" ? g.watchdog : kSolutionSeconds; },
-                                        (g.dir / "logs" / (job.stem + ".log")).string());
+      ConfigurationJob job{&ex,          &c,
+                           g.shaderDirs, g.backend,
+                           g.dir,        gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(c.name),
+                           g.cache,      solutionKeyBase(ex, i)};
+      const WatchedRun run =
+          runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
+                     [&](const std::string& phase) { return phase == "student" ? g.watchdog : kSolutionSeconds; },
+                     (g.dir / "logs" / (job.stem + ".log")).string());
       const nlohmann::json solution = readResult(job, "solution"), student = readResult(job, "student");
       for (const char* phase : {"solution", "student"}) fs::remove(g.dir / (job.stem + "-" + phase + ".json"));
       if (auto e = scoreConfiguration(job, run, g.watchdog, solution, student, result); !e.empty()) return e;
@@ -141,24 +145,28 @@ std::string gradeStudent(const std::vector<std::string>& ids, const StudentGradi
     if (auto e = gradeExercise(id, g, result, report.renderer, cache); !e.empty()) return e;
     report.exercises.push_back(std::move(result));
   }
-  for (auto& [name, text] : {std::pair{"report.md", gradeMarkdown(report)}, std::pair{"report.html", gradeHtml(report, g.dir)},
-                             std::pair{"report.json", gradeJson(report)}})
+  for (auto& [name, text] :
+       {std::pair{"report.md", gradeMarkdown(report)}, std::pair{"report.html", gradeHtml(report, g.dir)},
+        std::pair{"report.json", gradeJson(report)}})
     if (auto e = writeTextFile((g.dir / name).string(), text); !e.empty()) return e;
   return {};
 }
 
-std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend, const SolutionCache& cache,
-                             const fs::path& scratch, CacheCount& count) {
+std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend,
+                             const SolutionCache& cache, const fs::path& scratch, CacheCount& count) {
   for (auto& id : ids) {
     Exercise ex;
     if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
     for (size_t i = 0; i < ex.configurations.size(); ++i) {
-      ConfigurationJob job{&ex, &ex.configurations[i], {}, backend, scratch,
-                           gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(ex.configurations[i].name), cache,
-                           solutionKeyBase(ex, i), true};
-      const WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
-                                        [](const std::string&) { return kSolutionSeconds; },
-                                        (scratch / (job.stem + ".log")).string());
+      ConfigurationJob job{
+          &ex,     &ex.configurations[i],
+          {},      backend,
+          scratch, gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(ex.configurations[i].name),
+          cache,   solutionKeyBase(ex, i),
+          true};
+      const WatchedRun run =
+          runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
+                     [](const std::string&) { return kSolutionSeconds; }, (scratch / (job.stem + ".log")).string());
       const nlohmann::json solution = readResult(job, "solution");
       fs::remove(scratch / (job.stem + "-solution.json"));
       if (solution.contains("error")) return solution["error"].get<std::string>();
@@ -176,19 +184,22 @@ int runGrade(const Options& o) {
   if (!o.positional.empty()) return runGradeMerge(o);
   if (o.exercise.empty() == !o.allExercises)
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
-  if (o.shaderDirs.empty()) return cannotGrade("--shaders DIR is required: the folder holding the student's shader files");
+  if (o.shaderDirs.empty())
+    return cannotGrade("--shaders DIR is required: the folder holding the student's shader files");
   if (o.jobs != 1 || o.shards != 1) return cannotGrade("--jobs and --shard are for a class (--class DIR)");
   std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
   if (ids.empty()) return cannotGrade("no exercises in " + exercisesRoot().string());
 
   // The report folder: fresh, and never inside what is being graded (the student's folder is only read).
-  fs::path dir = o.out.empty() ? freshName("grades", o.allExercises ? "all" : gradeSlug(o.exercise), "") : fs::path(o.out);
+  fs::path dir =
+      o.out.empty() ? freshName("grades", o.allExercises ? "all" : gradeSlug(o.exercise), "") : fs::path(o.out);
   for (auto& s : o.shaderDirs)
     if (pathInside(dir, s))
       return cannotGrade("--out " + dir.string() + " lies inside the graded folder " + s.string() +
                          ", which is only ever read; write the report elsewhere");
   std::error_code ec;
-  if (fs::exists(dir / "report.json")) return cannotGrade("--out " + dir.string() + " already holds a report; nothing is overwritten");
+  if (fs::exists(dir / "report.json"))
+    return cannotGrade("--out " + dir.string() + " already holds a report; nothing is overwritten");
   fs::create_directories(dir / "logs", ec);
   if (ec) return cannotGrade("--out " + dir.string() + ": " + ec.message());
 
@@ -215,10 +226,11 @@ int runGrade(const Options& o) {
   }
   if (report.exercises.size() > 1)
     std::printf("all: %g / %g points (%.1f%%), %s\n", std::round(earned * 100) / 100, total,
-                total > 0 ? 100.0 * earned / total : 0.0, passed ? "every exercise passed" : "not every exercise passed");
+                total > 0 ? 100.0 * earned / total : 0.0,
+                passed ? "every exercise passed" : "not every exercise passed");
   if (g.cache.enabled())
-    std::printf("solutions: %d of %d configurations from the cache (%s)\n", cache.fromCache, cache.fromCache + cache.rendered,
-                g.cache.dir().c_str());
+    std::printf("solutions: %d of %d configurations from the cache (%s)\n", cache.fromCache,
+                cache.fromCache + cache.rendered, g.cache.dir().c_str());
   std::printf("report: %s (also report.md, report.json)\n", (dir / "report.html").c_str());
   return passed ? 0 : 1;
 }

@@ -16,22 +16,22 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <map>
 
 #include <nlohmann/json.hpp>
 
-#include "cli/commands.h"
-#include "cli/grade_student.h"
-#include "cli/submissions.h"
-#include "grade/class_report.h"
-#include "grade/rubric.h"
-#include "measure/report.h"
-#include "util/output_files.h"
-#include "util/read_file.h"
+#include "app/cli/commands.h"
+#include "app/cli/grade_student.h"
+#include "app/cli/submissions.h"
+#include "app/grade/class_report.h"
+#include "app/grade/rubric.h"
+#include "app/measure/report.h"
+#include "app/util/output_files.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -105,12 +105,14 @@ std::string writeClassOutputs(const fs::path& out, const std::vector<std::string
   }
   summary.submissions = int(students.size());
   for (auto& r : rows) ++summary.statuses[r.status];
-  for (auto& [name, text] : {std::pair{"gradebook.csv", gradebookCsv(rows)}, std::pair{"class.html", classHtml(rows, out / "students")}})
+  for (auto& [name, text] :
+       {std::pair{"gradebook.csv", gradebookCsv(rows)}, std::pair{"class.html", classHtml(rows, out / "students")}})
     if (auto e = writeTextFile((out / name).string(), text); !e.empty()) return e;
   return {};
 }
 
-nlohmann::json classJson(const std::vector<std::string>& ids, int shard, int shards, const std::vector<std::string>& students) {
+nlohmann::json classJson(const std::vector<std::string>& ids, int shard, int shards,
+                         const std::vector<std::string>& students) {
   return {{"exercises", ids}, {"shard", shard}, {"shards", shards}, {"students", students}};
 }
 
@@ -141,26 +143,31 @@ std::string prepareOut(const fs::path& out, const std::vector<fs::path>& graded)
 int runGradeClass(const Options& o) {
   if (o.exercise.empty() == !o.allExercises)
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
-  if (!o.shaderDirs.empty()) return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
-  const std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
+  if (!o.shaderDirs.empty())
+    return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
+  const std::vector<std::string> ids =
+      o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
   for (auto& id : ids) {
     Exercise ex;
     if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return cannotGrade(e);
   }
   std::vector<Submission> all;
   if (auto e = listSubmissions(o.classDir, all); !e.empty()) return cannotGrade(e);
-  if (all.empty()) return cannotGrade("--class " + o.classDir.string() + " holds no submissions (a folder or a .zip per student)");
+  if (all.empty())
+    return cannotGrade("--class " + o.classDir.string() + " holds no submissions (a folder or a .zip per student)");
   // The slice: every n-th submission by name, starting at the i-th. Which shard a student falls
   // in depends only on the sorted names, so every node computes the same split.
   std::vector<Submission> mine;
   for (size_t k = 0; k < all.size(); ++k)
     if (int(k % size_t(o.shards)) == o.shard - 1) mine.push_back(all[k]);
 
-  const fs::path out = o.out.empty() ? freshName("grades", "class-" + gradeSlug(o.allExercises ? "all" : o.exercise), "") : fs::path(o.out);
+  const fs::path out = o.out.empty()
+                           ? freshName("grades", "class-" + gradeSlug(o.allExercises ? "all" : o.exercise), "")
+                           : fs::path(o.out);
   if (auto e = prepareOut(out, {o.classDir}); !e.empty()) return cannotGrade(e);
   const SolutionCache cache = solutionCacheFor(o);
-  std::printf("grading %zu of %zu submissions in %s (shard %d of %d), %zu exercise%s, %d at a time\n", mine.size(), all.size(),
-              o.classDir.c_str(), o.shard, o.shards, ids.size(), ids.size() == 1 ? "" : "s", o.jobs);
+  std::printf("grading %zu of %zu submissions in %s (shard %d of %d), %zu exercise%s, %d at a time\n", mine.size(),
+              all.size(), o.classDir.c_str(), o.shard, o.shards, ids.size(), ids.size() == 1 ? "" : "s", o.jobs);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   if (cache.enabled()) {
@@ -189,8 +196,8 @@ int runGradeClass(const Options& o) {
                   (out / "students" / sub.name / "grade.log").c_str());
     }
     for (auto& r : rows)
-      std::printf("  %-24s %-22s %5g / %-3g %s\n", sub.name.c_str(), r.exercise.c_str(), std::round(r.score * 100) / 100,
-                  r.total, r.status.c_str());
+      std::printf("  %-24s %-22s %5g / %-3g %s\n", sub.name.c_str(), r.exercise.c_str(),
+                  std::round(r.score * 100) / 100, r.total, r.status.c_str());
     std::fflush(stdout);
   };
   for (auto& sub : mine) {
@@ -208,7 +215,8 @@ int runGradeClass(const Options& o) {
   for (auto& s : mine) names.push_back(s.name);
   Summary summary;
   if (auto e = writeClassOutputs(out, ids, names, summary); !e.empty()) return cannotGrade(e);
-  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, o.shard, o.shards, names).dump(2) + "\n"); !e.empty())
+  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, o.shard, o.shards, names).dump(2) + "\n");
+      !e.empty())
     return cannotGrade(e);
   printSummary(out, summary);
   std::printf("took %.1f s, %.2f s per submission\n", std::chrono::duration<double>(Clock::now() - start).count(),
@@ -217,7 +225,8 @@ int runGradeClass(const Options& o) {
 }
 
 int runGradeMerge(const Options& o) {
-  if (o.positional.empty() || o.positional[0] != "merge") return cannotGrade("unexpected argument '" + o.positional[0] + "'");
+  if (o.positional.empty() || o.positional[0] != "merge")
+    return cannotGrade("unexpected argument '" + o.positional[0] + "'");
   const std::vector<std::string> dirs(o.positional.begin() + 1, o.positional.end());
   if (dirs.empty()) return cannotGrade("merge: name the shards' output folders: grade merge DIR... --out DIR");
   if (o.out.empty()) return cannotGrade("merge: --out DIR is required: where the joined gradebook and class page go");
@@ -229,10 +238,12 @@ int runGradeMerge(const Options& o) {
   for (auto& d : dirs) {
     const fs::path file = fs::path(d) / "class.json";
     std::string text;
-    if (!readWholeFile(file, text)) return cannotGrade("merge: " + file.string() + " cannot be read (not the output of grade --class)");
+    if (!readWholeFile(file, text))
+      return cannotGrade("merge: " + file.string() + " cannot be read (not the output of grade --class)");
     const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object() || !j.contains("exercises") || !j["exercises"].is_array() || !j.contains("students") ||
-        !j["students"].is_array() || !j.value("shard", nlohmann::json()).is_number_integer() ||
+    if (j.is_discarded() || !j.is_object() || !j.contains("exercises") || !j["exercises"].is_array() ||
+        !j.contains("students") || !j["students"].is_array() ||
+        !j.value("shard", nlohmann::json()).is_number_integer() ||
         !j.value("shards", nlohmann::json()).is_number_integer())
       return cannotGrade("merge: " + file.string() + ": not a class record (needs exercises, students, shard, shards)");
     std::vector<std::string> theirs;
@@ -243,26 +254,30 @@ int runGradeMerge(const Options& o) {
       ids = theirs;
       shards = of;
     } else if (theirs != ids || of != shards) {
-      return cannotGrade("merge: " + d + " graded other exercises or another split (" + std::to_string(of) + " shards) than " +
-                         dirs.front());
+      return cannotGrade("merge: " + d + " graded other exercises or another split (" + std::to_string(of) +
+                         " shards) than " + dirs.front());
     }
-    if (shard < 1 || shard > of) return cannotGrade("merge: " + file.string() + ": shard " + std::to_string(shard) + " of " + std::to_string(of));
+    if (shard < 1 || shard > of)
+      return cannotGrade("merge: " + file.string() + ": shard " + std::to_string(shard) + " of " + std::to_string(of));
     if (shardDirs.count(shard))
-      return cannotGrade("merge: shard " + std::to_string(shard) + " is given twice (" + shardDirs[shard] + " and " + d + ")");
+      return cannotGrade("merge: shard " + std::to_string(shard) + " is given twice (" + shardDirs[shard] + " and " +
+                         d + ")");
     shardDirs[shard] = d;
     for (auto& s : j["students"]) {
       if (!s.is_string()) continue;
       const std::string name = s.get<std::string>();
       if (name.empty() || name[0] == '.' || name.find('/') != std::string::npos)
         return cannotGrade("merge: " + file.string() + ": '" + name + "' is not a submission's name");
-      if (from.count(name)) return cannotGrade("merge: '" + name + "' was graded by two shards (" + from[name].string() + ", " + d + ")");
+      if (from.count(name))
+        return cannotGrade("merge: '" + name + "' was graded by two shards (" + from[name].string() + ", " + d + ")");
       from[name] = d;
       students.push_back(name);
     }
   }
   for (int i = 1; i <= shards; ++i)
     if (!shardDirs.count(i))
-      return cannotGrade("merge: shard " + std::to_string(i) + " of " + std::to_string(shards) + " is missing; give every shard's --out folder");
+      return cannotGrade("merge: shard " + std::to_string(i) + " of " + std::to_string(shards) +
+                         " is missing; give every shard's --out folder");
 
   const fs::path out = o.out;
   std::vector<fs::path> inputs(dirs.begin(), dirs.end());

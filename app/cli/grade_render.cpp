@@ -1,11 +1,11 @@
-#include "cli/grade_render.h"
+#include "app/cli/grade_render.h"
 
 #include <cmath>
 #include <fstream>
 
-#include "cli/session.h"
-#include "grade/configuration_frames.h"
-#include "measure/report.h"
+#include "app/cli/session.h"
+#include "app/grade/configuration_frames.h"
+#include "app/measure/report.h"
 
 namespace shadelab {
 
@@ -55,7 +55,8 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   // The built-in shaders: the solution's frame, and the truth the checks need, from the cache when
   // this renderer made them before for the same shaders, rubric and program.
   const std::string renderer = context->describe();
-  const std::string key = ContentHash().add(job.cacheKey).add("\nbackend " + job.backend + "\nrenderer ").add(renderer).hex();
+  const std::string key =
+      ContentHash().add(job.cacheKey).add("\nbackend " + job.backend + "\nrenderer ").add(renderer).hex();
   CachedSolution built;
   const bool cached = job.cache.load(key, built);
   if (!cached) {
@@ -70,7 +71,8 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
     writeResult(job, "solution", solutionJson);
     return 0;
   }
-  if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty()) return failSolution(e);
+  if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty())
+    return failSolution(e);
   writeResult(job, "solution", solutionJson);
 
   // The student's folders first: their frame, compared with the solution's and with the truth.

@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grade/rubric.h"
-#include "grade/solution_cache.h"
+#include "app/grade/rubric.h"
+#include "app/grade/solution_cache.h"
 
 namespace shadelab {
 

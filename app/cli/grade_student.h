@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/options.h"
-#include "grade/grading.h"
-#include "grade/solution_cache.h"
+#include "app/cli/options.h"
+#include "app/grade/grading.h"
+#include "app/grade/solution_cache.h"
 
 namespace shadelab {
 
@@ -16,9 +16,9 @@ struct StudentGrading {
   std::vector<std::filesystem::path> shaderDirs;  // the student's folders, searched before the built-in ones
   std::filesystem::path dir;                      // the report folder (exists, holds logs/)
   std::string backend = "osmesa";
-  double watchdog = 20.0;                         // seconds the student's frames may take per configuration
+  double watchdog = 20.0;  // seconds the student's frames may take per configuration
   SolutionCache cache;
-  std::vector<std::string> notes;                 // added to every exercise's notes (e.g. how the zip unpacked)
+  std::vector<std::string> notes;  // added to every exercise's notes (e.g. how the zip unpacked)
 };
 
 struct CacheCount {
@@ -33,8 +33,8 @@ std::string gradeStudent(const std::vector<std::string>& ids, const StudentGradi
 
 // Renders (or finds in the cache) the solution side of every configuration of `ids`, once, so that
 // submissions graded after it only draw their own frames. "" or why it failed.
-std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend, const SolutionCache& cache,
-                             const std::filesystem::path& scratch, CacheCount& count);
+std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend,
+                             const SolutionCache& cache, const std::filesystem::path& scratch, CacheCount& count);
 
 // "shadelab: grade: MESSAGE" on stderr; returns grade's exit code for "could not grade" (2).
 int cannotGrade(const std::string& message);

@@ -1,8 +1,8 @@
-#include "cli/options.h"
+#include "app/cli/options.h"
 
 #include <cstdlib>
 
-#include "util/format.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -87,13 +87,16 @@ std::string parseSize(const std::string& option, const std::string& text, glm::i
 }
 
 std::string parseOptions(int argc, char** argv, Options& o) {
-  static const char* kCommands[] = {"render", "sweep", "stress", "list", "check-shaders", "compare", "grade", "random", "soak"};
+  static const char* kCommands[] = {"render",  "sweep", "stress", "list", "check-shaders",
+                                    "compare", "grade", "random", "soak"};
   int i = 1;
   if (i < argc && argv[i][0] != '-') {
     o.command = argv[i++];
     bool known = false;
     for (auto c : kCommands) known |= o.command == c;
-    if (!known) return "unknown command '" + o.command + "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak)";
+    if (!known)
+      return "unknown command '" + o.command +
+             "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak)";
   }
   for (; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -121,24 +124,37 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     }
     if (i + 1 >= argc) return arg + ": missing value";
     const std::string v = argv[++i];
-    if (arg == "--lab") o.lab = v;
-    else if (arg == "--scene") o.scene = v;
-    else if (arg == "--height-map") o.heightMap = v;
-    else if (arg == "--set") o.sets.push_back(v);
-    else if (arg == "--do") o.actions.push_back(v);
-    else if (arg == "--vary") o.varies.push_back(v);
-    else if (arg == "--shaders") o.shaderDirs.emplace_back(v);
-    else if (arg == "--camera") o.camera = v;
-    else if (arg == "--preset") o.preset = v;
-    else if (arg == "--backend") o.backend = v;
+    if (arg == "--lab")
+      o.lab = v;
+    else if (arg == "--scene")
+      o.scene = v;
+    else if (arg == "--height-map")
+      o.heightMap = v;
+    else if (arg == "--set")
+      o.sets.push_back(v);
+    else if (arg == "--do")
+      o.actions.push_back(v);
+    else if (arg == "--vary")
+      o.varies.push_back(v);
+    else if (arg == "--shaders")
+      o.shaderDirs.emplace_back(v);
+    else if (arg == "--camera")
+      o.camera = v;
+    else if (arg == "--preset")
+      o.preset = v;
+    else if (arg == "--backend")
+      o.backend = v;
     else if (arg == "--dialect") {
       if (v != "desktop" && v != "es") return "--dialect: invalid value '" + v + "' (valid: desktop, es)";
       o.dialect = v;
-    }
-    else if (arg == "--out") o.out = v;
-    else if (arg == "--exercise") o.exercise = v;
-    else if (arg == "--class") o.classDir = v;
-    else if (arg == "--cache") o.cacheDir = v;
+    } else if (arg == "--out")
+      o.out = v;
+    else if (arg == "--exercise")
+      o.exercise = v;
+    else if (arg == "--class")
+      o.classDir = v;
+    else if (arg == "--cache")
+      o.cacheDir = v;
     else if (arg == "--jobs") {
       long n = 0;
       if (!parseWholeNumber(v, 1, 256, n)) return "--jobs: '" + v + "' is not a whole number in [1, 256]";
@@ -146,13 +162,12 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else if (arg == "--shard") {
       int i = 0, n = 0;
       char slash = 0, extra = 0;
-      if (std::sscanf(v.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || n > 100000 || i < 1 ||
-          i > n)
+      if (std::sscanf(v.c_str(), "%d%c%d%c", &i, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || n > 100000 ||
+          i < 1 || i > n)
         return "--shard: '" + v + "' is not i/n with 1 <= i <= n (e.g. 3/20)";
       o.shard = i;
       o.shards = n;
-    }
-    else if (arg == "--size") {
+    } else if (arg == "--size") {
       if (auto e = parseSize("--size", v, o.size); !e.empty()) return e;
       o.sizeGiven = true;
     } else if (arg == "--watchdog") {
@@ -164,30 +179,39 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       char* end = nullptr;
       const double d = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(d >= 0) || d > 1e6 || (arg != "--minutes" && d != double(long(d))))
-        return arg + ": '" + v + "' is not " + (arg == "--minutes" ? "a number of minutes" : "a whole number") + " in [0, 1e6]";
-      if (arg == "--count") o.count = int(d);
-      else if (arg == "--seed") o.seed = unsigned(d);
-      else o.minutes = d;
+        return arg + ": '" + v + "' is not " + (arg == "--minutes" ? "a number of minutes" : "a whole number") +
+               " in [0, 1e6]";
+      if (arg == "--count")
+        o.count = int(d);
+      else if (arg == "--seed")
+        o.seed = unsigned(d);
+      else
+        o.minutes = d;
     } else if (arg == "--time" || arg == "--frames") {
       char* end = nullptr;
       const double d = std::strtod(v.c_str(), &end);
       if (v.empty() || *end || !(d >= 0) || d > 1e6) return arg + ": '" + v + "' is not a number >= 0";
-      if (arg == "--time") o.time = float(d);
-      else if (d < 1 || d != int(d)) return "--frames: '" + v + "' is not an integer >= 1";
-      else o.frames = int(d);
+      if (arg == "--time")
+        o.time = float(d);
+      else if (d < 1 || d != int(d))
+        return "--frames: '" + v + "' is not an integer >= 1";
+      else
+        o.frames = int(d);
     } else {
       return "unknown option '" + arg +
-             "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, --frames, --shaders, "
-             "--backend, --dialect, --out, --measure, --exercise, --all, --watchdog, --class, --jobs, --shard, --cache, --no-cache, --count, "
+             "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, "
+             "--frames, --shaders, "
+             "--backend, --dialect, --out, --measure, --exercise, --all, --watchdog, --class, --jobs, --shard, "
+             "--cache, --no-cache, --count, "
              "--seed, --minutes)";
     }
   }
   for (auto& dir : o.shaderDirs)
-    if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) return "--shaders: '" + dir.string() + "' is not a folder";
+    if (std::error_code ec; !std::filesystem::is_directory(dir, ec))
+      return "--shaders: '" + dir.string() + "' is not a folder";
   if (std::error_code ec; !o.classDir.empty() && !std::filesystem::is_directory(o.classDir, ec))
     return "--class: '" + o.classDir.string() + "' is not a folder";
   return {};
 }
-
 
 }  // namespace shadelab

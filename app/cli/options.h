@@ -10,38 +10,38 @@
 namespace shadelab {
 
 struct Options {
-  std::string command;  // "" (window), render, sweep, stress, list, check-shaders, compare, grade
-  std::string lab;      // "" = the default (or the preset's)
-  std::string scene;    // "" = the lab's default
-  std::vector<std::string> sets;                 // --set lab.key=value, in order
-  std::vector<std::string> actions;              // --do lab.key, in order, after every --set
-  std::vector<std::string> varies;               // --vary key=a,b,c (sweep)
-  std::vector<std::filesystem::path> shaderDirs; // --shaders DIR (student folders, searched first)
-  std::string camera;                            // --camera yaw=..,pitch=..
-  std::string heightMap;                         // --height-map image.png
-  std::string preset;                            // --preset file.json (as written by the app)
-  std::string backend = "osmesa";                // --backend osmesa|egl
-  std::string dialect = "desktop";               // check-shaders: --dialect desktop|es
-  std::string out;                               // --out file.png (render) or DIR (sweep)
+  std::string command;               // "" (window), render, sweep, stress, list, check-shaders, compare, grade
+  std::string lab;                   // "" = the default (or the preset's)
+  std::string scene;                 // "" = the lab's default
+  std::vector<std::string> sets;     // --set lab.key=value, in order
+  std::vector<std::string> actions;  // --do lab.key, in order, after every --set
+  std::vector<std::string> varies;   // --vary key=a,b,c (sweep)
+  std::vector<std::filesystem::path> shaderDirs;  // --shaders DIR (student folders, searched first)
+  std::string camera;                             // --camera yaw=..,pitch=..
+  std::string heightMap;                          // --height-map image.png
+  std::string preset;                             // --preset file.json (as written by the app)
+  std::string backend = "osmesa";                 // --backend osmesa|egl
+  std::string dialect = "desktop";                // check-shaders: --dialect desktop|es
+  std::string out;                                // --out file.png (render) or DIR (sweep)
   glm::ivec2 size{960, 540};
   bool sizeGiven = false;
   float time = 0.0f;
-  int frames = 5;                                // timed frames per configuration (medians)
+  int frames = 5;  // timed frames per configuration (medians)
   int warmup = 2;
-  bool measure = false;                          // render: measure against the lab's truth too
-  std::string exercise;                          // grade: --exercise lab/name
-  bool allExercises = false;                     // grade: --all
-  double watchdog = 20.0;                        // grade: seconds a student's frames may take
-  std::filesystem::path classDir;                // grade: --class DIR, one submission per folder or .zip
-  int jobs = 1;                                  // grade --class: submissions graded at a time
-  int shard = 1, shards = 1;                     // grade --class: --shard i/n
-  std::string cacheDir;                          // grade: --cache DIR ("" = the default folder)
-  bool noCache = false;                          // grade: --no-cache
-  int count = 20;                                // random: configurations per lab
-  unsigned seed = 1;                             // random, soak
-  double minutes = 1.0;                          // soak
+  bool measure = false;            // render: measure against the lab's truth too
+  std::string exercise;            // grade: --exercise lab/name
+  bool allExercises = false;       // grade: --all
+  double watchdog = 20.0;          // grade: seconds a student's frames may take
+  std::filesystem::path classDir;  // grade: --class DIR, one submission per folder or .zip
+  int jobs = 1;                    // grade --class: submissions graded at a time
+  int shard = 1, shards = 1;       // grade --class: --shard i/n
+  std::string cacheDir;            // grade: --cache DIR ("" = the default folder)
+  bool noCache = false;            // grade: --no-cache
+  int count = 20;                  // random: configurations per lab
+  unsigned seed = 1;               // random, soak
+  double minutes = 1.0;            // soak
   bool help = false;
-  std::vector<std::string> positional;           // compare A.png B.png; grade merge DIR...
+  std::vector<std::string> positional;  // compare A.png B.png; grade merge DIR...
 };
 
 // Returns "" or a one-line error naming the bad option and what is valid.

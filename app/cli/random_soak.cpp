@@ -5,12 +5,12 @@
 #include <functional>
 #include <random>
 
-#include "cli/commands.h"
-#include "cli/session.h"
-#include "gl/gl.h"
-#include "host/random_settings.h"
-#include "host/soak.h"
-#include "util/output_files.h"
+#include "app/cli/commands.h"
+#include "app/cli/session.h"
+#include "app/gl/gl.h"
+#include "app/host/random_settings.h"
+#include "app/host/soak.h"
+#include "app/util/output_files.h"
 
 namespace shadelab {
 namespace {
@@ -48,9 +48,12 @@ int runRandom(const Options& o) {
         host.renderFrame(size, o.time);
         const ImageF image = host.readImage();
         const std::vector<std::string> warnings = host.warnings();
-        if (const std::string err = gl::drainErrors(); !err.empty()) why = "GL error " + err;
-        else if (const size_t bad = countNonFinite(image); bad > 0) why = std::to_string(bad) + " NaN/Inf values";
-        else if (allBlack(image) && warnings.empty()) why = "a black frame and no warning saying why";
+        if (const std::string err = gl::drainErrors(); !err.empty())
+          why = "GL error " + err;
+        else if (const size_t bad = countNonFinite(image); bad > 0)
+          why = std::to_string(bad) + " NaN/Inf values";
+        else if (allBlack(image) && warnings.empty())
+          why = "a black frame and no warning saying why";
         for (auto& p : host.lab().activePrograms())
           if (why.empty() && !p->hasGoodProgram()) why = "program " + p->spec().name + " did not build";
       }
@@ -97,12 +100,13 @@ int runSoak(const Options& o) {
     if (driver.seconds() >= nextReport) {  // about once a minute (a long step delays it)
       nextReport = driver.seconds() + 60.0;
       const auto& x = driver.samples().back();
-      std::printf("soak: %4.0f s  %7.1f MB  %5d GL objects  %d jobs  %ld frames\n", x.seconds, x.residentMb, x.glObjects,
-                  x.jobs, x.frames);
+      std::printf("soak: %4.0f s  %7.1f MB  %5d GL objects  %d jobs  %ld frames\n", x.seconds, x.residentMb,
+                  x.glObjects, x.jobs, x.frames);
       std::fflush(stdout);
     }
   }
-  const std::filesystem::path csv = o.out.empty() ? scratch.parent_path() / (scratch.filename().string() + ".csv") : std::filesystem::path(o.out);
+  const std::filesystem::path csv =
+      o.out.empty() ? scratch.parent_path() / (scratch.filename().string() + ".csv") : std::filesystem::path(o.out);
   const SoakDriver::Verdict verdict = driver.finish(csv, o.minutes >= 10.0);
   std::printf("%s", verdict.report.c_str());
   std::filesystem::remove_all(scratch);

@@ -1,4 +1,4 @@
-#include "cli/session.h"
+#include "app/cli/session.h"
 
 #include <unistd.h>
 

@@ -4,10 +4,10 @@
 #include <memory>
 #include <string>
 
-#include "cli/options.h"
-#include "context/gl_context.h"
-#include "host/configure.h"
-#include "host/lab_host.h"
+#include "app/cli/options.h"
+#include "app/context/gl_context.h"
+#include "app/host/configure.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "cli/submissions.h"
+#include "app/cli/submissions.h"
 
 #include <sys/stat.h>
 #include <zip.h>
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <memory>
 
-#include "shader/preprocessor.h"
+#include "app/shader/preprocessor.h"
 
 namespace shadelab {
 
@@ -41,8 +41,10 @@ void makeReadOnly(const fs::path& dir) {
   std::vector<fs::path> all;
   for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) all.push_back(it->path());
   for (auto& p : all)
-    fs::permissions(p, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write, fs::perm_options::remove, ec);
-  fs::permissions(dir, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write, fs::perm_options::remove, ec);
+    fs::permissions(p, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                    fs::perm_options::remove, ec);
+  fs::permissions(dir, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                  fs::perm_options::remove, ec);
 }
 
 }  // namespace
@@ -53,7 +55,8 @@ std::string listSubmissions(const fs::path& classDir, std::vector<Submission>& o
   for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.empty() || name[0] == '.') continue;
-    if (it->is_directory(ec)) found.push_back({name, it->path(), false});
+    if (it->is_directory(ec))
+      found.push_back({name, it->path(), false});
     else if (it->is_regular_file(ec) && endsWith(name, ".zip") && name.size() > 4)
       found.push_back({name.substr(0, name.size() - 4), it->path(), true});
   }
@@ -70,7 +73,8 @@ std::string listSubmissions(const fs::path& classDir, std::vector<Submission>& o
 std::string unpackZip(const fs::path& zipPath, const fs::path& dest, const ZipLimits& limits) {
   const std::string where = zipPath.string();
   int code = 0;
-  std::unique_ptr<zip_t, decltype(&zip_discard)> archive(zip_open(zipPath.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &code), zip_discard);
+  std::unique_ptr<zip_t, decltype(&zip_discard)> archive(zip_open(zipPath.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &code),
+                                                         zip_discard);
   if (!archive) {
     zip_error_t error;
     zip_error_init_with_code(&error, code);
@@ -80,7 +84,8 @@ std::string unpackZip(const fs::path& zipPath, const fs::path& dest, const ZipLi
   }
   const zip_int64_t count = zip_get_num_entries(archive.get(), 0);
   if (count < 0 || size_t(count) > limits.entries)
-    return where + ": " + std::to_string(count) + " entries; a submission may hold at most " + std::to_string(limits.entries);
+    return where + ": " + std::to_string(count) + " entries; a submission may hold at most " +
+           std::to_string(limits.entries);
   std::error_code ec;
   if (fs::exists(dest, ec)) return dest.string() + ": already exists; a zip is only unpacked into a new folder";
   fs::create_directories(dest, ec);
@@ -98,7 +103,7 @@ std::string unpackZip(const fs::path& zipPath, const fs::path& dest, const ZipLi
       return where + ": entry '" + name + "' is a symbolic link; a submission holds plain files only";
     const fs::path relative = safeEntryPath(name);
     if (relative.empty()) {
-      if (name == "./" || name == "/" ) continue;
+      if (name == "./" || name == "/") continue;
       return where + ": entry '" + name + "' would land outside the submission (an absolute name or a '..')";
     }
     const fs::path target = dest / relative;
@@ -110,7 +115,8 @@ std::string unpackZip(const fs::path& zipPath, const fs::path& dest, const ZipLi
     fs::create_directories(target.parent_path(), ec);
     if (ec) return where + ": entry '" + name + "': " + ec.message();
     if (fs::exists(target, ec)) return where + ": entry '" + name + "' is in the zip twice";
-    std::unique_ptr<zip_file_t, decltype(&zip_fclose)> in(zip_fopen_index(archive.get(), zip_uint64_t(i), 0), zip_fclose);
+    std::unique_ptr<zip_file_t, decltype(&zip_fclose)> in(zip_fopen_index(archive.get(), zip_uint64_t(i), 0),
+                                                          zip_fclose);
     if (!in) return where + ": entry '" + name + "' cannot be read (" + zip_strerror(archive.get()) + ")";
     std::ofstream out(target, std::ios::binary);
     if (!out) return where + ": entry '" + name + "': cannot write " + target.string();

@@ -28,7 +28,8 @@ std::string listSubmissions(const std::filesystem::path& classDir, std::vector<S
 
 // Unpacks `zip` into `dest` (created; must not exist yet). The files are left read-only. "" or
 // one line naming the zip and the entry at fault.
-std::string unpackZip(const std::filesystem::path& zip, const std::filesystem::path& dest, const ZipLimits& limits = {});
+std::string unpackZip(const std::filesystem::path& zip, const std::filesystem::path& dest,
+                      const ZipLimits& limits = {});
 
 // Removes a folder unpackZip made (its read-only files and folders included).
 void removeUnpacked(const std::filesystem::path& dir);

@@ -8,10 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "cli/commands.h"
-#include "cli/session.h"
-#include "host/measurer.h"
-#include "measure/report.h"
+#include "app/cli/commands.h"
+#include "app/cli/session.h"
+#include "app/host/measurer.h"
+#include "app/measure/report.h"
 
 namespace shadelab {
 
@@ -139,7 +139,8 @@ int runSweep(const Options& o) {
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%03zu.png", index);
     writePng(o.out + name, shown);
-    const bool newTruth = std::none_of(report.truths.begin(), report.truths.end(), [&](auto& t) { return t.first == m->truth; });
+    const bool newTruth =
+        std::none_of(report.truths.begin(), report.truths.end(), [&](auto& t) { return t.first == m->truth; });
     if (newTruth) {
       report.truths.emplace_back(m->truth, judge->reference().description);
       if (!m->reference.rgba.empty()) {
@@ -157,7 +158,8 @@ int runSweep(const Options& o) {
   const auto truths = truthsOf(report);
   for (auto& plot : report.plots)
     for (auto& truth : truths) {
-      const std::string file = o.out + "/" + labId + "_" + plot.error + (truths.size() > 1 ? "_" + slug(truth) : "") + ".svg";
+      const std::string file =
+          o.out + "/" + labId + "_" + plot.error + (truths.size() > 1 ? "_" + slug(truth) : "") + ".svg";
       if (auto err = writeTextFile(file, sweepPlotSvg(report, plot, truth)); !err.empty()) return fail(err);
     }
   // The table on stdout: every plotted error and cost once, in plot order.

@@ -6,9 +6,8 @@
 
 #include <vector>
 
-#include "context/gl_context.h"
-#include "context/load_gl.h"
-
+#include "app/context/gl_context.h"
+#include "app/context/load_gl.h"
 
 namespace shadelab {
 namespace {
@@ -43,8 +42,7 @@ std::vector<EGLDisplay> candidateDisplays() {
       for (EGLint i = 0; i < count; ++i)
         if (EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr)) out.push_back(d);
   }
-  if (EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr))
-    out.push_back(d);
+  if (EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr)) out.push_back(d);
   return out;
 }
 
@@ -57,8 +55,13 @@ EGLContext createCoreContext(EGLDisplay display) {
   EGLint n = 0;
   if (!eglChooseConfig(display, configAttribs, &config, 1, &n) || n < 1) config = nullptr;
   for (const gl::Version v : gl::kContextVersions) {
-    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, v.major, EGL_CONTEXT_MINOR_VERSION, v.minor,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint ctxAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 v.major,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 v.minor,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_NONE};
     EGLContext ctx = eglCreateContext(display, config, EGL_NO_CONTEXT, ctxAttribs);
     if (ctx != EGL_NO_CONTEXT && eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx)) return ctx;
     if (ctx != EGL_NO_CONTEXT) eglDestroyContext(display, ctx);

@@ -1,6 +1,6 @@
-#include "context/gl_context.h"
+#include "app/context/gl_context.h"
 
-#include "gl/gl.h"
+#include "app/gl/gl.h"
 
 namespace shadelab {
 

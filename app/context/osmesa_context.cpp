@@ -4,9 +4,8 @@
 
 #include <vector>
 
-#include "context/gl_context.h"
-#include "context/load_gl.h"
-
+#include "app/context/gl_context.h"
+#include "app/context/load_gl.h"
 
 namespace shadelab {
 namespace {
@@ -29,9 +28,19 @@ class OsMesaContext final : public GlContext {
 std::unique_ptr<GlContext> createOsMesaContext(std::string& error) {
   OSMesaContext ctx = nullptr;
   for (const gl::Version v : gl::kContextVersions) {
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, v.major,
-                           OSMESA_CONTEXT_MINOR_VERSION, v.minor, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           24,
+                           OSMESA_STENCIL_BITS,
+                           8,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           v.major,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           v.minor,
+                           0};
     if ((ctx = OSMesaCreateContextAttribs(attribs, nullptr))) break;
   }
   if (!ctx) {

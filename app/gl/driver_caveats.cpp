@@ -1,8 +1,8 @@
-#include "gl/driver_caveats.h"
+#include "app/gl/driver_caveats.h"
 
 #include <array>
 
-#include "gl/gl.h"
+#include "app/gl/gl.h"
 
 namespace gl {
 namespace {

@@ -1,4 +1,4 @@
-#include "gl/handle.h"
+#include "app/gl/handle.h"
 
 #include <array>
 #include <atomic>
@@ -11,16 +11,35 @@ std::array<std::atomic<int>, static_cast<size_t>(Kind::Count)> g_live{};
 GLuint create(Kind kind, GLenum shaderType) {
   GLuint n = 0;
   switch (kind) {
-    case Kind::Buffer: glGenBuffers(1, &n); break;
-    case Kind::VertexArray: glGenVertexArrays(1, &n); break;
-    case Kind::Texture: glGenTextures(1, &n); break;
-    case Kind::Framebuffer: glGenFramebuffers(1, &n); break;
-    case Kind::Renderbuffer: glGenRenderbuffers(1, &n); break;
-    case Kind::Program: n = glCreateProgram(); break;
-    case Kind::Shader: n = glCreateShader(shaderType); break;
-    case Kind::Query: glGenQueries(1, &n); break;
-    case Kind::Sampler: glGenSamplers(1, &n); break;
-    case Kind::Count: break;
+    case Kind::Buffer:
+      glGenBuffers(1, &n);
+      break;
+    case Kind::VertexArray:
+      glGenVertexArrays(1, &n);
+      break;
+    case Kind::Texture:
+      glGenTextures(1, &n);
+      break;
+    case Kind::Framebuffer:
+      glGenFramebuffers(1, &n);
+      break;
+    case Kind::Renderbuffer:
+      glGenRenderbuffers(1, &n);
+      break;
+    case Kind::Program:
+      n = glCreateProgram();
+      break;
+    case Kind::Shader:
+      n = glCreateShader(shaderType);
+      break;
+    case Kind::Query:
+      glGenQueries(1, &n);
+      break;
+    case Kind::Sampler:
+      glGenSamplers(1, &n);
+      break;
+    case Kind::Count:
+      break;
   }
   if (n) ++g_live[static_cast<size_t>(kind)];
   return n;
@@ -28,16 +47,35 @@ GLuint create(Kind kind, GLenum shaderType) {
 
 void destroy(Kind kind, GLuint n) {
   switch (kind) {
-    case Kind::Buffer: glDeleteBuffers(1, &n); break;
-    case Kind::VertexArray: glDeleteVertexArrays(1, &n); break;
-    case Kind::Texture: glDeleteTextures(1, &n); break;
-    case Kind::Framebuffer: glDeleteFramebuffers(1, &n); break;
-    case Kind::Renderbuffer: glDeleteRenderbuffers(1, &n); break;
-    case Kind::Program: glDeleteProgram(n); break;
-    case Kind::Shader: glDeleteShader(n); break;
-    case Kind::Query: glDeleteQueries(1, &n); break;
-    case Kind::Sampler: glDeleteSamplers(1, &n); break;
-    case Kind::Count: return;
+    case Kind::Buffer:
+      glDeleteBuffers(1, &n);
+      break;
+    case Kind::VertexArray:
+      glDeleteVertexArrays(1, &n);
+      break;
+    case Kind::Texture:
+      glDeleteTextures(1, &n);
+      break;
+    case Kind::Framebuffer:
+      glDeleteFramebuffers(1, &n);
+      break;
+    case Kind::Renderbuffer:
+      glDeleteRenderbuffers(1, &n);
+      break;
+    case Kind::Program:
+      glDeleteProgram(n);
+      break;
+    case Kind::Shader:
+      glDeleteShader(n);
+      break;
+    case Kind::Query:
+      glDeleteQueries(1, &n);
+      break;
+    case Kind::Sampler:
+      glDeleteSamplers(1, &n);
+      break;
+    case Kind::Count:
+      return;
   }
   --g_live[static_cast<size_t>(kind)];
 }
@@ -51,8 +89,8 @@ int liveObjectsTotal() {
 }
 
 const char* kindName(Kind kind) {
-  static const char* names[] = {"buffer", "vertex array", "texture", "framebuffer",
-                                "renderbuffer", "program", "shader", "query", "sampler"};
+  static const char* names[] = {"buffer",  "vertex array", "texture", "framebuffer", "renderbuffer",
+                                "program", "shader",       "query",   "sampler"};
   return kind < Kind::Count ? names[static_cast<size_t>(kind)] : "?";
 }
 

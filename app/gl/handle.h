@@ -1,9 +1,9 @@
 // RAII ownership of OpenGL object names. Every name is counted while it lives, so tests can
-// prove that a lab's teardown leaves no GL objects behind.
+// prove that a lab leaves no GL objects behind once it is destroyed.
 #pragma once
 #include <utility>
 
-#include "gl/gl.h"
+#include "app/gl/gl.h"
 
 namespace gl {
 

@@ -1,4 +1,4 @@
-#include "gl/pass_timer.h"
+#include "app/gl/pass_timer.h"
 
 #include <cassert>
 #include <chrono>
@@ -27,9 +27,12 @@ PassTimer::PassTimer() {
 
 const char* PassTimer::clockName() const {
   switch (clock_) {
-    case Clock::GpuQuery: return "GL_TIME_ELAPSED queries";
-    case Clock::Finish: return "wall time between glFinish calls";
-    case Clock::Readback: return "wall time between one-pixel reads (WebGL's finish does not wait)";
+    case Clock::GpuQuery:
+      return "GL_TIME_ELAPSED queries";
+    case Clock::Finish:
+      return "wall time between glFinish calls";
+    case Clock::Readback:
+      return "wall time between one-pixel reads (WebGL's finish does not wait)";
   }
   return "?";
 }

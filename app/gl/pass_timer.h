@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "gl/handle.h"
+#include "app/gl/handle.h"
 
 namespace gl {
 

@@ -1,6 +1,6 @@
-#include "gl/pixel_probe.h"
+#include "app/gl/pixel_probe.h"
 
-#include "context/load_gl.h"
+#include "app/context/load_gl.h"
 
 namespace shadelab {
 

@@ -6,8 +6,8 @@
 #include <array>
 #include <optional>
 
-#include "gl/handle.h"
-#include "gl/texture.h"
+#include "app/gl/handle.h"
+#include "app/gl/texture.h"
 
 namespace shadelab {
 

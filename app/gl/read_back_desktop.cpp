@@ -1,7 +1,7 @@
 // Reading a render target through a pixel buffer: the driver copies into memory it owns and maps,
 // where a read into the program's own memory waits on a copy into pages that fault on first touch.
-#include "gl/gl.h"
-#include "gl/texture.h"
+#include "app/gl/gl.h"
+#include "app/gl/texture.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // Reading a render target on the page: WebGL2 cannot map a buffer for reading (emscripten maps
 // for writing only), so the bytes are read into memory of the program's own.
-#include "gl/gl.h"
-#include "gl/texture.h"
+#include "app/gl/gl.h"
+#include "app/gl/texture.h"
 
 #include <vector>
 

@@ -1,5 +1,5 @@
 // The driver's references to deleted textures moved onto stand-ins the host keeps (stand_ins.h).
-#include "gl/stand_ins.h"
+#include "app/gl/stand_ins.h"
 
 #include <cstdint>
 #include <iterator>
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "gl/driver_caveats.h"
+#include "app/gl/driver_caveats.h"
 
 namespace gl {
 
@@ -33,7 +33,8 @@ ProgramName linkedProgram(const std::vector<std::pair<GLenum, std::string>>& sta
   if (!linked) return {};
   glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
   glUseProgram(program.get());
-  for (int u = 0; u < kUnits; ++u) glUniform1i(glGetUniformLocation(program.get(), ("u_unit" + std::to_string(u)).c_str()), u);
+  for (int u = 0; u < kUnits; ++u)
+    glUniform1i(glGetUniformLocation(program.get(), ("u_unit" + std::to_string(u)).c_str()), u);
   glUseProgram(GLuint(previous));
   return program;
 }
@@ -59,21 +60,24 @@ constexpr const char* kCorner = "vec4(vec2((gl_VertexID << 1) & 2, gl_VertexID &
 // written, so no compiler drops a lookup).
 std::vector<std::vector<std::pair<GLenum, std::string>>> samplingPrograms() {
   const std::string vertex = std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n";
-  const std::string fragment = "#version 330 core\n" + unitSamplers() + "out vec4 o_color;\nvoid main() { o_color = " +
-                               sumOfUnits() + "; }\n";
-  std::vector<std::vector<std::pair<GLenum, std::string>>> programs = {{{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}};
+  const std::string fragment =
+      "#version 330 core\n" + unitSamplers() + "out vec4 o_color;\nvoid main() { o_color = " + sumOfUnits() + "; }\n";
+  std::vector<std::vector<std::pair<GLenum, std::string>>> programs = {
+      {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}}};
   if (hasTessellation()) {
-    programs.push_back({
-        {GL_VERTEX_SHADER, std::string("#version 400 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
-        {GL_TESS_CONTROL_SHADER,
-         "#version 400 core\nlayout(vertices = 3) out;\nvoid main() {\n"
-         "  gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;\n"
-         "  gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelInner[0] = 1.0;\n}\n"},
-        {GL_TESS_EVALUATION_SHADER,
-         "#version 400 core\nlayout(triangles) in;\n" + unitSamplers() + "out vec4 v_sum;\nvoid main() {\n  v_sum = " +
-             sumOfUnits() + ";\n  gl_Position = gl_TessCoord.x * gl_in[0].gl_Position + gl_TessCoord.y * gl_in[1].gl_Position + "
-                            "gl_TessCoord.z * gl_in[2].gl_Position;\n}\n"},
-        {GL_FRAGMENT_SHADER, "#version 400 core\nin vec4 v_sum;\nout vec4 o_color;\nvoid main() { o_color = v_sum; }\n"}});
+    programs.push_back(
+        {{GL_VERTEX_SHADER, std::string("#version 400 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
+         {GL_TESS_CONTROL_SHADER,
+          "#version 400 core\nlayout(vertices = 3) out;\nvoid main() {\n"
+          "  gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;\n"
+          "  gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = gl_TessLevelInner[0] = 1.0;\n}\n"},
+         {GL_TESS_EVALUATION_SHADER,
+          "#version 400 core\nlayout(triangles) in;\n" + unitSamplers() +
+              "out vec4 v_sum;\nvoid main() {\n  v_sum = " + sumOfUnits() +
+              ";\n  gl_Position = gl_TessCoord.x * gl_in[0].gl_Position + gl_TessCoord.y * gl_in[1].gl_Position + "
+              "gl_TessCoord.z * gl_in[2].gl_Position;\n}\n"},
+         {GL_FRAGMENT_SHADER,
+          "#version 400 core\nin vec4 v_sum;\nout vec4 o_color;\nvoid main() { o_color = v_sum; }\n"}});
   }
   return programs;
 }
@@ -115,7 +119,8 @@ class PlainRaster {
   PlainRaster& operator=(const PlainRaster&) = delete;
 
  private:
-  static constexpr GLenum kCaps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_BLEND, GL_CULL_FACE, GL_RASTERIZER_DISCARD};
+  static constexpr GLenum kCaps[] = {GL_SCISSOR_TEST, GL_DEPTH_TEST, GL_STENCIL_TEST,
+                                     GL_BLEND,        GL_CULL_FACE,  GL_RASTERIZER_DISCARD};
   GLboolean enabled_[std::size(kCaps)] = {};
   GLboolean mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
   GLint program_ = 0, vao_ = 0;
@@ -128,17 +133,20 @@ class PlainRaster {
 constexpr int kSide = 512, kLayers = 8, kLevels = 3;  // as many layers as a lab's arrays have (cascades: 4)
 
 DriverStandIns::DriverStandIns()
-    : plain_(TextureName::make()), array_(TextureName::make()), texel_(TextureName::make()),
-      framebuffer_(FramebufferName::make()), vao_(VertexArray::make()) {
+    : plain_(TextureName::make()),
+      array_(TextureName::make()),
+      texel_(TextureName::make()),
+      framebuffer_(FramebufferName::make()),
+      vao_(VertexArray::make()) {
   if (!esContext())  // OpenGL ES and WebGL do not keep the last draw's textures
     for (const auto& stages : samplingPrograms())
-      if (ProgramName program = linkedProgram(stages))
-        programs_.push_back({std::move(program), stages.size() > 2});
+      if (ProgramName program = linkedProgram(stages)) programs_.push_back({std::move(program), stages.size() > 2});
   if (applies(Caveat::HeldScenes)) {
     sceneTarget_ = TextureName::make();
     sceneFramebuffer_ = FramebufferName::make();
-    longScene_ = linkedProgram({{GL_VERTEX_SHADER, std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
-                                {GL_FRAGMENT_SHADER, kLongSceneFragment}});
+    longScene_ = linkedProgram(
+        {{GL_VERTEX_SHADER, std::string("#version 330 core\nvoid main() { gl_Position = ") + kCorner + "; }\n"},
+         {GL_FRAGMENT_SHADER, kLongSceneFragment}});
   }
   GLint texture2d = 0, textureArray = 0, framebuffer = 0;
   glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2d);
@@ -152,8 +160,8 @@ DriverStandIns::DriverStandIns()
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kSide, kSide, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
   glBindTexture(GL_TEXTURE_2D_ARRAY, array_.get());
   for (int level = 0; level < kLevels; ++level)
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_R8, kSide >> level, kSide >> level, kLayers, 0, GL_RED, GL_UNSIGNED_BYTE,
-                 nullptr);
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, level, GL_R8, kSide >> level, kSide >> level, kLayers, 0, GL_RED,
+                 GL_UNSIGNED_BYTE, nullptr);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, kLevels - 1);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, plain_.get(), 0);

@@ -8,14 +8,14 @@
 #pragma once
 #include <vector>
 
-#include "gl/handle.h"
+#include "app/gl/handle.h"
 
 namespace gl {
 
 class DriverStandIns {
  public:
   DriverStandIns();  // a context must be current; restores the bindings it changes
-  // Moves the driver's references onto the stand-ins; the host calls it when a lab is torn down.
+  // Moves the driver's references onto the stand-ins; the host calls it when a lab has been destroyed.
   // Leaves framebuffer 0 and no texture bound on the active unit; the tests, culling and colour
   // mask as they were.
   void takeDriverReferences();

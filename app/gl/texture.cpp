@@ -1,11 +1,11 @@
-#include "gl/texture.h"
+#include "app/gl/texture.h"
 
-#include "util/process_memory.h"
+#include "app/util/process_memory.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include <glm/glm.hpp>
@@ -33,24 +33,47 @@ float maxAnisotropy() {
 
 TransferFormat transferFormatFor(GLenum internal) {
   switch (internal) {
-    case GL_RGBA16F: return {GL_RGBA, GL_HALF_FLOAT};
-    case GL_RGBA32F: return {GL_RGBA, GL_FLOAT};
-    case GL_RGB16F: return {GL_RGB, GL_HALF_FLOAT};
-    case GL_RGB32F: return {GL_RGB, GL_FLOAT};
-    case GL_RG16F: return {GL_RG, GL_HALF_FLOAT};
-    case GL_RG32F: return {GL_RG, GL_FLOAT};
-    case GL_R16F: return {GL_RED, GL_HALF_FLOAT};
-    case GL_R32F: return {GL_RED, GL_FLOAT};
-    case GL_R8: return {GL_RED, GL_UNSIGNED_BYTE};
-    case GL_R16: return {GL_RED, GL_UNSIGNED_SHORT};
-    case GL_RG8: return {GL_RG, GL_UNSIGNED_BYTE};
-    case GL_RGB8: case GL_SRGB8: return {GL_RGB, GL_UNSIGNED_BYTE};
-    case GL_DEPTH_COMPONENT16: return {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
-    case GL_DEPTH_COMPONENT24: return {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
-    case GL_DEPTH_COMPONENT32F: return {GL_DEPTH_COMPONENT, GL_FLOAT};
-    case GL_DEPTH24_STENCIL8: return {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
-    case GL_DEPTH32F_STENCIL8: return {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
-    default: return {GL_RGBA, GL_UNSIGNED_BYTE};  // RGBA8, SRGB8_ALPHA8
+    case GL_RGBA16F:
+      return {GL_RGBA, GL_HALF_FLOAT};
+    case GL_RGBA32F:
+      return {GL_RGBA, GL_FLOAT};
+    case GL_RGB16F:
+      return {GL_RGB, GL_HALF_FLOAT};
+    case GL_RGB32F:
+      return {GL_RGB, GL_FLOAT};
+    case GL_RG16F:
+      return {GL_RG, GL_HALF_FLOAT};
+    case GL_RG32F:
+      return {GL_RG, GL_FLOAT};
+    case GL_R16F:
+      return {GL_RED, GL_HALF_FLOAT};
+    case GL_R32F:
+      return {GL_RED, GL_FLOAT};
+    case GL_R8:
+      return {GL_RED, GL_UNSIGNED_BYTE};
+    case GL_R16:
+      return {GL_RED, GL_UNSIGNED_SHORT};
+    case GL_RG8:
+      return {GL_RG, GL_UNSIGNED_BYTE};
+    case GL_RGB8:
+    case GL_SRGB8:
+      return {GL_RGB, GL_UNSIGNED_BYTE};
+    case GL_RGBA32I:
+      return {GL_RGBA_INTEGER, GL_INT};
+    case GL_RG32I:
+      return {GL_RG_INTEGER, GL_INT};
+    case GL_DEPTH_COMPONENT16:
+      return {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
+    case GL_DEPTH_COMPONENT24:
+      return {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
+    case GL_DEPTH_COMPONENT32F:
+      return {GL_DEPTH_COMPONENT, GL_FLOAT};
+    case GL_DEPTH24_STENCIL8:
+      return {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+    case GL_DEPTH32F_STENCIL8:
+      return {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
+    default:
+      return {GL_RGBA, GL_UNSIGNED_BYTE};  // RGBA8, SRGB8_ALPHA8
   }
 }
 
@@ -126,7 +149,8 @@ RenderTarget RenderTarget::create(glm::ivec2 size, GLenum colorFormat) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     char why[160];
-    std::snprintf(why, sizeof why, "render target %dx%d could not be allocated (framebuffer status 0x%04X, %s): pick a smaller size",
+    std::snprintf(why, sizeof why,
+                  "render target %dx%d could not be allocated (framebuffer status 0x%04X, %s): pick a smaller size",
                   size.x, size.y, unsigned(status), gl::drainErrors().empty() ? "no GL error" : "out of memory");
     throw std::runtime_error(why);
   }
@@ -148,7 +172,8 @@ std::vector<float> RenderTarget::readRgba() const {
   // Top row first, flipped in place (a second image-sized buffer costs as much as the read).
   const size_t stride = size_t(size_.x) * 4;
   for (int y = 0; y < size_.y / 2; ++y)
-    std::swap_ranges(rows.begin() + y * stride, rows.begin() + (y + 1) * stride, rows.begin() + (size_.y - 1 - y) * stride);
+    std::swap_ranges(rows.begin() + y * stride, rows.begin() + (y + 1) * stride,
+                     rows.begin() + (size_.y - 1 - y) * stride);
   return rows;
 }
 

@@ -7,7 +7,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "gl/handle.h"
+#include "app/gl/handle.h"
 
 namespace gl {
 
@@ -64,8 +64,8 @@ class RenderTarget {
   // Reads the colour attachment as RGBA float, rows top-down (image order).
   std::vector<float> readRgba() const;
   // An 8-bit target's bytes (a quarter of the float read) handed to `use` where the driver puts
-  // them, rows bottom-up as GL numbers them, valid during the call: no copy to flip them (read_back_desktop.cpp maps a pixel buffer;
-  // WebGL2 cannot map one for reading, so the page reads into memory of its own).
+  // them, rows bottom-up as GL numbers them, valid during the call: no copy to flip them (read_back_desktop.cpp maps a
+  // pixel buffer; WebGL2 cannot map one for reading, so the page reads into memory of its own).
   void withRgba8(const std::function<void(const uint8_t* bottomUpRows)>& use) const;
   // One pixel, (x, y) from the top-left as images are; all zero outside the target.
   std::array<float, 4> readPixel(int x, int y) const;

@@ -1,4 +1,4 @@
-#include "grade/class_report.h"
+#include "app/grade/class_report.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "measure/image.h"
-#include "measure/report.h"
+#include "app/measure/image.h"
+#include "app/measure/report.h"
 
 namespace shadelab {
 
@@ -30,7 +30,9 @@ std::string format(const char* fmt, double v) {
 // Points as the reports print them: "2", "1.5".
 std::string points(double v) { return format("%g", std::round(v * 100) / 100); }
 
-std::string checkKey(const ClassRow& row, const ClassCheck& c) { return row.exercise + ": " + c.configuration + ": " + c.check; }
+std::string checkKey(const ClassRow& row, const ClassCheck& c) {
+  return row.exercise + ": " + c.configuration + ": " + c.check;
+}
 
 // An image name from a report: a plain file name in the student's folder, nothing else.
 bool plainName(const std::string& name) {
@@ -40,17 +42,20 @@ bool plainName(const std::string& name) {
 
 std::string figure(const fs::path& file, const std::string& caption) {
   ImageF image;
-  if (!readImage(file.string(), image).empty()) return "<figure><figcaption>" + htmlEscape(caption) + " (missing)</figcaption></figure>";
-  return "<figure><img src='" + pngDataUri(image) + "' alt='" + htmlEscape(caption) + "'><figcaption>" + htmlEscape(caption) +
-         "</figcaption></figure>";
+  if (!readImage(file.string(), image).empty())
+    return "<figure><figcaption>" + htmlEscape(caption) + " (missing)</figcaption></figure>";
+  return "<figure><img src='" + pngDataUri(image) + "' alt='" + htmlEscape(caption) + "'><figcaption>" +
+         htmlEscape(caption) + "</figcaption></figure>";
 }
 
 // A link to a student's report: the name percent-encoded where a URL needs it.
 std::string reportLink(const std::string& student) {
   std::string href = "students/";
   for (unsigned char c : student) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') href += char(c);
-    else href += format("%%%02X", c);
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~')
+      href += char(c);
+    else
+      href += format("%%%02X", c);
   }
   return "<a href='" + href + "/report.html'>" + htmlEscape(student) + "</a>";
 }
@@ -124,19 +129,26 @@ std::string readStudentRows(const fs::path& reportJson, const std::string& stude
                                  {"diagnosis", &ClassRow::diagnosis},
                                  {"mistake", &ClassRow::mistake}})
         row.*member = text(e, key);
-      for (auto [key, member] : {std::pair{"score", &ClassRow::score}, {"total", &ClassRow::total},
-                                 {"percent", &ClassRow::percent}, {"pass_mark", &ClassRow::passMark}})
+      for (auto [key, member] : {std::pair{"score", &ClassRow::score},
+                                 {"total", &ClassRow::total},
+                                 {"percent", &ClassRow::percent},
+                                 {"pass_mark", &ClassRow::passMark}})
         row.*member = number(e, key);
       row.passed = e.value("passed", false);
       for (auto& c : list(e, "checks")) {
         if (!c.is_object()) continue;
         ClassCheck check;
-        for (auto [key, member] : {std::pair{"configuration", &ClassCheck::configuration}, {"check", &ClassCheck::check},
-                                   {"metric", &ClassCheck::metric}, {"result", &ClassCheck::result},
-                                   {"hint", &ClassCheck::hint}, {"message", &ClassCheck::message}})
+        for (auto [key, member] : {std::pair{"configuration", &ClassCheck::configuration},
+                                   {"check", &ClassCheck::check},
+                                   {"metric", &ClassCheck::metric},
+                                   {"result", &ClassCheck::result},
+                                   {"hint", &ClassCheck::hint},
+                                   {"message", &ClassCheck::message}})
           check.*member = text(c, key);
-        for (auto [key, member] : {std::pair{"value", &ClassCheck::value}, {"full_at", &ClassCheck::fullAt},
-                                   {"points", &ClassCheck::points}, {"max_points", &ClassCheck::maxPoints}})
+        for (auto [key, member] : {std::pair{"value", &ClassCheck::value},
+                                   {"full_at", &ClassCheck::fullAt},
+                                   {"points", &ClassCheck::points},
+                                   {"max_points", &ClassCheck::maxPoints}})
           check.*member = number(c, key);
         if (const auto images = c.find("images"); images != c.end() && images->is_object()) {
           check.studentImage = text(*images, "student");
@@ -144,7 +156,8 @@ std::string readStudentRows(const fs::path& reportJson, const std::string& stude
         }
         row.checks.push_back(std::move(check));
       }
-      if (row.exercise.empty() || row.status.empty()) return reportJson.string() + ": an exercise without \"id\" or \"status\"";
+      if (row.exercise.empty() || row.status.empty())
+        return reportJson.string() + ": an exercise without \"id\" or \"status\"";
       rows.push_back(std::move(row));
     }
   } catch (const nlohmann::json::exception& e) {
@@ -158,13 +171,14 @@ std::string gradebookCsv(const std::vector<ClassRow>& rows) {
   std::vector<std::string> columns;
   for (auto& row : rows)
     for (auto& c : row.checks)
-      if (std::find(columns.begin(), columns.end(), checkKey(row, c)) == columns.end()) columns.push_back(checkKey(row, c));
+      if (std::find(columns.begin(), columns.end(), checkKey(row, c)) == columns.end())
+        columns.push_back(checkKey(row, c));
   std::string csv = "student,exercise,status,score,total,percent,passed";
   for (auto& c : columns) csv.append(",").append(csvField(c));
   csv += "\n";
   for (auto& row : rows) {
-    csv += csvField(row.student) + "," + csvField(row.exercise) + "," + csvField(row.status) + "," + points(row.score) + "," +
-           points(row.total) + "," + format("%.1f", row.percent) + "," + (row.passed ? "yes" : "no");
+    csv += csvField(row.student) + "," + csvField(row.exercise) + "," + csvField(row.status) + "," + points(row.score) +
+           "," + points(row.total) + "," + format("%.1f", row.percent) + "," + (row.passed ? "yes" : "no");
     for (auto& column : columns) {
       csv += ",";
       for (auto& c : row.checks)
@@ -209,14 +223,15 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
     }
     std::vector<double> sorted = percents;
     std::sort(sorted.begin(), sorted.end());
-    const double median = sorted.empty() ? 0.0
-                                         : sorted.size() % 2 ? sorted[sorted.size() / 2]
-                                                             : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
+    const double median = sorted.empty()      ? 0.0
+                          : sorted.size() % 2 ? sorted[sorted.size() / 2]
+                                              : 0.5 * (sorted[sorted.size() / 2 - 1] + sorted[sorted.size() / 2]);
     h += "<h2>" + htmlEscape(ex + ": " + of.front()->title) + "</h2>\n<p>Passed: " + std::to_string(passed) + " of " +
          std::to_string(of.size()) + " (pass mark " + format("%.0f", of.front()->passMark) + " %). Median score " +
          format("%.1f", median) + " %.</p>\n" + histogram(percents, of.front()->passMark) +
          "\n<table><tr><th>status</th><th>submissions</th></tr>";
-    for (const char* s : kStatuses) h += "<tr><td>" + std::string(s) + "</td><td>" + std::to_string(statuses[s]) + "</td></tr>";
+    for (const char* s : kStatuses)
+      h += "<tr><td>" + std::string(s) + "</td><td>" + std::to_string(statuses[s]) + "</td></tr>";
     h += "</table>\n";
 
     // The students per diagnosis, the most common first (a tie: by the first student's name).
@@ -260,8 +275,10 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
           missed[key].first = &c;
         }
         if (c.result == "PASS") continue;
-        if (std::isfinite(c.value)) missed[key].misses.push_back({r, &c});
-        else ++missed[key].unmeasured;
+        if (std::isfinite(c.value))
+          missed[key].misses.push_back({r, &c});
+        else
+          ++missed[key].unmeasured;
       }
     std::stable_sort(order.begin(), order.end(), [&](auto& a, auto& b) {
       return missed[a].misses.size() + missed[a].unmeasured > missed[b].misses.size() + missed[b].unmeasured;
@@ -275,8 +292,11 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
       any = true;
       h += "<div class='miss'><b>" + htmlEscape(key) + "</b> (" + htmlEscape(m.first->metric) + "): missed by " +
            std::to_string(count) + " of " + std::to_string(of.size()) +
-           (m.unmeasured ? ", " + std::to_string(m.unmeasured) + " of them not measured (did not build, stopped or crashed)" : "") +
-           ".<br><span class='hint'>Hint given: " + htmlEscape(m.first->hint.empty() ? "(none)" : m.first->hint) + "</span>";
+           (m.unmeasured
+                ? ", " + std::to_string(m.unmeasured) + " of them not measured (did not build, stopped or crashed)"
+                : "") +
+           ".<br><span class='hint'>Hint given: " + htmlEscape(m.first->hint.empty() ? "(none)" : m.first->hint) +
+           "</span>";
       // The three measured misses that lost the most points and, among those, lie farthest past the
       // bound for full points (a tie: by name, the order the rows come in).
       std::stable_sort(m.misses.begin(), m.misses.end(), [](auto& a, auto& b) {
@@ -309,13 +329,14 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
   for (auto& s : students) {
     h += "<tr><td>" + reportLink(s) + "</td>";
     for (auto& ex : exercises) {
-      const auto r = std::find_if(rows.begin(), rows.end(), [&](auto& row) { return row.student == s && row.exercise == ex; });
+      const auto r =
+          std::find_if(rows.begin(), rows.end(), [&](auto& row) { return row.student == s && row.exercise == ex; });
       if (r == rows.end()) {
         h += "<td></td>";
         continue;
       }
-      h += std::string("<td class='") + (r->passed ? "yes" : "no") + "'>" + points(r->score) + " / " + points(r->total) +
-           (r->status == "graded" ? "" : " (" + r->status + ")") + "</td>";
+      h += std::string("<td class='") + (r->passed ? "yes" : "no") + "'>" + points(r->score) + " / " +
+           points(r->total) + (r->status == "graded" ? "" : " (" + r->status + ")") + "</td>";
     }
     h += "</tr>\n";
   }

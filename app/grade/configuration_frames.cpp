@@ -1,15 +1,15 @@
-#include "grade/configuration_frames.h"
+#include "app/grade/configuration_frames.h"
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "grade/frame_properties.h"
-#include "host/configure.h"
-#include "host/measurer.h"
-#include "measure/report.h"
-#include "util/read_file.h"
+#include "app/grade/frame_properties.h"
+#include "app/host/configure.h"
+#include "app/host/measurer.h"
+#include "app/measure/report.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -63,7 +63,8 @@ void lookUpSubmission(const Exercise& ex, const std::vector<fs::path>& studentDi
   const ShaderSearchPath submitted(studentDirs);
   for (auto& file : ex.files) {
     const ShaderSearchPath::Lookup found = submitted.find(file);
-    if (found.file.empty() && found.refused.empty()) out.missingFiles.push_back(file);
+    if (found.file.empty() && found.refused.empty())
+      out.missingFiles.push_back(file);
     else if (!found.file.empty() && readWholeFile(found.file) == readWholeFile(builtinShaderDir() / file))
       out.notes.push_back(found.file.string() + " is the lab's own file, unchanged");
   }
@@ -88,8 +89,10 @@ std::vector<std::string> buildErrors(LabHost& host) {
       if (d.isError) {
         const std::string text = p->spec().name + ": " + d.formatWithCaret();
         if (std::find(out.begin(), out.end(), text) != out.end()) continue;
-        if (out.size() < kMostErrors) out.push_back(text);
-        else ++more;
+        if (out.size() < kMostErrors)
+          out.push_back(text);
+        else
+          ++more;
       }
     if (p->diagnostics().empty()) out.push_back(p->spec().name + ": did not build (no message from the driver)");
   }

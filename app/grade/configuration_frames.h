@@ -11,10 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grade/grading.h"
-#include "grade/rubric.h"
-#include "grade/solution_cache.h"
-#include "host/lab_host.h"
+#include "app/grade/grading.h"
+#include "app/grade/rubric.h"
+#include "app/grade/solution_cache.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab {
 
@@ -40,7 +40,8 @@ std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolut
 //  properties}, "distance", "mistakes": [distances], "properties": {NaN and Inf pixels, where, edges},
 //  "vs_truth": {the lab's metrics}}; "vs_truth" only when a check needs it and the frame built.
 // `error` receives what the rubric asked that could not be applied.
-nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<std::filesystem::path>& studentDirs,
-                           const CachedSolution& solution, ImageF& image, std::string& error);
+nlohmann::json drawStudent(const Exercise& ex, const Configuration& c,
+                           const std::vector<std::filesystem::path>& studentDirs, const CachedSolution& solution,
+                           ImageF& image, std::string& error);
 
 }  // namespace shadelab

@@ -1,4 +1,4 @@
-#include "grade/diagnosis.h"
+#include "app/grade/diagnosis.h"
 
 #include <cmath>
 #include <cstdio>

@@ -16,8 +16,8 @@
 // Hints obey the same rule: a check's hint is shown only when the checks its cause needs passed or
 // failed as the rubric says ("hint_when"); otherwise it stays silent rather than guessing.
 #pragma once
-#include "grade/grading.h"
-#include "grade/rubric.h"
+#include "app/grade/grading.h"
+#include "app/grade/rubric.h"
 
 namespace shadelab {
 

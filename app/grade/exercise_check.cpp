@@ -1,13 +1,13 @@
-#include "grade/exercise_check.h"
+#include "app/grade/exercise_check.h"
 
 #include <nlohmann/json.hpp>
 
-#include "grade/configuration_frames.h"
-#include "grade/diagnosis.h"
-#include "shader/preprocessor.h"
-#include "util/contained_path.h"
-#include "util/output_files.h"
-#include "util/read_file.h"
+#include "app/grade/configuration_frames.h"
+#include "app/grade/diagnosis.h"
+#include "app/shader/preprocessor.h"
+#include "app/util/contained_path.h"
+#include "app/util/output_files.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -17,7 +17,8 @@ std::string copyStarter(const Exercise& ex, const fs::path& folder, std::vector<
                         std::vector<std::string>& kept) {
   for (auto& file : ex.files) {
     const fs::path name = containedName(file);
-    if (name.empty()) return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
+    if (name.empty())
+      return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
     const fs::path mine = folder / name;
     std::error_code ec;
     if (fs::exists(mine, ec) || fs::is_symlink(mine, ec)) {
@@ -25,7 +26,8 @@ std::string copyStarter(const Exercise& ex, const fs::path& folder, std::vector<
       continue;
     }
     const fs::path starter = ex.dir / "starter" / name;
-    if (!fs::is_regular_file(starter, ec)) return starter.string() + " is missing: the exercise has no starter for " + file;
+    if (!fs::is_regular_file(starter, ec))
+      return starter.string() + " is missing: the exercise has no starter for " + file;
     if (auto e = writeTextFile(mine.string(), readWholeFile(starter)); !e.empty()) return e;
     copied.push_back(file);
   }

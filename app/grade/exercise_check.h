@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "grade/grading.h"
-#include "grade/solution_cache.h"
+#include "app/grade/grading.h"
+#include "app/grade/solution_cache.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "grade/frame_properties.h"
+#include "app/grade/frame_properties.h"
 
 #include <algorithm>
 #include <cmath>

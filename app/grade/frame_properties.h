@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-#include "measure/image.h"
+#include "app/measure/image.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "grade/grading.h"
+#include "app/grade/grading.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,18 +6,23 @@
 
 #include <nlohmann/json.hpp>
 
-#include "measure/image.h"
-#include "measure/report.h"
+#include "app/measure/image.h"
+#include "app/measure/report.h"
 
 namespace shadelab {
 
 const char* outcomeName(Outcome o) {
   switch (o) {
-    case Outcome::Graded: return "graded";
-    case Outcome::NotSubmitted: return "not submitted";
-    case Outcome::DidNotBuild: return "did not build";
-    case Outcome::TimedOut: return "stopped by the watchdog";
-    case Outcome::Crashed: return "crashed";
+    case Outcome::Graded:
+      return "graded";
+    case Outcome::NotSubmitted:
+      return "not submitted";
+    case Outcome::DidNotBuild:
+      return "did not build";
+    case Outcome::TimedOut:
+      return "stopped by the watchdog";
+    case Outcome::Crashed:
+      return "crashed";
   }
   return "?";
 }
@@ -31,9 +36,12 @@ Outcome ExerciseResult::outcome() const {
 
 const char* gradeName(Grade g) {
   switch (g) {
-    case Grade::Full: return "PASS";
-    case Grade::Partial: return "PARTIAL";
-    default: return "FAIL";
+    case Grade::Full:
+      return "PASS";
+    case Grade::Partial:
+      return "PARTIAL";
+    default:
+      return "FAIL";
   }
 }
 
@@ -50,7 +58,9 @@ CheckResult scoreCheck(const Check& check, double value, double solutionValue) {
     return r;
   }
   r.grade = value <= r.fullBound ? Grade::Full : value <= r.partialBound ? Grade::Partial : Grade::Fail;
-  r.earned = r.grade == Grade::Full ? check.points : r.grade == Grade::Partial ? check.points * check.partialCredit : 0.0;
+  r.earned = r.grade == Grade::Full      ? check.points
+             : r.grade == Grade::Partial ? check.points * check.partialCredit
+                                         : 0.0;
   if (r.grade != Grade::Full) r.message = check.hint;
   return r;
 }
@@ -88,7 +98,8 @@ void notSubmitted(const Configuration& c, const std::string& why, ConfigurationR
 namespace {
 
 double number(const nlohmann::json& values, const std::string& key) {
-  return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>() : std::nan("");
+  return values.is_object() && values.contains(key) && values[key].is_number() ? values[key].get<double>()
+                                                                               : std::nan("");
 }
 
 }  // namespace
@@ -164,8 +175,8 @@ std::string bound(const Threshold& t, double b) {
 }
 
 // One row of a configuration's table of checks, in the Markdown and the HTML report alike.
-constexpr const char* kCheckColumns[] = {"check", "metric", "yours", "solution", "full marks at", "partial at",
-                                         "result", "points"};
+constexpr const char* kCheckColumns[] = {"check",         "metric",     "yours",  "solution",
+                                         "full marks at", "partial at", "result", "points"};
 std::vector<std::string> checkCells(const CheckResult& r) {
   return {r.check.name,
           r.check.metric + (r.check.against == Against::Truth ? " (vs truth)" : " (vs solution)"),
@@ -331,30 +342,38 @@ std::string gradeJson(const GradeReport& report) {
   j["exercises"] = nlohmann::json::array();
   const auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
   for (auto& e : report.exercises) {
-    nlohmann::json je{{"id", e.id},           {"title", e.title},         {"lab", e.lab},
-                      {"score", e.earned},    {"total", e.total},         {"percent", e.percent()},
-                      {"pass_mark", e.passMark}, {"passed", e.passed()}, {"status", outcomeName(e.outcome())},
+    nlohmann::json je{{"id", e.id},
+                      {"title", e.title},
+                      {"lab", e.lab},
+                      {"score", e.earned},
+                      {"total", e.total},
+                      {"percent", e.percent()},
+                      {"pass_mark", e.passMark},
+                      {"passed", e.passed()},
+                      {"status", outcomeName(e.outcome())},
                       {"missing_files", e.missingFiles},
-                      {"notes", e.notes},     {"checks", nlohmann::json::array()}};
+                      {"notes", e.notes},
+                      {"checks", nlohmann::json::array()}};
     if (!e.diagnosis.empty()) je["diagnosis"] = e.diagnosis;
     if (!e.mistake.empty()) je["mistake"] = e.mistake;
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
-        je["checks"].push_back({{"configuration", c.name},
-                                {"check", r.check.name},
-                                {"metric", r.check.metric},
-                                {"against", r.check.against == Against::Truth ? "truth" : "solution"},
-                                {"value", number(r.value)},
-                                {"solution", number(r.solutionValue)},
-                                {"full_at", number(r.fullBound)},
-                                {"partial_at", number(r.partialBound)},
-                                {"result", gradeName(r.grade)},
-                                {"points", r.earned},
-                                {"max_points", r.check.points},
-                                {"message", r.message},
-                                {"hint", r.check.hint},
-                                {"errors", c.errors},
-                                {"images", {{"student", c.studentImage}, {"solution", c.solutionImage}, {"diff", c.diffImage}}}});
+        je["checks"].push_back(
+            {{"configuration", c.name},
+             {"check", r.check.name},
+             {"metric", r.check.metric},
+             {"against", r.check.against == Against::Truth ? "truth" : "solution"},
+             {"value", number(r.value)},
+             {"solution", number(r.solutionValue)},
+             {"full_at", number(r.fullBound)},
+             {"partial_at", number(r.partialBound)},
+             {"result", gradeName(r.grade)},
+             {"points", r.earned},
+             {"max_points", r.check.points},
+             {"message", r.message},
+             {"hint", r.check.hint},
+             {"errors", c.errors},
+             {"images", {{"student", c.studentImage}, {"solution", c.solutionImage}, {"diff", c.diffImage}}}});
     j["exercises"].push_back(std::move(je));
   }
   return j.dump(2) + "\n";

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "grade/rubric.h"
+#include "app/grade/rubric.h"
 
 namespace shadelab {
 
@@ -40,7 +40,7 @@ const char* outcomeName(Outcome o);
 struct ConfigurationResult {
   std::string name;
   Outcome outcome = Outcome::Graded;
-  std::string description;  // "scene shadow-test, filter=pcf pcf_size=5"
+  std::string description;          // "scene shadow-test, filter=pcf pcf_size=5"
   std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
   // The evidence a diagnosis rests on (grade/diagnosis.h), when the student's frame was drawn:
   bool drawn = false;
@@ -49,8 +49,8 @@ struct ConfigurationResult {
   std::vector<double> mistakeSeparations;  // each mistake's frame to the solution's
   std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52" ("" when none)
   size_t nanPixels = 0, infPixels = 0;     // pixels of the student's frame holding NaN, or Inf
-  int edgeShiftX = 0, edgeShiftY = 0;                            // the best-matching shift of the frame, in pixels
-  double edgeWidthRatio = 1.0;                                   // its edges' width over the solution's
+  int edgeShiftX = 0, edgeShiftY = 0;      // the best-matching shift of the frame, in pixels
+  double edgeWidthRatio = 1.0;             // its edges' width over the solution's
   double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;

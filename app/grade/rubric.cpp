@@ -1,15 +1,15 @@
-#include "grade/rubric.h"
+#include "app/grade/rubric.h"
 
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "measure/report.h"
-#include "shader/preprocessor.h"
-#include "util/contained_path.h"
-#include "util/format.h"
-#include "util/read_file.h"
+#include "app/measure/report.h"
+#include "app/shader/preprocessor.h"
+#include "app/util/contained_path.h"
+#include "app/util/format.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -17,17 +17,23 @@ namespace fs = std::filesystem;
 
 double Threshold::bound(double solution) const {
   switch (base) {
-    case Base::SolutionPlus: return solution + value;
-    case Base::SolutionTimes: return solution * value;
-    default: return value;
+    case Base::SolutionPlus:
+      return solution + value;
+    case Base::SolutionTimes:
+      return solution * value;
+    default:
+      return value;
   }
 }
 
 std::string Threshold::text() const {
   switch (base) {
-    case Base::SolutionPlus: return "solution+" + formatNumber(value);
-    case Base::SolutionTimes: return "solution*" + formatNumber(value);
-    default: return formatNumber(value);
+    case Base::SolutionPlus:
+      return "solution+" + formatNumber(value);
+    case Base::SolutionTimes:
+      return "solution*" + formatNumber(value);
+    default:
+      return formatNumber(value);
   }
 }
 
@@ -87,10 +93,14 @@ const char* kSolutionMetrics[] = {"rmse",           "covered_rmse",     "max_err
 bool text(const nlohmann::json& j, const char* key, std::string& out) {
   if (!j.contains(key)) return false;
   const auto& v = j[key];
-  if (v.is_string()) out = v.get<std::string>();
-  else if (v.is_number()) out = formatNumber(v.get<double>());
-  else if (v.is_boolean()) out = v.get<bool>() ? "on" : "off";
-  else return false;
+  if (v.is_string())
+    out = v.get<std::string>();
+  else if (v.is_number())
+    out = formatNumber(v.get<double>());
+  else if (v.is_boolean())
+    out = v.get<bool>() ? "on" : "off";
+  else
+    return false;
   return true;
 }
 
@@ -101,7 +111,8 @@ std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& 
   if (!text(j, "metric", c.metric) || c.metric.empty()) return at + ": \"metric\" is missing";
   std::string against = "solution";
   text(j, "against", against);
-  if (against != "solution" && against != "truth") return at + ": \"against\" is '" + against + "' (valid: solution, truth)";
+  if (against != "solution" && against != "truth")
+    return at + ": \"against\" is '" + against + "' (valid: solution, truth)";
   c.against = against == "truth" ? Against::Truth : Against::Solution;
   if (c.against == Against::Solution &&
       std::find(std::begin(kSolutionMetrics), std::end(kSolutionMetrics), c.metric) == std::end(kSolutionMetrics)) {
@@ -121,7 +132,8 @@ std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& 
   }
   if (j.contains("partial_credit")) {
     const auto& p = j["partial_credit"];
-    if (!p.is_number() || !(p.get<double>() >= 0 && p.get<double>() <= 1)) return at + ": \"partial_credit\" must be in [0, 1]";
+    if (!p.is_number() || !(p.get<double>() >= 0 && p.get<double>() <= 1))
+      return at + ": \"partial_credit\" must be in [0, 1]";
     c.partialCredit = p.get<double>();
   }
   text(j, "hint", c.hint);
@@ -165,15 +177,18 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
       c.settings.emplace_back(key, v);
     }
   }
-  if (!j.contains("checks") || !j["checks"].is_array() || j["checks"].empty()) return at + ": \"checks\" must be a non-empty array";
+  if (!j.contains("checks") || !j["checks"].is_array() || j["checks"].empty())
+    return at + ": \"checks\" must be a non-empty array";
   for (size_t i = 0; i < j["checks"].size(); ++i) {
     Check check;
     if (auto e = loadCheck(j["checks"][i], at + ": checks[" + std::to_string(i) + "]", check); !e.empty()) return e;
     c.checks.push_back(std::move(check));
   }
   for (auto& k : c.checks)
-    if (!k.requiredCheck.empty() && std::none_of(c.checks.begin(), c.checks.end(), [&](const Check& o) { return o.name == k.requiredCheck; }))
-      return at + ": check '" + k.name + "' requires '" + k.requiredCheck + "', which is not a check of this configuration";
+    if (!k.requiredCheck.empty() &&
+        std::none_of(c.checks.begin(), c.checks.end(), [&](const Check& o) { return o.name == k.requiredCheck; }))
+      return at + ": check '" + k.name + "' requires '" + k.requiredCheck +
+             "', which is not a check of this configuration";
   return {};
 }
 
@@ -283,8 +298,8 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
   }
   if (j.contains("size")) {
     const auto& s = j["size"];
-    if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() || s[0].get<int>() < 16 ||
-        s[1].get<int>() < 16 || s[0].get<int>() > 4096 || s[1].get<int>() > 4096)
+    if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer() ||
+        s[0].get<int>() < 16 || s[1].get<int>() < 16 || s[0].get<int>() > 4096 || s[1].get<int>() > 4096)
       return where + ": \"size\" must be [width, height] with 16 <= each <= 4096";
     out.size = {s[0].get<int>(), s[1].get<int>()};
   }

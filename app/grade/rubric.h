@@ -54,8 +54,8 @@ struct Check {
 // One frame the checks look at: a scene, a camera and the lab's parameters.
 struct Configuration {
   std::string name;
-  std::string scene;   // "" = the lab's default
-  std::string camera;  // OrbitCamera::parse text, "" = framed
+  std::string scene;                                          // "" = the lab's default
+  std::string camera;                                         // OrbitCamera::parse text, "" = framed
   std::vector<std::pair<std::string, std::string>> settings;  // lab param -> value, in order
   std::vector<Check> checks;
   // The range the view's values lie in when the frame is right ("range": [0, 1] for visibility):

@@ -1,4 +1,4 @@
-#include "grade/solution_cache.h"
+#include "app/grade/solution_cache.h"
 
 #include <unistd.h>
 
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <fstream>
 
-#include "util/read_file.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -61,8 +61,8 @@ bool getImage(Reader& in, ImageF& image) {
 ContentHash& ContentHash::add(std::string_view bytes) {
   // Two FNV-1a lanes with different multipliers and offsets: 128 bits between them.
   for (unsigned char c : bytes) {
-    a_ = (a_ ^ c) * 0x100000001b3ull;         // FNV's 64-bit prime
-    b_ = (b_ ^ c) * 0x9e3779b97f4a7c15ull;    // odd: 2^64 / golden ratio
+    a_ = (a_ ^ c) * 0x100000001b3ull;       // FNV's 64-bit prime
+    b_ = (b_ ^ c) * 0x9e3779b97f4a7c15ull;  // odd: 2^64 / golden ratio
   }
   return *this;
 }
@@ -86,7 +86,8 @@ ContentHash& ContentHash::addTree(const fs::path& dir) {
 
 std::string ContentHash::hex() const {
   char s[33];
-  std::snprintf(s, sizeof s, "%016llx%016llx", static_cast<unsigned long long>(a_), static_cast<unsigned long long>(b_));
+  std::snprintf(s, sizeof s, "%016llx%016llx", static_cast<unsigned long long>(a_),
+                static_cast<unsigned long long>(b_));
   return s;
 }
 
@@ -154,7 +155,8 @@ std::string SolutionCache::store(const std::string& key, const CachedSolution& e
 fs::path defaultSolutionCacheDir() {
   if (const char* env = std::getenv("SHADELAB_CACHE"); env && *env) return fs::path(env) / "solutions";
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "shadelab" / "solutions";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "shadelab" / "solutions";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".cache" / "shadelab" / "solutions";
   return {};
 }
 

@@ -20,7 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "measure/image.h"
+#include "app/measure/image.h"
 
 namespace shadelab {
 
@@ -41,8 +41,8 @@ class ContentHash {
 };
 
 struct CachedSolution {
-  ImageF frame;                 // the solution's frame
-  std::vector<ImageF> truths;   // the lab's references for the configuration (empty when no check needs them)
+  ImageF frame;                  // the solution's frame
+  std::vector<ImageF> truths;    // the lab's references for the configuration (empty when no check needs them)
   std::vector<ImageF> mistakes;  // each of the rubric's mistakes drawn in the configuration, in its order
   // What the solution's phase reports: renderer, vs_truth, and "mistakes": [{name, distance}], each
   // mistake's frame against the solution's (frameDistance).

@@ -1,9 +1,9 @@
-#include "grade/watchdog.h"
+#include "app/grade/watchdog.h"
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/resource.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,9 +22,13 @@ std::string WatchedRun::describe() const {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.1f s", phaseSeconds);
   switch (end) {
-    case End::Exited: return "exited with " + std::to_string(status);
-    case End::Signalled: return "killed by signal " + std::to_string(status) + " (" + strsignal(status) + ")";
-    default: return "stopped by the watchdog after " + std::string(seconds) + (phase.empty() ? "" : " in phase '" + phase + "'");
+    case End::Exited:
+      return "exited with " + std::to_string(status);
+    case End::Signalled:
+      return "killed by signal " + std::to_string(status) + " (" + strsignal(status) + ")";
+    default:
+      return "stopped by the watchdog after " + std::string(seconds) +
+             (phase.empty() ? "" : " in phase '" + phase + "'");
   }
 }
 

@@ -15,9 +15,9 @@ namespace shadelab {
 struct WatchedRun {
   enum class End { Exited, Signalled, TimedOut };
   End end = End::Exited;
-  int status = 0;      // exit code, or the signal that ended it
-  std::string phase;   // the last phase the child entered ("" if none)
-  double phaseSeconds = 0.0;  // how long it had been in that phase when it ended
+  int status = 0;                // exit code, or the signal that ended it
+  std::string phase;             // the last phase the child entered ("" if none)
+  double phaseSeconds = 0.0;     // how long it had been in that phase when it ended
   std::string describe() const;  // "exited with 0", "killed by signal 11 (Segmentation fault)", ...
 };
 

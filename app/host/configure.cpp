@@ -1,4 +1,4 @@
-#include "host/configure.h"
+#include "app/host/configure.h"
 
 namespace shadelab {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "host/lab_host.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab {
 

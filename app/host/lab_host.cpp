@@ -1,10 +1,10 @@
-#include "host/lab_host.h"
+#include "app/host/lab_host.h"
 
 #include <algorithm>
 
-#include "gl/driver_caveats.h"
-#include "host/truth.h"
-#include "scene/scene_catalog.h"
+#include "app/gl/driver_caveats.h"
+#include "app/host/truth.h"
+#include "app/scene/scene_catalog.h"
 
 namespace shadelab {
 
@@ -18,7 +18,7 @@ LabHost::LabHost(ShaderSearchPath shaderPath, std::string_view firstLab, const s
 
 LabHost::~LabHost() {
   jobs_.cancelAll();
-  if (lab_ && labReady_) lab_->teardown();
+  lab_.reset();  // its GL objects go while the context is current, before the shader library it holds programs of
 }
 
 std::string LabHost::enterLab(std::string_view id, const std::string& firstScene) {
@@ -29,25 +29,21 @@ std::string LabHost::enterLab(std::string_view id, const std::string& firstScene
     return "unknown lab '" + std::string(id) + "' (valid: " + valid + ")";
   }
   LabContext ctx{*shaders_, jobs_};
-  if (auto err = next->setup(ctx); !err.empty()) {
-    next->teardown();
-    return std::string(id) + ": setup failed: " + err;
-  }
-  jobs_.cancelAll();  // nothing of the old lab may be delivered to the new one
+  if (auto err = next->setup(ctx); !err.empty()) return std::string(id) + ": setup failed: " + err;
+  jobs_.cancelAll();   // nothing of the old lab may be delivered to the new one
   jobErrors_.clear();  // nor shown in it: its failed jobs were about its own settings
-  if (lab_ && labReady_) {
-    lab_->teardown();
+  if (lab_) {
+    lab_.reset();                                      // the old lab's GL objects go with it
     if (standIns_) standIns_->takeDriverReferences();  // else llvmpipe keeps the old lab's biggest maps
   }
-  sideTarget_.reset();  // the old lab's measured views: a lab starts with the objects it makes itself
+  sideTarget_.reset();       // the old lab's measured views: a lab starts with the objects it makes itself
   shaders_->forgetRecent();  // the old lab's variants
   lab_ = std::move(next);
-  labReady_ = true;
   ++labEntries_;
   const std::string scene = firstScene.empty() ? std::string(lab_->defaultScene()) : firstScene;
   heightMap_.clear();
   const std::string err = rebuildScene(scene, lab_->needs(), true);
-  previous_.reset();  // the old lab's scene, which rebuildScene kept: of no use to this lab
+  previous_.reset();                        // the old lab's scene, which rebuildScene kept: of no use to this lab
   if (err.empty()) applySceneSettings({});  // a new lab starts at its defaults: nothing to restore
   return err;
 }
@@ -142,10 +138,12 @@ std::string LabHost::ownKey(const std::string& key) const {
 
 std::string LabHost::set(const std::string& assignment) {
   const auto eq = assignment.find('=');
-  if (eq == std::string::npos) return "'" + assignment + "': expected key=value, e.g. " + std::string(lab_->id()) + ".mode=phong";
+  if (eq == std::string::npos)
+    return "'" + assignment + "': expected key=value, e.g. " + std::string(lab_->id()) + ".mode=phong";
   const std::string key = ownKey(assignment.substr(0, eq));
   if (key.empty())
-    return "'" + assignment.substr(0, eq) + "' belongs to another lab (the current lab is " + std::string(lab_->id()) + ")";
+    return "'" + assignment.substr(0, eq) + "' belongs to another lab (the current lab is " + std::string(lab_->id()) +
+           ")";
   SetFromString setter(lab_->id(), key, assignment.substr(eq + 1));
   lab_->visitParams(setter);
   return setter.result();

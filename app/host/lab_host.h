@@ -14,11 +14,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gl/stand_ins.h"
-#include "util/job_runner.h"
-#include "host/preset.h"
-#include "lab/lab.h"
-#include "measure/image.h"
+#include "app/gl/stand_ins.h"
+#include "app/host/preset.h"
+#include "app/lab/lab.h"
+#include "app/measure/image.h"
+#include "app/util/job_runner.h"
 
 namespace shadelab {
 
@@ -129,7 +129,6 @@ class LabHost {
   std::unique_ptr<gl::DriverStandIns> standIns_;
   JobRunner jobs_;  // before lab_: jobs are cancelled before a lab goes
   std::unique_ptr<Lab> lab_;
-  bool labReady_ = false;
   std::string sceneId_;
   int sceneLoads_ = 0;
   int labEntries_ = 0;
@@ -140,8 +139,8 @@ class LabHost {
   OrbitCamera camera_;
   std::optional<gl::RenderTarget> target_;      // the view's frames
   std::optional<gl::RenderTarget> sideTarget_;  // measured views, off screen
-  gl::PassTimer timer_;       // the view's frames: what the Cost panel shows
-  gl::PassTimer truthTimer_;  // reference frames, kept out of the view's numbers
+  gl::PassTimer timer_;                         // the view's frames: what the Cost panel shows
+  gl::PassTimer truthTimer_;                    // reference frames, kept out of the view's numbers
   std::vector<std::string> jobErrors_;
   int sceneBuilds_ = 0;
 };

@@ -1,9 +1,9 @@
-#include "host/measurer.h"
+#include "app/host/measurer.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "host/truth.h"
+#include "app/host/truth.h"
 
 namespace shadelab {
 

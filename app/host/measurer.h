@@ -18,18 +18,18 @@
 #include <string>
 #include <vector>
 
-#include "host/lab_host.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab {
 
 struct Measurement {
   std::string lab;
   Settings settings;
-  std::string label;        // the parameters that differ from the lab's defaults, "defaults" if none
-  std::string truth;        // ReferenceSpec::truth: which truth it was judged against
-  Metrics values;           // the lab's metrics, then the costs (gpu_ms, cpu_ms, the lab's own)
-  ImageF image, reference;  // image truths: the first view and its truth (empty in history())
-  std::vector<ImageF> images, references;  // every measured view, and the truth in it
+  std::string label;                           // the parameters that differ from the lab's defaults, "defaults" if none
+  std::string truth;                           // ReferenceSpec::truth: which truth it was judged against
+  Metrics values;                              // the lab's metrics, then the costs (gpu_ms, cpu_ms, the lab's own)
+  ImageF image, reference;                     // image truths: the first view and its truth (empty in history())
+  std::vector<ImageF> images, references;      // every measured view, and the truth in it
   double value(const std::string& key) const;  // NaN when absent
 };
 
@@ -70,7 +70,7 @@ class Measurer {
   LabHost& host_;
   int labEntry_ = -1;  // LabHost::labEntries() when the measurements began
   std::vector<Measurement> history_;
-  std::optional<Measurement> last_;  // with images, for measureNow
+  std::optional<Measurement> last_;                                           // with images, for measureNow
   std::deque<std::pair<std::string, std::shared_ptr<const ImageF>>> truths_;  // newest first
   static constexpr size_t kCachedTruths = 8;
 };

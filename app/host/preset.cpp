@@ -1,4 +1,4 @@
-#include "host/preset.h"
+#include "app/host/preset.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +29,8 @@ std::string parsePreset(const nlohmann::json& state, Preset& out) {
     const auto& params = state["params"];
     if (!params.is_object()) return "'params' must be an object of key: value";
     for (auto& [k, v] : params.items()) {
-      if (v.is_object() || v.is_array() || v.is_null()) return "params." + k + ": must be a number, a string or true/false";
+      if (v.is_object() || v.is_array() || v.is_null())
+        return "params." + k + ": must be a number, a string or true/false";
       out.params.emplace_back(k, v.is_string() ? v.get<std::string>() : v.dump());
     }
   }

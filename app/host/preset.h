@@ -1,8 +1,7 @@
 // Presets: what the app saves beside every screenshot and in out/presets/ (lab, scene, a height
-// map given for it, params, camera, and for screenshots the size and time), and what `render --preset` and a .json dropped
-// on the window apply. Presets travel between people, so they are untrusted: the file is read
-// only if it is a regular file of modest size, and every field is checked for type and range
-// here, before anything is applied.
+// map given for it, params, camera, and for screenshots the size and time), and what `render --preset` and a .json
+// dropped on the window apply. Presets travel between people, so they are untrusted: the file is read only if it is a
+// regular file of modest size, and every field is checked for type and range here, before anything is applied.
 #pragma once
 #include <filesystem>
 #include <optional>

@@ -1,4 +1,4 @@
-#include "host/random_settings.h"
+#include "app/host/random_settings.h"
 
 #include <cmath>
 
@@ -29,7 +29,8 @@ class DrawRandom final : public ParamVisitor {
   }
   void choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) override {
     if (!pick() || names.empty()) return;
-    out.emplace_back(std::string(info.key), std::string(names[std::uniform_int_distribution<size_t>(0, names.size() - 1)(rng_)]));
+    out.emplace_back(std::string(info.key),
+                     std::string(names[std::uniform_int_distribution<size_t>(0, names.size() - 1)(rng_)]));
   }
   Settings out;
 
@@ -50,7 +51,8 @@ Settings randomSettings(Lab& lab, std::mt19937& rng, double share) {
 
 std::string settingsAsArgs(std::string_view labId, const Settings& settings) {
   std::string s;
-  for (auto& [k, v] : settings) s += (s.empty() ? "" : " ") + std::string("--set ") + std::string(labId) + "." + k + "=" + v;
+  for (auto& [k, v] : settings)
+    s += (s.empty() ? "" : " ") + std::string("--set ") + std::string(labId) + "." + k + "=" + v;
   return s;
 }
 

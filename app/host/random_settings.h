@@ -4,7 +4,7 @@
 #pragma once
 #include <random>
 
-#include "lab/lab.h"
+#include "app/lab/lab.h"
 
 namespace shadelab {
 

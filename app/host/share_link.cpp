@@ -1,13 +1,13 @@
-#include "host/share_link.h"
+#include "app/host/share_link.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 
-#include "host/lab_host.h"
-#include "lab/params.h"
-#include "scene/scene_catalog.h"
-#include "util/format.h"
+#include "app/host/lab_host.h"
+#include "app/lab/params.h"
+#include "app/scene/scene_catalog.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -54,21 +54,35 @@ OpenedLink openLink(const std::string& fragment) {
     if (item.empty()) continue;
     const size_t eq = item.find('=');
     const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
-    if (key == "lab") link.lab = value;
-    else if (key == "scene") link.scene = value;
-    else if (key == "camera") link.camera = value;
-    else if (key == "measure") link.measure = true;
-    else if (key == "exercise") link.exercise = value;
-    else if (key == "check") link.check = true;
-    else if (key == "builtin") link.builtin = true;
-    else if (key == "present") link.present = true;
-    else if (key == "cycle") link.cycle = true;
+    if (key == "lab")
+      link.lab = value;
+    else if (key == "scene")
+      link.scene = value;
+    else if (key == "camera")
+      link.camera = value;
+    else if (key == "measure")
+      link.measure = true;
+    else if (key == "exercise")
+      link.exercise = value;
+    else if (key == "check")
+      link.check = true;
+    else if (key == "builtin")
+      link.builtin = true;
+    else if (key == "present")
+      link.present = true;
+    else if (key == "cycle")
+      link.cycle = true;
     else if (key == "frames") {
-      if (long n = 0; parseWholeNumber(value, 1, 1000000, n)) link.frames = int(n);
-      else link.problems.push_back("the link's frames='" + value + "' is not a number of frames (1 to 1000000)");
-    }
-    else if (key.find('.') != std::string::npos) link.sets.push_back(item);
-    else link.problems.push_back("the link's key '" + key + "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, present, frames, cycle, LAB.KEY)");
+      if (long n = 0; parseWholeNumber(value, 1, 1000000, n))
+        link.frames = int(n);
+      else
+        link.problems.push_back("the link's frames='" + value + "' is not a number of frames (1 to 1000000)");
+    } else if (key.find('.') != std::string::npos)
+      link.sets.push_back(item);
+    else
+      link.problems.push_back("the link's key '" + key +
+                              "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, present, "
+                              "frames, cycle, LAB.KEY)");
   }
   return link;
 }
@@ -80,8 +94,10 @@ ShareLink shareLink(LabHost& host) {
   const auto scenes = listScenes(host.lab().scenes());
   const bool catalogued =
       std::any_of(scenes.begin(), scenes.end(), [&](const SceneEntry& s) { return s.id == host.sceneId(); });
-  if (catalogued) link.fragment += "&scene=" + percentEncode(host.sceneId());
-  else link.note = "the scene is a file of yours (" + host.sceneId() + "): the link opens the lab's default scene";
+  if (catalogued)
+    link.fragment += "&scene=" + percentEncode(host.sceneId());
+  else
+    link.note = "the scene is a file of yours (" + host.sceneId() + "): the link opens the lab's default scene";
   link.fragment += "&camera=" + percentEncode(host.camera().toString());
   const Settings defaults = host.defaultSettings();  // the scene's own suggestions count as defaults
   for (const auto& setting : host.currentSettings()) {

@@ -23,12 +23,12 @@ struct OpenedLink {
   std::string lab, scene, camera;
   std::vector<std::string> sets;  // "lab.key=value"
   bool measure = false;
-  std::string exercise;  // "shading/blinn-phong": the Exercises section opens on it
-  bool check = false;    // press its Check once the page has drawn
-  bool builtin = false;  // the student's folder is not searched (after a shader lost the context)
-  bool present = false;  // presentation mode: the viewport fills the page (F11 / Esc leave it)
-  int frames = 0;        // draw this many frames, print their timing and stop (tools/web_bench.sh)
-  bool cycle = false;    // switch to every lab in turn (tools/web_bench.sh: the tab's memory)
+  std::string exercise;               // "shading/blinn-phong": the Exercises section opens on it
+  bool check = false;                 // press its Check once the page has drawn
+  bool builtin = false;               // the student's folder is not searched (after a shader lost the context)
+  bool present = false;               // presentation mode: the viewport fills the page (F11 / Esc leave it)
+  int frames = 0;                     // draw this many frames, print their timing and stop (tools/web_bench.sh)
+  bool cycle = false;                 // switch to every lab in turn (tools/web_bench.sh: the tab's memory)
   std::vector<std::string> problems;  // keys it does not know, with the valid ones
 };
 OpenedLink openLink(const std::string& fragment);

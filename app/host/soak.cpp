@@ -1,6 +1,6 @@
-#include "host/soak.h"
+#include "app/host/soak.h"
 
-#include "grade/class_report.h"  // csvField
+#include "app/grade/class_report.h"  // csvField
 
 #include <algorithm>
 #include <chrono>
@@ -9,23 +9,21 @@
 #include <numeric>
 #include <sstream>
 
-#include "gl/handle.h"
-#include "host/random_settings.h"
-#include "measure/report.h"
-#include "scene/scene_catalog.h"
-#include "util/format.h"
-#include "util/output_files.h"
-#include "util/process_memory.h"
-#include "util/read_file.h"
+#include "app/gl/handle.h"
+#include "app/host/random_settings.h"
+#include "app/measure/report.h"
+#include "app/scene/scene_catalog.h"
+#include "app/util/format.h"
+#include "app/util/output_files.h"
+#include "app/util/process_memory.h"
+#include "app/util/read_file.h"
 
 namespace fs = std::filesystem;
 
 namespace shadelab {
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 // Meshes a user might drop: the project's test files, and the shared data where it exists.
 std::vector<fs::path> droppableMeshes() {
@@ -220,15 +218,15 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   for (auto& [lab, e] : byTime)
     entryRows << formatNumber(e->seconds) << "," << lab << "," << formatNumber(e->residentMb) << ","
               << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << ","
-              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << ","
-              << e->programs << "," << csvField(e->left) << "\n";
+              << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << "," << e->programs
+              << "," << csvField(e->left) << "\n";
   const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
   if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
   bool passed = written.empty() && nonFiniteFrames_ == 0 && glErrors_ == 0;
-  s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_ << " lab switches, "
-    << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, " << supersedes_
-    << " jobs superseded), " << frames_ << " frames\n";
+  s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_
+    << " lab switches, " << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, "
+    << supersedes_ << " jobs superseded), " << frames_ << " frames\n";
   s << "soak: " << nonFiniteFrames_ << " frames with NaN/Inf, " << glErrors_ << " GL errors\n";
 
   // Memory on lab entries after warm-up (the first fifth of the run): each entry as its growth
@@ -251,7 +249,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   auto kinds = [](const LabEntry& e) {
     std::string d;
     for (size_t k = 0; k < e.glObjects.size(); ++k)
-      if (e.glObjects[k]) d += (d.empty() ? "" : ", ") + std::to_string(e.glObjects[k]) + " " + gl::kindName(gl::Kind(k));
+      if (e.glObjects[k])
+        d += (d.empty() ? "" : ", ") + std::to_string(e.glObjects[k]) + " " + gl::kindName(gl::Kind(k));
     return d;
   };
   for (auto& [lab, entries] : entries_) {
@@ -268,7 +267,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   if (n >= 3) {
     const bool flat = slope < 1.0;
     s << "soak: on lab entries after warm-up (" << n << "): resident memory slope " << formatNumber(slope)
-      << " MB per 10 min" << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)")
+      << " MB per 10 min"
+      << (judgeSlope ? (flat ? " (goal < 1: met)" : " (goal < 1: NOT met)") : " (runs of 10 min or more are judged)")
       << ", heap in use slope " << formatNumber(heapSlope) << " MB per 10 min\n";
     s << "soak: the resident slope in parts: anonymous pages " << formatNumber(anonymousSlope)
       << " MB per 10 min, pages of mapped files (libraries' code) " << formatNumber(fileSlope) << " MB per 10 min\n";
@@ -280,7 +280,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
         if (e.seconds < warm) atWarm = std::max(atWarm, e.programs);
         atEnd = std::max(atEnd, e.programs);
       }
-    s << "soak: distinct programs linked: " << atWarm << " by the end of warm-up, " << atEnd << " by the last lab entry\n";
+    s << "soak: distinct programs linked: " << atWarm << " by the end of warm-up, " << atEnd
+      << " by the last lab entry\n";
   }
   // The entry furthest above its lab's median heap, and the lab it came from: memory the lab
   // before kept past the switch.
@@ -300,7 +301,8 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   }
   if (outlier)
     s << "soak: the lab entry furthest above its lab's median heap: " << outlierLab << " at "
-      << formatNumber(outlier->seconds) << " s, " << formatNumber(above) << " MB above, after " << outlier->left << "\n";
+      << formatNumber(outlier->seconds) << " s, " << formatNumber(above) << " MB above, after " << outlier->left
+      << "\n";
   // All samples, whatever state they caught: the range the run went through.
   if (!samples_.empty())
     s << "soak: resident memory over the run " << formatNumber(samples_.front().residentMb) << " -> "
@@ -309,16 +311,19 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     s << "soak: the largest resident set after a frame (the peak): " << formatNumber(peakMb_) << " MB at "
       << formatNumber(peakSeconds_) << " s, drawing " << peakState_ << "\n";
   if (!slowestState_.empty())
-    s << "soak: the longest step and frame (waits for jobs to end left out): " << formatNumber(slowestSeconds_) << " s, ending in " << slowestState_ << "\n";
+    s << "soak: the longest step and frame (waits for jobs to end left out): " << formatNumber(slowestSeconds_)
+      << " s, ending in " << slowestState_ << "\n";
   // GL objects: every entry into a lab must hold no more than the first did.
   for (auto& [lab, entries] : entries_) {
-    const auto [least, most] = std::minmax_element(entries.begin(), entries.end(),
-                                                   [&](auto& a, auto& b) { return total(a) < total(b); });
+    const auto [least, most] =
+        std::minmax_element(entries.begin(), entries.end(), [&](auto& a, auto& b) { return total(a) < total(b); });
     const bool same = total(*most) <= total(entries.front());
-    s << "soak: GL objects on entering " << lab << ": " << entries.size() << " entries, first " << total(entries.front())
-      << ", min " << total(*least) << ", max " << total(*most);
-    if (same) s << " (back to baseline)\n";
-    else s << " (ABOVE the first entry: " << kinds(*most) << " against " << kinds(entries.front()) << ")\n";
+    s << "soak: GL objects on entering " << lab << ": " << entries.size() << " entries, first "
+      << total(entries.front()) << ", min " << total(*least) << ", max " << total(*most);
+    if (same)
+      s << " (back to baseline)\n";
+    else
+      s << " (ABOVE the first entry: " << kinds(*most) << " against " << kinds(entries.front()) << ")\n";
     passed = passed && same;
   }
   for (auto& p : problems_) s << "soak: problem: " << p << "\n";

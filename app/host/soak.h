@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "host/lab_host.h"
-#include "util/process_memory.h"
+#include "app/host/lab_host.h"
+#include "app/util/process_memory.h"
 
 namespace shadelab {
 
@@ -66,8 +66,8 @@ class SoakDriver {
   double start_;
   double nextSample_ = 0.0;
   double sampleSeconds_ = 5.0;
-  long frames_ = 0, steps_ = 0, nonFiniteFrames_ = 0, glErrors_ = 0, labSwitches_ = 0, shaderEdits_ = 0,
-       meshLoads_ = 0, supersedes_ = 0;
+  long frames_ = 0, steps_ = 0, nonFiniteFrames_ = 0, glErrors_ = 0, labSwitches_ = 0, shaderEdits_ = 0, meshLoads_ = 0,
+       supersedes_ = 0;
   // The largest resident set seen after any frame, and the state that drew it: a transient of
   // gigabytes names its configuration so that it can be reproduced and capped.
   double peakMb_ = 0.0, peakSeconds_ = 0.0;
@@ -76,9 +76,9 @@ class SoakDriver {
   // soak's own waits for jobs to end are left out.
   double lastFrameAt_ = 0.0, slowestSeconds_ = 0.0;
   std::string slowestState_;
-  std::string brokenFile_;   // relative path of the scratch file now broken, or ""
+  std::string brokenFile_;  // relative path of the scratch file now broken, or ""
   bool countAfterSwitch_ = false;
-  std::string leftState_;  // describeState() just before the last lab switch
+  std::string leftState_;                      // describeState() just before the last lab switch
   std::vector<std::filesystem::path> meshes_;  // what loadOrDropMesh picks from besides the lab's scenes
   // Each time a lab is entered, after its first frame (a fresh lab, its default scene): the same
   // state every time, so what grows here is kept, not the current scene's size.

@@ -1,4 +1,4 @@
-#include "host/truth.h"
+#include "app/host/truth.h"
 
 #include <algorithm>
 
@@ -38,8 +38,10 @@ auto underTruthSettings(LabHost& host, const TruthRequest& req, Draw&& draw) {
 
 }  // namespace
 
-void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice) {
-  underTruthSettings(host, req, [&] { return host.drawInto(target, req.camera, req.time, jitter, slice, req.spec.slices); });
+void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter,
+                    int slice) {
+  underTruthSettings(host, req,
+                     [&] { return host.drawInto(target, req.camera, req.time, jitter, slice, req.spec.slices); });
 }
 
 ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter) {

@@ -5,7 +5,7 @@
 #pragma once
 #include <string>
 
-#include "host/lab_host.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab {
 
@@ -27,7 +27,8 @@ TruthRequest describeTruth(LabHost& host, glm::ivec2 size, float time, const Set
 ImageF drawTruthFrame(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter);
 // Part `slice` of that frame (of req.spec.slices), not read back: the window's measurer draws one
 // part per GL step; after the last, target holds the frame drawTruthFrame would have read.
-void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter, int slice);
+void drawTruthSlice(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target, glm::vec2 jitter,
+                    int slice);
 // Traced truths: the GL part now, under the truth's settings; returns the CPU part.
 TraceWork beginTrace(LabHost& host, const TruthRequest& req, const gl::RenderTarget& target);
 // Truths traced on the GPU: the g-buffer now, under the truth's settings; returns the GL steps.

@@ -1,11 +1,14 @@
-#include "lab/lab.h"
+#include "app/lab/lab.h"
 
 namespace shadelab {
 
 Metrics Judge::metrics(const ImageF& image, const ImageF& reference) const {
   const ImageError e = compareImages(image, reference);
-  return {{"rmse", e.rmse}, {"surface_rmse", e.coveredRmse}, {"max_error", e.maxError},
-          {"mean_error", e.meanError}, {"bad_pixel_pct", e.badPixelPct}};
+  return {{"rmse", e.rmse},
+          {"surface_rmse", e.coveredRmse},
+          {"max_error", e.maxError},
+          {"mean_error", e.meanError},
+          {"bad_pixel_pct", e.badPixelPct}};
 }
 
 ReferenceSpec referenceOf(const Lab& lab) {

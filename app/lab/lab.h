@@ -2,9 +2,10 @@
 // scene and how it draws (Lab), and, where it has a truth, how it is judged and stressed (Judge).
 //
 // Life cycle (driven by app/host/lab_host.cpp):
-//   needs() -> host builds exactly that scene -> setup() -> { update(); render(); }* -> teardown()
+//   needs() -> host builds exactly that scene -> setup() -> { update(); render(); }* -> destroyed
 // render() draws into frame.target, times each pass with frame.pass("name"), and never calls
-// ImGui. setup()/teardown() must leave no GL objects behind (tests count them). Long CPU work
+// ImGui. A lab holds its GL objects in RAII members (app/gl/handle.h), so destroying it, which
+// the host does with the context current, leaves none behind (tests count them). Long CPU work
 // (smoothing a mesh, a bake) goes to ctx.jobs from update(); render() draws the last result.
 #pragma once
 #include <memory>
@@ -18,18 +19,18 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "gl/pass_timer.h"
-#include "util/job_runner.h"
-#include "gl/texture.h"
-#include "lab/lab_panel.h"
-#include "lab/params.h"
-#include "measure/accumulator.h"
-#include "measure/image.h"
-#include "measure/report.h"
-#include "scene/camera.h"
-#include "scene/gpu_scene.h"
-#include "scene/scene_catalog.h"
-#include "shader/shader_library.h"
+#include "app/gl/pass_timer.h"
+#include "app/gl/texture.h"
+#include "app/lab/lab_panel.h"
+#include "app/lab/params.h"
+#include "app/measure/accumulator.h"
+#include "app/measure/image.h"
+#include "app/measure/report.h"
+#include "app/scene/camera.h"
+#include "app/scene/gpu_scene.h"
+#include "app/scene/scene_catalog.h"
+#include "app/shader/shader_library.h"
+#include "app/util/job_runner.h"
 
 namespace shadelab {
 
@@ -47,7 +48,7 @@ struct Frame {
   const GpuScene& gpu;
   const OrbitCamera& camera;
   gl::PassTimer& timer;
-  float time = 0.0f;  // seconds; fixed on the command line for repeatable frames
+  float time = 0.0f;       // seconds; fixed on the command line for repeatable frames
   glm::vec2 jitter{0.0f};  // sub-pixel shift of the image, in pixels (accumulated references)
   // A heavy truth frame is drawn in `slices` calls, so the window draws its own frames between
   // them (ReferenceSpec::slices): call `slice` clears only if it is the first and draws its share
@@ -104,7 +105,6 @@ struct MeasuredView {
   bool displayEncoded = true;  // sRGB colour (averaged in linear light), or data (normals) as stored
 };
 
-
 // A named extreme configuration. It passes when every pixel is finite and, where given,
 // `expectWarning` appears among the lab's warnings (the lab noticed and told the student).
 struct StressCase {
@@ -139,8 +139,7 @@ class Lab {
   // Every program the lab can use, each variant once: `check-shaders` compiles them all.
   virtual std::vector<ProgramSpec> allPrograms() const = 0;
 
-  virtual std::string setup(LabContext& ctx) = 0;  // "" or a one-line error
-  virtual void teardown() = 0;
+  virtual std::string setup(LabContext& ctx) = 0;  // "" or a one-line error; the lab is destroyed either way
   // Once per frame before render(), with the scene built for needs(): where a lab submits jobs
   // for derived results whose inputs changed, and uploads results that arrived.
   virtual void update(const Scene& scene, float dt) {}
@@ -242,9 +241,11 @@ class LabWithParams : public Lab {
 struct LabEntry {
   std::string_view id;
   std::unique_ptr<Lab> (*make)();
+  bool inMenu = true;  // offered in the window's and the page's lab menu; the skeleton lab is not
 };
 std::span<const LabEntry> labRegistry();
-std::vector<std::string> labIds();
+std::vector<std::string> labIds();                  // every lab: the CLI, the soak and the tests
+std::vector<std::string> menuLabIds();              // the labs a student picks from
 std::unique_ptr<Lab> makeLab(std::string_view id);  // null if unknown
 
 }  // namespace shadelab

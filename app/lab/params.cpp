@@ -1,4 +1,4 @@
-#include "lab/params.h"
+#include "app/lab/params.h"
 
 #include <algorithm>
 #include <charconv>
@@ -48,9 +48,12 @@ void SetFromString::boolParam(const ParamInfo& info, bool& value) {
   keys_.emplace_back(info.key);
   if (info.key != key_) return;
   found_ = true;
-  if (text_ == "1" || text_ == "true" || text_ == "on") value = true;
-  else if (text_ == "0" || text_ == "false" || text_ == "off") value = false;
-  else fail(info, "on, off, true, false, 1, 0");
+  if (text_ == "1" || text_ == "true" || text_ == "on")
+    value = true;
+  else if (text_ == "0" || text_ == "false" || text_ == "off")
+    value = false;
+  else
+    fail(info, "on, off, true, false, 1, 0");
 }
 
 void SetFromString::choiceParam(const ParamInfo& info, int& index, std::span<const std::string_view> names) {
@@ -151,8 +154,8 @@ void DescribeParams::intParam(const ParamInfo& info, int& value, int min, int ma
 void DescribeParams::boolParam(const ParamInfo& info, bool& value) { add(info, "on|off", value ? "on" : "off"); }
 void DescribeParams::section(std::string_view title) { lines.push_back("  [" + std::string(title) + "]"); }
 void DescribeParams::action(const ParamInfo& info, const std::function<void()>&) {
-  lines.push_back("  " + labId_ + "." + std::string(info.key) + "  action (--do " + labId_ + "." + std::string(info.key) +
-                  ")\n      " + std::string(info.help));
+  lines.push_back("  " + labId_ + "." + std::string(info.key) + "  action (--do " + labId_ + "." +
+                  std::string(info.key) + ")\n      " + std::string(info.help));
 }
 void DescribeParams::fileParam(const ParamInfo& info, std::string& path, std::span<const std::string_view> extensions) {
   add(info, "file (" + joined(extensions) + ", or '' for none)", path.empty() ? "''" : path);

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "util/format.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "lab/variants.h"
+#include "app/lab/variants.h"
 
 #include <cstddef>
 

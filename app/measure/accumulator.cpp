@@ -1,4 +1,4 @@
-#include "measure/accumulator.h"
+#include "app/measure/accumulator.h"
 
 #include <cmath>
 #include <random>
@@ -19,7 +19,8 @@ std::vector<JitterSample> jitterSamples(int grid, PixelFilter filter, uint32_t s
     for (int i = 0; i < grid; ++i) {
       const glm::vec2 cell((float(i) + u(rng)) / float(grid), (float(j) + u(rng)) / float(grid));
       const glm::vec2 offset = (cell - 0.5f) * support;
-      const float weight = filter == PixelFilter::Box ? 1.0f : std::exp(-glm::dot(offset, offset) / (2 * sigma * sigma));
+      const float weight =
+          filter == PixelFilter::Box ? 1.0f : std::exp(-glm::dot(offset, offset) / (2 * sigma * sigma));
       out.push_back({offset, weight});
     }
   return out;

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "measure/image.h"
+#include "app/measure/image.h"
 
 namespace shadelab {
 

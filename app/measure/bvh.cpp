@@ -1,4 +1,4 @@
-#include "measure/bvh.h"
+#include "app/measure/bvh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,9 +139,8 @@ void Bvh::buildNode(uint32_t index, uint32_t first, uint32_t count, int leafSize
 
   const float lo = centre.min[bestAxis], extent = centre.max[bestAxis] - lo;
   auto* begin = originalIndex_.data() + first;
-  auto* middle = std::partition(begin, begin + count, [&](uint32_t t) {
-    return binOf(centroids[t][bestAxis], lo, extent) <= bestBin;
-  });
+  auto* middle = std::partition(begin, begin + count,
+                                [&](uint32_t t) { return binOf(centroids[t][bestAxis], lo, extent) <= bestBin; });
   const uint32_t leftCount = uint32_t(middle - begin);
   const uint32_t children = uint32_t(nodes_.size());
   nodes_[index] = {bounds.min, children, bounds.max, 0};
@@ -173,7 +172,8 @@ std::optional<BvhHit> Bvh::closestHit(const glm::vec3& origin, const glm::vec3& 
     }
     // Nearer child last on the stack, so it is visited first; either only while it can beat tMax.
     const uint32_t a = node.first, b = node.first + 1;
-    const float ta = enterBox(nodes_[a], origin, invDir, tMin, tMax), tb = enterBox(nodes_[b], origin, invDir, tMin, tMax);
+    const float ta = enterBox(nodes_[a], origin, invDir, tMin, tMax),
+                tb = enterBox(nodes_[b], origin, invDir, tMin, tMax);
     const bool aFirst = ta <= tb;
     const uint32_t nearer = aFirst ? a : b, farther = aFirst ? b : a;
     const float tNear = aFirst ? ta : tb, tFar = aFirst ? tb : ta;

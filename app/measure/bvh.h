@@ -29,8 +29,8 @@ struct BvhNode {
 };
 
 struct BvhHit {
-  float t = 0.0f;          // distance along the ray in units of |dir|
-  uint32_t triangle = 0;   // index into the triangles as given to build()
+  float t = 0.0f;            // distance along the ray in units of |dir|
+  uint32_t triangle = 0;     // index into the triangles as given to build()
   float u = 0.0f, v = 0.0f;  // barycentric coordinates of the hit (b and c's weights)
 };
 

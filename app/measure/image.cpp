@@ -1,4 +1,4 @@
-#include "measure/image.h"
+#include "app/measure/image.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
-#include "util/output_files.h"
+#include "app/util/output_files.h"
 
 namespace shadelab {
 
@@ -87,7 +87,8 @@ std::string writePng(const std::string& path, const ImageF& image) {
 std::string readImage(const std::string& path, ImageF& image) {
   int w = 0, h = 0, n = 0;
   unsigned char* px = stbi_load(path.c_str(), &w, &h, &n, 4);
-  if (!px) return path + ": cannot read image (" + std::string(stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
+  if (!px)
+    return path + ": cannot read image (" + std::string(stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
   image.size = {w, h};
   image.rgba.resize(size_t(w) * h * 4);
   for (size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = px[i] / 255.0f;

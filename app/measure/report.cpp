@@ -1,16 +1,16 @@
-#include "measure/report.h"
+#include "app/measure/report.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <cstdio>
 #include <map>
 
 #include <stb_image_write.h>
 
-#include "util/format.h"
-#include "util/output_files.h"
+#include "app/util/format.h"
+#include "app/util/output_files.h"
 
 namespace shadelab {
 
@@ -53,7 +53,8 @@ std::string sweepCsv(const SweepReport& r) {
   const auto& first = r.rows.front();
   for (auto& [k, v] : first.params) csv += csvField(k) + ",";
   csv += "truth,";
-  for (size_t i = 0; i < first.values.size(); ++i) csv += csvField(first.values[i].first) + (i + 1 < first.values.size() ? "," : "\n");
+  for (size_t i = 0; i < first.values.size(); ++i)
+    csv += csvField(first.values[i].first) + (i + 1 < first.values.size() ? "," : "\n");
   for (auto& row : r.rows) {
     for (auto& [k, v] : row.params) csv += csvField(v) + ",";
     csv += csvField(row.truth) + ",";
@@ -68,11 +69,11 @@ static bool inTruth(const SweepRow& row, const std::string& truth) { return trut
 std::vector<size_t> paretoFront(const SweepReport& r, const PlotSpec& plot, const std::string& truth) {
   std::vector<size_t> order;
   for (size_t i = 0; i < r.rows.size(); ++i)
-    if (inTruth(r.rows[i], truth) && std::isfinite(r.rows[i].value(plot.error)) && std::isfinite(r.rows[i].value(plot.cost)))
+    if (inTruth(r.rows[i], truth) && std::isfinite(r.rows[i].value(plot.error)) &&
+        std::isfinite(r.rows[i].value(plot.cost)))
       order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return r.rows[a].value(plot.cost) < r.rows[b].value(plot.cost);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return r.rows[a].value(plot.cost) < r.rows[b].value(plot.cost); });
   std::vector<size_t> front;
   double best = INFINITY;
   for (size_t i : order)
@@ -86,11 +87,16 @@ std::vector<size_t> paretoFront(const SweepReport& r, const PlotSpec& plot, cons
 std::string htmlEscape(const std::string& s) {
   std::string o;
   for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
-    else o += c;
+    if (c == '<')
+      o += "&lt;";
+    else if (c == '>')
+      o += "&gt;";
+    else if (c == '&')
+      o += "&amp;";
+    else if (c == '"')
+      o += "&quot;";
+    else
+      o += c;
   }
   return o;
 }
@@ -117,10 +123,12 @@ std::string pngDataUri(const ImageF& img) {
       const float v = img.rgba[i * 4 + size_t(c)];
       rgb[i * 3 + size_t(c)] = (unsigned char)std::lround(std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) * 255 : 255);
     }
-  stbi_write_png_to_func([](void* ctx, void* d, int n) {
+  stbi_write_png_to_func(
+      [](void* ctx, void* d, int n) {
         auto* out = static_cast<std::vector<unsigned char>*>(ctx);
         out->insert(out->end(), static_cast<unsigned char*>(d), static_cast<unsigned char*>(d) + n);
-      }, &png, img.size.x, img.size.y, 3, rgb.data(), img.size.x * 3);
+      },
+      &png, img.size.x, img.size.y, 3, rgb.data(), img.size.x * 3);
   return "data:image/png;base64," + base64(png);
 }
 
@@ -164,7 +172,8 @@ struct Axis {
         if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9)) t.push_back(v);
       }
     std::sort(t.begin(), t.end());
-    if (t.size() > 12) std::erase_if(t, [](double v) { return std::abs(std::log10(v) - std::round(std::log10(v))) > 1e-9; });
+    if (t.size() > 12)
+      std::erase_if(t, [](double v) { return std::abs(std::log10(v) - std::round(std::log10(v))) > 1e-9; });
     return t;
   }
 };
@@ -221,7 +230,8 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
   auto beyond = [&](const SweepRow& row) { return row.value(costKey) > costLimit || row.value(errorKey) > errorLimit; };
   std::vector<double> costs, errors;
   for (auto& row : r.rows) {
-    if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey)) || beyond(row))
+    if (!inTruth(row, truth) || !std::isfinite(row.value(costKey)) || !std::isfinite(row.value(errorKey)) ||
+        beyond(row))
       continue;
     costs.push_back(row.value(costKey));
     errors.push_back(row.value(errorKey));
@@ -242,8 +252,8 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
   s += "<text x='" + formatNumber(L) + "' y='" + formatNumber(T - 6) + "' fill='#555'>" +
        (truth.empty() ? std::string() : "truth: " + htmlEscape(truth) + "; ") +
        "lower is closer to the truth, left is cheaper</text>\n";
-  s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) + "' height='" +
-       formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
+  s += "<rect x='" + formatNumber(L) + "' y='" + formatNumber(T) + "' width='" + formatNumber(W - L - R) +
+       "' height='" + formatNumber(H - T - B) + "' fill='none' stroke='#333'/>\n";
   s += "<text x='" + formatNumber((L + W - R) / 2) + "' y='" + formatNumber(H - 12) + "' text-anchor='middle'>" +
        htmlEscape(costAxisLabel(costKey)) + (ax.log ? ", log scale" : "") + "</text>\n";
   s += "<text transform='translate(16," + formatNumber((T + H - B) / 2) + ") rotate(-90)' text-anchor='middle'>" +
@@ -261,8 +271,9 @@ std::string plot(const SweepReport& r, const PlotSpec& spec, const std::string& 
     const bool out = beyond(row);
     outside += out;
     s += "<circle cx='" + formatNumber(sx(row.value(costKey))) + "' cy='" + formatNumber(sy(row.value(errorKey))) +
-         "' r='5' " + (out ? std::string("fill='white' stroke='") + color + "' stroke-width='2'" :
-                             std::string("fill='") + color + "' fill-opacity='0.8'") +
+         "' r='5' " +
+         (out ? std::string("fill='white' stroke='") + color + "' stroke-width='2'"
+              : std::string("fill='") + color + "' fill-opacity='0.8'") +
          "><title>" + htmlEscape(row.label) + ": " + errorKey + " " + formatNumber(row.value(errorKey)) + ", " +
          costKey + " " + formatNumber(row.value(costKey)) + (out ? " (beyond the frame)" : "") + "</title></circle>\n";
   }
@@ -320,7 +331,8 @@ std::string sweepHtml(const SweepReport& r) {
   }
   h += "</table>\n<h2>Images</h2>\n<div class='imgs'>\n";
   for (auto& [truth, image] : r.referenceThumbnails)
-    h += "<figure><img src='" + pngDataUri(image) + "'><figcaption>truth: " + htmlEscape(truth) + "</figcaption></figure>\n";
+    h += "<figure><img src='" + pngDataUri(image) + "'><figcaption>truth: " + htmlEscape(truth) +
+         "</figcaption></figure>\n";
   for (auto& row : r.rows) {
     std::string caption = htmlEscape(row.label);
     if (!r.plots.empty()) {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "measure/image.h"
+#include "app/measure/image.h"
 
 namespace shadelab {
 
@@ -26,10 +26,10 @@ struct SweepRow {
 
 struct SweepReport {
   std::string title;
-  std::string command;   // the exact command line
-  std::string renderer;  // GL_RENDERER / GL_VERSION
+  std::string command;                                      // the exact command line
+  std::string renderer;                                     // GL_RENDERER / GL_VERSION
   std::vector<std::pair<std::string, std::string>> truths;  // truth -> what it is, in order of appearance
-  std::string costClock;  // how gpu_ms was measured (queries or glFinish wall time)
+  std::string costClock;                                    // how gpu_ms was measured (queries or glFinish wall time)
   std::vector<PlotSpec> plots;
   std::vector<std::pair<std::string, std::string>> metricNotes;  // metric -> what it is divided by
   std::vector<SweepRow> rows;

@@ -1,4 +1,4 @@
-#include "scene/camera.h"
+#include "app/scene/camera.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "util/format.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -61,9 +61,8 @@ void OrbitCamera::zoom(float factor) {
 
 std::string OrbitCamera::toString() const {
   auto f = [](float v) { return formatNumber(v); };
-  return "yaw=" + f(yawDeg) + ",pitch=" + f(pitchDeg) + ",distance=" + f(distance) + ",target=" + f(target.x) +
-         ";" + f(target.y) + ";" + f(target.z) + ",fov=" + f(fovYDeg) + ",near=" + f(nearPlane) +
-         ",far=" + f(farPlane);
+  return "yaw=" + f(yawDeg) + ",pitch=" + f(pitchDeg) + ",distance=" + f(distance) + ",target=" + f(target.x) + ";" +
+         f(target.y) + ";" + f(target.z) + ",fov=" + f(fovYDeg) + ",near=" + f(nearPlane) + ",far=" + f(farPlane);
 }
 
 std::string OrbitCamera::parse(const std::string& text) {
@@ -83,12 +82,18 @@ std::string OrbitCamera::parse(const std::string& text) {
       return true;
     };
     bool ok = true;
-    if (key == "yaw") ok = number(c.yawDeg);
-    else if (key == "pitch") ok = number(c.pitchDeg) && std::abs(c.pitchDeg) < 90.0f;
-    else if (key == "distance") ok = number(c.distance) && c.distance > 0;
-    else if (key == "fov") ok = number(c.fovYDeg) && c.fovYDeg > 1 && c.fovYDeg < 179;
-    else if (key == "near") ok = number(c.nearPlane) && c.nearPlane > 0;
-    else if (key == "far") ok = number(c.farPlane) && c.farPlane > 0;
+    if (key == "yaw")
+      ok = number(c.yawDeg);
+    else if (key == "pitch")
+      ok = number(c.pitchDeg) && std::abs(c.pitchDeg) < 90.0f;
+    else if (key == "distance")
+      ok = number(c.distance) && c.distance > 0;
+    else if (key == "fov")
+      ok = number(c.fovYDeg) && c.fovYDeg > 1 && c.fovYDeg < 179;
+    else if (key == "near")
+      ok = number(c.nearPlane) && c.nearPlane > 0;
+    else if (key == "far")
+      ok = number(c.farPlane) && c.farPlane > 0;
     else if (key == "target") {
       float xyz[3];
       std::stringstream vs(value);

@@ -9,10 +9,10 @@ namespace shadelab {
 
 struct OrbitCamera {
   glm::vec3 target{0.0f};
-  float distance = 4.0f;  // world units from target
-  float yawDeg = 30.0f;   // around +Y, 0 = looking down -Z
-  float pitchDeg = 25.0f; // above the horizon; clamped to (-89, 89)
-  float fovYDeg = 45.0f;  // across the smaller side of the image
+  float distance = 4.0f;   // world units from target
+  float yawDeg = 30.0f;    // around +Y, 0 = looking down -Z
+  float pitchDeg = 25.0f;  // above the horizon; clamped to (-89, 89)
+  float fovYDeg = 45.0f;   // across the smaller side of the image
   float nearPlane = 0.05f;
   float farPlane = 100.0f;
 

@@ -9,16 +9,16 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "scene/loaders.h"
-#include "util/contained_path.h"
+#include "app/scene/loaders.h"
+#include "app/util/contained_path.h"
 
 namespace fs = std::filesystem;
 
 namespace shadelab {
 namespace {
 
-bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                 const unsigned char* bytes, int size, void*) {
+bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                 int size, void*) {
   image->image.assign(bytes, bytes + size);
   image->width = image->height = -1;  // marks "still encoded"
   return true;
@@ -27,13 +27,34 @@ bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, 
 // Reads component `c` of element `i` as float (normalised integers map to [0,1] / [-1,1]).
 float readComponent(const unsigned char* p, int type, bool normalized) {
   switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? *p / 255.0f : float(*p);
-    case TINYGLTF_COMPONENT_TYPE_BYTE: { auto v = float(int8_t(*p)); return normalized ? std::max(v / 127.0f, -1.0f) : v; }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0f : float(v); }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0f, -1.0f) : float(v); }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return float(v); }
-    default: return 0.0f;
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+      float f;
+      std::memcpy(&f, p, 4);
+      return f;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return normalized ? *p / 255.0f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      auto v = float(int8_t(*p));
+      return normalized ? std::max(v / 127.0f, -1.0f) : v;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      uint16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? v / 65535.0f : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      int16_t v;
+      std::memcpy(&v, p, 2);
+      return normalized ? std::max(v / 32767.0f, -1.0f) : float(v);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+      uint32_t v;
+      std::memcpy(&v, p, 4);
+      return float(v);
+    }
+    default:
+      return 0.0f;
   }
 }
 
@@ -52,20 +73,22 @@ std::string readAccessor(const tinygltf::Model& m, int index, int comps, std::ve
   // Every bound checked without overflow: offsets and counts come from the file.
   const size_t bytes = buffer.data.size(), element = size_t(compSize * comps);
   const size_t start = view.byteOffset + acc.byteOffset;
-  const bool fits = view.byteOffset <= bytes && acc.byteOffset <= bytes - view.byteOffset &&
-                    (acc.count == 0 || (element <= bytes - start && (acc.count - 1) <= (bytes - start - element) / size_t(stride)));
+  const bool fits =
+      view.byteOffset <= bytes && acc.byteOffset <= bytes - view.byteOffset &&
+      (acc.count == 0 || (element <= bytes - start && (acc.count - 1) <= (bytes - start - element) / size_t(stride)));
   if (!fits) return "accessor " + std::to_string(index) + " reads past the end of its buffer";
   out.resize(acc.count * size_t(comps));
   for (size_t i = 0; i < acc.count; ++i)
     for (int c = 0; c < comps; ++c)
-      out[i * size_t(comps) + size_t(c)] =
-          readComponent(&buffer.data[start + i * size_t(stride) + size_t(c * compSize)], acc.componentType, acc.normalized);
+      out[i * size_t(comps) + size_t(c)] = readComponent(
+          &buffer.data[start + i * size_t(stride) + size_t(c * compSize)], acc.componentType, acc.normalized);
   return {};
 }
 
 GLenum wrapMode(int w) {
-  return w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE ? GL_CLAMP_TO_EDGE
-         : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? GL_MIRRORED_REPEAT : GL_REPEAT;
+  return w == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? GL_CLAMP_TO_EDGE
+         : w == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? GL_MIRRORED_REPEAT
+                                                      : GL_REPEAT;
 }
 
 glm::mat4 nodeTransform(const tinygltf::Node& n) {
@@ -76,7 +99,8 @@ glm::mat4 nodeTransform(const tinygltf::Node& n) {
   glm::mat4 t(1.0f);
   if (n.translation.size() == 3) t = glm::translate(t, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
   if (n.rotation.size() == 4)
-    t *= glm::mat4_cast(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+    t *= glm::mat4_cast(
+        glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
   if (n.scale.size() == 3) t = glm::scale(t, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
   return t;
 }
@@ -131,7 +155,8 @@ struct Importer {
       // The file's own frames. Its bitangent, cross(N, T) w, points along its +v; we flip v
       // above, so the handedness flips with it.
       if (auto e = readAccessor(model, it->second, 4, f); !e.empty()) return e;
-      for (size_t i = 0; i + 3 < f.size(); i += 4) mesh.sourceTangents.emplace_back(f[i], f[i + 1], f[i + 2], -f[i + 3]);
+      for (size_t i = 0; i + 3 < f.size(); i += 4)
+        mesh.sourceTangents.emplace_back(f[i], f[i + 1], f[i + 2], -f[i + 3]);
     }
     if (prim.indices >= 0) {
       if (auto e = readAccessor(model, prim.indices, 1, f); !e.empty()) return e;
@@ -142,11 +167,13 @@ struct Importer {
     } else {
       for (uint32_t i = 0; i < mesh.positions.size(); ++i) mesh.indices.push_back(i);
     }
-    mesh.material = prim.material >= 0 && size_t(prim.material) < model.materials.size() ? materialBase + prim.material : 0;
+    mesh.material =
+        prim.material >= 0 && size_t(prim.material) < model.materials.size() ? materialBase + prim.material : 0;
     // Checked before anything walks the indices; missing or short normals are then computed.
     const bool ownNormals = mesh.normals.size() == mesh.positions.size();
     if (!ownNormals) mesh.normals.clear();
-    if (!mesh.sourceTangents.empty() && mesh.sourceTangents.size() != mesh.positions.size()) mesh.sourceTangents.clear();
+    if (!mesh.sourceTangents.empty() && mesh.sourceTangents.size() != mesh.positions.size())
+      mesh.sourceTangents.clear();
     if (auto e = validateMesh(mesh); !e.empty()) return e;
     if (!ownNormals) computeNormals(mesh);
     return {};
@@ -220,7 +247,8 @@ std::string loadGltf(const fs::path& file, Scene& scene) {
     mat.name = m.name;
     const auto& pbr = m.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() == 4)
-      mat.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+      mat.baseColor =
+          glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
     mat.metallic = float(pbr.metallicFactor);
     mat.roughness = float(pbr.roughnessFactor);
     mat.baseColorImage = im.image(pbr.baseColorTexture.index);
@@ -246,8 +274,8 @@ std::string loadGltf(const fs::path& file, Scene& scene) {
   if (size_t(sceneIndex) < model.scenes.size()) {
     for (int root : model.scenes[size_t(sceneIndex)].nodes) im.node(root, glm::mat4(1.0f), 0);
     if (im.nodeBudgetSpent())
-      scene.warnings.push_back(file.string() + ": the node graph names more than " + std::to_string(Importer::kMaxNodeVisits) +
-                               " nodes; the rest were left out");
+      scene.warnings.push_back(file.string() + ": the node graph names more than " +
+                               std::to_string(Importer::kMaxNodeVisits) + " nodes; the rest were left out");
   } else {
     for (size_t i = 0; i < scene.meshes.size(); ++i) scene.instances.push_back({int(i), glm::mat4(1.0f)});
   }

@@ -1,4 +1,4 @@
-#include "scene/gpu_mesh.h"
+#include "app/scene/gpu_mesh.h"
 
 #include <algorithm>
 
@@ -28,7 +28,8 @@ GpuMesh GpuMesh::upload(const MeshData& m) {
     offset += sizes[a];
   }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.indices_.get());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(uint32_t)), m.indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(uint32_t)), m.indices.data(),
+               GL_STATIC_DRAW);
   glBindVertexArray(0);
   return g;
 }
@@ -41,8 +42,12 @@ bool GpuMesh::replace(GLuint attribute, const void* data, size_t bytes, size_t c
   return true;
 }
 
-bool GpuMesh::updatePositions(std::span<const glm::vec3> p) { return replace(kPosition, p.data(), p.size_bytes(), p.size()); }
-bool GpuMesh::updateNormals(std::span<const glm::vec3> n) { return replace(kNormal, n.data(), n.size_bytes(), n.size()); }
+bool GpuMesh::updatePositions(std::span<const glm::vec3> p) {
+  return replace(kPosition, p.data(), p.size_bytes(), p.size());
+}
+bool GpuMesh::updateNormals(std::span<const glm::vec3> n) {
+  return replace(kNormal, n.data(), n.size_bytes(), n.size());
+}
 
 bool GpuMesh::setAttribute(GLuint location, int components, std::span<const float> values) {
   if (!vao_ || location < kScalar0 || location > kVector0 || components < 1 || components > 4 ||

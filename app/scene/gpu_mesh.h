@@ -9,16 +9,20 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/handle.h"
-#include "scene/mesh.h"
+#include "app/gl/handle.h"
+#include "app/scene/mesh.h"
 
 namespace shadelab {
 
 // Attribute locations every lab's vertex shaders use.
 enum AttributeLocation : GLuint {
-  kPosition = 0, kNormal = 1, kUv = 2, kTangent = 3,
-  kScalar0 = 4, kScalar1 = 5,  // lab-defined floats (an offset, a seam gap, a UV scale)
-  kVector0 = 6,                // a lab-defined vec4 (a second tangent frame)
+  kPosition = 0,
+  kNormal = 1,
+  kUv = 2,
+  kTangent = 3,
+  kScalar0 = 4,
+  kScalar1 = 5,  // lab-defined floats (an offset, a seam gap, a UV scale)
+  kVector0 = 6,  // a lab-defined vec4 (a second tangent frame)
 };
 
 enum class Primitive {
@@ -57,7 +61,7 @@ class GpuMesh {
 
   gl::VertexArray vao_;
   gl::Buffer vertices_, indices_;
-  gl::Buffer extras_[3];  // kScalar0, kScalar1, kVector0
+  gl::Buffer extras_[3];                                      // kScalar0, kScalar1, kVector0
   size_t offsets_[4] = {kAbsent, kAbsent, kAbsent, kAbsent};  // byte offset of each array
   size_t vertexCount_ = 0;
   GLsizei indexCount_ = 0;

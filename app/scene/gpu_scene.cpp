@@ -1,4 +1,4 @@
-#include "scene/gpu_scene.h"
+#include "app/scene/gpu_scene.h"
 
 #include <algorithm>
 
@@ -9,7 +9,8 @@ std::vector<unsigned char> flipRows(const std::vector<unsigned char>& rgba, glm:
   const size_t stride = size_t(size.x) * size_t(channels);
   std::vector<unsigned char> out(rgba.size());
   for (int y = 0; y < size.y; ++y)
-    std::copy_n(rgba.begin() + ptrdiff_t(size_t(size.y - 1 - y) * stride), stride, out.begin() + ptrdiff_t(size_t(y) * stride));
+    std::copy_n(rgba.begin() + ptrdiff_t(size_t(size.y - 1 - y) * stride), stride,
+                out.begin() + ptrdiff_t(size_t(y) * stride));
   return out;
 }
 
@@ -23,9 +24,11 @@ gl::SamplerState samplerFor(const ImageSource& image, const SceneNeeds& needs) {
   if (o.magFilter) s.magFilter = o.magFilter;
   if (o.wrap) s.wrapS = s.wrapT = o.wrap;
   s.maxAnisotropy = std::max(o.anisotropy, 1.0f);
-  if (!needs.mipmaps) s.minFilter = s.minFilter == GL_NEAREST || s.minFilter == GL_NEAREST_MIPMAP_NEAREST ||
-                                            s.minFilter == GL_NEAREST_MIPMAP_LINEAR
-                                        ? GL_NEAREST : GL_LINEAR;
+  if (!needs.mipmaps)
+    s.minFilter =
+        s.minFilter == GL_NEAREST || s.minFilter == GL_NEAREST_MIPMAP_NEAREST || s.minFilter == GL_NEAREST_MIPMAP_LINEAR
+            ? GL_NEAREST
+            : GL_LINEAR;
   return s;
 }
 
@@ -71,7 +74,8 @@ std::string GpuScene::upload(const Scene& scene, const SceneNeeds& needs, std::v
     gl::SamplerState s = samplerFor(scene.images[size_t(h)], needs);
     const gl::SamplerState asked = s;
     if (needs.mipmaps && (s.minFilter == GL_LINEAR || s.minFilter == GL_NEAREST)) s.minFilter = GL_LINEAR_MIPMAP_LINEAR;
-    heights_[size_t(h)] = gl::Texture2D::fromData(size, GL_R8, GL_RED, GL_UNSIGNED_BYTE, flipRows(red, size, 1).data(), s);
+    heights_[size_t(h)] =
+        gl::Texture2D::fromData(size, GL_R8, GL_RED, GL_UNSIGNED_BYTE, flipRows(red, size, 1).data(), s);
     heights_[size_t(h)].setSampler(asked);
   }
   return {};

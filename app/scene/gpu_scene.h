@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "gl/texture.h"
-#include "scene/gpu_mesh.h"
-#include "scene/scene.h"
+#include "app/gl/texture.h"
+#include "app/scene/gpu_mesh.h"
+#include "app/scene/scene.h"
 
 namespace shadelab {
 
@@ -26,13 +26,15 @@ class GpuScene {
   const gl::Texture2D* normalTexture(const Material& m) const { return texture(m.normalImage); }
   const gl::Texture2D* heightTexture(const Material& m) const {
     return m.heightImage >= 0 && size_t(m.heightImage) < heights_.size() && heights_[size_t(m.heightImage)]
-               ? &heights_[size_t(m.heightImage)] : nullptr;
+               ? &heights_[size_t(m.heightImage)]
+               : nullptr;
   }
   int texturesUploaded() const;
 
  private:
   const gl::Texture2D* texture(int image) const {
-    return image >= 0 && size_t(image) < textures_.size() && textures_[size_t(image)] ? &textures_[size_t(image)] : nullptr;
+    return image >= 0 && size_t(image) < textures_.size() && textures_[size_t(image)] ? &textures_[size_t(image)]
+                                                                                      : nullptr;
   }
   std::vector<GpuMesh> meshes_;
   std::vector<gl::Texture2D> textures_;  // by Scene::images index; empty when not needed

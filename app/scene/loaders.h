@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "scene/scene.h"
+#include "app/scene/scene.h"
 
 namespace shadelab {
 

@@ -1,6 +1,6 @@
-#include "scene/mesh.h"
+#include "app/scene/mesh.h"
 
-#include "scene/mesh_topology.h"
+#include "app/scene/mesh_topology.h"
 
 #include <algorithm>
 #include <cmath>

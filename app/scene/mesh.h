@@ -17,20 +17,18 @@ struct Bounds {
   bool empty() const { return min.x > max.x; }
   glm::vec3 center() const { return empty() ? glm::vec3(0) : (min + max) * 0.5f; }
   // Corner c of the eight: bit 0 picks max.x, bit 1 max.y, bit 2 max.z.
-  glm::vec3 corner(int c) const {
-    return {(c & 1) ? max.x : min.x, (c & 2) ? max.y : min.y, (c & 4) ? max.z : min.z};
-  }
+  glm::vec3 corner(int c) const { return {(c & 1) ? max.x : min.x, (c & 2) ? max.y : min.y, (c & 4) ? max.z : min.z}; }
   float radius() const { return empty() ? 1.0f : glm::length(max - min) * 0.5f; }
 };
 
 struct MeshData {
   std::string name;
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;   // empty until present or computed
-  std::vector<glm::vec2> uvs;       // empty when the source has none
-  std::vector<glm::vec4> tangents;  // xyz tangent, w = handedness; built only on request
+  std::vector<glm::vec3> normals;         // empty until present or computed
+  std::vector<glm::vec2> uvs;             // empty when the source has none
+  std::vector<glm::vec4> tangents;        // xyz tangent, w = handedness; built only on request
   std::vector<glm::vec4> sourceTangents;  // the file's own (glTF TANGENT), in our UV convention, or empty
-  std::vector<uint32_t> indices;    // triangles
+  std::vector<uint32_t> indices;          // triangles
   // The vertex of the file each vertex came from, where loading split or reordered them (OBJ
   // indexes positions, UVs and normals apart); empty: vertex i is the file's vertex i. Pairs two
   // files' vertices (a noisy scan and its clean mesh) by the order the files list them.
@@ -54,8 +52,8 @@ void computeNormals(MeshData& mesh);
 // keeps its own frame. Zero-area UV triangles give no direction; a vertex left with none gets any
 // unit vector perpendicular to its normal. Vertices are assumed split at UV seams already.
 struct TangentReport {
-  int fallbacks = 0;         // vertices given an arbitrary perpendicular (degenerate UVs)
-  int mirrorSplits = 0;      // vertices duplicated where mirrored UVs meet
+  int fallbacks = 0;     // vertices given an arbitrary perpendicular (degenerate UVs)
+  int mirrorSplits = 0;  // vertices duplicated where mirrored UVs meet
   int degenerateUvTriangles = 0;
 };
 TangentReport computeTangents(MeshData& mesh);

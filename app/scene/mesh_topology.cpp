@@ -1,4 +1,4 @@
-#include "scene/mesh_topology.h"
+#include "app/scene/mesh_topology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,7 +99,8 @@ Adjacency buildAdjacency(size_t vertexCount, std::span<const uint32_t> indices) 
 std::vector<glm::vec3> faceNormals(std::span<const glm::vec3> p, std::span<const uint32_t> indices) {
   std::vector<glm::vec3> n(indices.size() / 3);
   for (size_t f = 0; f < n.size(); ++f) {
-    const glm::vec3 c = glm::cross(p[indices[3 * f + 1]] - p[indices[3 * f]], p[indices[3 * f + 2]] - p[indices[3 * f]]);
+    const glm::vec3 c =
+        glm::cross(p[indices[3 * f + 1]] - p[indices[3 * f]], p[indices[3 * f + 2]] - p[indices[3 * f]]);
     const float len = glm::length(c);
     n[f] = len > 0.0f && std::isfinite(len) ? c / len : glm::vec3(0.0f);
   }

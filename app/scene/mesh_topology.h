@@ -16,7 +16,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/mesh.h"
+#include "app/scene/mesh.h"
 
 namespace shadelab {
 

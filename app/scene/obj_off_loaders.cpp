@@ -5,8 +5,8 @@
 
 #include <tiny_obj_loader.h>
 
-#include "scene/loaders.h"
-#include "util/contained_path.h"
+#include "app/scene/loaders.h"
+#include "app/util/contained_path.h"
 
 namespace fs = std::filesystem;
 
@@ -113,8 +113,10 @@ std::string loadObj(const fs::path& file, Scene& scene) {
     if (!m.bump_texname.empty()) {
       const int bump = add(m.bump_texname);
       const bool height = !m.normal_texname.empty() || isGreyImage(scene.images[size_t(bump)]);
-      if (height && mat.heightImage < 0) mat.heightImage = bump;
-      else if (!height) mat.normalImage = bump;
+      if (height && mat.heightImage < 0)
+        mat.heightImage = bump;
+      else if (!height)
+        mat.normalImage = bump;
     }
     scene.materials.push_back(mat);
   }
@@ -135,7 +137,8 @@ std::string loadObj(const fs::path& file, Scene& scene) {
     // tinyobjloader warns about indices past the data but hands them over: check every one, and
     // skip the triangles that have any (they would read past the arrays).
     auto valid = [&](const tinyobj::index_t& i) {
-      return i.vertex_index >= 0 && i.vertex_index < vertices && i.normal_index < normals && i.texcoord_index < texcoords;
+      return i.vertex_index >= 0 && i.vertex_index < vertices && i.normal_index < normals &&
+             i.texcoord_index < texcoords;
     };
     const auto& indices = shape.mesh.indices;
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -145,8 +148,8 @@ std::string loadObj(const fs::path& file, Scene& scene) {
       }
       for (size_t k = t; k < t + 3; ++k) {
         const tinyobj::index_t& idx = indices[k];
-        const auto key = std::make_tuple(idx.vertex_index, hasNormals ? idx.normal_index : -1,
-                                         hasUvs ? idx.texcoord_index : -1);
+        const auto key =
+            std::make_tuple(idx.vertex_index, hasNormals ? idx.normal_index : -1, hasUvs ? idx.texcoord_index : -1);
         auto [it, added] = remap.emplace(key, uint32_t(mesh.positions.size()));
         if (added) {
           const float* p = &attrib.vertices[size_t(3 * idx.vertex_index)];
@@ -215,11 +218,13 @@ std::string loadOff(const fs::path& file, Scene& scene) {
     std::istringstream face;
     int n = 0;
     if (nextLine(line)) face.str(line);
-    if (!(face >> n) || n < 3 || n > 65536) return file.string() + ": face " + std::to_string(i) + " is missing or malformed";
+    if (!(face >> n) || n < 3 || n > 65536)
+      return file.string() + ": face " + std::to_string(i) + " is missing or malformed";
     std::vector<uint32_t> poly(static_cast<size_t>(n));
     for (auto& idx : poly)
       if (!(face >> idx)) return file.string() + ": face " + std::to_string(i) + " has too few indices";
-    for (int k = 1; k + 1 < n; ++k) mesh.indices.insert(mesh.indices.end(), {poly[0], poly[size_t(k)], poly[size_t(k) + 1]});
+    for (int k = 1; k + 1 < n; ++k)
+      mesh.indices.insert(mesh.indices.end(), {poly[0], poly[size_t(k)], poly[size_t(k) + 1]});
   }
   if (auto err = validateMesh(mesh); !err.empty()) return file.string() + ": " + err;
   computeNormals(mesh);
@@ -233,11 +238,16 @@ std::string loadSceneFile(const fs::path& file, Scene& scene) {
   for (auto& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   scene.name = file.filename().string();
   std::string err;
-  if (ext == ".gltf" || ext == ".glb") err = loadGltf(file, scene);
-  else if (ext == ".obj") err = loadObj(file, scene);
-  else if (ext == ".off") err = loadOff(file, scene);
-  else if (ext == ".ply") err = loadPly(file, scene);
-  else return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off, .ply)";
+  if (ext == ".gltf" || ext == ".glb")
+    err = loadGltf(file, scene);
+  else if (ext == ".obj")
+    err = loadObj(file, scene);
+  else if (ext == ".off")
+    err = loadOff(file, scene);
+  else if (ext == ".ply")
+    err = loadPly(file, scene);
+  else
+    return file.string() + ": unknown scene file type '" + ext + "' (valid: .gltf, .glb, .obj, .off, .ply)";
   if (!err.empty()) return err;
   // A loader may skip what it cannot use (faces indexing past the vertices): nothing left is an
   // error, not an empty frame.

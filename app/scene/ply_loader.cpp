@@ -4,13 +4,13 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <limits>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
-#include "scene/loaders.h"
+#include "app/scene/loaders.h"
 
 namespace fs = std::filesystem;
 
@@ -53,14 +53,35 @@ bool readScalar(std::istream& in, Format f, const std::string& t, double& out) {
   if (!in.read(reinterpret_cast<char*>(b), std::streamsize(n))) return false;
   if ((f == Format::Big) != (std::endian::native == std::endian::big))
     for (size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
-  if (t == "char" || t == "int8") out = double(int8_t(b[0]));
-  else if (t == "uchar" || t == "uint8") out = double(b[0]);
-  else if (t == "short" || t == "int16") { int16_t v; std::memcpy(&v, b, 2); out = v; }
-  else if (t == "ushort" || t == "uint16") { uint16_t v; std::memcpy(&v, b, 2); out = v; }
-  else if (t == "int" || t == "int32") { int32_t v; std::memcpy(&v, b, 4); out = v; }
-  else if (t == "uint" || t == "uint32") { uint32_t v; std::memcpy(&v, b, 4); out = v; }
-  else if (t == "float" || t == "float32") { float v; std::memcpy(&v, b, 4); out = v; }
-  else { double v; std::memcpy(&v, b, 8); out = v; }
+  if (t == "char" || t == "int8")
+    out = double(int8_t(b[0]));
+  else if (t == "uchar" || t == "uint8")
+    out = double(b[0]);
+  else if (t == "short" || t == "int16") {
+    int16_t v;
+    std::memcpy(&v, b, 2);
+    out = v;
+  } else if (t == "ushort" || t == "uint16") {
+    uint16_t v;
+    std::memcpy(&v, b, 2);
+    out = v;
+  } else if (t == "int" || t == "int32") {
+    int32_t v;
+    std::memcpy(&v, b, 4);
+    out = v;
+  } else if (t == "uint" || t == "uint32") {
+    uint32_t v;
+    std::memcpy(&v, b, 4);
+    out = v;
+  } else if (t == "float" || t == "float32") {
+    float v;
+    std::memcpy(&v, b, 4);
+    out = v;
+  } else {
+    double v;
+    std::memcpy(&v, b, 8);
+    out = v;
+  }
   return true;
 }
 
@@ -69,9 +90,9 @@ bool readScalar(std::istream& in, Format f, const std::string& t, double& out) {
 float toFloat(double v) {
   constexpr double kMax = 3.4028234663852886e38;
   return std::isnan(v) ? std::numeric_limits<float>::quiet_NaN()
-         : v > kMax   ? std::numeric_limits<float>::infinity()
-         : v < -kMax  ? -std::numeric_limits<float>::infinity()
-                      : float(v);
+         : v > kMax    ? std::numeric_limits<float>::infinity()
+         : v < -kMax   ? -std::numeric_limits<float>::infinity()
+                       : float(v);
 }
 
 }  // namespace
@@ -81,7 +102,8 @@ std::string loadPly(const fs::path& file, Scene& scene) {
   if (!in) return file.string() + ": no such file";
   const std::string where = file.string() + ": ";
   std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return where + "not a PLY file (the first line must be ply)";
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
+    return where + "not a PLY file (the first line must be ply)";
   Format format = Format::Ascii;
   std::vector<Element> elements;
   bool sawFormat = false;
@@ -95,10 +117,14 @@ std::string loadPly(const fs::path& file, Scene& scene) {
     if (word == "format") {
       std::string name;
       words >> name;
-      if (name == "ascii") format = Format::Ascii;
-      else if (name == "binary_little_endian") format = Format::Little;
-      else if (name == "binary_big_endian") format = Format::Big;
-      else return where + "unknown format '" + name + "' (valid: ascii, binary_little_endian, binary_big_endian)";
+      if (name == "ascii")
+        format = Format::Ascii;
+      else if (name == "binary_little_endian")
+        format = Format::Little;
+      else if (name == "binary_big_endian")
+        format = Format::Big;
+      else
+        return where + "unknown format '" + name + "' (valid: ascii, binary_little_endian, binary_big_endian)";
       sawFormat = true;
     } else if (word == "element") {
       Element e;
@@ -140,7 +166,8 @@ std::string loadPly(const fs::path& file, Scene& scene) {
       for (auto& prop : e.properties) {
         if (prop.list) {
           double count = 0;
-          if (!readScalar(in, format, prop.countType, count) || !(count >= 0 && count <= 65536) || count != std::floor(count))
+          if (!readScalar(in, format, prop.countType, count) || !(count >= 0 && count <= 65536) ||
+              count != std::floor(count))
             return where + e.name + " " + std::to_string(i) + " is missing or malformed";
           std::vector<uint32_t> poly(static_cast<size_t>(count));
           for (auto& index : poly) {
@@ -152,22 +179,32 @@ std::string loadPly(const fs::path& file, Scene& scene) {
           const bool isIndices = prop.name == "vertex_indices" || prop.name == "vertex_index";
           if (faces && isIndices) {
             if (poly.size() < 3) return where + "face " + std::to_string(i) + " has too few indices";
-            for (size_t k = 1; k + 1 < poly.size(); ++k) mesh.indices.insert(mesh.indices.end(), {poly[0], poly[k], poly[k + 1]});
+            for (size_t k = 1; k + 1 < poly.size(); ++k)
+              mesh.indices.insert(mesh.indices.end(), {poly[0], poly[k], poly[k + 1]});
           }
           continue;
         }
         double v = 0;
-        if (!readScalar(in, format, prop.type, v)) return where + e.name + " " + std::to_string(i) + " is missing or malformed";
+        if (!readScalar(in, format, prop.type, v))
+          return where + e.name + " " + std::to_string(i) + " is missing or malformed";
         if (!vertices) continue;
         const std::string& name = prop.name;
-        if (name == "x") p.x = toFloat(v);
-        else if (name == "y") p.y = toFloat(v);
-        else if (name == "z") p.z = toFloat(v);
-        else if (name == "nx") n.x = toFloat(v);
-        else if (name == "ny") n.y = toFloat(v);
-        else if (name == "nz") n.z = toFloat(v);
-        else if (name == "s" || name == "u" || name == "texture_u") uv.x = toFloat(v);
-        else if (name == "t" || name == "v" || name == "texture_v") uv.y = toFloat(v);
+        if (name == "x")
+          p.x = toFloat(v);
+        else if (name == "y")
+          p.y = toFloat(v);
+        else if (name == "z")
+          p.z = toFloat(v);
+        else if (name == "nx")
+          n.x = toFloat(v);
+        else if (name == "ny")
+          n.y = toFloat(v);
+        else if (name == "nz")
+          n.z = toFloat(v);
+        else if (name == "s" || name == "u" || name == "texture_u")
+          uv.x = toFloat(v);
+        else if (name == "t" || name == "v" || name == "texture_v")
+          uv.y = toFloat(v);
       }
       if (vertices) {
         mesh.positions.push_back(p);

@@ -1,4 +1,4 @@
-#include "scene/procedural.h"
+#include "app/scene/procedural.h"
 
 #include <algorithm>
 #include <cmath>

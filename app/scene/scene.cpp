@@ -1,4 +1,4 @@
-#include "scene/scene.h"
+#include "app/scene/scene.h"
 
 #include <algorithm>
 

@@ -8,8 +8,8 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/texture.h"
-#include "scene/mesh.h"
+#include "app/gl/texture.h"
+#include "app/scene/mesh.h"
 
 namespace shadelab {
 
@@ -29,11 +29,11 @@ struct TextureSampling {
 enum class HeightConvention { AsLoaded, Height, Depth };
 
 struct SceneNeeds {
-  bool uvs = false;               // texture coordinates (else dropped before upload)
-  bool tangents = false;          // only a normal map needs them
-  bool baseColorTextures = false; // decode and upload base-colour images (sRGB)
-  bool normalTextures = false;    // decode and upload normal-map images (linear)
-  bool heightTextures = false;    // decode and upload height maps (one channel, linear; depth maps inverted)
+  bool uvs = false;                // texture coordinates (else dropped before upload)
+  bool tangents = false;           // only a normal map needs them
+  bool baseColorTextures = false;  // decode and upload base-colour images (sRGB)
+  bool normalTextures = false;     // decode and upload normal-map images (linear)
+  bool heightTextures = false;     // decode and upload height maps (one channel, linear; depth maps inverted)
   HeightConvention heightConvention = HeightConvention::AsLoaded;
   bool normalMapsAsSrgb = false;  // decode normal maps as sRGB instead: a mistake a lab can show
   bool mipmaps = true;            // build a mip chain for every texture uploaded
@@ -52,11 +52,11 @@ struct SceneNeeds {
 
 // An image referenced by a material; decoded only on demand.
 struct ImageSource {
-  std::string name;                 // for messages
-  std::filesystem::path file;       // on disk, or
-  std::vector<unsigned char> bytes; // encoded (PNG/JPEG) bytes embedded in a glTF, or
-  std::vector<unsigned char> rgba;  // already decoded (procedural), rows top-down
-  glm::ivec2 size{0};               // of `rgba`
+  std::string name;                  // for messages
+  std::filesystem::path file;        // on disk, or
+  std::vector<unsigned char> bytes;  // encoded (PNG/JPEG) bytes embedded in a glTF, or
+  std::vector<unsigned char> rgba;   // already decoded (procedural), rows top-down
+  glm::ivec2 size{0};                // of `rgba`
   gl::SamplerState sampler;
 };
 
@@ -65,11 +65,11 @@ struct Material {
   glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};
   float metallic = 0.0f;
   float roughness = 0.5f;
-  int baseColorImage = -1;  // index into Scene::images
-  int normalImage = -1;      // tangent space, +Y up the image as displayed (OpenGL convention), unless:
+  int baseColorImage = -1;       // index into Scene::images
+  int normalImage = -1;          // tangent space, +Y up the image as displayed (OpenGL convention), unless:
   bool normalGreenDown = false;  // the map's green points down the image (DirectX, Y-): inverted on upload
   int metallicRoughnessImage = -1;
-  int heightImage = -1;      // a height field (white = high); its red channel is used
+  int heightImage = -1;        // a height field (white = high); its red channel is used
   bool heightIsDepth = false;  // the image stores depth (white = deep): height = 1 - value
 };
 
@@ -85,16 +85,16 @@ struct Scene {
   std::vector<ImageSource> images;
   std::vector<Instance> instances;
   std::vector<std::string> warnings;  // shown in the UI, printed by the CLI
-  std::string suggestedCamera;         // OrbitCamera::parse text applied after framing, or ""
-  glm::vec3 suggestedLight{0.0f};      // a point the scene's key light shines from, towards the origin; 0: none
+  std::string suggestedCamera;        // OrbitCamera::parse text applied after framing, or ""
+  glm::vec3 suggestedLight{0.0f};     // a point the scene's key light shines from, towards the origin; 0: none
   // "lab.key=value" settings the scene is best shown with (the learnopengl scene's cascades): the
   // host applies the current lab's when the scene is picked and counts them as its defaults there.
   std::vector<std::string> suggestedSettings;
-  int revision = 0;                    // set by the host on every build: caches keyed on it go stale
+  int revision = 0;  // set by the host on every build: caches keyed on it go stale
 
   Bounds bounds;  // world-space bounds of all instances, kept by the host (computeBounds) after each build
-  std::vector<Bounds> instanceBounds;  // each instance's world box, kept beside `bounds`
-  Bounds computeBounds() const;  // walks every vertex: call once per build, not per frame
+  std::vector<Bounds> instanceBounds;       // each instance's world box, kept beside `bounds`
+  Bounds computeBounds() const;             // walks every vertex: call once per build, not per frame
   Bounds boundsOfInstance(size_t i) const;  // its mesh's box through its model matrix
   // Instance indices, nearest box centre (instanceBounds) to `eye` first. Opaque passes draw in this order so that
   // the depth test turns hidden fragments away before they are shaded: a floor drawn after the

@@ -1,4 +1,4 @@
-#include "scene/scene_catalog.h"
+#include "app/scene/scene_catalog.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -6,9 +6,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/camera.h"
-#include "scene/loaders.h"
-#include "scene/procedural.h"
+#include "app/scene/camera.h"
+#include "app/scene/loaders.h"
+#include "app/scene/procedural.h"
 
 namespace fs = std::filesystem;
 
@@ -67,8 +67,7 @@ const std::vector<Builder>& builders() {
        [](Scene& s, int seg) {
          add(s, makePlane(12.0f, 1, 6.0f), glm::mat4(1.0f), addMaterial(s, "ground", {0.75f, 0.75f, 0.7f}));
          const int stone = addMaterial(s, "stone", {0.7f, 0.65f, 0.55f});
-         for (int i = 0; i < 4; ++i)
-           add(s, makeBox({0.25f, 1.25f, 0.25f}), at(-3.0f + 2.0f * i, 1.25f, -2.5f), stone);
+         for (int i = 0; i < 4; ++i) add(s, makeBox({0.25f, 1.25f, 0.25f}), at(-3.0f + 2.0f * i, 1.25f, -2.5f), stone);
          add(s, makeTorus(0.8f, 0.25f, seg), glm::rotate(at(1.2f, 0.9f, 0.8f), 1.0f, {1, 0, 0}),
              addMaterial(s, "blue", {0.25f, 0.4f, 0.85f}));
          add(s, makeUvSphere(0.7f, seg), at(-1.3f, 0.7f, 0.9f), addMaterial(s, "red", {0.8f, 0.25f, 0.2f}));
@@ -91,9 +90,11 @@ struct DataScene {
   const char* camera;  // yaw and pitch of a view that shows its front, or ""
 };
 const DataScene kDataScenes[] = {
-    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)", false, "yaw=150,pitch=15"},
+    {"spot", "meshes/spot_pytorch3d/cow.obj", "Keenan Crane's Spot cow, textured (shared data)", false,
+     "yaw=150,pitch=15"},
     {"teapot", "meshes/teapot_pytorch3d/teapot.obj", "the Utah teapot (shared data)", false, ""},
-    {"spot-on-plane", "meshes/spot_pytorch3d/cow.obj", "Spot standing on a floor (shared data)", true, "yaw=150,pitch=22"},
+    {"spot-on-plane", "meshes/spot_pytorch3d/cow.obj", "Spot standing on a floor (shared data)", true,
+     "yaw=150,pitch=22"},
     {"teapot-on-plane", "meshes/teapot_pytorch3d/teapot.obj", "the teapot on a floor (shared data)", true, ""},
 };
 

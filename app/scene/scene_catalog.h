@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
+#include "app/scene/scene.h"
 
 namespace shadelab {
 

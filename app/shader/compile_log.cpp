@@ -1,11 +1,11 @@
-#include "shader/compile_log.h"
+#include "app/shader/compile_log.h"
 
 #include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
-#include "shader/preprocessor.h"
+#include "app/shader/preprocessor.h"
 
 namespace shadelab {
 

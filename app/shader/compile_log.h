@@ -18,7 +18,7 @@ struct Diagnostic {
   int column = 0;    // 1-based; 0 = unknown
   bool isError = true;
   std::string message;
-  std::string raw;   // the driver's line as it was
+  std::string raw;         // the driver's line as it was
   std::string sourceLine;  // the offending line of the real file, when known
 
   // "shaders/shading/shade.frag:12:5: error: message"

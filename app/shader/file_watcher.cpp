@@ -1,5 +1,5 @@
 // What both watchers share (file_watcher_desktop.cpp: inotify; file_watcher_web.cpp: polled stamps).
-#include "shader/file_watcher.h"
+#include "app/shader/file_watcher.h"
 
 namespace shadelab {
 

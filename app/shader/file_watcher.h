@@ -38,9 +38,9 @@ class FileWatcher {
   bool addWatch(const std::filesystem::path& dir);
   // The pending files whose last change is older than the debounce interval, taken off the list.
   std::vector<std::filesystem::path> takeSettled(std::chrono::steady_clock::time_point now);
-  std::map<int, std::filesystem::path> dirs_;           // inotify wd -> directory
-  std::set<std::filesystem::path> missing_;             // directories of watched files, not there yet
-  std::set<std::filesystem::path> files_;               // what we report on
+  std::map<int, std::filesystem::path> dirs_;  // inotify wd -> directory
+  std::set<std::filesystem::path> missing_;    // directories of watched files, not there yet
+  std::set<std::filesystem::path> files_;      // what we report on
   std::map<std::filesystem::path, std::chrono::steady_clock::time_point> pending_;
   std::map<std::filesystem::path, std::pair<std::filesystem::file_time_type, uintmax_t>> stamps_;  // polled (web)
 };

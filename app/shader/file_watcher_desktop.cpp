@@ -1,4 +1,4 @@
-#include "shader/file_watcher.h"
+#include "app/shader/file_watcher.h"
 
 #include <sys/inotify.h>
 #include <unistd.h>
@@ -19,7 +19,8 @@ FileWatcher::~FileWatcher() {
 bool FileWatcher::addWatch(const fs::path& dir) {
   for (auto& [wd, d] : dirs_)
     if (d == dir) return true;
-  const int wd = inotify_add_watch(fd_, dir.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE | IN_MOVED_FROM);
+  const int wd =
+      inotify_add_watch(fd_, dir.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_DELETE | IN_MOVED_FROM);
   if (wd < 0) return false;
   dirs_[wd] = dir;
   return true;

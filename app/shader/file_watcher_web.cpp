@@ -1,4 +1,4 @@
-#include "shader/file_watcher.h"
+#include "app/shader/file_watcher.h"
 
 namespace fs = std::filesystem;
 

@@ -1,12 +1,12 @@
-#include "shader/preprocessor.h"
+#include "app/shader/preprocessor.h"
 
 #include <atomic>
 #include <cctype>
 #include <cstdio>
 #include <regex>
 
-#include "util/contained_path.h"
-#include "util/read_file.h"
+#include "app/util/contained_path.h"
+#include "app/util/read_file.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -39,7 +39,8 @@ ShaderSearchPath::Lookup ShaderSearchPath::find(const std::string& relPath) cons
   for (auto& root : roots_) {
     const fs::path candidate = root / name;
     if (!fs::is_regular_file(candidate, ec)) continue;
-    if (!realPathInside(root, candidate)) return {{}, std::string(kSandboxRule) + " (a link leads out of " + root.string() + ")"};
+    if (!realPathInside(root, candidate))
+      return {{}, std::string(kSandboxRule) + " (a link leads out of " + root.string() + ")"};
     return {candidate, {}};
   }
   return {};
@@ -68,8 +69,10 @@ constexpr uintmax_t kMaxShaderFileBytes = uintmax_t(1) << 20;
 std::string readShaderFile(const fs::path& file, std::string& text) {
   std::error_code ec;
   uintmax_t bytes = fs::file_size(file, ec);
-  if (!ec && bytes <= kMaxShaderFileBytes && readWholeFile(file, text)) bytes = text.size();  // it may have grown since
-  else if (ec || bytes <= kMaxShaderFileBytes) return "cannot be read";
+  if (!ec && bytes <= kMaxShaderFileBytes && readWholeFile(file, text))
+    bytes = text.size();  // it may have grown since
+  else if (ec || bytes <= kMaxShaderFileBytes)
+    return "cannot be read";
   if (bytes <= kMaxShaderFileBytes) return {};
   text.clear();
   char s[96];
@@ -83,8 +86,8 @@ void fail(PreprocessedSource& out, std::string file, int line, int column, std::
   out.errorLine = line;
   out.errorColumn = column;
   out.errorMessage = std::move(message);
-  out.error = out.errorFile + (line > 0 ? ":" + std::to_string(line) : "") + (column > 0 ? ":" + std::to_string(column) : "") +
-              ": error: " + out.errorMessage;
+  out.error = out.errorFile + (line > 0 ? ":" + std::to_string(line) : "") +
+              (column > 0 ? ":" + std::to_string(column) : "") + ": error: " + out.errorMessage;
 }
 
 struct Expander {
@@ -96,7 +99,7 @@ struct Expander {
   // from the search roots ("common/lighting.glsl"). A name that leaves the folders from both
   // places stays as written, and find() refuses it.
   struct Resolved {
-    std::string rel;                // the name as the search path knows it
+    std::string rel;                 // the name as the search path knows it
     ShaderSearchPath::Lookup found;  // what serves it, or why it may not be read
   };
   Resolved resolveInclude(const std::string& from, const std::string& name) const {
@@ -155,7 +158,8 @@ struct Expander {
           return false;
         }
         if (auto why = readShaderFile(file, incText); !why.empty()) {
-          fail(out, out.files[fileIndex].string(), lineNo, nameColumn, "#include \"" + target + "\": " + file.string() + " " + why);
+          fail(out, out.files[fileIndex].string(), lineNo, nameColumn,
+               "#include \"" + target + "\": " + file.string() + " " + why);
           return false;
         }
         const int k = int(out.files.size());
@@ -193,7 +197,8 @@ std::string versionPreamble(const std::string& fileVersionLine, GlslDialect dial
 std::string flattenInterfaceBlocks(const std::string& source) {
   static const std::regex open(R"(^\s*(in|out)\s+([A-Za-z_]\w*)\s*\{\s*(//.*)?$)");
   static const std::regex close(R"(^\s*\}\s*([A-Za-z_]\w*)\s*(\[\s*\d*\s*\])?\s*;.*$)");
-  static const std::regex member(R"(^(\s*)((?:[A-Za-z_]\w*\s+)*?)([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*(\[[^\]]*\])?\s*;(.*)$)");
+  static const std::regex member(
+      R"(^(\s*)((?:[A-Za-z_]\w*\s+)*?)([A-Za-z_]\w*)\s+([A-Za-z_]\w*)\s*(\[[^\]]*\])?\s*;(.*)$)");
   std::vector<std::string> lines;
   {
     std::istringstream in(source);
@@ -222,7 +227,8 @@ std::string flattenInterfaceBlocks(const std::string& source) {
       const std::string& line = lines[k];
       const size_t first = line.find_first_not_of(" \t");
       if (first == std::string::npos || line[first] == '#' || line.compare(first, 2, "//") == 0) continue;
-      if (matches(line, v, open)) lines[k] = "";  // another head for the same members (#ifdef ... #else)
+      if (matches(line, v, open))
+        lines[k] = "";  // another head for the same members (#ifdef ... #else)
       else if (matches(line, v, member))
         lines[k] = std::string(v[1]) + std::string(v[2]) + storage + " " + std::string(v[3]) + " io_" +
                    std::string(v[4]) + std::string(v[5]) + ";" + std::string(v[6]);
@@ -248,8 +254,7 @@ std::string flattenInterfaceBlocks(const std::string& source) {
   return out;
 }
 
-PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
-                                    const Defines& defines) {
+PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath, const Defines& defines) {
   PreprocessedSource out;
   const ShaderSearchPath::Lookup found = path.find(relPath);
   const fs::path file = found.file;
@@ -281,8 +286,10 @@ PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::str
   for (auto& [name, value] : defines) out.text += "#define " + name + " " + value + "\n";
   out.text += "#line 1 0\n";
   Expander ex{path, out, {relPath}};
-  if (!ex.expand(relPath, text, 0, true)) out.text.clear();
-  else if (glslDialect() == GlslDialect::Es300) out.text = flattenInterfaceBlocks(out.text);
+  if (!ex.expand(relPath, text, 0, true))
+    out.text.clear();
+  else if (glslDialect() == GlslDialect::Es300)
+    out.text = flattenInterfaceBlocks(out.text);
   return out;
 }
 

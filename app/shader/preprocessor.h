@@ -92,7 +92,6 @@ std::string versionPreamble(const std::string& fileVersionLine, GlslDialect dial
 // heads and the closing line are left empty) and preprocessor lines inside the block stay.
 std::string flattenInterfaceBlocks(const std::string& source);
 
-PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath,
-                                    const Defines& defines);
+PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath, const Defines& defines);
 
 }  // namespace shadelab

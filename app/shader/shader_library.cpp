@@ -1,4 +1,4 @@
-#include "shader/shader_library.h"
+#include "app/shader/shader_library.h"
 
 #include <algorithm>
 #include <cctype>
@@ -36,14 +36,15 @@ std::string infoLog(GLuint object, bool isProgram) {
   GLint len = 0;
   isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &len);
   std::string log(size_t(std::max(len, 1)), '\0');
-  isProgram ? glGetProgramInfoLog(object, len, nullptr, log.data()) : glGetShaderInfoLog(object, len, nullptr, log.data());
+  isProgram ? glGetProgramInfoLog(object, len, nullptr, log.data())
+            : glGetShaderInfoLog(object, len, nullptr, log.data());
   log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
   return log;
 }
 
 // Compiles and links; on failure returns an empty name and fills `log`.
-gl::ProgramName buildProgram(const std::vector<std::pair<GLenum, std::string>>& sources,
-                             std::vector<std::string>& logs, int& failedStage) {
+gl::ProgramName buildProgram(const std::vector<std::pair<GLenum, std::string>>& sources, std::vector<std::string>& logs,
+                             int& failedStage) {
   gl::ProgramName program = gl::ProgramName::make();
   std::vector<gl::ShaderName> shaders;
   failedStage = -1;
@@ -85,13 +86,20 @@ size_t distinctProgramsLinked() { return linkedSources().size(); }
 
 const char* stageName(GLenum type) {
   switch (type) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_GEOMETRY_SHADER: return "geometry";
-    case GL_TESS_CONTROL_SHADER: return "tessellation control";
-    case GL_TESS_EVALUATION_SHADER: return "tessellation evaluation";
-    case GL_COMPUTE_SHADER: return "compute";
-    default: return "unknown";
+    case GL_VERTEX_SHADER:
+      return "vertex";
+    case GL_FRAGMENT_SHADER:
+      return "fragment";
+    case GL_GEOMETRY_SHADER:
+      return "geometry";
+    case GL_TESS_CONTROL_SHADER:
+      return "tessellation control";
+    case GL_TESS_EVALUATION_SHADER:
+      return "tessellation evaluation";
+    case GL_COMPUTE_SHADER:
+      return "compute";
+    default:
+      return "unknown";
   }
 }
 
@@ -175,7 +183,8 @@ GLint Program::location(const char* name) {
   const GLint at = glGetUniformLocation(bound_, name);
   const std::string base(baseName(name));
   if (std::find(uniformsSet_.begin(), uniformsSet_.end(), base) == uniformsSet_.end()) uniformsSet_.push_back(base);
-  if (at < 0 && good_ && bound_ == good_.get() && builtinFiles_ && uniformChecks() && !sourceMentionsUniform(source_, name))
+  if (at < 0 && good_ && bound_ == good_.get() && builtinFiles_ && uniformChecks() &&
+      !sourceMentionsUniform(source_, name))
     throw UnknownUniform(spec_.name + ": the lab sets the uniform '" + name +
                          "', which no stage of the program declares (a misspelt name, or one a shader no longer has)");
   return locations_.emplace(name, at).first->second;
@@ -186,11 +195,19 @@ void Program::set(const char* n, float v) { glUniform1f(location(n), v); }
 void Program::set(const char* n, const glm::vec2& v) { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec3& v) { glUniform3fv(location(n), 1, glm::value_ptr(v)); }
 void Program::set(const char* n, const glm::vec4& v) { glUniform4fv(location(n), 1, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::mat3& v) { glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
-void Program::set(const char* n, const glm::mat4& v) { glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
+void Program::set(const char* n, const glm::mat3& v) {
+  glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::mat4& v) {
+  glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v));
+}
 
-void Program::setArray(const char* n, const glm::vec2* v, int count) { glUniform2fv(location(n), count, glm::value_ptr(v[0])); }
-void Program::setArray(const char* n, const glm::vec3* v, int count) { glUniform3fv(location(n), count, glm::value_ptr(v[0])); }
+void Program::setArray(const char* n, const glm::vec2* v, int count) {
+  glUniform2fv(location(n), count, glm::value_ptr(v[0]));
+}
+void Program::setArray(const char* n, const glm::vec3* v, int count) {
+  glUniform3fv(location(n), count, glm::value_ptr(v[0]));
+}
 void Program::setArray(const char* n, const glm::mat4* v, int count) {
   glUniformMatrix4fv(location(n), count, GL_FALSE, glm::value_ptr(v[0]));
 }
@@ -208,7 +225,8 @@ ShaderLibrary::ShaderLibrary(ShaderSearchPath path)
   std::vector<std::string> logs;
   int failed = -1;
   const std::string version = versionPreamble("#version 330 core", glslDialect());
-  fallback_ = buildProgram({{GL_VERTEX_SHADER, version + kFallbackVs}, {GL_FRAGMENT_SHADER, version + kFallbackFs}}, logs, failed);
+  fallback_ = buildProgram({{GL_VERTEX_SHADER, version + kFallbackVs}, {GL_FRAGMENT_SHADER, version + kFallbackFs}},
+                           logs, failed);
   if (!fallback_)
     for (auto& l : logs) std::fprintf(stderr, "shadelab: the fallback program did not build: %s\n", l.c_str());
 }
@@ -288,7 +306,8 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
     // A link error: its log's source-string numbers are not any one stage's. Drop them, and point
     // each message at the declaration of the identifier it names, in the stage it names.
     for (auto& d : p.diagnostics_)
-      if (d.line > 0 && d.file.find("source-string") == std::string::npos) d = {"", 0, 0, d.isError, d.message, d.raw, ""};
+      if (d.line > 0 && d.file.find("source-string") == std::string::npos)
+        d = {"", 0, 0, d.isError, d.message, d.raw, ""};
     std::vector<StageFiles> stages;
     for (size_t i = 0; i < p.spec_.stages.size() && i < pre.size(); ++i)
       stages.push_back({stageName(p.spec_.stages[i].type), pre[i].files});
@@ -348,8 +367,7 @@ ShaderLibrary::OverrideResult ShaderLibrary::overrideByName(const fs::path& file
   for (auto& p : livePrograms())
     for (auto& rel : p->relPaths_)
       if (fs::path(rel).filename() == file.filename()) candidates.insert(rel);
-  if (candidates.empty())
-    return {"", file.filename().string() + ": no shader of the current lab is named so"};
+  if (candidates.empty()) return {"", file.filename().string() + ": no shader of the current lab is named so"};
   std::string replaced;
   if (candidates.size() == 1) {
     replaced = *candidates.begin();

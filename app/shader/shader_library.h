@@ -9,9 +9,9 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <span>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -19,10 +19,10 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/handle.h"
-#include "shader/compile_log.h"
-#include "shader/file_watcher.h"
-#include "shader/preprocessor.h"
+#include "app/gl/handle.h"
+#include "app/shader/compile_log.h"
+#include "app/shader/file_watcher.h"
+#include "app/shader/preprocessor.h"
 
 namespace shadelab {
 
@@ -84,8 +84,8 @@ class Program {
   GLuint fallback_ = 0;
   GLuint bound_ = 0;
   std::unordered_map<std::string, GLint> locations_;  // of bound_
-  std::string source_;                                 // the good build's stages, preprocessed
-  bool builtinFiles_ = false;                          // ... read from the built-in folder alone
+  std::string source_;                                // the good build's stages, preprocessed
+  bool builtinFiles_ = false;                         // ... read from the built-in folder alone
   std::vector<std::string> uniformsSet_;
   std::vector<std::filesystem::path> files_;
   std::vector<std::string> relPaths_;

@@ -5,11 +5,11 @@
 
 #include <glm/glm.hpp>
 
-#include "gl/pixel_probe.h"
-#include "ui/exercise_panel.h"
-#include "ui/frame_records.h"
-#include "ui/panels.h"
-#include "ui/shader_editor.h"
+#include "app/gl/pixel_probe.h"
+#include "app/ui/exercise_panel.h"
+#include "app/ui/frame_records.h"
+#include "app/ui/panels.h"
+#include "app/ui/shader_editor.h"
 
 namespace shadelab {
 
@@ -19,7 +19,7 @@ class Measurer;
 struct AppState {
   LabHost* host = nullptr;
   Measurer* measurer = nullptr;
-  std::string message;          // last error or confirmation, shown in the UI
+  std::string message;  // last error or confirmation, shown in the UI
   std::vector<std::string> dropped;
   std::string fileParamUnderMouse;  // a file parameter's key, as of the last frame: drops go there
   // Data scenes not downloaded ("?": not looked up yet): looked up at start and while the scene

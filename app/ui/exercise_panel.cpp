@@ -1,4 +1,4 @@
-#include "ui/exercise_panel.h"
+#include "app/ui/exercise_panel.h"
 
 #include <imgui.h>
 
@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <tuple>
 
-#include "host/lab_host.h"
-#include "ui/platform.h"
-#include "ui/shader_editor.h"
-#include "util/read_file.h"
+#include "app/host/lab_host.h"
+#include "app/ui/platform.h"
+#include "app/ui/shader_editor.h"
+#include "app/util/read_file.h"
 
 namespace shadelab {
 
@@ -108,8 +108,9 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     ImGui::EndCombo();
   }
   if (panel.selected.empty()) {
-    ImGui::TextWrapped("Each exercise asks for one function of a lab's shader: open its starter, write the "
-                       "function in the editor, and press Check to have it graded here.");
+    ImGui::TextWrapped(
+        "Each exercise asks for one function of a lab's shader: open its starter, write the "
+        "function in the editor, and press Check to have it graded here.");
     return;
   }
   if (editor.folder.empty()) {
@@ -124,8 +125,10 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   if (ImGui::Button("Check")) panel.checkRequested = true;
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
-                      "solution's and the truth, here in the window.", panel.selected.c_str());
+    ImGui::SetTooltip(
+        "Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
+        "solution's and the truth, here in the window.",
+        panel.selected.c_str());
   if (panel.showStatement) {
     ImGui::BeginChild("statement", {0, 220 * ImGui::GetIO().FontGlobalScale}, true);
     ImGui::PushTextWrapPos(0);
@@ -139,7 +142,8 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   if (check.running()) {
     const float done = float(check.configurationsDone()) / float(std::max<size_t>(check.configurations(), 1));
     char label[64];
-    std::snprintf(label, sizeof label, "configuration %zu of %zu", check.configurationsDone() + 1, check.configurations());
+    std::snprintf(label, sizeof label, "configuration %zu of %zu", check.configurationsDone() + 1,
+                  check.configurations());
     ImGui::ProgressBar(done, {-1, 0}, label);
   }
   if (!check.error().empty()) {
@@ -152,8 +156,8 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   const ExerciseResult& r = check.result();
   ImGui::PushTextWrapPos(0);
   if (check.finished())
-    ImGui::TextColored(r.passed() ? kPass : kFail, "%.4g / %.4g points (%.1f%%), pass mark %.0f%%: %s", r.earned, r.total,
-                       r.percent(), r.passMark, r.passed() ? "passed" : "not passed");
+    ImGui::TextColored(r.passed() ? kPass : kFail, "%.4g / %.4g points (%.1f%%), pass mark %.0f%%: %s", r.earned,
+                       r.total, r.percent(), r.passMark, r.passed() ? "passed" : "not passed");
   if (check.finished() && !r.diagnosis.empty()) ImGui::TextColored(kFail, "diagnosis: %s", r.diagnosis.c_str());
   for (auto& f : r.missingFiles) ImGui::TextColored(kFail, "%s is not in your folder: open the starter.", f.c_str());
   std::vector<std::string> said;  // each build error once: every configuration compiles the same file
@@ -168,7 +172,8 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
       ImGui::TextColored(colour, "%-7s %s: %s  %.3g/%.3g", gradeName(k.grade), c.name.c_str(), k.check.name.c_str(),
                          k.earned, k.check.points);
       ImGui::Indent();
-      if (std::isfinite(k.value)) ImGui::TextDisabled("%s %.4g, full marks at <= %.4g", k.check.metric.c_str(), k.value, k.fullBound);
+      if (std::isfinite(k.value))
+        ImGui::TextDisabled("%s %.4g, full marks at <= %.4g", k.check.metric.c_str(), k.value, k.fullBound);
       if (!k.message.empty() && c.errors.empty()) ImGui::TextUnformatted(k.message.c_str());
       ImGui::Unindent();
     }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "grade/exercise_check.h"
+#include "app/grade/exercise_check.h"
 
 namespace shadelab {
 
@@ -17,11 +17,11 @@ struct ExercisePanel {
   std::vector<std::string> ids;      // every exercise, read once, grouped by lab, then level
   std::vector<std::string> headers;  // "shadows: from scratch" above the first of each group, else ""
   bool listed = false;
-  std::string selected;          // the exercise shown ("" = none)
-  std::string statement;         // its statement.md
+  std::string selected;   // the exercise shown ("" = none)
+  std::string statement;  // its statement.md
   bool showStatement = false;
-  bool checkRequested = false;   // --check / the link's "check": press Check on the next frame
-  bool reveal = false;           // a Check started: the panel scrolls to its results until it ends
+  bool checkRequested = false;  // --check / the link's "check": press Check on the next frame
+  bool reveal = false;          // a Check started: the panel scrolls to its results until it ends
   ExerciseCheck check;
 
   void select(const std::string& id);

@@ -1,4 +1,4 @@
-#include "ui/frame_records.h"
+#include "app/ui/frame_records.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,9 +40,10 @@ Metrics ConfigurationCosts::costs() const {
 }
 
 void Responsiveness::report() const {
-  std::printf("frames: %zu, %zu while jobs ran; median frame %.1f ms idle, %.1f ms while jobs ran; the lab's passes "
-              "%.2f ms\n",
-              idleMs.size() + busyMs.size(), busyMs.size(), median(idleMs), median(busyMs), median(labMs));
+  std::printf(
+      "frames: %zu, %zu while jobs ran; median frame %.1f ms idle, %.1f ms while jobs ran; the lab's passes "
+      "%.2f ms\n",
+      idleMs.size() + busyMs.size(), busyMs.size(), median(idleMs), median(busyMs), median(labMs));
 }
 
 }  // namespace shadelab

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "gl/pass_timer.h"
-#include "lab/lab.h"  // Metrics
+#include "app/gl/pass_timer.h"
+#include "app/lab/lab.h"  // Metrics
 
 namespace shadelab {
 

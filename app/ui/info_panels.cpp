@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "ui/panels.h"
+#include "app/ui/panels.h"
 
 namespace shadelab {
 
@@ -49,9 +49,10 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
   ImGui::Text("UI %.2f ms", uiMs);
   // Material textures the host uploaded for the scene; a lab that builds its own (the filtering lab's mip
   // chain) shows them in its panels.
-  ImGui::TextWrapped("scene: %zu triangles, %d material textures uploaded, built %d times", host.scene().triangleCount(),
-              host.gpuScene().texturesUploaded(), host.sceneBuilds());
-  std::vector<float> frame(history.frameMs.begin(), history.frameMs.end()), g(history.gpuMs.begin(), history.gpuMs.end());
+  ImGui::TextWrapped("scene: %zu triangles, %d material textures uploaded, built %d times",
+                     host.scene().triangleCount(), host.gpuScene().texturesUploaded(), host.sceneBuilds());
+  std::vector<float> frame(history.frameMs.begin(), history.frameMs.end()),
+      g(history.gpuMs.begin(), history.gpuMs.end());
   if (frame.size() >= 2) {
     const ImVec2 plotSize(ImGui::GetContentRegionAvail().x, 50);  // 1.86 takes no negative widths here
     const float top = *std::max_element(frame.begin(), frame.end()) * 1.1f;
@@ -80,7 +81,9 @@ void drawShaderPanel(LabHost& host, std::string& status) {
     const bool failed = p->lastBuildFailed();
     ImGui::PushStyleColor(ImGuiCol_Text, failed ? ImVec4(1, 0.4f, 0.4f, 1) : ImVec4(0.5f, 1, 0.5f, 1));
     ImGui::Text("%s %s (build %d)%s", failed ? "[error]" : "[ok]", p->spec().name.c_str(), p->generation(),
-                !p->hasGoodProgram() ? " - never compiled: drawing the fallback" : failed ? " - showing last good" : "");
+                !p->hasGoodProgram() ? " - never compiled: drawing the fallback"
+                : failed             ? " - showing last good"
+                                     : "");
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) {
       std::string files;
@@ -88,8 +91,8 @@ void drawShaderPanel(LabHost& host, std::string& status) {
       ImGui::SetTooltip("%s", files.c_str());
     }
     // What a student's version of this program can read: every uniform the lab sets on it.
-    if (const auto& names = p->uniformsSet(); !names.empty() &&
-                                             ImGui::TreeNode(p.get(), "uniforms the lab sets (%zu)", names.size())) {
+    if (const auto& names = p->uniformsSet();
+        !names.empty() && ImGui::TreeNode(p.get(), "uniforms the lab sets (%zu)", names.size())) {
       std::string list;
       for (auto& n : names) list += (list.empty() ? "" : ", ") + n;
       ImGui::TextWrapped("%s", list.c_str());
@@ -108,7 +111,8 @@ void drawShaderPanel(LabHost& host, std::string& status) {
       ImGui::PopStyleColor();
       if (!d.sourceLine.empty()) {
         ImGui::TextUnformatted(("    " + d.sourceLine).c_str());
-        if (d.column > 0) ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "    %s^", std::string(size_t(d.column - 1), ' ').c_str());
+        if (d.column > 0)
+          ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "    %s^", std::string(size_t(d.column - 1), ' ').c_str());
       } else if (d.line == 0 && d.raw != d.message && !d.raw.empty()) {
         ImGui::TextDisabled("    %s", d.raw.c_str());
       }

@@ -1,9 +1,9 @@
 // The lab's own panels (app/lab/lab_panel.h), drawn as ImGui widgets, and the jobs overlay.
 #include <imgui.h>
 
-#include "gl/texture.h"
-#include "ui/panels.h"
-#include "ui/xy_plot.h"
+#include "app/gl/texture.h"
+#include "app/ui/panels.h"
+#include "app/ui/xy_plot.h"
 
 namespace shadelab {
 namespace {
@@ -39,8 +39,8 @@ struct DrawItem {
   }
   void operator()(const PanelImage& img) const {
     if (!img.texture) return;
-    ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(img.texture->id())), ImVec2(float(img.size.x), float(img.size.y)),
-                 ImVec2(0, 1), ImVec2(1, 0));
+    ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(img.texture->id())),
+                 ImVec2(float(img.size.x), float(img.size.y)), ImVec2(0, 1), ImVec2(1, 0));
     if (!img.caption.empty()) ImGui::TextDisabled("%s", img.caption.c_str());
   }
 };

@@ -6,13 +6,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "measure/report.h"
-#include "ui/panels.h"
-#include "ui/xy_plot.h"
+#include "app/measure/report.h"
+#include "app/ui/panels.h"
+#include "app/ui/xy_plot.h"
 
 namespace shadelab {
 
-void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now, std::string& message) {
+void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now,
+                      std::string& message) {
   const ReferenceSpec spec = referenceOf(host.lab());
   if (spec.kind == TruthKind::None) {
     ImGui::TextDisabled("This configuration has no ground truth to measure against.");

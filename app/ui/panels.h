@@ -4,8 +4,8 @@
 #include <deque>
 #include <string>
 
-#include "host/lab_host.h"
-#include "host/measurer.h"
+#include "app/host/lab_host.h"
+#include "app/host/measurer.h"
 
 namespace shadelab {
 
@@ -46,6 +46,7 @@ struct MeasureUi {
   std::string measuredSignature;  // what the last measurement was started for
   int plot = 0;                   // which of the lab's plots is shown
 };
-void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now, std::string& message);
+void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now,
+                      std::string& message);
 
 }  // namespace shadelab

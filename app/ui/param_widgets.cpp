@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "ui/panels.h"
+#include "app/ui/panels.h"
 
 namespace shadelab {
 namespace {
@@ -56,8 +56,8 @@ class ImGuiParams final : public ParamVisitor {
     Greyed greyed(*this, unavailable_);
     std::string kinds;
     for (auto e : extensions) kinds += (kinds.empty() ? "" : "/") + std::string(e);
-    const std::string shown = path.empty() ? "none: drop a " + kinds + " file here"
-                                           : std::filesystem::path(path).filename().string();
+    const std::string shown =
+        path.empty() ? "none: drop a " + kinds + " file here" : std::filesystem::path(path).filename().string();
     ImGui::BeginGroup();
     ImGui::TextUnformatted(std::string(info.label).c_str());
     ImGui::SameLine();
@@ -76,7 +76,8 @@ class ImGuiParams final : public ParamVisitor {
       ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
       if (!path.empty()) ImGui::TextUnformatted(path.c_str());
       ImGui::TextUnformatted(std::string(info.help).c_str());
-      ImGui::TextDisabled("drop a %s file on this line, or --set %s=FILE", kinds.c_str(), std::string(info.key).c_str());
+      ImGui::TextDisabled("drop a %s file on this line, or --set %s=FILE", kinds.c_str(),
+                          std::string(info.key).c_str());
       ImGui::PopTextWrapPos();
       ImGui::EndTooltip();
     }
@@ -120,7 +121,8 @@ class ImGuiParams final : public ParamVisitor {
   bool open_ = true;
   std::string unavailable_;  // for the next widget
   static std::string withUnits(const ParamInfo& info) {
-    return info.units.empty() ? std::string(info.label) : std::string(info.label) + " (" + std::string(info.units) + ")";
+    return info.units.empty() ? std::string(info.label)
+                              : std::string(info.label) + " (" + std::string(info.units) + ")";
   }
   static void tooltip(const ParamInfo& info, const char* flag = "--set ") {
     if (ImGui::IsItemHovered()) {

@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-#include "context/load_gl.h"
+#include "app/context/load_gl.h"
 
 struct GLFWwindow;
 

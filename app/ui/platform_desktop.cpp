@@ -1,4 +1,4 @@
-#include "ui/platform.h"
+#include "app/ui/platform.h"
 
 #include <GLFW/glfw3.h>
 

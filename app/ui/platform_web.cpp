@@ -1,4 +1,4 @@
-#include "ui/platform.h"
+#include "app/ui/platform.h"
 
 #include <emscripten.h>
 #include <emscripten/html5.h>
@@ -10,7 +10,7 @@
 
 #include <GLFW/glfw3.h>
 
-#include "shader/preprocessor.h"
+#include "app/shader/preprocessor.h"
 
 extern "C" void* emscripten_webgl1_get_proc_address(const char* name);  // emscripten's system/lib/gl
 extern "C" void* emscripten_webgl2_get_proc_address(const char* name);
@@ -39,13 +39,14 @@ ShlGlProc webglProc(const char* name) {
 }  // namespace
 
 std::string copyLink(const std::string& fragment) {
-  const std::string link = std::string(emscripten_run_script_string("location.origin + location.pathname")) + "#" + fragment;
+  const std::string link =
+      std::string(emscripten_run_script_string("location.origin + location.pathname")) + "#" + fragment;
   // The address bar shows it too, so that reloading the page keeps the frame.
   EM_ASM(
       {
         const url = UTF8ToString($0);
         history.replaceState(null, '', url);
-        if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() => {});
+        if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() = > {});
       },
       link.c_str());
   return link;
@@ -53,7 +54,10 @@ std::string copyLink(const std::string& fragment) {
 
 void persistStudentFiles() {
   EM_ASM({
-    FS.syncfs(false, (err) => { if (err) console.warn("shadelab: your shaders could not be kept in the browser's storage: " + err); });
+    FS.syncfs(
+        false, (err) = > {
+          if (err) console.warn("shadelab: your shaders could not be kept in the browser's storage: " + err);
+        });
   });
 }
 
@@ -71,15 +75,20 @@ void offerDownload(const std::string& path) {
       {
         const path = UTF8ToString($0);
         const bytes = FS.readFile(path);
-        const type = path.endsWith('.png') ? 'image/png' : path.endsWith('.json') ? 'application/json' : 'application/octet-stream';
-        const url = URL.createObjectURL(new Blob([bytes], {type : type}));
+        const type = path.endsWith('.png')    ? 'image/png'
+                     : path.endsWith('.json') ? 'application/json'
+                                              : 'application/octet-stream';
+        const url = URL.createObjectURL(new Blob([bytes], {
+          type:
+            type
+        }));
         const a = document.createElement('a');
         a.href = url;
         a.download = path.substring(path.lastIndexOf('/') + 1);
         document.body.appendChild(a);
         a.click();
         a.remove();
-        setTimeout(() => URL.revokeObjectURL(url), 10000);
+        setTimeout(() = > URL.revokeObjectURL(url), 10000);
         Module.shadelabSaved = (Module.shadelabSaved || []).concat([path]);
       },
       path.c_str());
@@ -98,7 +107,8 @@ void enableContextFeatures() {
   const EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = emscripten_webgl_get_current_context();
   for (const char* name : {"EXT_color_buffer_float", "EXT_float_blend", "OES_texture_float_linear",
                            "EXT_texture_filter_anisotropic", "EXT_disjoint_timer_query_webgl2"})
-    if (!emscripten_webgl_enable_extension(context, name)) std::fprintf(stderr, "shadelab: the browser has no %s\n", name);
+    if (!emscripten_webgl_enable_extension(context, name))
+      std::fprintf(stderr, "shadelab: the browser has no %s\n", name);
 }
 
 void followPageSize(GLFWwindow* window) {

@@ -1,4 +1,4 @@
-#include "ui/shader_editor.h"
+#include "app/ui/shader_editor.h"
 
 #include <imgui.h>
 
@@ -6,13 +6,13 @@
 #include <fstream>
 #include <set>
 
-#include "host/lab_host.h"
-#include "measure/report.h"
-#include "ui/platform.h"
-#include "util/contained_path.h"
-#include "util/output_files.h"
-#include "util/read_file.h"
-#include "util/zip_writer.h"
+#include "app/host/lab_host.h"
+#include "app/measure/report.h"
+#include "app/ui/platform.h"
+#include "app/util/contained_path.h"
+#include "app/util/output_files.h"
+#include "app/util/read_file.h"
+#include "app/util/zip_writer.h"
 
 namespace shadelab {
 
@@ -56,7 +56,8 @@ std::string downloadZip(const fs::path& folder) {
   std::vector<ZipEntry> entries;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_regular_file(ec)) entries.push_back({it->path().lexically_relative(folder).generic_string(), readWholeFile(it->path())});
+    if (it->is_regular_file(ec))
+      entries.push_back({it->path().lexically_relative(folder).generic_string(), readWholeFile(it->path())});
   std::sort(entries.begin(), entries.end(), [](auto& a, auto& b) { return a.name < b.name; });
   if (entries.empty()) return "nothing to download: you have not edited a file yet";
   const fs::path zip = freshName("shaders", "my-shaders", ".zip");
@@ -111,14 +112,16 @@ void drawShaderEditor(ShaderEditor& editor, LabHost& host, std::string& status) 
   const fs::path mine = copyOf(editor);
   std::error_code ec;
   const bool hasCopy = !mine.empty() && fs::exists(mine, ec);
-  ImGui::TextDisabled("%s", hasCopy ? mine.string().c_str() : "the lab's file: your first edit saves a copy into your folder");
+  ImGui::TextDisabled(
+      "%s", hasCopy ? mine.string().c_str() : "the lab's file: your first edit saves a copy into your folder");
   if (hasCopy) {
     ImGui::SameLine();
     if (ImGui::SmallButton("Use the lab's file")) {
       fs::remove(mine, ec);
       persistStudentFiles();
       editor.open(host, editor.rel);
-      status = ec ? "could not remove " + mine.string() : "removed " + mine.string() + ": the lab's file serves it again";
+      status =
+          ec ? "could not remove " + mine.string() : "removed " + mine.string() + ": the lab's file serves it again";
     }
   }
   ImGui::SameLine();

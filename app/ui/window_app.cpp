@@ -4,37 +4,37 @@
 //   3. lay out the UI: lab/scene pickers and parameters (left), viewport with the running jobs
 //      (centre), cost, measurements, the lab's panels, warnings and shaders (right)
 //   4. draw the UI into the window and swap
-#include "ui/window_app.h"
+#include "app/ui/window_app.h"
 
 #include <memory>
 #include <optional>
 
-#include "host/share_link.h"
-#include "host/soak.h"
+#include "app/host/share_link.h"
+#include "app/host/soak.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include "context/load_gl.h"
+#include "app/context/load_gl.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 
-#include "cli/session.h"
-#include "scene/scene_catalog.h"
-#include "ui/panels.h"
-#include "ui/platform.h"
-#include "gl/pixel_probe.h"
-#include "ui/exercise_panel.h"
-#include "ui/frame_records.h"
-#include "ui/shader_editor.h"
-#include "ui/window_events.h"
-#include "ui/window_files.h"
-#include "ui/window_modes.h"
+#include "app/cli/session.h"
+#include "app/gl/pixel_probe.h"
+#include "app/scene/scene_catalog.h"
+#include "app/ui/exercise_panel.h"
+#include "app/ui/frame_records.h"
+#include "app/ui/panels.h"
+#include "app/ui/platform.h"
+#include "app/ui/shader_editor.h"
+#include "app/ui/window_events.h"
+#include "app/ui/window_files.h"
+#include "app/ui/window_modes.h"
 
 namespace shadelab {
 namespace {
@@ -76,8 +76,9 @@ void applyUiScale(AppState& app) {
 void presentationOverlay(AppState& app, const std::vector<gl::PassTiming>& passes) {
   ImGui::SetNextWindowPos({12, 12});
   ImGui::SetNextWindowBgAlpha(0.72f);
-  ImGui::Begin("Presenting", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
+  ImGui::Begin("Presenting", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoMove);
   ImGui::TextUnformatted(std::string(app.host->lab().title()).c_str());
   double gpu = 0;
   for (auto& p : passes) gpu += p.gpuMs;
@@ -102,7 +103,8 @@ void handleDrops(AppState& app) {
     const std::string ext = p.extension().string();
     if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl" || ext == ".tesc" || ext == ".tese") {
       const auto result = app.host->shaders().overrideByName(p);
-      app.message = !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;
+      app.message =
+          !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;
     } else if (ext == ".json") {
       app.message = loadPreset(*app.host, path);
     } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".tga" || ext == ".bmp") {
@@ -125,7 +127,8 @@ void viewportControls(AppState& app) {
   OrbitCamera& cam = app.host->camera();
   if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left))
     cam.orbit(-io.MouseDelta.x * 0.3f, io.MouseDelta.y * 0.3f);
-  if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
+  if (ImGui::IsItemActive() &&
+      (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
     cam.pan(io.MouseDelta.x / float(app.viewport.y), io.MouseDelta.y / float(app.viewport.y));
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) cam.zoom(std::pow(0.9f, io.MouseWheel));
   // Pixel readout: the float value under the cursor (depth maps, visibility, NaN hunting).
@@ -158,14 +161,17 @@ void viewportImage(AppState& app) {
   ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(app.host->target()->color().id())), avail, {0, 1}, {1, 0});
   drawList->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
   ImGui::SetCursorScreenPos(origin);
-  ImGui::InvisibleButton("viewport", avail, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                                                ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton(
+      "viewport", avail,
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   viewportControls(app);
 }
 
 void leftPanel(AppState& app) {
   LabHost& host = *app.host;
-  const auto ids = labIds();
+  std::vector<std::string> ids = menuLabIds();
+  if (std::find(ids.begin(), ids.end(), host.lab().id()) == ids.end())
+    ids.emplace_back(host.lab().id());  // --lab minimal
   int current = 0;
   for (size_t i = 0; i < ids.size(); ++i)
     if (ids[i] == host.lab().id()) current = int(i);
@@ -202,8 +208,7 @@ void leftPanel(AppState& app) {
   }
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("Or drop a .gltf/.glb/.obj/.off/.ply file on the window (an image: the scene's height map).");
-  if (!app.missingData.empty())
-    ImGui::TextDisabled("Not here: %s. %s", app.missingData.c_str(), missingDataAdvice());
+  if (!app.missingData.empty()) ImGui::TextDisabled("Not here: %s. %s", app.missingData.c_str(), missingDataAdvice());
   ImGui::PopTextWrapPos();
   ImGui::Separator();
   drawParamWidgets(host.lab(), &app.fileParamUnderMouse);
@@ -329,7 +334,8 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   app.measure.autoMeasure = wopt.autoMeasure;
   app.measure.requested = options.measure;  // --measure: press Measure once the first frames are timed
   app.presenting = wopt.present;
-  if (!options.shaderDirs.empty()) app.editor.folder = options.shaderDirs.front();  // edits go to the student's first folder
+  if (!options.shaderDirs.empty())
+    app.editor.folder = options.shaderDirs.front();  // edits go to the student's first folder
   if (!wopt.editFolder.empty()) app.editor.folder = wopt.editFolder;
   if (wopt.uiScale > 0) {
     app.uiScale = wopt.uiScale;
@@ -352,8 +358,10 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   note(applyCamera(host, options.camera));
   if (!options.exercise.empty()) {  // --exercise (the page's link): the Exercises section opens on it
     Exercise ex;
-    if (auto e = loadExercise(exercisesRoot(), options.exercise, ex); !e.empty()) note(e);
-    else app.exercises.select(ex.id);
+    if (auto e = loadExercise(exercisesRoot(), options.exercise, ex); !e.empty())
+      note(e);
+    else
+      app.exercises.select(ex.id);
   }
   if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
 }
@@ -392,9 +400,10 @@ void WindowSession::layoutWindows(glm::ivec2 framebuffer, const std::vector<gl::
     ImGui::Begin("Inspect", nullptr, kSidePanel);
     if (ImGui::CollapsingHeader("Cost", ImGuiTreeNodeFlags_DefaultOpen)) drawStatsPanel(host, app.history, uiMs);
     if (ImGui::CollapsingHeader("Error against the truth", ImGuiTreeNodeFlags_DefaultOpen)) {
-      const MeasureRequest now{app.costs.signature,
-                               std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(),
-                               app.costs.costs(), app.viewport, time};
+      const MeasureRequest now{
+          app.costs.signature,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - app.costs.since).count(), app.costs.costs(),
+          app.viewport, time};
       drawMeasurePanel(host, measurer, app.measure, now, app.message);
     }
     drawLabPanels(host.lab());
@@ -420,13 +429,13 @@ void WindowSession::layoutWindows(glm::ivec2 framebuffer, const std::vector<gl::
       ImGui::SetNextWindowPos({app.leftW + 10, float(fbh) - 10}, ImGuiCond_Always, {0, 1});
       ImGui::SetNextWindowSize({viewW - 20, 0});
       ImGui::SetNextWindowBgAlpha(0.85f);
-      ImGui::Begin("Jobs", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+      ImGui::Begin("Jobs", nullptr,
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoFocusOnAppearing);
       drawJobs(host.jobs());
       ImGui::End();
     }
   }
-
 }
 
 bool WindowSession::drawFrame() {
@@ -462,7 +471,8 @@ bool WindowSession::drawFrame() {
   runModes([&](WindowMode& m) { m.afterLabFrame(event); });
   if (!resumed) app.history.push(dt * 1000.0f, float(event.labGpuMs));
   resumed = false;
-  app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y), passes);
+  app.costs.push(host.stateJson().dump() + std::to_string(app.viewport.x) + "x" + std::to_string(app.viewport.y),
+                 passes);
 
   // 3. UI layout
   const auto uiStart = std::chrono::steady_clock::now();

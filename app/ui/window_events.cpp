@@ -1,4 +1,4 @@
-#include "ui/window_events.h"
+#include "app/ui/window_events.h"
 
 #include <GLFW/glfw3.h>
 

@@ -1,15 +1,15 @@
-#include "ui/window_files.h"
+#include "app/ui/window_files.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <ctime>
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
-#include "gl/gl.h"
-#include "measure/report.h"
-#include "ui/platform.h"
-#include "util/output_files.h"
+#include "app/gl/gl.h"
+#include "app/measure/report.h"
+#include "app/ui/platform.h"
+#include "app/util/output_files.h"
 
 namespace fs = std::filesystem;
 

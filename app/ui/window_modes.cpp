@@ -1,10 +1,10 @@
-#include "ui/window_modes.h"
+#include "app/ui/window_modes.h"
 
 #include <cstdio>
 
-#include "host/lab_host.h"
-#include "host/soak.h"
-#include "ui/window_files.h"
+#include "app/host/lab_host.h"
+#include "app/host/soak.h"
+#include "app/ui/window_files.h"
 
 namespace shadelab {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <glm/glm.hpp>
 
-#include "ui/app_state.h"
-#include "ui/window_app.h"
+#include "app/ui/app_state.h"
+#include "app/ui/window_app.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "ui/xy_plot.h"
+#include "app/ui/xy_plot.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 namespace shadelab {
 namespace {
 
-const ImU32 kPalette[] = {IM_COL32(230, 90, 80, 255), IM_COL32(90, 160, 230, 255), IM_COL32(110, 200, 110, 255),
+const ImU32 kPalette[] = {IM_COL32(230, 90, 80, 255),  IM_COL32(90, 160, 230, 255),  IM_COL32(110, 200, 110, 255),
                           IM_COL32(240, 170, 60, 255), IM_COL32(180, 130, 220, 255), IM_COL32(220, 220, 220, 255)};
 
 std::string shortNumber(double v) {
@@ -50,10 +50,18 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
     return;
   }
   if (!plot.logY && !plot.equalAxes) y0 = std::min(y0, 0.0f);
-  if (x1 - x0 < 1e-12f) { x0 -= 0.5f; x1 += 0.5f; }
-  if (y1 - y0 < 1e-12f) { y0 -= 0.5f; y1 += 0.5f; }
+  if (x1 - x0 < 1e-12f) {
+    x0 -= 0.5f;
+    x1 += 0.5f;
+  }
+  if (y1 - y0 < 1e-12f) {
+    y0 -= 0.5f;
+    y1 += 0.5f;
+  }
   const float padX = (x1 - x0) * 0.06f, padY = (y1 - y0) * 0.08f;
-  x0 -= padX; x1 += padX; y1 += padY;
+  x0 -= padX;
+  x1 += padX;
+  y1 += padY;
   if (plot.logY || plot.equalAxes) y0 -= padY;
   if (plot.equalAxes && !plot.logY) {
     // One unit the same length on both axes: widen whichever range is short for its side.
@@ -72,7 +80,8 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
   dl->AddText(ImVec2(p0.x, p1.y + 2), grey, shortNumber(x0).c_str());
   const std::string xHi = shortNumber(x1);
   dl->AddText(ImVec2(p1.x - ImGui::CalcTextSize(xHi.c_str()).x, p1.y + 2), grey, xHi.c_str());
-  const std::string yHi = shortNumber(plot.logY ? std::pow(10.0, y1) : y1), yLo = shortNumber(plot.logY ? std::pow(10.0, y0) : y0);
+  const std::string yHi = shortNumber(plot.logY ? std::pow(10.0, y1) : y1),
+                    yLo = shortNumber(plot.logY ? std::pow(10.0, y0) : y0);
   dl->AddText(ImVec2(origin.x, p0.y), grey, yHi.c_str());
   dl->AddText(ImVec2(origin.x, p1.y - ImGui::GetFontSize()), grey, yLo.c_str());
   const std::string axes = plot.xLabel + "  (y: " + plot.yLabel + (plot.logY ? ", log" : "") + ")";
@@ -80,7 +89,8 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
 
   for (float mx : plot.markX) {
     const float x = map(mx, 1.0f).x;
-    for (float y = p0.y; y < p1.y; y += 8) dl->AddLine(ImVec2(x, y), ImVec2(x, std::min(y + 4, p1.y)), IM_COL32(240, 200, 60, 200));
+    for (float y = p0.y; y < p1.y; y += 8)
+      dl->AddLine(ImVec2(x, y), ImVec2(x, std::min(y + 4, p1.y)), IM_COL32(240, 200, 60, 200));
   }
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   std::string tip;
@@ -95,7 +105,8 @@ void drawXYPlot(const char* id, const XYPlot& plot, float height) {
       if (!s.points) pts.clear();
     };
     for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) flush();
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]))
+        flush();
       else if (!(plot.logY && s.y[i] <= 0)) {
         pts.push_back(map(s.x[i], s.y[i]));
         if (s.points) {

@@ -11,10 +11,10 @@ namespace shadelab {
 struct XYSeries {
   std::string name;
   std::vector<float> x, y;
-  ImU32 color = 0;       // 0: from the palette
-  bool points = false;   // markers instead of a polyline
+  ImU32 color = 0;                // 0: from the palette
+  bool points = false;            // markers instead of a polyline
   std::vector<std::string> tips;  // per point, shown on hover (points only)
-  int highlight = -1;    // a point drawn larger (the latest measurement)
+  int highlight = -1;             // a point drawn larger (the latest measurement)
 };
 
 struct XYPlot {

@@ -1,4 +1,4 @@
-#include "util/contained_path.h"
+#include "app/util/contained_path.h"
 
 #include <string>
 

@@ -1,11 +1,11 @@
-#include "util/job_runner.h"
+#include "app/util/job_runner.h"
 
 #include <algorithm>
 #include <chrono>
 #include <exception>
 #include <utility>
 
-#include "util/thread_priority.h"
+#include "app/util/thread_priority.h"
 
 namespace shadelab {
 
@@ -14,9 +14,9 @@ using Clock = std::chrono::steady_clock;
 struct JobRunner::Job {
   std::string key, label;
   std::shared_ptr<JobContext> ctx = std::make_shared<JobContext>();
-  Work work;                                // CPU work, or
+  Work work;                                  // CPU work, or
   std::function<GlStep(JobContext&)> glStep;  // GL slices
-  std::function<void()> finish;             // set when the work is done
+  std::function<void()> finish;               // set when the work is done
   bool running = false, done = false;
   Clock::time_point submitted = Clock::now();
 };
@@ -133,8 +133,10 @@ int JobRunner::deliver(double budgetMs, bool* glWorked) {
   {
     std::lock_guard lock(mutex_);
     for (auto& job : jobs_) {
-      if (job->done) ready.push_back(job);
-      else if (job->glStep) stepping.push_back(job);
+      if (job->done)
+        ready.push_back(job);
+      else if (job->glStep)
+        stepping.push_back(job);
     }
     std::erase_if(jobs_, [](auto& j) { return j->done; });
   }
@@ -151,7 +153,8 @@ int JobRunner::deliver(double budgetMs, bool* glWorked) {
       if (job->ctx->cancelled()) break;
       step = job->glStep(*job->ctx);
       if (glWorked && step != GlStep::Wait) *glWorked = true;
-    } while (step == GlStep::More && std::chrono::duration<double, std::milli>(Clock::now() - start).count() < budgetMs);
+    } while (step == GlStep::More &&
+             std::chrono::duration<double, std::milli>(Clock::now() - start).count() < budgetMs);
     if (step == GlStep::Done) {
       std::lock_guard lock(mutex_);
       const bool stillWanted = !job->ctx->cancelled();

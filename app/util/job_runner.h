@@ -64,10 +64,10 @@ enum class GlStep { Done, More, Wait };
 
 struct JobStatus {
   std::string key;
-  std::string label;    // what the job is, for the UI: "smoothing bunny (implicit, lambda 5)"
-  std::string stage;    // what it does now: "iteration 3/10"
-  float progress = 0;   // [0, 1]
-  double seconds = 0;   // since it was submitted
+  std::string label;   // what the job is, for the UI: "smoothing bunny (implicit, lambda 5)"
+  std::string stage;   // what it does now: "iteration 3/10"
+  float progress = 0;  // [0, 1]
+  double seconds = 0;  // since it was submitted
   bool cancelling = false;
 };
 
@@ -119,8 +119,8 @@ class JobRunner {
   void workerLoop();
 
   mutable std::mutex mutex_;
-  std::condition_variable wake_;      // workers: a job was queued, or stop
-  std::condition_variable finished_;  // waitAll: a job finished
+  std::condition_variable wake_;            // workers: a job was queued, or stop
+  std::condition_variable finished_;        // waitAll: a job finished
   std::deque<std::shared_ptr<Job>> queue_;  // CPU jobs not started
   std::vector<std::shared_ptr<Job>> jobs_;  // every job not yet delivered or dropped, in submission order
   std::vector<std::string> errors_;

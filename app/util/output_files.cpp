@@ -1,4 +1,4 @@
-#include "util/output_files.h"
+#include "app/util/output_files.h"
 
 #include <cstdlib>
 #include <ctime>

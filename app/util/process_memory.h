@@ -8,7 +8,7 @@
 
 namespace shadelab {
 
-double residentMb();      // resident set (the page: the WebAssembly memory's size)
+double residentMb();  // resident set (the page: the WebAssembly memory's size)
 // The resident set in two parts: anonymous pages (the heap, mappings the process made: memory it
 // holds) and pages of mapped files (the code of the libraries it runs, which grows as more of a
 // library is run for the first time and which the system may drop and read again at will).
@@ -17,8 +17,8 @@ struct ResidentParts {
   double fileMb = 0.0;
 };
 ResidentParts residentParts();
-double heapInUseMb();     // allocated and in use: tells memory kept from pages kept
-void returnFreePages();   // the allocator gives its free pages back (before a residentMb worth comparing)
+double heapInUseMb();    // allocated and in use: tells memory kept from pages kept
+void returnFreePages();  // the allocator gives its free pages back (before a residentMb worth comparing)
 // Called once at start: blocks of 1 MiB and more are mapped on their own and given back when
 // freed. glibc otherwise raises that threshold to the largest block freed (up to 32 MiB), and a
 // frame's transient images are then carved from the heap among small long-lived blocks, whose

@@ -1,4 +1,4 @@
-#include "util/process_memory.h"
+#include "app/util/process_memory.h"
 
 #include <malloc.h>
 #include <sys/mman.h>
@@ -68,7 +68,8 @@ void adviseHugePages(void* data, size_t bytes) {
   constexpr uintptr_t kHugePage = uintptr_t(2) << 20, kPage = 4096;
   if (!data || bytes < kHugePage) return;
   const uintptr_t begin = (uintptr_t(data) + kPage - 1) & ~(kPage - 1), end = (uintptr_t(data) + bytes) & ~(kPage - 1);
-  if (end > begin) ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // advice: a refusal costs nothing
+  if (end > begin)
+    ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // advice: a refusal costs nothing
 }
 
 }  // namespace shadelab

@@ -1,4 +1,4 @@
-#include "util/process_memory.h"
+#include "app/util/process_memory.h"
 
 #include <emscripten/heap.h>
 #include <malloc.h>
@@ -14,8 +14,8 @@ double heapInUseMb() {
   return double(heap.uordblks + heap.hblkhd) / (1024.0 * 1024.0);
 }
 
-void keepLargeBlocksApart() {}  // one linear memory: nothing to map apart
-void returnFreePages() {}  // WebAssembly memory only grows
+void keepLargeBlocksApart() {}          // one linear memory: nothing to map apart
+void returnFreePages() {}               // WebAssembly memory only grows
 void adviseHugePages(void*, size_t) {}  // no pages to choose
 
 }  // namespace shadelab

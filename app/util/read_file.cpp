@@ -1,4 +1,4 @@
-#include "util/read_file.h"
+#include "app/util/read_file.h"
 
 #include <fstream>
 #include <sstream>

@@ -7,8 +7,8 @@ namespace shadelab {
 
 class ThreadPriority {
  public:
-  ThreadPriority();              // remembers the calling thread's priority as its normal one
-  void lower(bool low) const;    // normal + 10 when `low`, normal otherwise; the calling thread
+  ThreadPriority();            // remembers the calling thread's priority as its normal one
+  void lower(bool low) const;  // normal + 10 when `low`, normal otherwise; the calling thread
 
  private:
   long self_ = 0;

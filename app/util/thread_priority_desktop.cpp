@@ -1,4 +1,4 @@
-#include "util/thread_priority.h"
+#include "app/util/thread_priority.h"
 
 #include <sys/resource.h>
 #include <sys/syscall.h>

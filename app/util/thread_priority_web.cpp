@@ -1,4 +1,4 @@
-#include "util/thread_priority.h"
+#include "app/util/thread_priority.h"
 
 namespace shadelab {
 

@@ -1,4 +1,4 @@
-#include "util/zip_writer.h"
+#include "app/util/zip_writer.h"
 
 #include <array>
 
@@ -63,9 +63,9 @@ std::string storedZip(const std::vector<ZipEntry>& entries) {
     put32(central, 0x02014b50);
     put16(central, (3u << 8) | 20);  // made by: Unix, 2.0
     common(central);
-    put16(central, 0);              // comment
-    put16(central, 0);              // disk
-    put16(central, 0);              // internal attributes
+    put16(central, 0);               // comment
+    put16(central, 0);               // disk
+    put16(central, 0);               // internal attributes
     put32(central, 0100644u << 16);  // external: a regular file, rw-r--r--
     put32(central, offset);
     central += e.name;

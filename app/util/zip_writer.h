@@ -13,7 +13,7 @@ namespace shadelab {
 uint32_t crc32(std::string_view bytes);
 
 struct ZipEntry {
-  std::string name;   // relative, with '/' separators: "shadows/pcf.glsl"
+  std::string name;  // relative, with '/' separators: "shadows/pcf.glsl"
   std::string bytes;
 };
 

@@ -1,5 +1,5 @@
 // The page has one context, the browser's WebGL2 canvas; headless back ends are desktop-only.
-#include "context/gl_context.h"
+#include "app/context/gl_context.h"
 
 namespace shadelab {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/options.h"
-#include "host/share_link.h"
-#include "ui/window_app.h"
+#include "app/cli/options.h"
+#include "app/host/share_link.h"
+#include "app/ui/window_app.h"
 
 int main() {
   using namespace shadelab;
@@ -24,7 +24,9 @@ int main() {
   // searched, only edited: the student fixes the file, then opens the page without "builtin".
   std::vector<std::string> args{"shadelab"};
   if (!link.builtin) args.insert(args.end(), {"--shaders", "/student"});
-  for (auto [key, value] : {std::pair{"--lab", &link.lab}, {"--scene", &link.scene}, {"--camera", &link.camera},
+  for (auto [key, value] : {std::pair{"--lab", &link.lab},
+                            {"--scene", &link.scene},
+                            {"--camera", &link.camera},
                             {"--exercise", &link.exercise}})
     if (!value->empty()) args.insert(args.end(), {key, *value});
   for (auto& s : link.sets) args.insert(args.end(), {"--set", s});

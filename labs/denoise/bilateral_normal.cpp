@@ -47,7 +47,8 @@ Rings ringsOf(size_t vertices, std::span<const uint32_t> idx) {
     around.clear();
     for (int k = 0; k < 3; ++k) {
       const uint32_t v = idx[3 * t + size_t(k)];
-      around.insert(around.end(), r.vertexFaces.begin() + r.vertexOffsets[v], r.vertexFaces.begin() + r.vertexOffsets[v + 1]);
+      around.insert(around.end(), r.vertexFaces.begin() + r.vertexOffsets[v],
+                    r.vertexFaces.begin() + r.vertexOffsets[v + 1]);
     }
     std::sort(around.begin(), around.end());
     around.erase(std::unique(around.begin(), around.end()), around.end());
@@ -83,7 +84,7 @@ BilateralResult bilateralNormalFilter(std::span<const glm::dvec3> start, std::sp
   std::vector<glm::dvec3> filtered(faces);
   for (int it = 0; it < s.normalIterations; ++it) {
     if (job && !job->progress(float(it) / float(total), "normal filtering " + std::to_string(it + 1) + " of " +
-                                                           std::to_string(s.normalIterations)))
+                                                            std::to_string(s.normalIterations)))
       return out;
     double change = 0.0;
     for (size_t t = 0; t < faces; ++t) {
@@ -91,7 +92,8 @@ BilateralResult bilateralNormalFilter(std::span<const glm::dvec3> start, std::sp
       for (uint32_t k = rings.faceOffsets[t]; k < rings.faceOffsets[t + 1]; ++k) {
         const uint32_t j = rings.faceNeighbours[k];
         const double ds = glm::length(f.centroid[t] - f.centroid[j]), dr = glm::length(f.normal[t] - f.normal[j]);
-        sum += f.area[j] * std::exp(-ds * ds / (2 * sigmaS * sigmaS)) * std::exp(-dr * dr / (2 * sigmaR * sigmaR)) * f.normal[j];
+        sum += f.area[j] * std::exp(-ds * ds / (2 * sigmaS * sigmaS)) * std::exp(-dr * dr / (2 * sigmaR * sigmaR)) *
+               f.normal[j];
       }
       const double len = glm::length(sum);
       filtered[t] = len > 0.0 && std::isfinite(len) ? sum / len : f.normal[t];
@@ -102,8 +104,8 @@ BilateralResult bilateralNormalFilter(std::span<const glm::dvec3> start, std::sp
   }
   // Fit the vertices to the filtered normals; centroids follow the moving vertices.
   for (int it = 0; it < s.vertexIterations; ++it) {
-    if (job && !job->progress(float(s.normalIterations + it) / float(total), "vertex update " + std::to_string(it + 1) +
-                                                                               " of " + std::to_string(s.vertexIterations)))
+    if (job && !job->progress(float(s.normalIterations + it) / float(total),
+                              "vertex update " + std::to_string(it + 1) + " of " + std::to_string(s.vertexIterations)))
       return out;
     for (size_t t = 0; t < faces; ++t)
       f.centroid[t] = (out.positions[idx[3 * t]] + out.positions[idx[3 * t + 1]] + out.positions[idx[3 * t + 2]]) / 3.0;

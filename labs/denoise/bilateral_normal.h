@@ -14,15 +14,15 @@
 
 #include <glm/glm.hpp>
 
-#include "util/job_runner.h"
+#include "app/util/job_runner.h"
 
 namespace shadelab {
 
 struct BilateralSettings {
   int normalIterations = 20;
   int vertexIterations = 10;
-  float sigmaR = 0.35f;       // normal difference (|n_i - n_j|, 0..2) that still counts
-  double sigmaSScale = 1.0;   // x the mean distance between neighbouring face centroids
+  float sigmaR = 0.35f;      // normal difference (|n_i - n_j|, 0..2) that still counts
+  double sigmaSScale = 1.0;  // x the mean distance between neighbouring face centroids
   bool operator==(const BilateralSettings&) const = default;
 };
 

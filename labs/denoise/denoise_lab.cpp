@@ -6,11 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/measure/report.h"
+#include "app/scene/loaders.h"
+#include "app/util/output_files.h"
 #include "labs/denoise/denoise_scenes.h"
 #include "labs/denoise/mesh_pair.h"
-#include "scene/loaders.h"
-#include "measure/report.h"
-#include "util/output_files.h"
 
 namespace shadelab {
 namespace {
@@ -20,6 +20,7 @@ constexpr std::string_view kMeshFiles[] = {".obj", ".off", ".ply"};
 constexpr std::string_view kNoiseKinds[] = {"gaussian", "impulsive"};
 constexpr std::string_view kMethods[] = {"explicit", "taubin", "implicit", "bilateral"};
 constexpr std::string_view kWeights[] = {"uniform", "cotangent"};
+constexpr std::string_view kDevices[] = {"cpu", "gpu"};
 constexpr std::string_view kMapSizes[] = {"64", "128", "256", "512", "1024", "2048", "4096"};
 constexpr std::string_view kBakeMethods[] = {"nearest-exact", "nearest-approx", "raster"};
 constexpr std::string_view kFormats[] = {"8", "16", "float"};
@@ -69,16 +70,24 @@ std::vector<SceneRecipe> DenoiseLab::scenes() const { return denoiseScenes(); }
 namespace {
 
 void visitInput(ParamVisitor& v, DenoiseParams::Input& input) {
-  v.enumParam({"input", "Input", "", "published: the mesh's own noise (the data set's noisy twin, or the scene's file "
+  v.enumParam({"input", "Input", "",
+               "published: the mesh's own noise (the data set's noisy twin, or the scene's file "
                "when a clean reference is given); generated: noise added to the clean mesh here with the settings "
-               "below."}, input.source, kInputs);
-  v.fileParam({"clean", "Clean reference", "", "Your own pair: the scene (--scene NOISY) is the noisy mesh and this file "
+               "below."},
+              input.source, kInputs);
+  v.fileParam({"clean", "Clean reference", "",
+               "Your own pair: the scene (--scene NOISY) is the noisy mesh and this file "
                "its clean reference, with the same vertices in the same order or the same faces in the same order. "
-               "Every error is then against it."}, input.clean, kMeshFiles);
-  v.enumParam({"noise", "Noise", "", "gaussian: every vertex moves along its normal; impulsive: only a random "
-               "fraction does."}, input.noise.kind, kNoiseKinds);
-  v.floatParam({"noise_level", "Noise level", "edges", "Standard deviation of the move, in mean edge lengths of the "
-                "clean mesh."}, input.noise.level, 0.0f, 2.0f);
+               "Every error is then against it."},
+              input.clean, kMeshFiles);
+  v.enumParam({"noise", "Noise", "",
+               "gaussian: every vertex moves along its normal; impulsive: only a random "
+               "fraction does."},
+              input.noise.kind, kNoiseKinds);
+  v.floatParam({"noise_level", "Noise level", "edges",
+                "Standard deviation of the move, in mean edge lengths of the "
+                "clean mesh."},
+               input.noise.level, 0.0f, 2.0f);
   v.floatParam({"impulsive_fraction", "Impulsive fraction", "", "Share of the vertices impulsive noise moves."},
                input.noise.impulsiveFraction, 0.0f, 1.0f);
   v.intParam({"seed", "Seed", "", "Random seed of the generated noise: the same seed, the same noise everywhere."},
@@ -91,27 +100,52 @@ void visitInput(ParamVisitor& v, DenoiseParams::Input& input) {
 }
 
 void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
-  v.enumParam({"method", "Method", "", "explicit: p' = p - lambda <delta,n> n, stable only for small steps; taubin: a "
+  v.enumParam({"method", "Method", "",
+               "explicit: p' = p - lambda <delta,n> n, stable only for small steps; taubin: a "
                "lambda step then a shrink-undoing mu step; implicit: (D + lambda L) x' = D x, stable for any lambda; "
-               "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."}, smoothing.method, kMethods);
-  v.enumParam({"weights", "Laplacian weights", "", "uniform: every neighbour alike; cotangent: by the angles opposite "
-               "each edge, following the geometry rather than the triangulation."}, smoothing.laplacian.weights, kWeights);
-  v.floatParam({"lambda", "Lambda", "", "Step size. Explicit and Taubin: stable up to 2 / mu_max (the panel shows it, "
-                "about 1); implicit: any value, larger = smoother."}, smoothing.laplacian.lambda, 1e-3f, 1e5f, true);
-  v.intParam({"iterations", "Iterations", "", "Smoothing steps (bilateral: vertex updates)."}, smoothing.laplacian.iterations, 1, 200);
-  v.boolParam({"along_normal", "Along the normal", "", "Explicit and Taubin move each vertex along its normal only "
+               "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."},
+              smoothing.method, kMethods);
+  v.enumParam({"weights", "Laplacian weights", "",
+               "uniform: every neighbour alike; cotangent: by the angles opposite "
+               "each edge, following the geometry rather than the triangulation."},
+              smoothing.laplacian.weights, kWeights);
+  v.floatParam({"lambda", "Lambda", "",
+                "Step size. Explicit and Taubin: stable up to 2 / mu_max (the panel shows it, "
+                "about 1); implicit: any value, larger = smoother."},
+               smoothing.laplacian.lambda, 1e-3f, 1e5f, true);
+  v.intParam({"iterations", "Iterations", "", "Smoothing steps (bilateral: vertex updates)."},
+             smoothing.laplacian.iterations, 1, 200);
+  v.boolParam({"along_normal", "Along the normal", "",
+               "Explicit and Taubin move each vertex along its normal only "
                "(the homework); off: the full umbrella vector, which also slides vertices along the surface."},
               smoothing.laplacian.alongNormal);
-  v.boolParam({"clamp_cotangent", "Clamp negative weights", "", "Obtuse triangles make cotangent weights negative; "
-               "clamped to 0, every update stays a convex combination."}, smoothing.laplacian.clampNegative);
-  v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."}, smoothing.laplacian.passBand, 0.01f, 0.3f);
-  v.floatParam({"sigma_r", "Bilateral sigma_r", "", "How different two face normals (|n_i - n_j|) may be and still "
-                "be averaged: small keeps more edges."}, smoothing.bilateral.sigmaR, 0.02f, 2.0f, true);
-  v.intParam({"normal_iterations", "Bilateral normal passes", "", "Passes of the normal filter before the vertices "
-              "are fitted."}, smoothing.bilateral.normalIterations, 1, 100);
-  v.boolParam({"weld", "Weld seams", "", "Smooth the welded surface (one vertex per position). Off: copies of a "
-               "position split by UV seams are smoothed apart, the homework's crack."}, smoothing.weld);
-  v.boolParam({"preserve_volume", "Preserve volume", "", "Every smoothing shrinks a closed mesh (implicit with a large "
+  v.boolParam({"clamp_cotangent", "Clamp negative weights", "",
+               "Obtuse triangles make cotangent weights negative; "
+               "clamped to 0, every update stays a convex combination."},
+              smoothing.laplacian.clampNegative);
+  v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."},
+               smoothing.laplacian.passBand, 0.01f, 0.3f);
+  if (smoothing.method == DenoiseMethod::Implicit || smoothing.method == DenoiseMethod::Bilateral)
+    v.unavailable("implicit and bilateral smoothing run on the CPU");
+  v.enumParam({"device", "Device", "",
+               "Where explicit and Taubin steps run. gpu: one fragment per vertex, "
+               "shaders/denoise/smooth_step.frag with your laplacian_step.glsl, positions in float textures; "
+               "the same weights, normals and divergence checks as the CPU, in float rather than double."},
+              smoothing.device, kDevices);
+  v.floatParam({"sigma_r", "Bilateral sigma_r", "",
+                "How different two face normals (|n_i - n_j|) may be and still "
+                "be averaged: small keeps more edges."},
+               smoothing.bilateral.sigmaR, 0.02f, 2.0f, true);
+  v.intParam({"normal_iterations", "Bilateral normal passes", "",
+              "Passes of the normal filter before the vertices "
+              "are fitted."},
+             smoothing.bilateral.normalIterations, 1, 100);
+  v.boolParam({"weld", "Weld seams", "",
+               "Smooth the welded surface (one vertex per position). Off: copies of a "
+               "position split by UV seams are smoothed apart, the homework's crack."},
+              smoothing.weld);
+  v.boolParam({"preserve_volume", "Preserve volume", "",
+               "Every smoothing shrinks a closed mesh (implicit with a large "
                "lambda, to a point). Implicit fairing's remedy (Desbrun et al. 1999): scale the result about its "
                "centroid back to the input's volume. The volume % column shows the effect."},
               smoothing.preserveVolume);
@@ -119,31 +153,48 @@ void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
 
 void visitMap(ParamVisitor& v, DenoiseParams::Map& map, const std::function<void()>& saveMap) {
   v.choiceParam({"map_size", "Map size", "texels", "Resolution of the baked map (square)."}, map.sizeIndex, kMapSizes);
-  v.enumParam({"bake", "Bake", "", "nearest-exact: each texel takes its nearest vertex's offset (FLANN kd-tree): exact "
-               "at the vertices, where a vertex shader reads it; nearest-approx: FLANN's randomised trees with a budget "
-               "of checks; raster: interpolated inside each UV triangle and dilated into the gutter: smooth between "
-               "vertices (what tessellation or a per-fragment read wants), but a bilinear read at a vertex blends it "
-               "with its neighbours."}, map.bake.method, kBakeMethods);
-  v.intParam({"checks", "FLANN checks", "", "nearest-approx: leaves visited per query. Fewer: faster, more often "
-              "not the nearest."}, map.bake.checks, 1, 512);
-  v.intParam({"gutter", "Gutter", "texels", "raster: texels of dilation around each UV chart, so bilinear lookups "
-              "near a seam read their own chart."}, map.bake.gutter, 0, 16);
+  v.enumParam(
+      {"bake", "Bake", "",
+       "nearest-exact: each texel takes its nearest vertex's offset (FLANN kd-tree): exact "
+       "at the vertices, where a vertex shader reads it; nearest-approx: FLANN's randomised trees with a budget "
+       "of checks; raster: interpolated inside each UV triangle and dilated into the gutter: smooth between "
+       "vertices (what tessellation or a per-fragment read wants), but a bilinear read at a vertex blends it "
+       "with its neighbours."},
+      map.bake.method, kBakeMethods);
+  v.intParam({"checks", "FLANN checks", "",
+              "nearest-approx: leaves visited per query. Fewer: faster, more often "
+              "not the nearest."},
+             map.bake.checks, 1, 512);
+  v.intParam({"gutter", "Gutter", "texels",
+              "raster: texels of dilation around each UV chart, so bilinear lookups "
+              "near a seam read their own chart."},
+             map.bake.gutter, 0, 16);
   v.enumParam({"map_format", "Map format", "bits", "8 or 16-bit normalised with a bias and scale, or float."},
               map.bake.format, kFormats);
-  v.boolParam({"bilinear", "Bilinear lookup", "", "The vertex shader samples the map bilinearly (off: nearest "
-               "texel)."}, map.bilinear);
-  v.action({"bake_files", "Save the map", "", "Writes the map as out/bakes/<scene>-*.png (+ .raw texels, + .json with "
-            "bias, scale and format)."}, saveMap);
+  v.boolParam({"bilinear", "Bilinear lookup", "",
+               "The vertex shader samples the map bilinearly (off: nearest "
+               "texel)."},
+              map.bilinear);
+  v.action({"bake_files", "Save the map", "",
+            "Writes the map as out/bakes/<scene>-*.png (+ .raw texels, + .json with "
+            "bias, scale and format)."},
+           saveMap);
 }
 
 void visitView(ParamVisitor& v, DenoiseParams::View& view) {
-  v.enumParam({"show", "Show", "", "smoothed: the method's mesh; noisy; clean; map: the noisy mesh displaced by the map "
+  v.enumParam({"show", "Show", "",
+               "smoothed: the method's mesh; noisy; clean; map: the noisy mesh displaced by the map "
                "in the vertex shader; attribute: displaced by the same offsets as a vertex attribute; compare: map, "
-               "attribute and smoothed side by side."}, view.show, kShows);
-  v.enumParam({"view", "View", "", "shaded (flat, so noise shows); error: distance to the clean mesh; offset: the "
-               "signed offset along the normal; seam-gap: how far copies of a position moved apart."}, view.mode, kViews);
-  v.floatParam({"heat_scale", "Heat scale", "edges", "Mean edge lengths at full colour in the error and seam-gap views "
-                "(offsets: +-2x this)."}, view.heatScale, 1e-3f, 10.0f, true);
+               "attribute and smoothed side by side."},
+              view.show, kShows);
+  v.enumParam({"view", "View", "",
+               "shaded (flat, so noise shows); error: distance to the clean mesh; offset: the "
+               "signed offset along the normal; seam-gap: how far copies of a position moved apart."},
+              view.mode, kViews);
+  v.floatParam({"heat_scale", "Heat scale", "edges",
+                "Mean edge lengths at full colour in the error and seam-gap views "
+                "(offsets: +-2x this)."},
+               view.heatScale, 1e-3f, 10.0f, true);
 }
 
 }  // namespace
@@ -176,6 +227,7 @@ DenoiseConfig DenoiseLab::config() const {
   c.bilateral.vertexIterations = p.smoothing.laplacian.iterations;  // one iterations slider serves both
   c.weld = p.smoothing.weld;
   c.preserveVolume = p.smoothing.preserveVolume;
+  c.device = p.smoothing.device;
   c.bake = p.map.bake;
   c.bake.resolution = 64 << p.map.sizeIndex;
   c.bilinear = p.map.bilinear;
@@ -189,8 +241,10 @@ ProgramSpec DenoiseLab::programSpec(Path path) const {
   spec.name = std::string("denoise/") + pathNames[int(path)];
   if (path == Path::Map) spec.defines.emplace_back("DISPLACE_MAP", "1");
   if (path == Path::Attribute) spec.defines.emplace_back("DISPLACE_ATTRIBUTE", "1");
-  if (params.view.mode == DenoiseView::Offset) spec.defines.emplace_back("VIEW_SIGNED", "1");
-  else if (params.view.mode != DenoiseView::Shaded) spec.defines.emplace_back("VIEW_HEAT", "1");
+  if (params.view.mode == DenoiseView::Offset)
+    spec.defines.emplace_back("VIEW_SIGNED", "1");
+  else if (params.view.mode != DenoiseView::Shaded)
+    spec.defines.emplace_back("VIEW_HEAT", "1");
   return spec;
 }
 
@@ -202,32 +256,20 @@ std::vector<ProgramSpec> DenoiseLab::allPrograms() const {
       probe.params.view.mode = DenoiseView(view);
       all.push_back(probe.programSpec(path));
     }
+  for (ProgramSpec& spec : GpuSmoother::programSpecs()) all.push_back(std::move(spec));
   return all;
 }
 
 std::string DenoiseLab::setup(LabContext& ctx) {
   shaders_ = &ctx.shaders;
   jobs_ = &ctx.jobs;
+  gpuUnavailable_ = GpuSmoother::unavailableReason();
   return {};
-}
-
-void DenoiseLab::teardown() {
-  for (auto& slot : programs_) slot.reset();
-  plainMesh_ = GpuMesh();
-  mapMesh_ = GpuMesh();
-  attributeMesh_ = GpuMesh();
-  mapTexture_ = gl::Texture2D();
-  mapPreview_ = gl::Texture2D();
-  result_.reset();
-  model_.reset();
-  modelRevision_ = -1;
-  requested_.reset();
-  shaders_ = nullptr;
-  jobs_ = nullptr;
 }
 
 void DenoiseLab::rebuildModel(const Scene& scene) {
   modelRevision_ = scene.revision;
+  gpuMeshRevision_ = -1;  // another model (the same scene with another clean file, too): upload its mesh again
   modelScene_ = scene.name;
   modelNote_.clear();
   result_.reset();
@@ -280,9 +322,11 @@ void DenoiseLab::rebuildModel(const Scene& scene) {
   base.normals.assign(base.positions.size(), glm::vec3(0, 0, 1));
   const DenoiseConfig c = config();
   const bool published = c.publishedInput && !model_->published.empty();
-  const std::vector<glm::dvec3> noisy = published ? model_->published : addNoise(model_->clean, model_->welded.indices, c.noise);
+  const std::vector<glm::dvec3> noisy =
+      published ? model_->published : addNoise(model_->clean, model_->welded.indices, c.noise);
   MeshData input = base;
-  for (size_t v = 0; v < input.positions.size(); ++v) input.positions[v] = glm::vec3(noisy[model_->welded.logicalOf[v]]);
+  for (size_t v = 0; v < input.positions.size(); ++v)
+    input.positions[v] = glm::vec3(noisy[model_->welded.logicalOf[v]]);
   plainMesh_ = GpuMesh::upload(input);
   attributeMesh_ = GpuMesh::upload(base);
   if (model_->hasUvs()) mapMesh_ = GpuMesh::upload(base);
@@ -296,13 +340,38 @@ void DenoiseLab::update(const Scene& scene, float) {
   if (requested_ && *requested_ == want) return;  // computed, or being computed
   requested_ = want;
   const std::string label = std::string(kMethods[int(want.method)]) + " on " + modelScene_ + " (" +
-                            std::to_string(model_->statistics.logicalVertices) + " vertices)";
-  // The job owns what it reads: the model (shared, const) and the settings (a copy).
-  jobs_->submit("denoise", label,
-                [model = model_, want](JobContext& job) { return std::make_shared<DenoiseResult>(runDenoise(*model, want, &job)); },
-                [this, revision = modelRevision_](std::shared_ptr<DenoiseResult> r) {
-                  if (revision == modelRevision_ && r->complete) upload(std::move(*r));
-                });
+                            std::to_string(model_->statistics.logicalVertices) + " vertices)" +
+                            (smoothsOnGpu(want) ? ", smoothed on the GPU" : "");
+  // Steps on the GPU run here, on the GL thread; the job takes their result and does the rest.
+  std::shared_ptr<const SmoothedElsewhere> smoothed;
+  if (smoothsOnGpu(want)) smoothed = std::make_shared<const SmoothedElsewhere>(smoothOnGpu(want));
+  // The job owns what it reads: the model (shared, const), the settings (a copy), the GPU's result.
+  jobs_->submit(
+      "denoise", label,
+      [model = model_, want, smoothed](JobContext& job) {
+        return std::make_shared<DenoiseResult>(runDenoise(*model, want, &job, smoothed.get()));
+      },
+      [this, revision = modelRevision_](std::shared_ptr<DenoiseResult> r) {
+        if (revision == modelRevision_ && r->complete) upload(std::move(*r));
+      });
+}
+
+bool DenoiseLab::smoothsOnGpu(const DenoiseConfig& c) const {
+  return c.device == SmoothingDevice::Gpu && gpuUnavailable_.empty() &&
+         (c.method == DenoiseMethod::Explicit || c.method == DenoiseMethod::Taubin);
+}
+
+SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {
+  SmoothingInput in = smoothingInput(*model_, c);
+  if (gpuMeshRevision_ != modelRevision_ || gpuMeshWelded_ != c.weld) {
+    gpu_.setMesh(in.start.size(), in.indices, *in.adjacency);
+    gpuMeshRevision_ = modelRevision_;
+    gpuMeshWelded_ = c.weld;
+  }
+  SmoothingSettings s = c.smoothing;
+  s.method = c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin : SmoothingMethod::Explicit;
+  const GpuSmoothing run = gpu_.run(*shaders_, in.start, s);
+  return {gpu_.readPositions(), run.energy, run.grewAt, run.stoppedAt, run.ms};
 }
 
 void DenoiseLab::upload(DenoiseResult r) {
@@ -317,7 +386,9 @@ void DenoiseLab::upload(DenoiseResult r) {
     const DisplacementMap& m = *res.map;
     std::vector<uint8_t> texels = encodeMap(m, false);
     GLenum internal = m.format == MapFormat::Unorm8 ? GL_R8 : m.format == MapFormat::Unorm16 ? GL_R16 : GL_R32F;
-    GLenum type = m.format == MapFormat::Unorm8 ? GL_UNSIGNED_BYTE : m.format == MapFormat::Unorm16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
+    GLenum type = m.format == MapFormat::Unorm8    ? GL_UNSIGNED_BYTE
+                  : m.format == MapFormat::Unorm16 ? GL_UNSIGNED_SHORT
+                                                   : GL_FLOAT;
     if (internal == GL_R16 && !gl::hasNorm16Textures()) {
       // WebGL2 has no 16-bit normalized textures: the values a GL_R16 lookup returns, v / 65535, held
       // as 32-bit floats (exactly: 16 bits fit the mantissa), filtered alike.
@@ -333,7 +404,7 @@ void DenoiseLab::upload(DenoiseResult r) {
       type = GL_FLOAT;
     }
     gl::SamplerState s;
-    s.minFilter = s.magFilter = GL_NEAREST;  // the lookup filter is set per draw (bilinear or not)
+    s.minFilter = s.magFilter = GL_NEAREST;                       // the lookup filter is set per draw (bilinear or not)
     s.wrapS = s.wrapT = m.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;  // as the bake and the read-back
     mapTexture_ = gl::Texture2D::fromData(m.size, internal, GL_RED, type, texels.data(), s);
     // A small grey preview for the panel: the stored values over the map's own range.
@@ -365,9 +436,9 @@ void DenoiseLab::uploadViewData() {
   uploadedShow_ = params.view.show;
   uploadedView_ = params.view.mode;
   // The plain mesh draws the smoothed, noisy or clean positions.
-  const std::vector<glm::vec3>& plain = params.view.show == DenoiseShow::Noisy ? r.noisy
+  const std::vector<glm::vec3>& plain = params.view.show == DenoiseShow::Noisy   ? r.noisy
                                         : params.view.show == DenoiseShow::Clean ? model_->render.positions
-                                                                            : r.smoothed;
+                                                                                 : r.smoothed;
   plainMesh_.updatePositions(plain);
   // Heat: the distance of what is drawn to the clean mesh, the offset, or the gap between copies.
   std::vector<float> plainHeat(plain.size(), 0.0f);
@@ -394,7 +465,8 @@ void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::iv
   prog.use();
   const float aspect = float(vp.z) / float(std::max(vp.w, 1));
   const glm::vec2 shift = -2.0f * frame.jitter / glm::vec2(vp.z, vp.w);
-  const glm::mat4 proj = glm::translate(glm::mat4(1.0f), glm::vec3(shift.x, -shift.y, 0.0f)) * frame.camera.projection(aspect);
+  const glm::mat4 proj =
+      glm::translate(glm::mat4(1.0f), glm::vec3(shift.x, -shift.y, 0.0f)) * frame.camera.projection(aspect);
   prog.set("u_viewProj", proj * frame.camera.view());
   prog.set("u_eye", frame.camera.eye());
   const glm::mat4 view = frame.camera.view();
@@ -447,7 +519,8 @@ void DenoiseLab::render(Frame& frame) {
     glViewport(0, 0, size.x, size.y);
     return;
   }
-  static const char* names[] = {"draw: smoothed", "draw: noisy", "draw: clean", "draw: map path", "draw: attribute path"};
+  static const char* names[] = {"draw: smoothed", "draw: noisy", "draw: clean", "draw: map path",
+                                "draw: attribute path"};
   auto pass = frame.pass(names[int(show)]);
   if (show == DenoiseShow::Map) {
     drawPanel(frame, Path::Map, mapMesh_, {0, 0, size.x, size.y});
@@ -463,7 +536,8 @@ std::vector<ProgramRef> DenoiseLab::activePrograms() const { return heldPrograms
 std::string DenoiseLab::saveMap() {
   if (!result_ || !result_->map) return "no map to save: the mesh has no UVs, or no result yet";
   const DisplacementMap& m = *result_->map;
-  const std::string stem = modelScene_ + "-" + std::to_string(m.size.x) + "-" + std::string(kBakeMethods[int(params.map.bake.method)]);
+  const std::string stem =
+      modelScene_ + "-" + std::to_string(m.size.x) + "-" + std::string(kBakeMethods[int(params.map.bake.method)]);
   const auto png = freshName("bakes", stem, ".png");
   ImageF preview;
   preview.size = m.size;
@@ -480,10 +554,17 @@ std::string DenoiseLab::saveMap() {
   auto rawPath = png;
   rawPath.replace_extension(".raw");
   if (auto err = writeTextFile(rawPath.string(), std::string(raw.begin(), raw.end())); !err.empty()) return err;
-  nlohmann::json meta = {{"width", m.size.x}, {"height", m.size.y}, {"format", std::string(kFormats[int(m.format)])},
-                         {"bias", m.bias}, {"scale", m.scale}, {"offset", "stored * scale + bias, along the vertex normal"},
-                         {"rows", "top-down in .png and .raw"}, {"bake", std::string(kBakeMethods[int(params.map.bake.method)])},
-                         {"raw", m.format == MapFormat::Unorm8 ? "uint8" : m.format == MapFormat::Unorm16 ? "uint16 little-endian" : "float32 little-endian"}};
+  nlohmann::json meta = {{"width", m.size.x},
+                         {"height", m.size.y},
+                         {"format", std::string(kFormats[int(m.format)])},
+                         {"bias", m.bias},
+                         {"scale", m.scale},
+                         {"offset", "stored * scale + bias, along the vertex normal"},
+                         {"rows", "top-down in .png and .raw"},
+                         {"bake", std::string(kBakeMethods[int(params.map.bake.method)])},
+                         {"raw", m.format == MapFormat::Unorm8    ? "uint8"
+                                 : m.format == MapFormat::Unorm16 ? "uint16 little-endian"
+                                                                  : "float32 little-endian"}};
   auto jsonPath = png;
   jsonPath.replace_extension(".json");
   if (auto err = writeTextFile(jsonPath.string(), meta.dump(2) + "\n"); !err.empty()) return err;

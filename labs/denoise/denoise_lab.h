@@ -10,8 +10,9 @@
 #include <memory>
 #include <optional>
 
+#include "app/lab/lab.h"
 #include "labs/denoise/denoise_pipeline.h"
-#include "lab/lab.h"
+#include "labs/denoise/gpu_smoother.h"
 
 namespace shadelab {
 
@@ -23,32 +24,32 @@ enum class DenoiseView { Shaded, Error, Offset, SeamGap };
 // Where the pipeline has a settings struct of its own, the section holds it: nothing is copied
 // field by field into the pipeline's configuration.
 struct DenoiseParams {
-  struct Input {                   // the noisy input
+  struct Input {                                  // the noisy input
     NoiseSource source = NoiseSource::Published;  // the data set's noisy twin, where there is one
-    std::string clean;             // a user's clean reference for the scene's (noisy) mesh; "": none
-    NoiseSettings noise;           // generated noise (mesh_noise.h)
+    std::string clean;                            // a user's clean reference for the scene's (noisy) mesh; "": none
+    NoiseSettings noise;                          // generated noise (mesh_noise.h)
   } input;
   struct Smoothing {
     DenoiseMethod method = DenoiseMethod::Explicit;
-    SmoothingSettings laplacian;   // explicit, Taubin, implicit (laplacian.h; its method follows `method`)
-    BilateralSettings bilateral;   // sigma_r and the normal passes (its vertex passes are laplacian.iterations)
-    bool weld = true;              // smoothing on the welded surface (off: the seam bug)
-    bool preserveVolume = false;   // rescale the result to the input's volume (closed meshes)
+    SmoothingSettings laplacian;  // explicit, Taubin, implicit (laplacian.h; its method follows `method`)
+    BilateralSettings bilateral;  // sigma_r and the normal passes (its vertex passes are laplacian.iterations)
+    bool weld = true;             // smoothing on the welded surface (off: the seam bug)
+    bool preserveVolume = false;  // rescale the result to the input's volume (closed meshes)
+    SmoothingDevice device = SmoothingDevice::Cpu;  // explicit and Taubin steps on the GPU, or here
   } smoothing;
-  struct Map {                     // the displacement map
-    int sizeIndex = 4;             // 64 << index: 64 .. 4096
-    BakeSettings bake;             // method, FLANN checks, gutter, format (displacement_bake.h)
-    bool bilinear = true;          // how the vertex shader samples the map
+  struct Map {             // the displacement map
+    int sizeIndex = 4;     // 64 << index: 64 .. 4096
+    BakeSettings bake;     // method, FLANN checks, gutter, format (displacement_bake.h)
+    bool bilinear = true;  // how the vertex shader samples the map
 
     static constexpr int sizeIndexOf(int size) { return std::countr_zero(unsigned(size / 64)); }
   } map;
   struct View {
     DenoiseShow show = DenoiseShow::Smoothed;
     DenoiseView mode = DenoiseView::Shaded;
-    float heatScale = 0.5f;        // mean edge lengths at full colour (error, seam gap); offsets: twice that
+    float heatScale = 0.5f;  // mean edge lengths at full colour (error, seam gap); offsets: twice that
   } view;
 };
-
 
 class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
  public:
@@ -66,7 +67,6 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   std::vector<ProgramSpec> allPrograms() const override;
 
   std::string setup(LabContext& ctx) override;
-  void teardown() override;
   void update(const Scene& scene, float dt) override;
   void render(Frame& frame) override;
   std::vector<ProgramRef> activePrograms() const override;
@@ -90,6 +90,9 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   void uploadViewData();  // the positions and heat scalars the current show and view draw
   void drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 viewport);
   std::string saveMap();  // the bake action
+  bool smoothsOnGpu(const DenoiseConfig& c) const;
+  // The explicit or Taubin steps of `c` on the GPU, on the GL thread, for the job that does the rest.
+  SmoothedElsewhere smoothOnGpu(const DenoiseConfig& c);
 
   ShaderLibrary* shaders_ = nullptr;
   JobRunner* jobs_ = nullptr;
@@ -98,14 +101,18 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   std::string modelScene_;
   bool sceneIsFile_ = false;  // a user's file, not one of the lab's scenes
   std::string missingPairs_;  // the published pairs not on disk, as of the last model build (warnings() runs per frame)
-  std::string modelClean_;   // the clean file it was built with ("" : the scene is the clean mesh)
-  std::string pairNote_;     // how the scene and the clean file were paired, or ""
+  std::string modelClean_;    // the clean file it was built with ("" : the scene is the clean mesh)
+  std::string pairNote_;      // how the scene and the clean file were paired, or ""
   double pairMoveEdges_ = 0.0;
   std::shared_ptr<const DenoiseModel> model_;
   std::string modelNote_;
   std::optional<DenoiseConfig> requested_;  // what the job in flight (or the last one) computes
   std::unique_ptr<DenoiseResult> result_;   // the last result delivered: drawn until the next arrives
   GpuMesh plainMesh_, mapMesh_, attributeMesh_;
+  GpuSmoother gpu_;
+  std::string gpuUnavailable_;  // why this context cannot smooth on the GPU, or ""
+  int gpuMeshRevision_ = -1;    // the model revision and weld setting the smoother's mesh is of
+  bool gpuMeshWelded_ = true;
   gl::Texture2D mapTexture_, mapPreview_;
   std::string lastAction_;
   // What the GPU meshes hold now: re-uploaded when the show or view changes, not per frame.

@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/util/format.h"
 #include "labs/denoise/denoise_lab.h"
 #include "labs/denoise/denoise_scenes.h"
-#include "util/format.h"
 
 namespace shadelab {
 namespace {
@@ -22,8 +22,9 @@ ReferenceSpec DenoiseLab::reference() const {
   ReferenceSpec spec;
   spec.kind = TruthKind::Mesh;
   spec.truth = "clean mesh";
-  spec.description = "the clean mesh the noise was added to (or the published original), vertex for vertex and face "
-                     "for face; distances in mean edge lengths of the clean mesh";
+  spec.description =
+      "the clean mesh the noise was added to (or the published original), vertex for vertex and face "
+      "for face; distances in mean edge lengths of the clean mesh";
   spec.cheap = true;  // the metrics come with every result
   return spec;
 }
@@ -62,7 +63,8 @@ std::vector<std::string> DenoiseLab::warnings() const {
   std::vector<std::string> w;
   if (!modelNote_.empty()) w.push_back(modelNote_);
   if (!missingPairs_.empty())
-    w.push_back("the published noisy/clean pairs are not here (" + missingPairs_ + "): " + kGetDataCommand + " fetches them");
+    w.push_back("the published noisy/clean pairs are not here (" + missingPairs_ + "): " + kGetDataCommand +
+                " fetches them");
   if (!model_) {
     w.push_back("nothing to denoise: the scene has no triangles");
     return w;
@@ -70,34 +72,44 @@ std::vector<std::string> DenoiseLab::warnings() const {
   const auto& p = params;
   // Whose noise is on screen: a warning whenever it is not the file's own.
   const bool ownNoise = p.input.source == NoiseSource::Published && !model_->published.empty();
-  const std::string generated = "generated " + std::string(p.input.noise.kind == NoiseKind::Gaussian ? "gaussian" : "impulsive") + " noise (level " +
-                                formatFixed(p.input.noise.level, 2) + ", seed " + std::to_string(p.input.noise.seed) + ")";
+  const std::string generated =
+      "generated " + std::string(p.input.noise.kind == NoiseKind::Gaussian ? "gaussian" : "impulsive") +
+      " noise (level " + formatFixed(p.input.noise.level, 2) + ", seed " + std::to_string(p.input.noise.seed) + ")";
   if (!ownNoise && !model_->published.empty())
     w.push_back("the noise shown is " + generated + ", not the mesh's own: input = published shows " +
                 (pairNote_.empty() ? "the data set's noisy twin" : "the scene file's own noise"));
   else if (!ownNoise && p.input.source == NoiseSource::Published)
-    w.push_back("this scene has no noisy twin, so the noise shown is " + generated + "; for a noisy mesh of your own "
+    w.push_back("this scene has no noisy twin, so the noise shown is " + generated +
+                "; for a noisy mesh of your own "
                 "with its clean reference: --scene NOISY --set denoise.clean=CLEAN");
   if (!ownNoise && sceneIsFile_ && p.input.clean.empty())
-    w.push_back(std::filesystem::path(modelScene_).filename().string() + " is taken as the clean mesh and noise is "
+    w.push_back(std::filesystem::path(modelScene_).filename().string() +
+                " is taken as the clean mesh and noise is "
                 "generated on it; if it is a noisy mesh, give its clean reference with denoise.clean=CLEAN");
   if (!pairNote_.empty() && pairMoveEdges_ > 2.0)
-    w.push_back("the paired vertices lie " + formatFixed(pairMoveEdges_, 1) + " mean edges apart on average (noise "
+    w.push_back("the paired vertices lie " + formatFixed(pairMoveEdges_, 1) +
+                " mean edges apart on average (noise "
                 "is usually well under one): check that the clean file is this mesh's reference");
-  const bool laplacian = p.smoothing.method != DenoiseMethod::Bilateral && p.smoothing.method != DenoiseMethod::Implicit;
+  const bool laplacian =
+      p.smoothing.method != DenoiseMethod::Bilateral && p.smoothing.method != DenoiseMethod::Implicit;
+  if (laplacian && p.smoothing.device == SmoothingDevice::Gpu && !gpuUnavailable_.empty())
+    w.push_back("smoothing on the CPU: " + gpuUnavailable_);
   if (result_) {
     for (auto& n : result_->notes) w.push_back(n);
-    if (laplacian && result_->stabilityLimit > 0 && p.smoothing.laplacian.lambda > result_->stabilityLimit && result_->grewAt == 0)
+    if (laplacian && result_->stabilityLimit > 0 && p.smoothing.laplacian.lambda > result_->stabilityLimit &&
+        result_->grewAt == 0)
       w.push_back("lambda is above the stable explicit step (about " + formatFixed(result_->stabilityLimit, 2) +
                   "): expect the energy to grow with more iterations");
   }
   if ((p.view.show == DenoiseShow::Map || p.view.show == DenoiseShow::Compare) && !model_->hasUvs())
-    w.push_back("this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
-                "attribute path) instead");
+    w.push_back(
+        "this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
+        "attribute path) instead");
   if (p.smoothing.method == DenoiseMethod::Implicit && !p.smoothing.laplacian.alongNormal)
     w.push_back("implicit smoothing moves all three coordinates; along_normal applies to explicit and Taubin only");
   if (p.smoothing.laplacian.weights == LaplacianWeights::Cotangent && !p.smoothing.laplacian.clampNegative)
-    w.push_back("negative cotangent weights are not clamped: updates are no longer convex combinations and may diverge");
+    w.push_back(
+        "negative cotangent weights are not clamped: updates are no longer convex combinations and may diverge");
   if (!lastAction_.empty()) w.push_back(lastAction_);
   return w;
 }
@@ -107,28 +119,28 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   if (!model_) return out;
   const MeshStatistics& s = model_->statistics;
   LabPanel mesh{"Mesh", {}};
-  mesh.items.push_back(PanelTable{
-      {"", "count"},
-      {{"render vertices", std::to_string(s.renderVertices)},
-       {"positions (welded)", std::to_string(s.logicalVertices)},
-       {"seam positions", std::to_string(s.seamVertices)},
-       {"triangles", std::to_string(s.triangles)},
-       {"boundary edges", std::to_string(s.boundaryEdges)},
-       {"non-manifold edges", std::to_string(s.nonManifoldEdges)},
-       {"zero-area faces", std::to_string(s.zeroAreaFaces)},
-       {"isolated vertices", std::to_string(s.isolatedVertices)},
-       {"mean edge length", formatFixed(s.meanEdgeLength, 5)}}});
+  mesh.items.push_back(PanelTable{{"", "count"},
+                                  {{"render vertices", std::to_string(s.renderVertices)},
+                                   {"positions (welded)", std::to_string(s.logicalVertices)},
+                                   {"seam positions", std::to_string(s.seamVertices)},
+                                   {"triangles", std::to_string(s.triangles)},
+                                   {"boundary edges", std::to_string(s.boundaryEdges)},
+                                   {"non-manifold edges", std::to_string(s.nonManifoldEdges)},
+                                   {"zero-area faces", std::to_string(s.zeroAreaFaces)},
+                                   {"isolated vertices", std::to_string(s.isolatedVertices)},
+                                   {"mean edge length", formatFixed(s.meanEdgeLength, 5)}}});
   out.push_back(std::move(mesh));
   if (!result_) return out;
   const DenoiseResult& r = *result_;
   LabPanel result{"Against the clean mesh", {}};
   const bool published = r.config.publishedInput && !model_->published.empty();
   result.items.push_back(PanelText{
-      (published ? (pairNote_.empty() ? std::string("Input: the published noisy twin. ") : "Input: " + pairNote_ + ". ")
-                 : "Input: generated " + std::string(r.config.noise.kind == NoiseKind::Gaussian ? "Gaussian" : "impulsive") +
-                       " noise, level " + formatFixed(r.config.noise.level, 2) +
-                       ", seed " + std::to_string(r.config.noise.seed) +
-                       (r.config.publishedInput ? " (this mesh has no published twin). " : ". ")) +
+      (published
+           ? (pairNote_.empty() ? std::string("Input: the published noisy twin. ") : "Input: " + pairNote_ + ". ")
+           : "Input: generated " + std::string(r.config.noise.kind == NoiseKind::Gaussian ? "Gaussian" : "impulsive") +
+                 " noise, level " + formatFixed(r.config.noise.level, 2) + ", seed " +
+                 std::to_string(r.config.noise.seed) +
+                 (r.config.publishedInput ? " (this mesh has no published twin). " : ". ")) +
       "Angles in degrees; distances in mean edge lengths of the clean mesh."});
   PanelTable errors{{"", "angle", "RMS", "max", "volume %"}, {}};
   errors.rows.push_back(errorRow("noisy input", r.noisyError));
@@ -182,8 +194,9 @@ std::vector<LabPanel> DenoiseLab::panels() const {
                                 (r.map->repeat ? "repeats (the UVs leave [0, 1])" : "clamps (the UVs stay in [0, 1])");
     map.items.push_back(PanelImage{&mapPreview_, {256, 256}, caption});
     if (params.view.show == DenoiseShow::Compare)
-      map.items.push_back(PanelText{"Compare: the map path, the attribute path, the smoothed mesh (left to right in a wide "
-                                    "view, top to bottom in a tall one)."});
+      map.items.push_back(
+          PanelText{"Compare: the map path, the attribute path, the smoothed mesh (left to right in a wide "
+                    "view, top to bottom in a tall one)."});
     out.push_back(std::move(map));
   }
   return out;
@@ -191,9 +204,10 @@ std::vector<LabPanel> DenoiseLab::panels() const {
 
 std::vector<SweepAxis> DenoiseLab::standardSweep() const {
   // Each method over its main knob; lambda for the Laplacian ones (iterations fixed at 10).
-  return {{"method", {"explicit:lambda=0.1", "explicit:lambda=0.3", "explicit:lambda=0.6", "explicit:lambda=0.9",
-                      "taubin:lambda=0.3", "taubin:lambda=0.6", "implicit:lambda=0.3", "implicit:lambda=1",
-                      "implicit:lambda=3", "bilateral:sigma_r=0.2", "bilateral:sigma_r=0.35", "bilateral:sigma_r=0.6"}},
+  return {{"method",
+           {"explicit:lambda=0.1", "explicit:lambda=0.3", "explicit:lambda=0.6", "explicit:lambda=0.9",
+            "taubin:lambda=0.3", "taubin:lambda=0.6", "implicit:lambda=0.3", "implicit:lambda=1", "implicit:lambda=3",
+            "bilateral:sigma_r=0.2", "bilateral:sigma_r=0.35", "bilateral:sigma_r=0.6"}},
           {"iterations", {"3", "10", "30"}}};
 }
 

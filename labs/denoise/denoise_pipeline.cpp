@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
-#include "scene/mesh_topology.h"
+#include "app/scene/mesh_topology.h"
 
 namespace shadelab {
 namespace {
@@ -47,7 +48,8 @@ std::string number(double v) {
 
 }  // namespace
 
-std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, const MeshData* published, std::string& error) {
+std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, const MeshData* published,
+                                                      std::string& error) {
   if (clean.indices.size() < 3) {
     error = "the scene has no triangles to denoise";
     return nullptr;
@@ -75,82 +77,64 @@ std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, con
   return m;
 }
 
-DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobContext* job) {
-  DenoiseResult r;
-  r.config = c;
-  const WeldedMesh& w = m.welded;
-  const size_t renderCount = m.render.positions.size();
+namespace {
 
-  // 1. The noisy input, per logical vertex: copies of a position always get the same noise.
-  if (job) job->stage(0.0f, 0.05f);
-  if (job) job->progress(0.0f, "adding noise");
-  auto t0 = Clock::now();
-  const bool published = c.publishedInput && !m.published.empty();
-  const std::vector<glm::dvec3> noisyLogical = published ? m.published : addNoise(m.clean, w.indices, c.noise);
-  r.noiseMs = msSince(t0);
-
-  // 2. The vertices smoothing works on: welded, or each render vertex on its own (the homework's bug).
-  std::vector<glm::dvec3> start;
-  std::span<const uint32_t> indices = c.weld ? std::span<const uint32_t>(w.indices) : std::span<const uint32_t>(m.render.indices);
-  const Adjacency& adjacency = c.weld ? m.weldedAdjacency : m.renderAdjacency;
-  if (c.weld) {
-    start = noisyLogical;
-  } else {
-    start.resize(renderCount);
-    for (size_t v = 0; v < renderCount; ++v) start[v] = noisyLogical[w.logicalOf[v]];
+// Smoothing shrinks a closed mesh (each vertex moves towards its neighbours' average); implicit
+// fairing's remedy (Desbrun et al. 1999) scales the result about its centroid back to the input's
+// volume. Measured on the smoothed surface itself, so the note names what happened.
+void measureVolume(const DenoiseModel& m, const DenoiseConfig& c, std::span<const glm::dvec3> start,
+                   std::span<const uint32_t> indices, std::vector<glm::dvec3>& result, DenoiseResult& r) {
+  if (m.statistics.boundaryEdges != 0) return;  // an open mesh has no volume
+  glm::dvec3 centroid(0.0);
+  for (const glm::dvec3& p : result) centroid += p;
+  centroid /= double(std::max<size_t>(result.size(), 1));
+  const double before = signedVolume(start, indices, centroid), after = signedVolume(result, indices, centroid);
+  r.smoothingVolumeChangePct = before != 0.0 ? 100.0 * (after - before) / std::abs(before) : 0.0;
+  // Below a millionth of its volume the mesh has collapsed to a point: its shape is rounding
+  // noise, and scaling that up by more than 100 would only enlarge the noise.
+  r.collapsed = !(std::abs(after) >= 1e-6 * std::abs(before));
+  if (c.preserveVolume && before * after > 0.0 && !r.collapsed) {
+    const double scale = std::cbrt(before / after);
+    for (glm::dvec3& p : result) p = centroid + (p - centroid) * scale;
+    r.volumeScale = scale;
   }
-  auto smoothVertex = [&](size_t renderVertex) { return c.weld ? w.logicalOf[renderVertex] : uint32_t(renderVertex); };
+}
 
-  // 3. Smoothing.
-  if (job) job->stage(0.05f, 0.8f);
-  t0 = Clock::now();
-  std::vector<glm::dvec3> result;
+// The smoothing itself, on `start` (welded or per render vertex) with `indices` and `adjacency`.
+std::vector<glm::dvec3> smoothPositions(const DenoiseConfig& c, std::span<const glm::dvec3> start,
+                                        std::span<const uint32_t> indices, const Adjacency& adjacency, DenoiseResult& r,
+                                        JobContext* job) {
   if (c.method == DenoiseMethod::Bilateral) {
     BilateralResult b = bilateralNormalFilter(start, indices, c.bilateral, job);
-    result = std::move(b.positions);
     r.normalChangeDeg = std::move(b.normalChangeDeg);
-  } else {
-    SmoothingSettings s = c.smoothing;
-    s.method = c.method == DenoiseMethod::Explicit ? SmoothingMethod::Explicit
-               : c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin
-                                                   : SmoothingMethod::Implicit;
-    SmoothingResult sr = smooth(start, indices, adjacency, s, job);
-    if (!sr.error.empty()) r.notes.push_back(sr.error);
-    result = std::move(sr.positions);
-    r.energy = std::move(sr.energy);
-    r.grewAt = sr.grewAt;
-    r.stoppedAt = sr.stoppedAt;
-    r.factorMs = sr.factorMs;
-    r.weights = std::move(sr.weightsUsed);
+    return std::move(b.positions);
   }
-  // Smoothing shrinks a closed mesh (each vertex moves towards its neighbours' average); implicit
-  // fairing's remedy (Desbrun et al. 1999) scales the result about its centroid back to the input's
-  // volume. Measured on the smoothed surface itself, so the note names what happened.
-  if (m.statistics.boundaryEdges == 0) {
-    glm::dvec3 centroid(0.0);
-    for (const glm::dvec3& p : result) centroid += p;
-    centroid /= double(std::max<size_t>(result.size(), 1));
-    const double before = signedVolume(start, indices, centroid), after = signedVolume(result, indices, centroid);
-    r.smoothingVolumeChangePct = before != 0.0 ? 100.0 * (after - before) / std::abs(before) : 0.0;
-    // Below a millionth of its volume the mesh has collapsed to a point: its shape is rounding
-    // noise, and scaling that up by more than 100 would only enlarge the noise.
-    r.collapsed = !(std::abs(after) >= 1e-6 * std::abs(before));
-    if (c.preserveVolume && before * after > 0.0 && !r.collapsed) {
-      const double scale = std::cbrt(before / after);
-      for (glm::dvec3& p : result) p = centroid + (p - centroid) * scale;
-      r.volumeScale = scale;
-    }
-  }
-  r.solveMs = msSince(t0);
-  if (job && job->cancelled()) return r;
-  if (c.method != DenoiseMethod::Bilateral)
-    r.stabilityLimit = stabilityLimit(adjacency, edgeWeights(start, indices, adjacency, c.smoothing.weights, c.smoothing.clampNegative), 200);
+  SmoothingSettings s = c.smoothing;
+  s.method = c.method == DenoiseMethod::Explicit ? SmoothingMethod::Explicit
+             : c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin
+                                                 : SmoothingMethod::Implicit;
+  SmoothingResult sr = smooth(start, indices, adjacency, s, job);
+  if (!sr.error.empty()) r.notes.push_back(sr.error);
+  r.energy = std::move(sr.energy);
+  r.grewAt = sr.grewAt;
+  r.stoppedAt = sr.stoppedAt;
+  r.factorMs = sr.factorMs;
+  r.weights = std::move(sr.weightsUsed);
+  return std::move(sr.positions);
+}
 
-  // 4. Offsets along the noisy surface's normals, per render vertex.
-  if (job) job->stage(0.8f, 0.82f);
-  if (job) job->progress(0.0f, "offsets along the normals");
+// Per render vertex: the positions to draw, the offsets along the noisy surface's normals, and
+// the errors of the smoothed mesh and of its offsets against the clean mesh.
+struct RenderCopies {
+  std::vector<glm::dvec3> noisy, clean;
+};
+RenderCopies offsetsAlongNormals(const DenoiseModel& m, std::span<const glm::dvec3> start,
+                                 std::span<const glm::dvec3> result, std::span<const uint32_t> indices,
+                                 const std::function<uint32_t(size_t)>& smoothVertex, DenoiseResult& r) {
+  const size_t renderCount = m.render.positions.size();
   const std::vector<glm::dvec3> normals = vertexNormals(start, indices, NormalWeighting::Area);
-  std::vector<glm::dvec3> noisyR(renderCount), smoothedR(renderCount), attributeR(renderCount), cleanR(renderCount);
+  RenderCopies copies{std::vector<glm::dvec3>(renderCount), std::vector<glm::dvec3>(renderCount)};
+  std::vector<glm::dvec3> smoothedR(renderCount), attributeR(renderCount);
   r.noisy.resize(renderCount);
   r.smoothed.resize(renderCount);
   r.noisyNormals.resize(renderCount);
@@ -159,63 +143,68 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
     const uint32_t s = smoothVertex(v);
     const glm::dvec3 n = normals[s];
     const double offset = glm::dot(result[s] - start[s], n);
-    noisyR[v] = start[s];
+    copies.noisy[v] = start[s];
     smoothedR[v] = result[s];
     attributeR[v] = start[s] + n * offset;
-    cleanR[v] = m.clean[w.logicalOf[v]];
+    copies.clean[v] = m.clean[m.welded.logicalOf[v]];
     r.noisy[v] = glm::vec3(start[s]);
     r.smoothed[v] = glm::vec3(result[s]);
     r.noisyNormals[v] = glm::vec3(n);
     r.offsets[v] = float(offset);
   }
   const std::span<const uint32_t> faces = m.render.indices;
-  r.noisyError = meshError(noisyR, cleanR, faces, m.meanEdge);
-  r.smoothedError = meshError(smoothedR, cleanR, faces, m.meanEdge);
-  r.attributeError = meshError(attributeR, cleanR, faces, m.meanEdge);
-  r.errorSmoothed = distances(smoothedR, cleanR, m.meanEdge);
-  r.errorAttribute = distances(attributeR, cleanR, m.meanEdge);
-  r.attributeGap = copyGaps(w, attributeR, m.meanEdge, r.attributeGapMax);
+  r.noisyError = meshError(copies.noisy, copies.clean, faces, m.meanEdge);
+  r.smoothedError = meshError(smoothedR, copies.clean, faces, m.meanEdge);
+  r.attributeError = meshError(attributeR, copies.clean, faces, m.meanEdge);
+  r.errorSmoothed = distances(smoothedR, copies.clean, m.meanEdge);
+  r.errorAttribute = distances(attributeR, copies.clean, m.meanEdge);
+  r.attributeGap = copyGaps(m.welded, attributeR, m.meanEdge, r.attributeGapMax);
+  return copies;
+}
 
-  // 5. The map, and the offsets it gives back at every vertex's UV.
-  if (m.hasUvs()) {
-    if (job) job->stage(0.82f, 0.98f);
-    BakeSettings bake = c.bake;
-    bake.repeat = uvsLeaveUnitSquare(m.render.uvs);
-    BakeResult b = bakeDisplacement(m.render.uvs, faces, r.offsets, bake, job);
-    if (job && job->cancelled()) return r;
-    if (!b.error.empty()) {
-      r.notes.push_back(b.error);
-    } else {
-      r.bakeMs = b.ms;
-      r.wrongNeighbours = b.wrongNeighbours;
-      r.overlappingTexels = b.overlapping;
-      r.readBack.resize(renderCount);
-      std::vector<glm::dvec3> mappedR(renderCount);
-      double sq = 0.0;
-      for (size_t v = 0; v < renderCount; ++v) {
-        r.readBack[v] = sampleDisplacement(b.map, m.render.uvs[v], c.bilinear);
-        mappedR[v] = noisyR[v] + glm::dvec3(r.noisyNormals[v]) * double(r.readBack[v]);
-        const double e = double(r.readBack[v] - r.offsets[v]) / m.meanEdge;
-        sq += e * e;
-        r.bakeMax = std::max(r.bakeMax, std::abs(e));
-      }
-      r.bakeRms = std::sqrt(sq / double(renderCount));
-      r.mappedError = meshError(mappedR, cleanR, faces, m.meanEdge);
-      r.errorMapped = distances(mappedR, cleanR, m.meanEdge);
-      r.seamGap = copyGaps(w, mappedR, m.meanEdge, r.seamGapMax);
-      r.map = std::move(b.map);
-    }
+// The map of the offsets, and what it gives back at every vertex's UV against the clean mesh.
+void bakeAndReadBack(const DenoiseModel& m, const DenoiseConfig& c, const RenderCopies& copies, DenoiseResult& r,
+                     JobContext* job) {
+  const size_t renderCount = m.render.positions.size();
+  BakeSettings bake = c.bake;
+  bake.repeat = uvsLeaveUnitSquare(m.render.uvs);
+  BakeResult b = bakeDisplacement(m.render.uvs, m.render.indices, r.offsets, bake, job);
+  if (job && job->cancelled()) return;
+  if (!b.error.empty()) {
+    r.notes.push_back(b.error);
+    return;
   }
+  r.bakeMs = b.ms;
+  r.wrongNeighbours = b.wrongNeighbours;
+  r.overlappingTexels = b.overlapping;
+  r.readBack.resize(renderCount);
+  std::vector<glm::dvec3> mappedR(renderCount);
+  double sq = 0.0;
+  for (size_t v = 0; v < renderCount; ++v) {
+    r.readBack[v] = sampleDisplacement(b.map, m.render.uvs[v], c.bilinear);
+    mappedR[v] = copies.noisy[v] + glm::dvec3(r.noisyNormals[v]) * double(r.readBack[v]);
+    const double e = double(r.readBack[v] - r.offsets[v]) / m.meanEdge;
+    sq += e * e;
+    r.bakeMax = std::max(r.bakeMax, std::abs(e));
+  }
+  r.bakeRms = std::sqrt(sq / double(renderCount));
+  r.mappedError = meshError(mappedR, copies.clean, m.render.indices, m.meanEdge);
+  r.errorMapped = distances(mappedR, copies.clean, m.meanEdge);
+  r.seamGap = copyGaps(m.welded, mappedR, m.meanEdge, r.seamGapMax);
+  r.map = std::move(b.map);
+}
 
-  // 6. What the student should know.
+// What the student should know about this result, in the order it matters.
+void noteWhatHappened(const DenoiseModel& m, const DenoiseConfig& c, DenoiseResult& r) {
   const double shrinkPct = -r.smoothingVolumeChangePct;
   if (r.volumeScale != 1.0)
     r.notes.push_back("the smoothed mesh had lost " + number(shrinkPct) + "% of its volume: scaled by " +
                       number(r.volumeScale) + " about its centroid to restore it (preserve_volume)");
   else if (r.collapsed)
-    r.notes.push_back(std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: " : "") +
-                      "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
-                      "draw or to rescale; lower lambda or the iterations");
+    r.notes.push_back(
+        std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: " : "") +
+        "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
+        "draw or to rescale; lower lambda or the iterations");
   else if (shrinkPct >= 10.0)
     r.notes.push_back(std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: "
                                                                       : "the smoothing shrank the mesh: ") +
@@ -224,20 +213,23 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
                       ")");
   if (r.grewAt > 0 && c.method != DenoiseMethod::Implicit)  // implicit steps are stable for any lambda
     r.notes.push_back("diverging: the smoothing energy grew at iteration " + std::to_string(r.grewAt) + " (lambda " +
-                      number(c.smoothing.lambda) + " is beyond the stable explicit step, about " + number(r.stabilityLimit) +
-                      " for these weights)");
+                      number(c.smoothing.lambda) + " is beyond the stable explicit step, about " +
+                      number(r.stabilityLimit) + " for these weights)");
   if (r.stoppedAt > 0)
-    r.notes.push_back("stopped at iteration " + std::to_string(r.stoppedAt) + " of " + std::to_string(c.smoothing.iterations) +
-                      ": the energy had grown to 100 times its start (or the next step was not finite); that mesh is shown");
+    r.notes.push_back(
+        "stopped at iteration " + std::to_string(r.stoppedAt) + " of " + std::to_string(c.smoothing.iterations) +
+        ": the energy had grown to 100 times its start (or the next step was not finite); that mesh is shown");
   if (r.weights.negativeClamped > 0)
-    r.notes.push_back(std::to_string(r.weights.negativeClamped) + " cotangent weights were negative (obtuse angles) and " +
-                      "were clamped to 0");
+    r.notes.push_back(std::to_string(r.weights.negativeClamped) +
+                      " cotangent weights were negative (obtuse angles) and " + "were clamped to 0");
   if (r.weights.uniformFallbacks > 0)
-    r.notes.push_back(std::to_string(r.weights.uniformFallbacks) + " vertices had only zero-area neighbours: uniform weights for them");
+    r.notes.push_back(std::to_string(r.weights.uniformFallbacks) +
+                      " vertices had only zero-area neighbours: uniform weights for them");
   if (!c.weld && m.statistics.seamVertices > 0)
-    r.notes.push_back("welding is off: the " + std::to_string(m.statistics.seamVertices) + " seam positions were smoothed as " +
-                      "separate boundary vertices, and their copies moved apart (cracks, widest " + number(r.attributeGapMax) +
-                      " mean edges)");
+    r.notes.push_back("welding is off: the " + std::to_string(m.statistics.seamVertices) +
+                      " seam positions were smoothed as " +
+                      "separate boundary vertices, and their copies moved apart (cracks, widest " +
+                      number(r.attributeGapMax) + " mean edges)");
   if (r.overlappingTexels > 0 && r.map)
     r.notes.push_back("the UV layout overlaps: " + std::to_string(r.overlappingTexels) + " texels (" +
                       number(100.0 * double(r.overlappingTexels) / double(std::max<size_t>(r.map->covered, 1))) +
@@ -252,6 +244,81 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   if (r.wrongNeighbours > 0)
     r.notes.push_back("the approximate nearest-neighbour search gave " + std::to_string(r.wrongNeighbours) +
                       " texels a vertex that is not the nearest (raise checks)");
+}
+
+}  // namespace
+
+SmoothingInput smoothingInput(const DenoiseModel& m, const DenoiseConfig& c, double* noiseMs) {
+  const WeldedMesh& w = m.welded;
+  // The noisy input, per logical vertex: copies of a position always get the same noise.
+  const auto t0 = Clock::now();
+  const bool published = c.publishedInput && !m.published.empty();
+  std::vector<glm::dvec3> noisyLogical = published ? m.published : addNoise(m.clean, w.indices, c.noise);
+  if (noiseMs) *noiseMs = msSince(t0);
+  // The vertices smoothing works on: welded, or each render vertex on its own (the homework's bug).
+  SmoothingInput in;
+  in.indices = c.weld ? std::span<const uint32_t>(w.indices) : m.render.indices;
+  in.adjacency = c.weld ? &m.weldedAdjacency : &m.renderAdjacency;
+  if (c.weld) {
+    in.start = std::move(noisyLogical);
+  } else {
+    in.start.resize(m.render.positions.size());
+    for (size_t v = 0; v < in.start.size(); ++v) in.start[v] = noisyLogical[w.logicalOf[v]];
+  }
+  return in;
+}
+
+DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobContext* job,
+                         const SmoothedElsewhere* smoothed) {
+  DenoiseResult r;
+  r.config = c;
+  const WeldedMesh& w = m.welded;
+
+  // 1-2. The noisy input and the vertices smoothing works on.
+  if (job) job->stage(0.0f, 0.05f);
+  if (job) job->progress(0.0f, "adding noise");
+  SmoothingInput in = smoothingInput(m, c, &r.noiseMs);
+  const std::vector<glm::dvec3>& start = in.start;
+  const std::span<const uint32_t> indices = in.indices;
+  const Adjacency& adjacency = *in.adjacency;
+
+  // 3. Smoothing (here, or the GPU's result), and what it did to the volume.
+  if (job) job->stage(0.05f, 0.8f);
+  auto t0 = Clock::now();
+  std::vector<glm::dvec3> result;
+  if (smoothed) {
+    result = smoothed->positions;
+    r.energy = smoothed->energy;
+    r.grewAt = smoothed->grewAt;
+    r.stoppedAt = smoothed->stoppedAt;
+    r.weights = edgeWeights(start, indices, adjacency, c.smoothing.weights, c.smoothing.clampNegative);
+  } else {
+    result = smoothPositions(c, start, indices, adjacency, r, job);
+  }
+  measureVolume(m, c, start, indices, result, r);
+  r.solveMs = smoothed ? smoothed->ms : msSince(t0);
+  if (job && job->cancelled()) return r;
+  if (c.method != DenoiseMethod::Bilateral)
+    r.stabilityLimit = stabilityLimit(
+        adjacency, edgeWeights(start, indices, adjacency, c.smoothing.weights, c.smoothing.clampNegative), 200);
+
+  // 4. Offsets along the noisy surface's normals, per render vertex.
+  if (job) job->stage(0.8f, 0.82f);
+  if (job) job->progress(0.0f, "offsets along the normals");
+  const auto smoothVertex = [&](size_t renderVertex) {
+    return c.weld ? w.logicalOf[renderVertex] : uint32_t(renderVertex);
+  };
+  const RenderCopies copies = offsetsAlongNormals(m, start, result, indices, smoothVertex, r);
+
+  // 5. The map, and the offsets it gives back at every vertex's UV.
+  if (m.hasUvs()) {
+    if (job) job->stage(0.82f, 0.98f);
+    bakeAndReadBack(m, c, copies, r, job);
+    if (job && job->cancelled()) return r;
+  }
+
+  // 6. What the student should know.
+  noteWhatHappened(m, c, r);
   if (job) {
     job->stage(0.0f, 1.0f);
     job->progress(1.0f, "done");

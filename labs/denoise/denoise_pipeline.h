@@ -12,25 +12,25 @@
 #include <string>
 #include <vector>
 
+#include "app/scene/mesh.h"
+#include "app/scene/mesh_topology.h"
 #include "labs/denoise/bilateral_normal.h"
 #include "labs/denoise/displacement_bake.h"
 #include "labs/denoise/laplacian.h"
 #include "labs/denoise/mesh_metrics.h"
 #include "labs/denoise/mesh_noise.h"
-#include "scene/mesh.h"
-#include "scene/mesh_topology.h"
 
 namespace shadelab {
 
 struct DenoiseModel {
-  MeshData render;                     // the clean mesh as drawn: render vertices, UVs if any
-  WeldedMesh welded;                   // one logical vertex per position
+  MeshData render;    // the clean mesh as drawn: render vertices, UVs if any
+  WeldedMesh welded;  // one logical vertex per position
   Adjacency weldedAdjacency;
-  Adjacency renderAdjacency;           // the render vertices as they are: seams are boundaries
-  std::vector<glm::dvec3> clean;       // per logical vertex
-  std::vector<glm::dvec3> published;   // per logical vertex: a published noisy twin, or empty
+  Adjacency renderAdjacency;          // the render vertices as they are: seams are boundaries
+  std::vector<glm::dvec3> clean;      // per logical vertex
+  std::vector<glm::dvec3> published;  // per logical vertex: a published noisy twin, or empty
   MeshStatistics statistics;
-  double meanEdge = 1.0;               // of the clean mesh: the unit of every distance reported
+  double meanEdge = 1.0;  // of the clean mesh: the unit of every distance reported
   bool hasUvs() const { return !render.uvs.empty(); }
 };
 
@@ -41,16 +41,21 @@ std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, con
 
 enum class DenoiseMethod { Explicit, Taubin, Implicit, Bilateral };
 
+enum class SmoothingDevice { Cpu, Gpu };
+
 struct DenoiseConfig {
   bool publishedInput = false;  // the published noisy twin instead of generated noise
   NoiseSettings noise;
   DenoiseMethod method = DenoiseMethod::Explicit;
   SmoothingSettings smoothing;  // Laplacian methods (method mirrored into it)
+  // Explicit and Taubin steps on the GPU (gpu_smoother.h), where the lab can run them; the rest of
+  // the pipeline takes the smoothed positions from there.
+  SmoothingDevice device = SmoothingDevice::Cpu;
   BilateralSettings bilateral;
   bool weld = true;             // smoothing and normals on the welded surface (off: the homework's bug)
   bool preserveVolume = false;  // rescale the smoothed mesh about its centroid to the input's volume
   BakeSettings bake;
-  bool bilinear = true;         // how the vertex shader (and the read-back) samples the map
+  bool bilinear = true;  // how the vertex shader (and the read-back) samples the map
   bool operator==(const DenoiseConfig&) const = default;
 };
 
@@ -86,6 +91,25 @@ struct DenoiseResult {
   bool complete = false;           // false when the job was cancelled part way
 };
 
-DenoiseResult runDenoise(const DenoiseModel& model, const DenoiseConfig& config, JobContext* job = nullptr);
+// The positions smoothing starts from (noisy; welded, or per render vertex without weld) and the
+// faces and one-rings it works on.
+struct SmoothingInput {
+  std::vector<glm::dvec3> start;
+  std::span<const uint32_t> indices;
+  const Adjacency* adjacency = nullptr;
+};
+SmoothingInput smoothingInput(const DenoiseModel& model, const DenoiseConfig& config, double* noiseMs = nullptr);
+
+// Smoothing done elsewhere (the GPU), handed to the rest of the pipeline.
+struct SmoothedElsewhere {
+  std::vector<glm::dvec3> positions;  // per vertex of smoothingInput()
+  std::vector<double> energy;
+  int grewAt = 0, stoppedAt = 0;
+  double ms = 0.0;
+};
+
+// `smoothed`: the smoothing's result for `config`, from the GPU; null: smooth here.
+DenoiseResult runDenoise(const DenoiseModel& model, const DenoiseConfig& config, JobContext* job = nullptr,
+                         const SmoothedElsewhere* smoothed = nullptr);
 
 }  // namespace shadelab

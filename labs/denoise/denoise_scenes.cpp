@@ -1,7 +1,7 @@
 #include "labs/denoise/denoise_scenes.h"
 
-#include "scene/loaders.h"
-#include "scene/procedural.h"
+#include "app/scene/loaders.h"
+#include "app/scene/procedural.h"
 
 namespace fs = std::filesystem;
 
@@ -15,7 +15,8 @@ struct Pair {
   const char* camera;  // a three-quarter view that shows the model's features
 };
 const Pair kPairs[] = {
-    {"fandisk-0.3", "Fandisk0.3", "Fandisk, CAD part with sharp edges; published noise 0.3 (6,475 v)", "yaw=120,pitch=25"},
+    {"fandisk-0.3", "Fandisk0.3", "Fandisk, CAD part with sharp edges; published noise 0.3 (6,475 v)",
+     "yaw=120,pitch=25"},
     {"fandisk-0.7", "Fandisk0.7", "Fandisk with heavy noise 0.7", "yaw=120,pitch=25"},
     {"block-0.4", "Block0.4", "Block, flat faces and sharp edges; noise 0.4 (8,771 v)", "yaw=120,pitch=25"},
     {"sharpsphere-0.3", "SharpSphere0.3", "a sphere with sharp ridges; noise 0.3 (10,443 v)", "yaw=210,pitch=25"},
@@ -74,12 +75,12 @@ MeshData degenerateMesh() {
   MeshData m = makePlane(2.0f, 12, 1.0f);
   for (size_t v = 0; v < m.positions.size(); ++v)
     if (v / 13 == 6) m.positions[v].z = m.positions[v - 13].z + 1e-6f;  // row 6 onto row 5
-  const uint32_t a = 13 * 3 + 3, b = a + 1;  // an interior edge
+  const uint32_t a = 13 * 3 + 3, b = a + 1;                             // an interior edge
   m.positions.push_back(m.positions[a] + glm::vec3(0.1f, 0.5f, 0.0f));
   m.uvs.emplace_back(0.5f, 0.5f);
   m.indices.insert(m.indices.end(), {a, b, uint32_t(m.positions.size() - 1)});
   m.indices.insert(m.indices.end(), {a, a, b});  // zero area
-  m.positions.emplace_back(5.0f, 5.0f, 5.0f);  // in no face
+  m.positions.emplace_back(5.0f, 5.0f, 5.0f);    // in no face
   m.uvs.emplace_back(0.0f, 0.0f);
   computeNormals(m);
   m.name = "degenerate";
@@ -127,7 +128,8 @@ std::vector<std::string> missingDenoisePairs() {
   std::vector<std::string> out;
   std::error_code ec;
   for (auto& p : kPairs)
-    if (!fs::is_regular_file(pairFolder(p) / "Original.obj", ec) || !fs::is_regular_file(pairFolder(p) / "Noisy.obj", ec))
+    if (!fs::is_regular_file(pairFolder(p) / "Original.obj", ec) ||
+        !fs::is_regular_file(pairFolder(p) / "Noisy.obj", ec))
       out.push_back(p.id);
   return out;
 }

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/scene_catalog.h"
+#include "app/scene/scene_catalog.h"
 
 namespace shadelab {
 

@@ -54,7 +54,8 @@ bool nearestTexels(const Index& index, int res, std::vector<int>& nearest, const
       flann::Matrix<int> out(&nearest[size_t(y) * size_t(res)], size_t(res), 1);
       index.knnSearch(q, out, d, 1, params);
       const int done = ++rowsDone;
-      if (job && y0 == 0 && !job->progress(0.9f * float(done) / float(res), "nearest vertices, row " + std::to_string(done)))
+      if (job && y0 == 0 &&
+          !job->progress(0.9f * float(done) / float(res), "nearest vertices, row " + std::to_string(done)))
         stop = true;
     }
   };
@@ -73,8 +74,8 @@ bool uvsLeaveUnitSquare(std::span<const glm::vec2> uvs) {
   });
 }
 
-BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint32_t> idx, std::span<const float> offsets,
-                            const BakeSettings& s, JobContext* job) {
+BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint32_t> idx,
+                            std::span<const float> offsets, const BakeSettings& s, JobContext* job) {
   BakeResult r;
   r.map.repeat = s.repeat;
   const auto start = Clock::now();
@@ -157,7 +158,8 @@ BakeResult bakeDisplacement(std::span<const glm::vec2> uvs, std::span<const uint
         }
       values.swap(next);
       filled.swap(nextFilled);
-      if (job && !job->progress(0.7f + 0.2f * float(pass + 1) / float(std::max(s.gutter, 1)), "gutter dilation")) return r;
+      if (job && !job->progress(0.7f + 0.2f * float(pass + 1) / float(std::max(s.gutter, 1)), "gutter dilation"))
+        return r;
     }
   } else {
     // Every vertex at its UV; for a repeating map wrapped into [0, 1)^2, with ghost copies of those

@@ -20,7 +20,7 @@
 
 #include <glm/glm.hpp>
 
-#include "util/job_runner.h"
+#include "app/util/job_runner.h"
 
 namespace shadelab {
 
@@ -37,7 +37,7 @@ struct BakeSettings {
   int checks = 32;        // NearestApprox: leaves visited per query (more: slower, more often right)
   int gutter = 4;         // Raster: texels of dilation around every chart
   MapFormat format = MapFormat::Unorm16;
-  bool repeat = false;    // GL_REPEAT (UVs leave [0, 1]) or GL_CLAMP_TO_EDGE
+  bool repeat = false;  // GL_REPEAT (UVs leave [0, 1]) or GL_CLAMP_TO_EDGE
   bool operator==(const BakeSettings&) const = default;
 };
 
@@ -47,10 +47,10 @@ bool uvsLeaveUnitSquare(std::span<const glm::vec2> uvs);
 struct DisplacementMap {
   glm::ivec2 size{0};
   MapFormat format = MapFormat::Unorm16;
-  std::vector<float> stored;  // what the texture holds: [0,1] (quantised) for unorm, offsets for float
+  std::vector<float> stored;        // what the texture holds: [0,1] (quantised) for unorm, offsets for float
   float bias = 0.0f, scale = 1.0f;  // offset = stored * scale + bias
-  size_t covered = 0;         // texels inside some UV triangle (Raster), or all (Nearest)
-  bool repeat = false;        // how it is sampled: GL_REPEAT or GL_CLAMP_TO_EDGE
+  size_t covered = 0;               // texels inside some UV triangle (Raster), or all (Nearest)
+  bool repeat = false;              // how it is sampled: GL_REPEAT or GL_CLAMP_TO_EDGE
   float decode(float s) const { return s * scale + bias; }
 };
 

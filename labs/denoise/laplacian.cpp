@@ -179,8 +179,8 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
       r.stoppedAt = it;
       return;
     }
-    if (job && !job->progress(float(it) / float(s.iterations), "iteration " + std::to_string(it + 1) + " of " +
-                                                                  std::to_string(s.iterations)))
+    if (job && !job->progress(float(it) / float(s.iterations),
+                              "iteration " + std::to_string(it + 1) + " of " + std::to_string(s.iterations)))
       return;
     bool ok = explicitStep(p, next, delta, s.alongNormal ? &normals : nullptr, s.lambda);
     if (ok && s.method == SmoothingMethod::Taubin) {
@@ -234,8 +234,8 @@ void runImplicit(SmoothingResult& r, const Adjacency& a, const SmoothingSettings
   r.energy.push_back(energy());
   const auto t1 = Clock::now();
   for (int it = 0; it < s.iterations; ++it) {
-    if (job && !job->progress(float(it) / float(s.iterations), "solve " + std::to_string(it + 1) + " of " +
-                                                                  std::to_string(s.iterations)))
+    if (job && !job->progress(float(it) / float(s.iterations),
+                              "solve " + std::to_string(it + 1) + " of " + std::to_string(s.iterations)))
       return;
     const Eigen::MatrixX3d next = solver.solve(d.asDiagonal() * x);
     if (!next.allFinite()) {
@@ -257,8 +257,10 @@ SmoothingResult smooth(std::span<const glm::dvec3> start, std::span<const uint32
   SmoothingResult r;
   r.positions.assign(start.begin(), start.end());
   r.weightsUsed = edgeWeights(start, indices, adjacency, settings.weights, settings.clampNegative);
-  if (settings.method == SmoothingMethod::Implicit) runImplicit(r, adjacency, settings, job);
-  else runExplicit(r, indices, adjacency, settings, job);
+  if (settings.method == SmoothingMethod::Implicit)
+    runImplicit(r, adjacency, settings, job);
+  else
+    runExplicit(r, indices, adjacency, settings, job);
   return r;
 }
 

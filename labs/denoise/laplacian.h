@@ -29,8 +29,8 @@
 
 #include <glm/glm.hpp>
 
-#include "util/job_runner.h"
-#include "scene/mesh_topology.h"
+#include "app/scene/mesh_topology.h"
+#include "app/util/job_runner.h"
 
 namespace shadelab {
 
@@ -39,10 +39,10 @@ enum class LaplacianWeights { Uniform, Cotangent };
 // Symmetric edge weights in the layout of an Adjacency (weight[k] belongs to ring[k]).
 struct EdgeWeights {
   std::vector<double> weight;
-  std::vector<double> rowSum;     // sum of a vertex's weights
-  size_t negativeClamped = 0;     // cotangent weights below zero set to zero
-  size_t degenerateCorners = 0;   // corners of zero-area triangles, which contribute nothing
-  size_t uniformFallbacks = 0;    // vertices whose weights summed to ~0: uniform for them
+  std::vector<double> rowSum;    // sum of a vertex's weights
+  size_t negativeClamped = 0;    // cotangent weights below zero set to zero
+  size_t degenerateCorners = 0;  // corners of zero-area triangles, which contribute nothing
+  size_t uniformFallbacks = 0;   // vertices whose weights summed to ~0: uniform for them
 };
 EdgeWeights edgeWeights(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices,
                         const Adjacency& adjacency, LaplacianWeights kind, bool clampNegative);
@@ -71,7 +71,7 @@ struct SmoothingResult {
   int stoppedAt = 0;           // iterations done before a non-finite or exploding state; 0 = all ran
   EdgeWeights weightsUsed;
   double factorMs = 0, solveMs = 0;  // implicit: factorisation and all solves
-  std::string error;           // a solver failure, in one line
+  std::string error;                 // a solver failure, in one line
 };
 
 // Runs `settings` from `start`. Once the energy reaches 100 times its start (divergence beyond

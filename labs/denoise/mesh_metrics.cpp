@@ -15,13 +15,14 @@ static bool unitNormal(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
   return true;
 }
 
-double meanFaceNormalAngleDeg(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<const uint32_t> idx,
-                              size_t* degenerate) {
+double meanFaceNormalAngleDeg(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b,
+                              std::span<const uint32_t> idx, size_t* degenerate) {
   double sum = 0.0;
   size_t faces = 0, skipped = 0;
   for (size_t t = 0; t + 2 < idx.size(); t += 3) {
     glm::dvec3 na, nb;
-    if (!unitNormal(a[idx[t]], a[idx[t + 1]], a[idx[t + 2]], na) || !unitNormal(b[idx[t]], b[idx[t + 1]], b[idx[t + 2]], nb)) {
+    if (!unitNormal(a[idx[t]], a[idx[t + 1]], a[idx[t + 2]], na) ||
+        !unitNormal(b[idx[t]], b[idx[t + 1]], b[idx[t + 2]], nb)) {
       ++skipped;
       continue;
     }
@@ -39,8 +40,8 @@ double signedVolume(std::span<const glm::dvec3> p, std::span<const uint32_t> idx
   return v / 6.0;
 }
 
-MeshError meshError(std::span<const glm::dvec3> result, std::span<const glm::dvec3> clean, std::span<const uint32_t> idx,
-                    double unit) {
+MeshError meshError(std::span<const glm::dvec3> result, std::span<const glm::dvec3> clean,
+                    std::span<const uint32_t> idx, double unit) {
   MeshError e;
   e.angleDeg = meanFaceNormalAngleDeg(result, clean, idx, &e.degenerateFaces);
   double sq = 0.0;

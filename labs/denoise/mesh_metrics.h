@@ -14,17 +14,17 @@
 namespace shadelab {
 
 struct MeshError {
-  double angleDeg = 0;         // mean face-normal angle to the clean mesh
-  double rmsDistance = 0;      // vertex to its clean position, in `unit`s
+  double angleDeg = 0;     // mean face-normal angle to the clean mesh
+  double rmsDistance = 0;  // vertex to its clean position, in `unit`s
   double maxDistance = 0;
   double volumeChangePct = 0;  // signed volume against the clean mesh's (cone from its centroid if open)
   size_t degenerateFaces = 0;  // faces with no normal in either mesh, left out of the mean angle
 };
 
-double meanFaceNormalAngleDeg(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<const uint32_t> indices,
-                              size_t* degenerate = nullptr);
-MeshError meshError(std::span<const glm::dvec3> result, std::span<const glm::dvec3> clean, std::span<const uint32_t> indices,
-                    double unit);
+double meanFaceNormalAngleDeg(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b,
+                              std::span<const uint32_t> indices, size_t* degenerate = nullptr);
+MeshError meshError(std::span<const glm::dvec3> result, std::span<const glm::dvec3> clean,
+                    std::span<const uint32_t> indices, double unit);
 double signedVolume(std::span<const glm::dvec3> positions, std::span<const uint32_t> indices, const glm::dvec3& origin);
 
 }  // namespace shadelab

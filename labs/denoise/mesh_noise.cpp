@@ -5,7 +5,7 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include "scene/mesh_topology.h"
+#include "app/scene/mesh_topology.h"
 
 namespace shadelab {
 

@@ -15,9 +15,9 @@ enum class NoiseKind { Gaussian, Impulsive };
 
 struct NoiseSettings {
   NoiseKind kind = NoiseKind::Gaussian;
-  float level = 0.3f;               // sigma in mean edge lengths
-  float impulsiveFraction = 0.1f;   // of the vertices, for impulsive noise
-  int seed = 1;                     // 0 .. 1e6
+  float level = 0.3f;              // sigma in mean edge lengths
+  float impulsiveFraction = 0.1f;  // of the vertices, for impulsive noise
+  int seed = 1;                    // 0 .. 1e6
   bool operator==(const NoiseSettings&) const = default;
 };
 

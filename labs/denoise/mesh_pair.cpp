@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <optional>
 
-
 namespace shadelab {
 namespace {
 
@@ -85,9 +84,9 @@ std::string pairWithClean(const MeshData& noisy, const MeshData& clean, const st
     pair.how = "faces in the same order";
     return {};
   }
-  return noisyName + " (" + std::to_string(noisyVertices.size()) + " vertices, " + std::to_string(noisy.indices.size() / 3) +
-         " triangles) and " + cleanName + " (" + std::to_string(cleanVertices.size()) + " vertices, " +
-         std::to_string(clean.indices.size() / 3) +
+  return noisyName + " (" + std::to_string(noisyVertices.size()) + " vertices, " +
+         std::to_string(noisy.indices.size() / 3) + " triangles) and " + cleanName + " (" +
+         std::to_string(cleanVertices.size()) + " vertices, " + std::to_string(clean.indices.size() / 3) +
          " triangles) are not a pair: a noisy mesh and its clean reference need the same vertices in the same order, "
          "or the same faces in the same order";
 }

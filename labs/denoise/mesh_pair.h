@@ -6,13 +6,13 @@
 #pragma once
 #include <string>
 
-#include "scene/mesh.h"
+#include "app/scene/mesh.h"
 
 namespace shadelab {
 
 struct MeshPair {
-  MeshData twin;     // the clean mesh's vertices and faces, at the noisy mesh's positions
-  std::string how;   // "vertices in the same order" or "faces in the same order"
+  MeshData twin;               // the clean mesh's vertices and faces, at the noisy mesh's positions
+  std::string how;             // "vertices in the same order" or "faces in the same order"
   double meanMoveEdges = 0.0;  // mean distance between paired vertices, in mean edges of the clean mesh
 };
 

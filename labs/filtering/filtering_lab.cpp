@@ -4,11 +4,11 @@
 #include <cmath>
 #include <set>
 
-#include "gl/driver_caveats.h"
-#include "lab/technique.h"
-#include "lab/variants.h"
+#include "app/gl/driver_caveats.h"
+#include "app/lab/technique.h"
+#include "app/lab/variants.h"
+#include "app/shader/preprocessor.h"
 #include "labs/filtering/filtering_scenes.h"
-#include "shader/preprocessor.h"
 
 namespace shadelab {
 namespace {
@@ -74,48 +74,74 @@ std::vector<SceneRecipe> FilteringLab::scenes() const { return filteringScenes()
 void FilteringLab::visitParams(ParamVisitor& v) {
   auto& p = params;
   v.section("Filter");
-  v.enumParam({"filter", "Within a level", "", "nearest: the texel the sample falls in; bilinear: the four nearest "
+  v.enumParam({"filter", "Within a level", "",
+               "nearest: the texel the sample falls in; bilinear: the four nearest "
                "texels, two lerps and a third; bicubic: sixteen texels with Catmull-Rom weights (written in the shader "
-               "only: hardware has no bicubic filter)."}, p.filter, namesOf<kTexelFilters>());
-  v.enumParam({"mipmaps", "Mip levels", "", "off: always level 0 (minification aliases); nearest-level: the level "
+               "only: hardware has no bicubic filter)."},
+              p.filter, namesOf<kTexelFilters>());
+  v.enumParam({"mipmaps", "Mip levels", "",
+               "off: always level 0 (minification aliases); nearest-level: the level "
                "closest to L = log2(footprint in texels); linear-level: a blend of the two levels around L "
-               "(with bilinear: trilinear filtering)."}, p.mipmaps, namesOf<kMipSelections>());
-  v.boolParam({"in_shader", "Written in the shader", "", "Filter with texelFetch and arithmetic (filter.glsl) instead "
-               "of the texture unit: the same filter, made visible and editable."}, p.inShader);
+               "(with bilinear: trilinear filtering)."},
+              p.mipmaps, namesOf<kMipSelections>());
+  v.boolParam({"in_shader", "Written in the shader", "",
+               "Filter with texelFetch and arithmetic (filter.glsl) instead "
+               "of the texture unit: the same filter, made visible and editable."},
+              p.inShader);
   if (anisotropyLimit_ > 0.0f && anisotropyLimit_ <= 1.0f && !p.inShader)
-    v.unavailable("this driver has no anisotropic filtering (EXT_texture_filter_anisotropic); tick 'Written in the "
-                  "shader' to use the shader's version");
+    v.unavailable(
+        "this driver has no anisotropic filtering (EXT_texture_filter_anisotropic); tick 'Written in the "
+        "shader' to use the shader's version");
   else if (p.mipmaps == MipSelection::Off)
-    v.unavailable("the probes read smaller mip levels: with mip levels off there are none, so anisotropy is left out "
-                  "(llvmpipe would spend ~15x the time on it for the same picture)");
-  v.intParam({"anisotropy", "Anisotropy", "x", "Up to this many probes along the footprint's long axis, each at the "
-              "level of the footprint's width over their number (needs mip levels)."}, p.anisotropy, 1, 16);
-  v.floatParam({"lod_bias", "LOD bias", "levels", "Added to L: positive reads smaller levels (blur), negative larger "
-                "ones (aliasing). Hardware clamps it to the driver's limit."}, p.lodBias, -16.0f, 16.0f);
+    v.unavailable(
+        "the probes read smaller mip levels: with mip levels off there are none, so anisotropy is left out "
+        "(llvmpipe would spend ~15x the time on it for the same picture)");
+  v.intParam({"anisotropy", "Anisotropy", "x",
+              "Up to this many probes along the footprint's long axis, each at the "
+              "level of the footprint's width over their number (needs mip levels)."},
+             p.anisotropy, 1, 16);
+  v.floatParam({"lod_bias", "LOD bias", "levels",
+                "Added to L: positive reads smaller levels (blur), negative larger "
+                "ones (aliasing). Hardware clamps it to the driver's limit."},
+               p.lodBias, -16.0f, 16.0f);
   v.boolParam({"manual_level", "Choose the level", "", "Read one level everywhere, ignoring the footprint."},
               p.manualLevel);
-  v.floatParam({"level", "Level", "", "The level read when it is chosen by hand (fractions blend two levels with "
-                "linear-level)."}, p.level, 0.0f, 14.0f);
+  v.floatParam({"level", "Level", "",
+                "The level read when it is chosen by hand (fractions blend two levels with "
+                "linear-level)."},
+               p.level, 0.0f, 14.0f);
   v.section("Mip chain");
-  v.enumParam({"downsampler", "Made by", "", "box: each texel the mean of the texels it covers (in linear light, exact "
+  v.enumParam({"downsampler", "Made by", "",
+               "box: each texel the mean of the texels it covers (in linear light, exact "
                "for odd sizes); kaiser: a Kaiser-windowed sinc 3 texels wide (alpha 4), sharper levels; driver: "
-               "glGenerateMipmap, whatever the driver does."}, p.builder, kBuilders);
+               "glGenerateMipmap, whatever the driver does."},
+              p.builder, kBuilders);
   v.section("View");
-  v.enumParam({"view", "View", "", "shaded; mip-level: the level read, one colour per level (red 0, orange 1, yellow 2, "
+  v.enumParam({"view", "View", "",
+               "shaded; mip-level: the level read, one colour per level (red 0, orange 1, yellow 2, "
                "green 3, cyan 4, blue 5, violet 6, pink 7, then again), blended for trilinear; anisotropy: the "
-               "footprint's length over its width, slate 1x to yellow 16x."}, p.view, namesOf<kFilteringViews>());
-  v.boolParam({"footprint_probe", "Footprint probe", "", "Read one pixel's footprint back from the GPU and draw it in "
-               "texel space (the Footprint panel); the pixel is marked with a ring."}, p.probe);
-  v.floatParam({"probe_x", "Probe x", "", "The probe pixel across the frame, 0 left .. 1 right."}, p.probeX, 0.0f, 1.0f);
+               "footprint's length over its width, slate 1x to yellow 16x."},
+              p.view, namesOf<kFilteringViews>());
+  v.boolParam({"footprint_probe", "Footprint probe", "",
+               "Read one pixel's footprint back from the GPU and draw it in "
+               "texel space (the Footprint panel); the pixel is marked with a ring."},
+              p.probe);
+  v.floatParam({"probe_x", "Probe x", "", "The probe pixel across the frame, 0 left .. 1 right."}, p.probeX, 0.0f,
+               1.0f);
   v.floatParam({"probe_y", "Probe y", "", "The probe pixel down the frame, 0 top .. 1 bottom."}, p.probeY, 0.0f, 1.0f);
   v.section("Measure");
-  v.enumParam({"pixel_filter", "Reference pixel filter", "", "How the truth weighs its 16 x 16 samples over a pixel: box "
+  v.enumParam({"pixel_filter", "Reference pixel filter", "",
+               "How the truth weighs its 16 x 16 samples over a pixel: box "
                "(the pixel's square) or gaussian (sigma 0.5 px over 3 x 3 px: softer, less ringing)."},
               p.pixelFilter, kPixelFilters);
-  v.intParam({"motion_frame", "Motion frame", "", "Frame of the slow forward move that flicker is measured over "
-              "(each moves the camera 0.4 % of its distance)."}, p.motionFrame, 0, 30);
-  v.boolParam({"animate", "Animate", "", "Move the camera slowly back and forth (window only): watch the distance "
-               "shimmer."}, p.animate);
+  v.intParam({"motion_frame", "Motion frame", "",
+              "Frame of the slow forward move that flicker is measured over "
+              "(each moves the camera 0.4 % of its distance)."},
+             p.motionFrame, 0, 30);
+  v.boolParam({"animate", "Animate", "",
+               "Move the camera slowly back and forth (window only): watch the distance "
+               "shimmer."},
+              p.animate);
 }
 
 bool FilteringLab::inShader() const {
@@ -163,7 +189,8 @@ ProgramSpec FilteringLab::programSpec(const FilteringParams& p, bool probePass) 
 // program (the test that random settings draw nothing else: gl/lab_lifecycle_test.cpp).
 std::vector<ProgramSpec> FilteringLab::allPrograms() const {
   std::vector<ProgramSpec> all = {programSpec(FilteringParams{}, true)};
-  for (const auto& row : pairwiseCover({int(TexelFilter::Count), int(MipSelection::Count), 2, int(FilteringView::Count), 2, 2})) {
+  for (const auto& row :
+       pairwiseCover({int(TexelFilter::Count), int(MipSelection::Count), 2, int(FilteringView::Count), 2, 2})) {
     FilteringParams p;
     p.filter = TexelFilter(row[0]);
     p.mipmaps = MipSelection(row[1]);
@@ -192,20 +219,6 @@ std::string FilteringLab::setup(LabContext& ctx) {
   s.minFilter = s.magFilter = GL_NEAREST;
   white_ = gl::Texture2D::fromRgba8({1, 1}, white, s, true);
   return {};
-}
-
-void FilteringLab::teardown() {
-  program_.reset();
-  probeProgram_.reset();
-  sampler_.reset();
-  texelSampler_.reset();
-  probeTarget_ = gl::RenderTarget();
-  white_ = gl::Texture2D();
-  chains_.clear();
-  decoded_.clear();
-  sceneRevision_ = -1;
-  shown_ = -1;
-  shaders_ = nullptr;
 }
 
 const FilteringLab::ChainTexture* FilteringLab::chain(const Scene& scene, int image) {
@@ -242,8 +255,8 @@ const FilteringLab::ChainTexture* FilteringLab::chain(const Scene& scene, int im
       glGetTexImage(GL_TEXTURE_2D, l, GL_RGBA, GL_UNSIGNED_BYTE, levels.back().data());
     }
   } else {
-    const auto chainLevels = buildMipChain(*level0, params.builder == MipBuilder::Box ? MipDownsampler::Box
-                                                                                        : MipDownsampler::Kaiser);
+    const auto chainLevels =
+        buildMipChain(*level0, params.builder == MipBuilder::Box ? MipDownsampler::Box : MipDownsampler::Kaiser);
     for (int l = 0; l < c.levels; ++l) {
       levels.push_back(encodeSrgb8(chainLevels[size_t(l)]));
       const glm::ivec2 s = chainLevels[size_t(l)].size;
@@ -335,8 +348,8 @@ void FilteringLab::render(Frame& frame) {
     prog.set("u_map", kUnit);
     prog.set("u_lodBias", params.lodBias);  // the ES path's texture() bias is clamped as the sampler's is
     prog.set("u_level", params.level);
-    prog.set("u_maxAnisotropy", inShader() ? float(anisotropy())
-                                           : std::min(float(anisotropy()), std::max(anisotropyLimit_, 1.0f)));
+    prog.set("u_maxAnisotropy",
+             inShader() ? float(anisotropy()) : std::min(float(anisotropy()), std::max(anisotropyLimit_, 1.0f)));
     const glm::ivec2 probe = probePixel(frame.size());  // from the top-left; gl_FragCoord counts from the bottom
     prog.set("u_probe", glm::vec2(float(probe.x) + 0.5f, float(frame.size().y - 1 - probe.y) + 0.5f));
     for (const Instance& inst : frame.scene.instances) {

@@ -13,8 +13,8 @@
 #pragma once
 #include <optional>
 
+#include "app/lab/lab.h"
 #include "labs/filtering/mip_chain.h"
-#include "lab/lab.h"
 
 namespace shadelab {
 
@@ -65,7 +65,6 @@ class FilteringLab final : public LabWithParams<FilteringParams>, public Judge {
   std::vector<ProgramSpec> allPrograms() const override;
 
   std::string setup(LabContext& ctx) override;
-  void teardown() override;
   void render(Frame& frame) override;
   std::vector<ProgramRef> activePrograms() const override;
   std::vector<std::string> warnings() const override;
@@ -121,8 +120,8 @@ class FilteringLab final : public LabWithParams<FilteringParams>, public Judge {
   Footprint footprint_;
   int shown_ = -1;  // index into chains_ of the first drawn texture: the chain panel's
   std::vector<std::string> frameNotes_;
-  float maxBias_ = 16.0f;           // the driver's GL_MAX_TEXTURE_LOD_BIAS
-  float anisotropyLimit_ = 0.0f;    // the driver's anisotropy limit; 0 before setup (unknown)
+  float maxBias_ = 16.0f;              // the driver's GL_MAX_TEXTURE_LOD_BIAS
+  float anisotropyLimit_ = 0.0f;       // the driver's anisotropy limit; 0 before setup (unknown)
   bool slowDriverAnisotropy_ = false;  // gl::Caveat::SlowAnisotropy (gl/driver_caveats.h)
   // Whether the driver's anisotropic filtering is left for the shader's (slowDriverAnisotropy_).
   bool anisotropyMovedToShader() const;

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/util/format.h"
 #include "labs/filtering/filtering_lab.h"
-#include "util/format.h"
 
 namespace shadelab {
 
@@ -13,8 +13,9 @@ ReferenceSpec FilteringLab::reference() const {
   ReferenceSpec spec;
   spec.kind = TruthKind::Image;
   spec.truth = "supersampled";
-  spec.description = "each pixel's footprint integrated over 16 x 16 jittered samples (bilinear lookups of level 0, "
-                     "no mip levels, no anisotropy), weighted by the pixel filter, averaged in linear light";
+  spec.description =
+      "each pixel's footprint integrated over 16 x 16 jittered samples (bilinear lookups of level 0, "
+      "no mip levels, no anisotropy), weighted by the pixel filter, averaged in linear light";
   spec.overrides = edits<FilteringLab>(params, [](FilteringParams& p) {
     p.filter = TexelFilter::Bilinear;
     p.mipmaps = MipSelection::Off;
@@ -79,17 +80,20 @@ std::vector<std::string> FilteringLab::warnings() const {
   if (p.filter == TexelFilter::Bicubic && !p.inShader)
     w.push_back("bicubic is written in the shader (filter.glsl): texture units have no bicubic filter");
   if (p.anisotropy > 1 && p.mipmaps == MipSelection::Off)
-    w.push_back("anisotropic filtering picks finer mip levels for its probes; with mip levels off it has none to "
-                "pick, so it is left out (every probe would read level 0: the same picture at many times the cost)");
+    w.push_back(
+        "anisotropic filtering picks finer mip levels for its probes; with mip levels off it has none to "
+        "pick, so it is left out (every probe would read level 0: the same picture at many times the cost)");
   if (anisotropyMovedToShader())
-    w.push_back("llvmpipe's anisotropic filtering takes about twice as long for each level finer than the "
-                "footprint (a negative LOD bias or a chosen level): seconds a frame here, so the probes are the "
-                "shader's (in_shader=on) instead of the driver's");
+    w.push_back(
+        "llvmpipe's anisotropic filtering takes about twice as long for each level finer than the "
+        "footprint (a negative LOD bias or a chosen level): seconds a frame here, so the probes are the "
+        "shader's (in_shader=on) instead of the driver's");
   if (hardware && anisotropyLimit_ > 0.0f && float(p.anisotropy) > std::max(anisotropyLimit_, 1.0f))
     w.push_back("anisotropy " + std::to_string(p.anisotropy) + "x clamped to the driver's limit of " +
                 formatNumber(std::max(anisotropyLimit_, 1.0f)) + "x");
   if (hardware && std::abs(p.lodBias) > maxBias_)
-    w.push_back("LOD bias " + formatFixed(p.lodBias, 1) + " clamped to the driver's limit of +-" + formatNumber(maxBias_));
+    w.push_back("LOD bias " + formatFixed(p.lodBias, 1) + " clamped to the driver's limit of +-" +
+                formatNumber(maxBias_));
   if (!p.manualLevel && p.lodBias >= 2.0f)
     w.push_back("LOD bias +" + formatFixed(p.lodBias, 1) + ": levels 2^" + formatFixed(p.lodBias, 1) +
                 " times coarser than the footprint: the texture blurs");
@@ -106,8 +110,11 @@ std::vector<std::string> FilteringLab::warnings() const {
     if (s == glm::ivec2(1))
       w.push_back("a 1 x 1 texture: one level, one texel: every filter returns it");
     else if ((s.x & (s.x - 1)) != 0 || (s.y & (s.y - 1)) != 0)
-      w.push_back(std::to_string(s.x) + " x " + std::to_string(s.y) + " is not a power of two: level k is floor(size / "
-                  "2^k) (" + std::to_string(c.sizes[1].x) + " x " + std::to_string(c.sizes[1].y) + ", ...), and each "
+      w.push_back(std::to_string(s.x) + " x " + std::to_string(s.y) +
+                  " is not a power of two: level k is floor(size / "
+                  "2^k) (" +
+                  std::to_string(c.sizes[1].x) + " x " + std::to_string(c.sizes[1].y) +
+                  ", ...), and each "
                   "texel of a level covers a little more than 2 x 2 of the one before");
   }
   return w;
@@ -120,7 +127,8 @@ std::vector<LabPanel> FilteringLab::panels() const {
     LabPanel panel{"Footprint", {}};
     const Footprint& f = footprint_;
     if (!f.covered) {
-      panel.items.push_back(PanelText{"The probe pixel (" + std::to_string(f.pixel.x) + ", " + std::to_string(f.pixel.y) +
+      panel.items.push_back(PanelText{"The probe pixel (" + std::to_string(f.pixel.x) + ", " +
+                                      std::to_string(f.pixel.y) +
                                       ") shows no texture: move it onto a surface (probe_x, probe_y)."});
     } else {
       const float px = glm::length(f.dx), py = glm::length(f.dy);
@@ -130,15 +138,14 @@ std::vector<LabPanel> FilteringLab::panels() const {
       const int limit = inShader() ? anisotropy() : std::min(anisotropy(), int(std::max(anisotropyLimit_, 1.0f)));
       const int n = std::clamp(int(std::ceil(ratio)), 1, std::max(limit, 1));
       const float anisoLod = std::log2(std::max(pmax, 1e-8f) / float(n));
-      panel.items.push_back(PanelTable{
-          {"", "value"},
-          {{"pixel", std::to_string(f.pixel.x) + ", " + std::to_string(f.pixel.y)},
-           {"dUV/dx (texels)", formatFixed(f.dx.x, 2) + ", " + formatFixed(f.dx.y, 2)},
-           {"dUV/dy (texels)", formatFixed(f.dy.x, 2) + ", " + formatFixed(f.dy.y, 2)},
-           {"long / short axis", formatFixed(pmax, 2) + " / " + formatFixed(pmin, 2)},
-           {"anisotropy", formatFixed(ratio, 1) + " : 1"},
-           {"L = log2(long axis)", formatFixed(lod, 2)},
-           {"probes, their level", std::to_string(n) + ", " + formatFixed(anisoLod, 2)}}});
+      panel.items.push_back(PanelTable{{"", "value"},
+                                       {{"pixel", std::to_string(f.pixel.x) + ", " + std::to_string(f.pixel.y)},
+                                        {"dUV/dx (texels)", formatFixed(f.dx.x, 2) + ", " + formatFixed(f.dx.y, 2)},
+                                        {"dUV/dy (texels)", formatFixed(f.dy.x, 2) + ", " + formatFixed(f.dy.y, 2)},
+                                        {"long / short axis", formatFixed(pmax, 2) + " / " + formatFixed(pmin, 2)},
+                                        {"anisotropy", formatFixed(ratio, 1) + " : 1"},
+                                        {"L = log2(long axis)", formatFixed(lod, 2)},
+                                        {"probes, their level", std::to_string(n) + ", " + formatFixed(anisoLod, 2)}}});
       // The footprint in texels of level 0 around the sample, the square an isotropic filter
       // reads (one texel of level L), and the anisotropic probes along the long axis.
       PanelPlot plot;
@@ -148,7 +155,8 @@ std::vector<LabPanel> FilteringLab::panels() const {
       plot.equalAxes = true;
       // Closed outlines of parallelograms centre +- ex/2 +- ey/2, a break (NaN) after each.
       auto outline = [](PanelSeries& series, glm::vec2 centre, glm::vec2 ex, glm::vec2 ey) {
-        for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(-1, -1)}) {
+        for (glm::vec2 c :
+             {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(-1, -1)}) {
           const glm::vec2 q = centre + 0.5f * (c.x * ex + c.y * ey);
           series.x.push_back(q.x);
           series.y.push_back(q.y);
@@ -177,19 +185,25 @@ std::vector<LabPanel> FilteringLab::panels() const {
     const ChainTexture& c = chains_[size_t(shown_)];
     LabPanel chain{"Mip chain", {}};
     const glm::ivec2 atlas = c.atlas.size();
-    chain.items.push_back(PanelImage{&c.atlas, {320, std::max(1, 320 * atlas.y / std::max(atlas.x, 1))},
-                                     "made by " + std::string(c.builder == MipBuilder::Box      ? "a box filter"
-                                                              : c.builder == MipBuilder::Kaiser ? "a Kaiser-windowed sinc"
-                                                                                                : "the driver")});
+    chain.items.push_back(
+        PanelImage{&c.atlas,
+                   {320, std::max(1, 320 * atlas.y / std::max(atlas.x, 1))},
+                   "made by " + std::string(c.builder == MipBuilder::Box      ? "a box filter"
+                                            : c.builder == MipBuilder::Kaiser ? "a Kaiser-windowed sinc"
+                                                                              : "the driver")});
     PanelTable table{{"level", "size", "contrast"}, {}};
     for (size_t l = 0; l < c.sizes.size(); ++l)
       table.rows.push_back({std::to_string(l), std::to_string(c.sizes[l].x) + " x " + std::to_string(c.sizes[l].y),
                             formatFixed(c.contrast[l], 4)});
     chain.items.push_back(table);
-    chain.items.push_back(PanelText{"contrast: the standard deviation of each level's luminance (linear). A filter "
-                                    "that blurs early loses it a level sooner; switch 'Made by' and compare. Images "
-                                    "decoded: " + std::to_string(imagesDecoded_) + " (only those a drawn material "
-                                    "uses), chains built: " + std::to_string(chains_.size()) + "."});
+    chain.items.push_back(
+        PanelText{"contrast: the standard deviation of each level's luminance (linear). A filter "
+                  "that blurs early loses it a level sooner; switch 'Made by' and compare. Images "
+                  "decoded: " +
+                  std::to_string(imagesDecoded_) +
+                  " (only those a drawn material "
+                  "uses), chains built: " +
+                  std::to_string(chains_.size()) + "."});
     out.push_back(chain);
   }
   return out;

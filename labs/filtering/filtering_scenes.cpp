@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/loaders.h"
-#include "scene/procedural.h"
+#include "app/scene/loaders.h"
+#include "app/scene/procedural.h"
 
 namespace fs = std::filesystem;
 
@@ -95,8 +95,8 @@ ImageSource makePixelArtImage() {
     for (int x = 0; x < 16; ++x) {
       glm::vec3 c(0.95f, 0.93f, 0.85f);
       const float r = std::hypot(x - 7.5f, y - 7.5f);
-      if (r > 4.5f && r < 6.0f) c = {0.95f, 0.55f, 0.1f};        // a ring
-      if (x == y) c = {0.1f, 0.3f, 0.85f};                        // a diagonal
+      if (r > 4.5f && r < 6.0f) c = {0.95f, 0.55f, 0.1f};                      // a ring
+      if (x == y) c = {0.1f, 0.3f, 0.85f};                                     // a diagonal
       if ((x == 3 || x == 12) && (y == 3 || y == 12)) c = {0.1f, 0.6f, 0.2f};  // four dots
       if (x == 0 || y == 0 || x == 15 || y == 15) c = glm::vec3(0.15f);        // a frame
       put(img, x, y, c);
@@ -124,8 +124,9 @@ std::vector<SceneRecipe> filteringScenes() {
                    s.suggestedCamera = kGrazingCamera;
                    return std::string();
                  }});
-  out.push_back({"zoneplate", "a zone plate facing the camera, a little smaller than its texels (minification "
-                              "without perspective)",
+  out.push_back({"zoneplate",
+                 "a zone plate facing the camera, a little smaller than its texels (minification "
+                 "without perspective)",
                  [](Scene& s, const SceneNeeds&) {
                    addMesh(s, quad(2.0f), texturedMaterial(s, makeZonePlateImage({1024, 1024})));
                    s.suggestedCamera = "yaw=0,pitch=0,distance=2.5,target=0;0;0";
@@ -140,33 +141,37 @@ std::vector<SceneRecipe> filteringScenes() {
   std::error_code ec;
   const fs::path spot = dataDirectory() / "meshes/spot_pytorch3d/cow.obj";
   if (fs::is_regular_file(spot, ec))
-    out.push_back({"spot", "Spot with its own 1024 x 1024 texture (../shared/data)", [spot](Scene& s, const SceneNeeds&) {
-                     if (auto err = loadObj(spot, s); !err.empty()) return err;
-                     s.suggestedCamera = "yaw=210,pitch=15,distance=2.8";
-                     return std::string();
-                   }});
+    out.push_back(
+        {"spot", "Spot with its own 1024 x 1024 texture (../shared/data)", [spot](Scene& s, const SceneNeeds&) {
+           if (auto err = loadObj(spot, s); !err.empty()) return err;
+           s.suggestedCamera = "yaw=210,pitch=15,distance=2.8";
+           return std::string();
+         }});
   // Stress scenes.
-  out.push_back({"horizon", "a 20 x 4000 plane to the horizon: thousands of texels per pixel",
-                 [](Scene& s, const SceneNeeds&) {
-                   addMesh(s, ground(20.0f, 4000.0f, 0.5f), texturedMaterial(s, makeTileImage(512, 8)));
-                   s.suggestedCamera = "yaw=0,pitch=1,distance=6,target=0;0.2;-4";
-                   return std::string();
-                 }});
-  out.push_back({"npot", "a 300 x 200 zone plate on the grazing plane: a mip chain of odd sizes (150 x 100, 75 x 50, "
-                         "37 x 25, ...)",
+  out.push_back(
+      {"horizon", "a 20 x 4000 plane to the horizon: thousands of texels per pixel", [](Scene& s, const SceneNeeds&) {
+         addMesh(s, ground(20.0f, 4000.0f, 0.5f), texturedMaterial(s, makeTileImage(512, 8)));
+         s.suggestedCamera = "yaw=0,pitch=1,distance=6,target=0;0.2;-4";
+         return std::string();
+       }});
+  out.push_back({"npot",
+                 "a 300 x 200 zone plate on the grazing plane: a mip chain of odd sizes (150 x 100, 75 x 50, "
+                 "37 x 25, ...)",
                  [](Scene& s, const SceneNeeds&) {
                    addMesh(s, ground(20.0f, 200.0f, 0.25f), texturedMaterial(s, makeZonePlateImage({300, 200})));
                    s.suggestedCamera = kGrazingCamera;
                    return std::string();
                  }});
-  out.push_back({"one-texel", "a 1 x 1 texture on the grazing plane: one level, nothing to filter",
-                 [](Scene& s, const SceneNeeds&) {
-                   addMesh(s, ground(20.0f, 200.0f, 0.5f), texturedMaterial(s, makeSolidImage({0.9f, 0.5f, 0.2f, 1.0f})));
-                   s.suggestedCamera = kGrazingCamera;
-                   return std::string();
-                 }});
-  out.push_back({"constant-uv", "a quad whose four corners share one texture coordinate: zero derivatives, L = "
-                                "log2(0)",
+  out.push_back(
+      {"one-texel", "a 1 x 1 texture on the grazing plane: one level, nothing to filter",
+       [](Scene& s, const SceneNeeds&) {
+         addMesh(s, ground(20.0f, 200.0f, 0.5f), texturedMaterial(s, makeSolidImage({0.9f, 0.5f, 0.2f, 1.0f})));
+         s.suggestedCamera = kGrazingCamera;
+         return std::string();
+       }});
+  out.push_back({"constant-uv",
+                 "a quad whose four corners share one texture coordinate: zero derivatives, L = "
+                 "log2(0)",
                  [](Scene& s, const SceneNeeds&) {
                    MeshData m = quad(2.0f);
                    for (auto& uv : m.uvs) uv = glm::vec2(0.3f, 0.6f);
@@ -174,15 +179,17 @@ std::vector<SceneRecipe> filteringScenes() {
                    s.suggestedCamera = "yaw=0,pitch=0,distance=3,target=0;0;0";
                    return std::string();
                  }});
-  out.push_back({"huge-uv", "the grazing plane with texture coordinates up to 10^6: millions of texels per pixel and "
-                            "float precision running out",
+  out.push_back({"huge-uv",
+                 "the grazing plane with texture coordinates up to 10^6: millions of texels per pixel and "
+                 "float precision running out",
                  [](Scene& s, const SceneNeeds&) {
                    addMesh(s, ground(20.0f, 200.0f, 5000.0f), texturedMaterial(s, makeTileImage(512, 8)));
                    s.suggestedCamera = kGrazingCamera;
                    return std::string();
                  }});
-  out.push_back({"unused-texture", "a plane with one texture and a second image no material uses (it must never be "
-                                   "decoded)",
+  out.push_back({"unused-texture",
+                 "a plane with one texture and a second image no material uses (it must never be "
+                 "decoded)",
                  [](Scene& s, const SceneNeeds&) {
                    addMesh(s, quad(2.0f), texturedMaterial(s, makeTileImage(64, 4)));
                    ImageSource unused;

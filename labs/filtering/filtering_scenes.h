@@ -6,15 +6,15 @@
 #pragma once
 #include <vector>
 
-#include "scene/scene_catalog.h"
+#include "app/scene/scene_catalog.h"
 
 namespace shadelab {
 
 // Procedural images (sRGB, rows top-down), made here.
-ImageSource makeTileImage(int size, int tiles);  // black and white tiles, each outlined by a thin red line
+ImageSource makeTileImage(int size, int tiles);   // black and white tiles, each outlined by a thin red line
 ImageSource makeZonePlateImage(glm::ivec2 size);  // cos(pi r^2 / N): frequency rising to Nyquist at the edge
-ImageSource makePixelArtImage();                 // a 16 x 16 icon of lines, a ring and dots
-ImageSource makeSolidImage(glm::vec4 srgb);      // one texel
+ImageSource makePixelArtImage();                  // a 16 x 16 icon of lines, a ring and dots
+ImageSource makeSolidImage(glm::vec4 srgb);       // one texel
 
 std::vector<SceneRecipe> filteringScenes();
 

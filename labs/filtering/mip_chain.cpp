@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "measure/accumulator.h"  // srgbToLinear, linearToSrgb
+#include "app/measure/accumulator.h"  // srgbToLinear, linearToSrgb
 
 namespace shadelab {
 namespace {
@@ -112,7 +112,8 @@ LinearImage decodeSrgb8(glm::ivec2 size, const std::vector<uint8_t>& rgba) {
   for (int i = 0; i < 256; ++i) table[i] = srgbToLinear(float(i) / 255.0f);
   LinearImage out{size, std::vector<glm::vec4>(size_t(size.x) * size_t(size.y))};
   for (size_t i = 0; i < out.texels.size(); ++i)
-    out.texels[i] = {table[rgba[i * 4]], table[rgba[i * 4 + 1]], table[rgba[i * 4 + 2]], float(rgba[i * 4 + 3]) / 255.0f};
+    out.texels[i] = {table[rgba[i * 4]], table[rgba[i * 4 + 1]], table[rgba[i * 4 + 2]],
+                     float(rgba[i * 4 + 3]) / 255.0f};
   return out;
 }
 

@@ -26,7 +26,7 @@ struct LinearImage {
   const glm::vec4& at(int x, int y) const { return texels[size_t(y) * size_t(size.x) + size_t(x)]; }
 };
 
-int mipLevelCount(glm::ivec2 size);               // 1 + floor(log2(max(w, h)))
+int mipLevelCount(glm::ivec2 size);                   // 1 + floor(log2(max(w, h)))
 glm::ivec2 mipLevelSize(glm::ivec2 size, int level);  // max(1, floor(size / 2^level))
 
 // The next level of `image`. `wrap`: the texture repeats, so kernels read across its edges;

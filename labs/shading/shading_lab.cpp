@@ -5,9 +5,9 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include "lab/technique.h"
-#include "lab/variants.h"
-#include "shader/preprocessor.h"
+#include "app/lab/technique.h"
+#include "app/lab/variants.h"
+#include "app/shader/preprocessor.h"
 
 namespace shadelab {
 namespace {
@@ -17,7 +17,8 @@ struct ShadingModeRow {
   ShadingMode value;
   std::string_view name;
   std::string_view define;
-  bool perFace;  // one lighting per triangle: a geometry shader, or unwelded faces, gives its normal to its three corners
+  // One lighting per triangle: a geometry shader, or unwelded faces, gives its normal to its three corners.
+  bool perFace;
 };
 constexpr ShadingModeRow kShadingModes[] = {
     {ShadingMode::Flat, "flat", "MODE_FLAT", true},
@@ -54,8 +55,9 @@ GpuMesh unweldedFaces(const MeshData& m) {
     glm::vec3 averaged(0.0f);
     if (!m.normals.empty()) averaged = m.normals[i[0]] + m.normals[i[1]] + m.normals[i[2]];
     const glm::vec3 face = glm::cross(p[1] - p[0], p[2] - p[0]);
-    glm::vec3 n = glm::dot(face, face) > 0.0f ? glm::normalize(face)
-                  : glm::dot(averaged, averaged) > 0.0f ? glm::normalize(averaged) : glm::vec3(0, 1, 0);
+    glm::vec3 n = glm::dot(face, face) > 0.0f           ? glm::normalize(face)
+                  : glm::dot(averaged, averaged) > 0.0f ? glm::normalize(averaged)
+                                                        : glm::vec3(0, 1, 0);
     if (glm::dot(n, averaged) < 0.0f) n = -n;  // the winding disagrees with the normals: trust the normals
     const glm::vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
     for (int k = 0; k < 3; ++k) {
@@ -89,35 +91,55 @@ std::string_view ShadingLab::summary() const {
 void ShadingLab::visitParams(ParamVisitor& v) {
   auto& p = params;
   v.section("Shading");
-  v.enumParam({"mode", "Shading frequency", "", "flat: once per triangle (face normal); gouraud: per vertex, "
-               "colours interpolated; phong: per fragment, normals interpolated."}, p.mode, namesOf<kShadingModes>());
-  v.enumParam({"specular", "Specular model", "", "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
-               "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."}, p.specular, kSpecularNames);
-  v.enumParam({"uv_interpolation", "UV interpolation", "", "perspective: correct (divide by w); affine: "
+  v.enumParam({"mode", "Shading frequency", "",
+               "flat: once per triangle (face normal); gouraud: per vertex, "
+               "colours interpolated; phong: per fragment, normals interpolated."},
+              p.mode, namesOf<kShadingModes>());
+  v.enumParam({"specular", "Specular model", "",
+               "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
+               "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."},
+              p.specular, kSpecularNames);
+  v.enumParam({"uv_interpolation", "UV interpolation", "",
+               "perspective: correct (divide by w); affine: "
                "linear in screen space (noperspective), bends the checker on large triangles; by-hand: perspective-"
                "correct from screen-linear inputs, written in shading/perspective_correct.glsl (an exercise). "
-               "WebGL2 has no noperspective: screen-linear values travel as (v w, w) there."}, p.uvInterpolation, kUvNames);
-  if (p.mode != ShadingMode::Flat) v.unavailable("only for mode flat");
-  else if (glslDialect() == GlslDialect::Es300) v.unavailable("WebGL2 has no geometry shaders: faces are always unwelded");
-  v.enumParam({"flat_faces", "Flat faces from", "", "How flat mode gives a triangle one normal and one colour. "
+               "WebGL2 has no noperspective: screen-linear values travel as (v w, w) there."},
+              p.uvInterpolation, kUvNames);
+  if (p.mode != ShadingMode::Flat)
+    v.unavailable("only for mode flat");
+  else if (glslDialect() == GlslDialect::Es300)
+    v.unavailable("WebGL2 has no geometry shaders: faces are always unwelded");
+  v.enumParam({"flat_faces", "Flat faces from", "",
+               "How flat mode gives a triangle one normal and one colour. "
                "geometry_shader: a geometry shader sees the whole triangle, lights it once at its centroid and hands "
                "the colour to its three corners. unwelded: no vertex is shared (three per triangle, each carrying its "
                "face's normal and centroid) and the vertex stage lights it: the way without geometry shaders "
-               "(WebGL2), at three times the vertices. The two draw the same picture."}, p.flatFaces, kFlatFacesNames);
-  v.intParam({"tessellation", "Tessellation", "segments", "Segments around the procedural spheres and tori "
-              "(rings = half). Files are drawn as loaded."}, p.tessellation, 3, kReferenceTessellation);
+               "(WebGL2), at three times the vertices. The two draw the same picture."},
+              p.flatFaces, kFlatFacesNames);
+  v.intParam({"tessellation", "Tessellation", "segments",
+              "Segments around the procedural spheres and tori "
+              "(rings = half). Files are drawn as loaded."},
+             p.tessellation, 3, kReferenceTessellation);
   v.section("Material");
-  v.floatParam({"ka", "Ambient ka", "", "Ambient reflectance: the constant term that stands in for indirect light."}, p.ka, 0.0f, 1.0f);
+  v.floatParam({"ka", "Ambient ka", "", "Ambient reflectance: the constant term that stands in for indirect light."},
+               p.ka, 0.0f, 1.0f);
   v.floatParam({"kd", "Diffuse kd", "", "Diffuse (Lambertian) reflectance."}, p.kd, 0.0f, 1.0f);
   v.floatParam({"ks", "Specular ks", "", "Specular reflectance."}, p.ks, 0.0f, 1.0f);
-  v.floatParam({"shininess", "Shininess p", "", "Specular exponent: larger = smaller, sharper highlight."}, p.shininess, 1.0f, 1024.0f, true);
-  v.boolParam({"textures", "Textures", "", "Use base-colour textures. Off: no image is decoded or uploaded."}, p.textures);
+  v.floatParam({"shininess", "Shininess p", "", "Specular exponent: larger = smaller, sharper highlight."}, p.shininess,
+               1.0f, 1024.0f, true);
+  v.boolParam({"textures", "Textures", "", "Use base-colour textures. Off: no image is decoded or uploaded."},
+              p.textures);
   v.section("Lights");
-  v.intParam({"lights", "Point lights", "", "Number of point lights (0 = ambient only). A compile-time loop bound."}, p.lights, 0, 4);
-  v.floatParam({"light_power", "Light power", "", "Each light's irradiance at the scene centre; lights sit three scene "
-                "radii away and fall off as 1/r^2."}, p.lightPower, 0.0f, 1e5f, true);
-  v.floatParam({"light_elevation", "Light elevation", "deg", "Height of the lights above the horizon. Near 0 the "
-                "light grazes the floor: N.L -> 0."}, p.lightElevationDeg, -10.0f, 90.0f);
+  v.intParam({"lights", "Point lights", "", "Number of point lights (0 = ambient only). A compile-time loop bound."},
+             p.lights, 0, 4);
+  v.floatParam({"light_power", "Light power", "",
+                "Each light's irradiance at the scene centre; lights sit three scene "
+                "radii away and fall off as 1/r^2."},
+               p.lightPower, 0.0f, 1e5f, true);
+  v.floatParam({"light_elevation", "Light elevation", "deg",
+                "Height of the lights above the horizon. Near 0 the "
+                "light grazes the floor: N.L -> 0."},
+               p.lightElevationDeg, -10.0f, 90.0f);
 }
 
 SceneNeeds ShadingLab::needs() const {
@@ -178,13 +200,6 @@ std::string ShadingLab::setup(LabContext& ctx) {
   return {};
 }
 
-void ShadingLab::teardown() {
-  for (auto& p : programs_) p.reset();
-  unwelded_.clear();
-  unweldedRevision_ = -1;
-  shaders_ = nullptr;
-}
-
 void ShadingLab::render(Frame& frame) {
   auto pass = frame.pass("shade");
   glEnable(GL_DEPTH_TEST);
@@ -209,7 +224,7 @@ void ShadingLab::render(Frame& frame) {
   }
 
   // Built when flat mode first needs them, then kept for the scene build (a measurement's Phong
-  // frames between flat ones do not rebuild them); the lab's teardown lets them go.
+  // frames between flat ones do not rebuild them); they go with the lab.
   const bool unwelded = drawsUnwelded(params);
   if (unwelded && unweldedRevision_ != frame.scene.revision) {
     unwelded_.clear();
@@ -241,8 +256,10 @@ void ShadingLab::render(Frame& frame) {
       tex->bind(0);
       prog.set("u_baseColorMap", 0);
     }
-    if (unwelded) unwelded_[size_t(inst.mesh)].draw();
-    else frame.gpu.draw(inst);
+    if (unwelded)
+      unwelded_[size_t(inst.mesh)].draw();
+    else
+      frame.gpu.draw(inst);
   }
 }
 
@@ -265,8 +282,9 @@ ReferenceSpec ShadingLab::reference() const {
   ReferenceSpec spec;
   spec.kind = TruthKind::Image;
   spec.truth = "Phong at 256 segments";
-  spec.description = "per-fragment Phong shading on the 256-segment tessellation with perspective-correct UVs, at the "
-                     "same resolution (one sample per pixel: the error is shading and geometry, not aliasing)";
+  spec.description =
+      "per-fragment Phong shading on the 256-segment tessellation with perspective-correct UVs, at the "
+      "same resolution (one sample per pixel: the error is shading and geometry, not aliasing)";
   spec.overrides = edits<ShadingLab>(params, [](ShadingParams& p) {
     p.mode = ShadingMode::Phong;
     p.uvInterpolation = UvInterpolation::Perspective;

@@ -6,8 +6,8 @@
 #pragma once
 #include <vector>
 
-#include "lab/lab.h"
-#include "scene/gpu_mesh.h"
+#include "app/lab/lab.h"
+#include "app/scene/gpu_mesh.h"
 
 namespace shadelab {
 
@@ -21,15 +21,15 @@ struct ShadingParams {
   ShadingMode mode = ShadingMode::Phong;
   SpecularModel specular = SpecularModel::BlinnPhong;
   UvInterpolation uvInterpolation = UvInterpolation::Perspective;
-  int tessellation = 16;        // segments around spheres and tori
-  float ka = 0.15f;             // ambient reflectance
-  float kd = 0.8f;              // diffuse reflectance
-  float ks = 0.5f;              // specular reflectance
-  float shininess = 64.0f;      // specular exponent p
-  int lights = 2;               // point lights in use, 0..4
-  float lightPower = 0.8f;      // irradiance at the scene centre (so any scene size looks alike)
-  float lightElevationDeg = 45; // height of the lights above the horizon; near 0 = grazing
-  bool textures = true;         // base-colour textures (the checker floor, OBJ/glTF maps)
+  int tessellation = 16;                            // segments around spheres and tori
+  float ka = 0.15f;                                 // ambient reflectance
+  float kd = 0.8f;                                  // diffuse reflectance
+  float ks = 0.5f;                                  // specular reflectance
+  float shininess = 64.0f;                          // specular exponent p
+  int lights = 2;                                   // point lights in use, 0..4
+  float lightPower = 0.8f;                          // irradiance at the scene centre (so any scene size looks alike)
+  float lightElevationDeg = 45;                     // height of the lights above the horizon; near 0 = grazing
+  bool textures = true;                             // base-colour textures (the checker floor, OBJ/glTF maps)
   FlatFaces flatFaces = FlatFaces::GeometryShader;  // WebGL2 has no geometry shaders: always unwelded there
 };
 
@@ -47,7 +47,6 @@ class ShadingLab final : public LabWithParams<ShadingParams>, public Judge {
   std::vector<ProgramSpec> allPrograms() const override;
 
   std::string setup(LabContext& ctx) override;
-  void teardown() override;
   void render(Frame& frame) override;
   std::vector<ProgramRef> activePrograms() const override;
   std::vector<std::string> warnings() const override;

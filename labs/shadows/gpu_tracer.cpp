@@ -7,8 +7,8 @@
 #include <numeric>
 #include <thread>
 
+#include "app/util/process_memory.h"
 #include "labs/shadows/ray_visibility.h"
-#include "util/process_memory.h"
 
 namespace shadelab {
 namespace {
@@ -43,14 +43,14 @@ GpuShadowTracer::GpuShadowTracer(Shape shape) : shape_(shape) {
 ProgramSpec GpuShadowTracer::resolveSpec() {
   ProgramSpec spec;
   spec.name = "shadows/trace_resolve";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace_resolve.frag"}};
+  spec.stages = {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace_resolve.frag"}};
   return spec;
 }
 
 ProgramSpec GpuShadowTracer::programSpec(bool oneRay, const GpuTraceShape& shape) {
   ProgramSpec spec;
   spec.name = "shadows/trace";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace.frag"}};
+  spec.stages = {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/trace.frag"}};
   if (oneRay) spec.defines.emplace_back("ONE_RAY", "1");
   spec.defines.emplace_back("WALK_WIDTH", std::to_string(oneRay ? 1 : shape.walkWidth));
   if (shape.coneCull) spec.defines.emplace_back("CONE_CULL", "1");
@@ -142,7 +142,9 @@ bool GpuShadowTracer::step(ShaderLibrary& shaders, Programs& programs, double bu
   // Bands until about budgetMs has gone: one band of a pass where a pass is slow (llvmpipe), many
   // whole passes where it is fast (a GPU draws all 64 area samples of a frame within one step).
   const int height = sum_->size().y;
-  auto since = [](auto t) { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count(); };
+  auto since = [](auto t) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+  };
   // The samples of a pass: one in the first, so that a whole first estimate is on screen soon
   // where a pass is slow; up to shape_.samplesPerDraw after it (fixed for all the pass's bands,
   // which trace the same disk points).

@@ -9,12 +9,12 @@
 #include <memory>
 #include <optional>
 
-#include "gl/texture.h"
+#include "app/gl/texture.h"
+#include "app/measure/bvh.h"
+#include "app/measure/image.h"
+#include "app/scene/scene.h"
+#include "app/shader/shader_library.h"
 #include "labs/shadows/light_rig.h"
-#include "measure/bvh.h"
-#include "measure/image.h"
-#include "scene/scene.h"
-#include "shader/shader_library.h"
 
 namespace shadelab {
 

@@ -6,16 +6,19 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "lab/params.h"
+#include "app/lab/params.h"
 
 namespace shadelab {
 
 float LightFrame::texelWorld(float depth, int resolution) const {
   const float res = float(std::max(resolution, 1));
   switch (type) {
-    case LightType::Directional: return 2.0f * orthoHalfExtent / res;
-    case LightType::Spot: return 2.0f * std::max(depth, nearPlane) * tanHalfFov / res;
-    case LightType::Point: return 2.0f * std::max(depth, nearPlane) / res;
+    case LightType::Directional:
+      return 2.0f * orthoHalfExtent / res;
+    case LightType::Spot:
+      return 2.0f * std::max(depth, nearPlane) * tanHalfFov / res;
+    case LightType::Point:
+      return 2.0f * std::max(depth, nearPlane) / res;
   }
   return 0.0f;
 }
@@ -73,7 +76,8 @@ LightFrame buildLight(const LightSetup& s, const Bounds& bounds, std::vector<std
   if (s.type != LightType::Directional && ratio > 1e4f)
     warnings.push_back("light far/near ratio " + formatNumber(ratio) +
                        ": perspective depth keeps almost no precision far from the light (acne and leaks)");
-  if (!s.autoFit && L.nearPlane >= L.farPlane) warnings.push_back("light near plane is beyond its far plane: no shadows");
+  if (!s.autoFit && L.nearPlane >= L.farPlane)
+    warnings.push_back("light near plane is beyond its far plane: no shadows");
   if (s.type != LightType::Point && glm::length(L.position - c) < R && s.type == LightType::Spot)
     warnings.push_back("the spot light is inside the scene bounds: geometry behind it casts no shadow");
   if (s.type == LightType::Directional && !s.autoFit && s.orthoExtent < 0.5f)
@@ -85,7 +89,8 @@ std::vector<glm::vec3> frustumSlice(const ViewVolume& view, float nearDepth, flo
   std::vector<glm::vec3> corners;
   for (float depth : {nearDepth, farDepth})
     for (int c = 0; c < 4; ++c) {
-      const glm::vec4 far = view.inverseViewProj * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, 1.0f, 1.0f);
+      const glm::vec4 far =
+          view.inverseViewProj * glm::vec4((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, 1.0f, 1.0f);
       const glm::vec3 ray = glm::vec3(far) / far.w - view.eye;
       corners.push_back(view.eye + ray * (depth / glm::dot(ray, view.forward)));
     }
@@ -106,8 +111,10 @@ void clipSegment(glm::vec3 a, glm::vec3 b, const std::vector<Plane>& planes, std
   for (const Plane& pl : planes) {
     const float da = pl.at(a), db = pl.at(b);
     if (da < 0 && db < 0) return;
-    if (da < 0) t0 = std::max(t0, da / (da - db));
-    else if (db < 0) t1 = std::min(t1, da / (da - db));
+    if (da < 0)
+      t0 = std::max(t0, da / (da - db));
+    else if (db < 0)
+      t1 = std::min(t1, da / (da - db));
     if (t0 > t1) return;
   }
   out.push_back(a + (b - a) * t0);
@@ -286,7 +293,8 @@ std::vector<glm::vec2> poissonDisk(int count) {
       for (int attempt = 0; attempt < 500 && !placed; ++attempt) {
         const glm::vec2 p(rnd() * 2 - 1, rnd() * 2 - 1);
         if (glm::dot(p, p) > 1.0f) continue;
-        placed = std::all_of(pts.begin(), pts.end(), [&](const glm::vec2& q) { return glm::distance(p, q) >= minDist; });
+        placed =
+            std::all_of(pts.begin(), pts.end(), [&](const glm::vec2& q) { return glm::distance(p, q) >= minDist; });
         if (placed) pts.push_back(p);
       }
       if (!placed) minDist *= 0.98f;

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/mesh.h"
+#include "app/scene/mesh.h"
 
 namespace shadelab {
 
@@ -15,29 +15,29 @@ enum class LightType { Directional, Spot, Point };
 // Where a light is and how large: the shadows lab's key-light parameters.
 struct LightPlacement {
   LightType type = LightType::Directional;
-  float elevationDeg = 40.0f;   // above the horizon; near 0 the light grazes the ground
-  float azimuthDeg = 35.0f;     // around the vertical axis
-  float distance = 3.0f;        // spot/point: from the scene centre, in scene radii
-  float spotAngleDeg = 70.0f;   // spot: full cone angle (and its map's field of view)
-  float radius = 0.08f;         // area-light radius in scene radii (PCSS and its truth; 0: a point)
+  float elevationDeg = 40.0f;  // above the horizon; near 0 the light grazes the ground
+  float azimuthDeg = 35.0f;    // around the vertical axis
+  float distance = 3.0f;       // spot/point: from the scene centre, in scene radii
+  float spotAngleDeg = 70.0f;  // spot: full cone angle (and its map's field of view)
+  float radius = 0.08f;        // area-light radius in scene radii (PCSS and its truth; 0: a point)
 };
 
 // What the light's map covers when it is not fitted to the scene.
 struct LightFrustum {
-  bool autoFit = true;          // fit extent and near/far to the scene bounds
-  float orthoExtent = 1.0f;     // directional, !autoFit: half-width of the box, in scene radii
-  float nearPlane = 0.5f;       // !autoFit: in scene radii
-  float farPlane = 5.0f;        // !autoFit: in scene radii
+  bool autoFit = true;       // fit extent and near/far to the scene bounds
+  float orthoExtent = 1.0f;  // directional, !autoFit: half-width of the box, in scene radii
+  float nearPlane = 0.5f;    // !autoFit: in scene radii
+  float farPlane = 5.0f;     // !autoFit: in scene radii
 };
 
 struct LightSetup : LightPlacement, LightFrustum {
-  glm::vec3 fromPoint{0.0f};    // nonzero: the light shines from this point towards the origin
-                                // (overrides azimuth and elevation; a scene's own light)
+  glm::vec3 fromPoint{0.0f};  // nonzero: the light shines from this point towards the origin
+                              // (overrides azimuth and elevation; a scene's own light)
 };
 
 struct LightFrame {
   LightType type = LightType::Directional;
-  glm::vec3 position{0.0f};  // spot/point (directional: the eye of the ortho box)
+  glm::vec3 position{0.0f};       // spot/point (directional: the eye of the ortho box)
   glm::vec3 direction{0, -1, 0};  // unit, from the light into the scene (directional/spot axis)
   glm::mat4 view{1.0f}, proj{1.0f}, viewProj{1.0f};
   // Point: +X -X +Y -Y +Z -Z, GL cube-map face order. Identity for the others (glm leaves a
@@ -100,8 +100,8 @@ struct CascadeSetup {
 
 struct Cascade {
   LightFrame light;
-  float splitFar = 0.0f;   // view depth where this cascade hands over to the next
-  float blendFrom = 0.0f;  // view depth where blending into the next begins (= splitFar: none)
+  float splitFar = 0.0f;         // view depth where this cascade hands over to the next
+  float blendFrom = 0.0f;        // view depth where blending into the next begins (= splitFar: none)
   glm::vec2 contentDepth{0.0f};  // light depth of what the cascade covers: (nearest, farthest)
 };
 

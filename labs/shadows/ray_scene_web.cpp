@@ -1,8 +1,8 @@
 // RayScene where there is no Embree (the browser): the BVH the GPU tracer walks, traversed on the
 // CPU. The same triangles and the same rays, so the same truth, only slower.
+#include "app/measure/bvh.h"
 #include "labs/shadows/gpu_tracer.h"
 #include "labs/shadows/ray_visibility.h"
-#include "measure/bvh.h"
 
 namespace shadelab {
 

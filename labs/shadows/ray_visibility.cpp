@@ -84,8 +84,9 @@ ImageF rayTracedVisibility(const RayScene& scene, const LightFrame& light, const
       }
       const int done = ++rowsDone;
       // One thread reports (JobContext is thread-safe, but one voice is enough).
-      if (job && y0 == 0 && !job->progress(float(done) / float(rows), "shadow rays, row " + std::to_string(done) +
-                                                                        " of " + std::to_string(rows)))
+      if (job && y0 == 0 &&
+          !job->progress(float(done) / float(rows),
+                         "shadow rays, row " + std::to_string(done) + " of " + std::to_string(rows)))
         stop = true;
       if (job && job->cancelled()) stop = true;
     }

@@ -5,10 +5,10 @@
 #pragma once
 #include <memory>
 
-#include "util/job_runner.h"
+#include "app/measure/image.h"
+#include "app/scene/scene.h"
+#include "app/util/job_runner.h"
 #include "labs/shadows/light_rig.h"
-#include "measure/image.h"
-#include "scene/scene.h"
 
 namespace shadelab {
 

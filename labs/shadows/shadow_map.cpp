@@ -15,8 +15,10 @@ int mipLevels(int size) {
 // The whole cube as a layered attachment for the geometry shader's single pass; where there are no
 // geometry shaders (ES 3.0, WebGL2) its first face, and the six passes attach each face in turn.
 void attachCube(GLuint texture) {
-  if (glFramebufferTexture) glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture, 0);
-  else glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X, texture, 0);
+  if (glFramebufferTexture)
+    glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, texture, 0);
+  else
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X, texture, 0);
 }
 
 void allocateArray(GLuint texture, GLenum internal, int size, int layers, int levels) {
@@ -43,7 +45,10 @@ bool complete() {
 
 double ShadowMap::bytesOf(const MapShape& shape) {
   const double texels = double(shape.size) * shape.size * (shape.cube ? 6 : shape.layers);
-  const double moments = shape.momentFormat == GL_R32F ? 4 : shape.momentFormat == GL_RG32F ? 8 : shape.momentFormat ? 16 : 0;
+  const double moments = shape.momentFormat == GL_R32F    ? 4
+                         : shape.momentFormat == GL_RG32F ? 8
+                         : shape.momentFormat             ? 16
+                                                          : 0;
   const double scratch = shape.cube ? 0.0 : double(shape.size) * shape.size * moments;  // one blur layer
   return texels * (4.0 + moments * (shape.momentMips ? 4.0 / 3.0 : 1.0)) + scratch;
 }
@@ -88,8 +93,7 @@ bool ShadowMap::allocate(const MapShape& shape) {
   }
   if (shape.momentFormat && !shape.cube) {
     moments_ = gl::TextureName::make();
-    allocateArray(moments_.get(), shape.momentFormat, size, shape.layers,
-                  shape.momentMips ? mipLevels(size) : 1);
+    allocateArray(moments_.get(), shape.momentFormat, size, shape.layers, shape.momentMips ? mipLevels(size) : 1);
     blurTemp_ = gl::TextureName::make();
     allocateArray(blurTemp_.get(), shape.momentFormat, size, 1, 1);
     blurFbo_ = gl::FramebufferName::make();
@@ -99,7 +103,8 @@ bool ShadowMap::allocate(const MapShape& shape) {
     glDrawBuffers(1, &color);
     if (!complete()) return false;
     momentSampler_ = gl::Sampler::make();
-    glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MIN_FILTER, shape.momentMips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MIN_FILTER,
+                        shape.momentMips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(momentSampler_.get(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
@@ -175,7 +180,8 @@ void ShadowMap::render(const Scene& scene, const GpuScene& gpu, Program& program
   }
   if (shape_.cube && state.sixPasses) {
     for (int f = 0; f < 6; ++f) {  // one face at a time: the vertices are submitted six times
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, texture_.get(), 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, texture_.get(),
+                             0);
       glClear(GL_DEPTH_BUFFER_BIT);
       program.set("u_lightViewProj", light.faceViewProj[f]);
       drawAll();

@@ -6,27 +6,27 @@
 #pragma once
 #include <vector>
 
-#include "gl/texture.h"
+#include "app/gl/texture.h"
+#include "app/scene/gpu_scene.h"
+#include "app/shader/shader_library.h"
 #include "labs/shadows/light_rig.h"
-#include "scene/gpu_scene.h"
-#include "shader/shader_library.h"
 
 namespace shadelab {
 
 struct DepthPassState {
-  bool cullFront = false;      // draw back faces only: the stored surface moves off lit fronts
-  float offsetFactor = 0.0f;   // glPolygonOffset(factor, units); 0, 0 = off
+  bool cullFront = false;     // draw back faces only: the stored surface moves off lit fronts
+  float offsetFactor = 0.0f;  // glPolygonOffset(factor, units); 0, 0 = off
   float offsetUnits = 0.0f;
-  bool sixPasses = false;      // cube maps: one pass per face instead of one geometry-shader pass
-  glm::vec4 momentClear{1.0f}; // filtered maps: the moments of the far plane (where nothing is drawn)
+  bool sixPasses = false;       // cube maps: one pass per face instead of one geometry-shader pass
+  glm::vec4 momentClear{1.0f};  // filtered maps: the moments of the far plane (where nothing is drawn)
 };
 
 struct MapShape {
   bool cube = false;
   int size = 0;
-  int layers = 1;             // 2D arrays: cascades
+  int layers = 1;  // 2D arrays: cascades
   GLenum depthFormat = 0;
-  GLenum momentFormat = 0;    // 0: no moments; GL_R32F (ESM), GL_RG32F (VSM), GL_RGBA32F (EVSM)
+  GLenum momentFormat = 0;  // 0: no moments; GL_R32F (ESM), GL_RG32F (VSM), GL_RGBA32F (EVSM)
   bool momentMips = false;
   bool operator==(const MapShape&) const = default;
 };
@@ -72,9 +72,9 @@ class ShadowMap {
                                                 // every frame makes drivers revalidate the framebuffer)
   gl::Sampler raw_, compare_, momentSampler_;
   bool allocate(const MapShape& shape);  // false (and a GL error drained) when the driver refuses
-  MapShape requested_;  // what ensure() was last asked for, and within what
+  MapShape requested_;                   // what ensure() was last asked for, and within what
   double requestedBudget_ = 0.0;
-  MapShape shape_;      // what was allocated: requested_, perhaps smaller
+  MapShape shape_;       // what was allocated: requested_, perhaps smaller
   int wrapBorder_ = -1;  // the samplers' wrap mode as last set: 1 border, 0 edge
 };
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "lab/technique.h"
+#include "app/lab/technique.h"
 #include "labs/shadows/shadows_lab.h"
 
 namespace shadelab {
@@ -25,14 +25,19 @@ struct ShadowFilterRow {
   std::string_view define;  // what lit.frag tests (and, for a filtered map, moments.frag)
   GLenum momentFormat = 0;  // a filtered map: the moments texture the depth pass writes; 0: depth only
   FilterSettings settings = FilterSettings::None;
-  std::string_view help;    // what it does, for the panel's tooltip and `shadelab list`
+  std::string_view help;                    // what it does, for the panel's tooltip and `shadelab list`
   std::array<std::string_view, 2> sweep{};  // the standard sweep's values for it; none given: its name
 };
 inline constexpr ShadowFilterRow kShadowFilters[] = {
     {ShadowFilter::Hard, "hard", "FILTER_HARD", 0, FilterSettings::None, "one tap"},
     {ShadowFilter::HardwarePcf, "hardware-pcf", "FILTER_HW_PCF", 0, FilterSettings::None,
      "sampler2DShadow, 2x2 bilinear"},
-    {ShadowFilter::Pcf, "pcf", "FILTER_PCF", 0, FilterSettings::PcfSize, "N x N taps",
+    {ShadowFilter::Pcf,
+     "pcf",
+     "FILTER_PCF",
+     0,
+     FilterSettings::PcfSize,
+     "N x N taps",
      {"pcf:pcf_size=3", "pcf:pcf_size=5"}},
     {ShadowFilter::Poisson, "poisson", "FILTER_POISSON", 0, FilterSettings::PoissonDisk, "a Poisson disk"},
     {ShadowFilter::Pcss, "pcss", "FILTER_PCSS", 0, FilterSettings::PcssSamples, "blocker search + penumbra-sized PCF"},
@@ -55,8 +60,9 @@ inline const std::string& filterHelp() {
       text += std::string(text.empty() ? "" : "; ") + std::string(row.name) + ": " + std::string(row.help);
       if (row.momentFormat) filtered += std::string(filtered.empty() ? "" : ", ") + std::string(row.name);
     }
-    return text + ". Filtered maps (" + filtered + ") store moments of depth, blurred and mipmapped; a point light "
-                  "falls back to pcf.";
+    return text + ". Filtered maps (" + filtered +
+           ") store moments of depth, blurred and mipmapped; a point light "
+           "falls back to pcf.";
   }();
   return help;
 }

@@ -14,7 +14,18 @@ namespace shadelab {
 namespace {
 
 // Texture units of lit.frag's samplers, fixed so no two sampler types ever share a unit.
-enum Unit { kKeyMap = 0, kKeyCube, kKeyCmp, kKeyCmpCube, kFillMap, kFillCmp, kNoCube, kNoCmpCube, kKeyMoments, kFillMoments };
+enum Unit {
+  kKeyMap = 0,
+  kKeyCube,
+  kKeyCmp,
+  kKeyCmpCube,
+  kFillMap,
+  kFillCmp,
+  kNoCube,
+  kNoCmpCube,
+  kKeyMoments,
+  kFillMoments
+};
 enum Slot { kLitSlot = 0, kKeyDepthSlot, kFillDepthSlot, kDepthViewSlot, kLinesSlot, kBlurSlot, kSlotCount };
 
 // The moments a filtered map holds where nothing was drawn (depth t = 1): warpDepth(1) in
@@ -74,7 +85,8 @@ std::string ShadowsLab::setup(LabContext& ctx) {
   dummies_.create();
   emptyVao_ = gl::VertexArray::make();
   // The 12 edges of the NDC cube, drawn through the light's inverse view-projection.
-  const glm::vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const glm::vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
   const int edges[24] = {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 7, 7, 4, 0, 4, 1, 5, 2, 6, 3, 7};
   std::vector<glm::vec3> lines;
   for (int e : edges) lines.push_back(c[e]);
@@ -91,31 +103,27 @@ std::string ShadowsLab::setup(LabContext& ctx) {
   return {};
 }
 
-void ShadowsLab::teardown() {
-  programs_.clear();
-  keyMap_.release();
-  fillMap_.release();
-  dummies_.release();
-  emptyVao_.reset();
-  frustumVao_.reset();
-  frustumVbo_.reset();
-  rayScene_.reset();
-  rayRevision_ = -1;
-  tracer_.reset();
-  tracePrograms_.reset();
-  cascades_.clear();
-  shaders_ = nullptr;
-}
-
 std::vector<ProgramRef> ShadowsLab::activePrograms() const { return heldPrograms(programs_); }
 
 const std::vector<glm::vec2>& ShadowsLab::disk(int count) {
   // Each set is made the first time a filter asks for it (dart throwing takes tens of ms for 64).
   switch (std::clamp(count, 8, 64)) {
-    case 8: { static const std::vector<glm::vec2> d = poissonDisk(8); return d; }
-    case 16: { static const std::vector<glm::vec2> d = poissonDisk(16); return d; }
-    case 32: { static const std::vector<glm::vec2> d = poissonDisk(32); return d; }
-    default: { static const std::vector<glm::vec2> d = poissonDisk(64); return d; }
+    case 8: {
+      static const std::vector<glm::vec2> d = poissonDisk(8);
+      return d;
+    }
+    case 16: {
+      static const std::vector<glm::vec2> d = poissonDisk(16);
+      return d;
+    }
+    case 32: {
+      static const std::vector<glm::vec2> d = poissonDisk(32);
+      return d;
+    }
+    default: {
+      static const std::vector<glm::vec2> d = poissonDisk(64);
+      return d;
+    }
   }
 }
 
@@ -143,7 +151,8 @@ void ShadowsLab::setFilterUniforms(Program& prog) const {
   prog.set("u_filterRadius", params.filter.poissonRadius);
   // The disks only where the variant samples them (Poisson, PCSS): made on first use, not for PCF.
   if (prog.uses("u_filterDisk")) {
-    const auto& taps = disk(filter == ShadowFilter::Pcss ? 8 << params.filter.pcssIndex : 8 << params.filter.poissonIndex);
+    const auto& taps =
+        disk(filter == ShadowFilter::Pcss ? 8 << params.filter.pcssIndex : 8 << params.filter.poissonIndex);
     prog.setArray("u_filterDisk", taps.data(), int(taps.size()));
   }
   if (prog.uses("u_blockerDisk")) {
@@ -173,12 +182,17 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
     prog.set("u_viewForward", glm::normalize(frame.camera.target - frame.camera.eye()));
   }
   // Irradiance 1 at the scene centre whatever the light type and scale.
-  const float keyR2 = key.type == LightType::Directional ? 1.0f : glm::dot(key.position - b.center(), key.position - b.center());
+  const float keyR2 =
+      key.type == LightType::Directional ? 1.0f : glm::dot(key.position - b.center(), key.position - b.center());
   prog.set("u_keyPower", glm::vec3(1.0f, 0.97f, 0.92f) * keyR2);
   setFilterUniforms(prog);
-  const struct { const char* name; int unit; } units[] = {{"u_keyMap", kKeyMap}, {"u_keyCube", kKeyCube}, {"u_keyCmp", kKeyCmp},
-      {"u_keyCmpCube", kKeyCmpCube}, {"u_fillMap", kFillMap}, {"u_fillCmp", kFillCmp}, {"u_noCube", kNoCube},
-      {"u_noCmpCube", kNoCmpCube}, {"u_keyMoments", kKeyMoments}, {"u_fillMoments", kFillMoments}};
+  const struct {
+    const char* name;
+    int unit;
+  } units[] = {{"u_keyMap", kKeyMap},          {"u_keyCube", kKeyCube},     {"u_keyCmp", kKeyCmp},
+               {"u_keyCmpCube", kKeyCmpCube},  {"u_fillMap", kFillMap},     {"u_fillCmp", kFillCmp},
+               {"u_noCube", kNoCube},          {"u_noCmpCube", kNoCmpCube}, {"u_keyMoments", kKeyMoments},
+               {"u_fillMoments", kFillMoments}};
   for (auto& u : units) prog.set(u.name, u.unit);
   // Each sampler the variant really samples gets a texture of its type on its own unit: the real
   // map, or a 1x1 dummy. Units the variant does not read are left alone (every binding is state
@@ -270,7 +284,8 @@ bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* wh
     std::snprintf(text, sizeof text, mib >= 1024.0 ? "%.1f GiB" : "%.0f MiB", mib >= 1024.0 ? mib / 1024.0 : mib);
     return std::string(text);
   };
-  const std::string asked = std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes(ShadowMap::bytesOf(shape)) + ")";
+  const std::string asked =
+      std::to_string(shape.size) + "^2 " + which + " shadow map (" + bytes(ShadowMap::bytesOf(shape)) + ")";
   MapShape drawn = shape;
   drawn.size = got;
   const std::string instead = "; drawing at " + std::to_string(got) + "^2 (" + bytes(ShadowMap::bytesOf(drawn)) +
@@ -279,7 +294,8 @@ bool ShadowsLab::ensureMap(ShadowMap& map, const MapShape& shape, const char* wh
   const double othersTake = ShadowMap::kBudgetBytes - budgetBytes;
   if (got && ShadowMap::bytesOf(shape) > budgetBytes)
     mapWarnings_.push_back("a " + asked + " is over the lab's 2 GiB budget for shadow maps" +
-                           (othersTake > 0.0 ? " (the key light's maps take " + bytes(othersTake) + " of it)" : "") + instead);
+                           (othersTake > 0.0 ? " (the key light's maps take " + bytes(othersTake) + " of it)" : "") +
+                           instead);
   else
     mapWarnings_.push_back(got ? "the driver could not allocate a " + asked + instead
                                : "the driver could not allocate even a 256^2 " + std::string(which) +
@@ -291,12 +307,16 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
   const bool cube = params.key.type == LightType::Point;
   const ShadowFilter filter = effectiveFilterOf(params);
   const int layers = std::max<int>(int(cascades_.size()), 1);
-  if (!ensureMap(keyMap_, {cube, params.map.size(), layers, format, cube ? 0u : momentFormat(filter), params.filter.momentMips},
+  if (!ensureMap(keyMap_,
+                 {cube, params.map.size(), layers, format, cube ? 0u : momentFormat(filter), params.filter.momentMips},
                  "key", ShadowMap::kBudgetBytes))
     return;
-  const std::string size = std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
+  const std::string size =
+      std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
-                           (cascades_.size() >= 2 ? " cascade " : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted" : "");
+                           (cascades_.size() >= 2                                  ? " cascade "
+                            : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted"
+                                                                                   : "");
   Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, sixCubePasses(), filter));
   if (isMomentFilter(filter)) {
     depth.use();
@@ -306,7 +326,8 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
     auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
                            size + (cube ? (sixCubePasses() ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
                            (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : ""));
-    keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer, state);
+    keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer,
+                   state);
   }
   if (keyMap_.hasMoments() && (params.filter.blurRadius > 0 || params.filter.momentMips)) {
     auto pass = frame.pass("moment blur " + std::to_string(params.filter.blurRadius) + " texels" +
@@ -332,8 +353,9 @@ void ShadowsLab::render(Frame& frame) {
   // The key light's maps: the scene-fitted one, or fitted to the view, or one per cascade.
   cascades_.clear();
   if (const int count = cascadeCountOf(params); count > 0)
-    cascades_ = buildCascades(key, {count, params.map.splitLambda, params.map.cascadeBlend, params.map.snapTexels, params.map.size()},
-                              viewVolume(frame), bounds, frame.scene.instanceBounds);
+    cascades_ = buildCascades(
+        key, {count, params.map.splitLambda, params.map.cascadeBlend, params.map.snapTexels, params.map.size()},
+        viewVolume(frame), bounds, frame.scene.instanceBounds);
 
   // 1. Depth passes, only for lights that cast and only when the view reads their maps.
   if (params.key.casts && !gbuffer) {
@@ -345,9 +367,11 @@ void ShadowsLab::render(Frame& frame) {
                              (!viewIsDepthMap(params.view.mode) || params.view.depthLight == 1);
   // The fill light's map gets what the key light's leave of the lab's budget.
   const double fillBudget = ShadowMap::kBudgetBytes - (params.key.casts ? keyMap_.bytes() : 0.0);
-  if (fillMapNeeded && ensureMap(fillMap_, {false, params.map.size(), 1, format, momentFormat(filter), params.filter.momentMips},
-                                 "fill", fillBudget)) {
-    const std::string size = std::to_string(fillMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
+  if (fillMapNeeded &&
+      ensureMap(fillMap_, {false, params.map.size(), 1, format, momentFormat(filter), params.filter.momentMips}, "fill",
+                fillBudget)) {
+    const std::string size =
+        std::to_string(fillMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
     {
       auto pass = frame.pass("shadow map: fill spot " + size +
                              (isMomentFilter(filter) ? " + " + filterName(filter) + " moments" : ""));
@@ -390,9 +414,9 @@ std::array<glm::vec3, 6> cubeFaceWindows(std::span<const Bounds> boxes, glm::vec
   struct Face {
     glm::vec3 axis, u, v;
   };
-  static constexpr Face kFaces[6] = {{{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},  {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},
-                                     {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
-                                     {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}};
+  static constexpr Face kFaces[6] = {{{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}}, {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},
+                                     {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+                                     {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}}};
   std::array<glm::vec3, 6> out;
   for (int i = 0; i < 6; ++i) {
     const Face& f = kFaces[i];
@@ -421,8 +445,10 @@ std::array<glm::vec3, 6> cubeFaceWindows(std::span<const Bounds> boxes, glm::vec
       }
     }
     lo = glm::max(lo, glm::vec2(-1.0f)), hi = glm::min(hi, glm::vec2(1.0f));
-    if (!frame) out[size_t(i)] = {0.0f, 0.0f, 1.0f};
-    else if (!(hi.x > lo.x && hi.y > lo.y)) out[size_t(i)] = glm::vec3(0.0f);  // sees nothing
+    if (!frame)
+      out[size_t(i)] = {0.0f, 0.0f, 1.0f};
+    else if (!(hi.x > lo.x && hi.y > lo.y))
+      out[size_t(i)] = glm::vec3(0.0f);  // sees nothing
     else {
       const float half = std::min(0.5f * std::max(hi.x - lo.x, hi.y - lo.y) * 1.08f, 1.0f);
       const glm::vec2 centre = glm::clamp(0.5f * (lo + hi), glm::vec2(half - 1.0f), glm::vec2(1.0f - half));
@@ -446,8 +472,10 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   prog.set("u_keyCube", int(kKeyCube));
   dummies_.bindArray(kKeyMap, false);
   dummies_.bindCube(kKeyCube, false);
-  if (map.cube()) map.bind(kKeyCube, kKeyCmpCube, true);
-  else map.bind(kKeyMap, kKeyCmp, true);
+  if (map.cube())
+    map.bind(kKeyCube, kKeyCmpCube, true);
+  else
+    map.bind(kKeyMap, kKeyCmp, true);
   // The distances the map's content occupies from this light: what the linear view stretches to
   // white (a cascade holds a thin slice of the scene; the whole scene's range would show it grey).
   const Bounds& b = frame.scene.bounds;
@@ -475,7 +503,8 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
     prog.setArray("u_faceWindow", windows.data(), int(windows.size()));
     int faces = 0;
     for (int face = 0; face < 6; ++face)
-      if (params.view.frameFaces && windows[size_t(face)].z > 0.0f) prog.set(("u_faces[" + std::to_string(faces++) + "]").c_str(), face);
+      if (params.view.frameFaces && windows[size_t(face)].z > 0.0f)
+        prog.set(("u_faces[" + std::to_string(faces++) + "]").c_str(), face);
     prog.set("u_faceCount", faces);
     grid = faces == 0 ? glm::vec2(4.0f, 3.0f) : glm::vec2(std::min(faces, 3), (faces + 2) / 3);
   }
@@ -493,14 +522,17 @@ std::vector<std::string> ShadowsLab::warnings() const {
   std::vector<std::string> w = lightWarnings_;
   w.insert(w.end(), mapWarnings_.begin(), mapWarnings_.end());
   if (tracer_ && tracer_->gaveUp() > 0)
-    w.push_back("the GPU tracer stopped the rays of " + std::to_string(tracer_->gaveUp()) + " pixels after visiting "
+    w.push_back("the GPU tracer stopped the rays of " + std::to_string(tracer_->gaveUp()) +
+                " pixels after visiting "
                 "more nodes than its tree has (a broken tree or driver): they count as lit in the truth; "
                 "truth_tracer = embree is the check");
   const auto& p = params;
   if (p.key.type != LightType::Point && p.key.elevationDeg < 10.0f)
-    w.push_back("grazing light (" + formatNumber(p.key.elevationDeg) + " deg above the horizon): texels stretch along the "
+    w.push_back("grazing light (" + formatNumber(p.key.elevationDeg) +
+                " deg above the horizon): texels stretch along the "
                 "ground; expect acne unless the slope bias grows");
-  if (p.key.casts && p.bias.constant == 0 && p.bias.slope == 0 && p.bias.normalOffset == 0 && p.bias.offsetFactor == 0 && p.bias.offsetUnits == 0)
+  if (p.key.casts && p.bias.constant == 0 && p.bias.slope == 0 && p.bias.normalOffset == 0 &&
+      p.bias.offsetFactor == 0 && p.bias.offsetUnits == 0)
     w.push_back("no bias at all: lit surfaces shadow themselves (acne)");
   if (p.bias.constant + p.bias.slope > 12.0f || p.bias.normalOffset > 6.0f)
     w.push_back("large bias: shadows detach from their casters (peter-panning)");
@@ -513,7 +545,8 @@ std::vector<std::string> ShadowsLab::warnings() const {
   if (p.filter.type == ShadowFilter::Pcss && p.key.radius == 0.0f)
     w.push_back("light radius 0: PCSS reduces to a hard shadow");
   if (p.filter.type == ShadowFilter::Pcss && p.key.radius > 1.0f)
-    w.push_back("light radius " + formatNumber(p.key.radius) + " scene radii: larger than the scene, penumbrae wash out");
+    w.push_back("light radius " + formatNumber(p.key.radius) +
+                " scene radii: larger than the scene, penumbrae wash out");
   if (p.key.type == LightType::Point && p.key.distance < 0.5f)
     w.push_back("point light near the scene centre: it may sit inside geometry, which then hides everything");
   if (!p.key.casts && !(p.fill.on && p.fill.casts)) w.push_back("no light casts shadows: no depth pass runs");
@@ -521,24 +554,29 @@ std::vector<std::string> ShadowsLab::warnings() const {
     w.push_back("the depth view shows the fill light's map: turn on fill_light and fill_casts");
   if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 0 && !p.key.casts)
     w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
-  if ((p.view.mode == ShadowView::PcssBlocker || p.view.mode == ShadowView::PcssPenumbra) && p.filter.type != ShadowFilter::Pcss)
+  if ((p.view.mode == ShadowView::PcssBlocker || p.view.mode == ShadowView::PcssPenumbra) &&
+      p.filter.type != ShadowFilter::Pcss)
     w.push_back("the PCSS views show data only with filter = pcss");
   if (p.view.mode == ShadowView::BiasHeat && isMomentFilter(effectiveFilterOf(p)))
     w.push_back("the bias-heat view shows a depth test's margin, and " + filterName(p.filter.type) +
                 " tests moments of depth instead: there is no margin to show (uniform green); pick hard or pcf");
   else if (p.view.mode == ShadowView::BiasHeat && p.bias.constant == 0 && p.bias.slope == 0)
-    w.push_back("bias-heat measures the gap in units of the bias, which is 0: every lit texel is red (acne) or blue "
-                "(stored depth behind the surface), with nothing between; raise bias to see the margin");
+    w.push_back(
+        "bias-heat measures the gap in units of the bias, which is 0: every lit texel is red (acne) or blue "
+        "(stored depth behind the surface), with nothing between; raise bias to see the margin");
   if (isMomentFilter(p.filter.type) && p.key.type == LightType::Point)
-    w.push_back(filterName(p.filter.type) + " needs a 2D map: the point light's cube map is filtered with "
-                "pcf (" + std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");
+    w.push_back(filterName(p.filter.type) +
+                " needs a 2D map: the point light's cube map is filtered with "
+                "pcf (" +
+                std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");
   if (p.map.fit != MapFit::Scene && (p.key.type != LightType::Directional || !p.map.autoFit))
     w.push_back("fit = " + std::string(kFits[int(p.map.fit)]) + " applies to an auto-fitted directional light only");
   if (p.view.mode == ShadowView::Cascades && cascadeCountOf(p) < 2)
     w.push_back("one map, one colour: the cascades view needs fit = cascades");
   if (p.filter.type == ShadowFilter::Esm && p.filter.esmExponent > 80.0f)
     w.push_back("ESM exponent " + formatNumber(p.filter.esmExponent) + ": exp(c) is within a factor " +
-                formatNumber(std::exp(88.7f - p.filter.esmExponent)) + " of float's limit; a blur of overflowing texels would be inf");
+                formatNumber(std::exp(88.7f - p.filter.esmExponent)) +
+                " of float's limit; a blur of overflowing texels would be inf");
   return w;
 }
 

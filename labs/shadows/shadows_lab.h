@@ -8,12 +8,12 @@
 // Read next: shaders/shadows/shadow_filters.glsl, tutorials/shadows.md.
 #pragma once
 #include <array>
-#include <span>
 #include <bit>
 #include <memory>
 #include <optional>
+#include <span>
 
-#include "lab/lab.h"
+#include "app/lab/lab.h"
 #include "labs/shadows/gpu_tracer.h"
 #include "labs/shadows/light_rig.h"
 #include "labs/shadows/shadow_map.h"
@@ -25,45 +25,54 @@ class RayScene;
 // The filters and views, and what each needs, are tables in shadow_options.h.
 enum class ShadowFilter { Hard, HardwarePcf, Pcf, Poisson, Pcss, Vsm, Esm, Evsm, PcfBilinear, Count };
 enum class ShadowView {
-  Shaded, Visibility, BiasHeat, TexelDensity, PcssBlocker, PcssPenumbra, Cascades, DepthRaw, DepthLinear, Count
+  Shaded,
+  Visibility,
+  BiasHeat,
+  TexelDensity,
+  PcssBlocker,
+  PcssPenumbra,
+  Cascades,
+  DepthRaw,
+  DepthLinear,
+  Count
 };
 enum class DepthFormat { D16, D24, D32F, Count };
-enum class MapFit { Scene, View, Cascades };  // directional maps: what the map covers
+enum class MapFit { Scene, View, Cascades };   // directional maps: what the map covers
 enum class TruthTracer { Auto, Embree, Gpu };  // who traces the ray-traced truth
 
 // One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).
 struct ShadowsParams {
   struct KeyLight : LightPlacement {  // where the key light is (light_rig.h), and:
     bool casts = true;
-    bool sceneLight = true;       // a scene with a light of its own (learnopengl) sets the direction
+    bool sceneLight = true;  // a scene with a light of its own (learnopengl) sets the direction
   } key;
-  struct FillLight {              // a second, spot light
+  struct FillLight {  // a second, spot light
     bool on = false;
     bool casts = true;
   } fill;
-  struct Map : LightFrustum {     // the frustum when auto-fit is off (light_rig.h), and:
-    int sizeIndex = 3;            // 256 << index: 256 .. 8192
+  struct Map : LightFrustum {  // the frustum when auto-fit is off (light_rig.h), and:
+    int sizeIndex = 3;         // 256 << index: 256 .. 8192
     DepthFormat format = DepthFormat::D24;
-    MapFit fit = MapFit::Scene;   // directional, auto-fit: the whole scene, the view, or cascades
-    int cascadeCount = 4;         // fit = cascades: 2..4 maps of map_size^2 each
-    float splitLambda = 0.75f;    // 0: uniform splits, 1: logarithmic
-    float cascadeBlend = 0.1f;    // fraction of a cascade's range blended into the next
-    bool snapTexels = true;       // fitted maps move by whole texels: no shimmer as the camera moves
-    bool borderClamp = true;      // outside the map: lit (border depth 1) instead of the edge texel
-    bool farFix = true;           // beyond the far plane: lit instead of shadowed
-    bool cullFront = false;       // depth pass draws back faces only
-    bool sixCubePasses = false;   // point light: six passes instead of one geometry-shader pass
+    MapFit fit = MapFit::Scene;  // directional, auto-fit: the whole scene, the view, or cascades
+    int cascadeCount = 4;        // fit = cascades: 2..4 maps of map_size^2 each
+    float splitLambda = 0.75f;   // 0: uniform splits, 1: logarithmic
+    float cascadeBlend = 0.1f;   // fraction of a cascade's range blended into the next
+    bool snapTexels = true;      // fitted maps move by whole texels: no shimmer as the camera moves
+    bool borderClamp = true;     // outside the map: lit (border depth 1) instead of the edge texel
+    bool farFix = true;          // beyond the far plane: lit instead of shadowed
+    bool cullFront = false;      // depth pass draws back faces only
+    bool sixCubePasses = false;  // point light: six passes instead of one geometry-shader pass
 
     int size() const { return 256 << sizeIndex; }
     static constexpr int sizeIndexOf(int size) { return std::countr_zero(unsigned(size / 256)); }
   } map;
   struct Bias {
-    float constant = 2.5f;        // texels (the floor of the slope-scaled bias)
-    float slope = 4.0f;           // texels, k in max(k (1 - N.L), constant)
-    float normalOffset = 0.0f;    // texels along the normal
-    float offsetFactor = 0.0f;    // glPolygonOffset factor
-    float offsetUnits = 0.0f;     // glPolygonOffset units
-    bool receiverPlane = true;    // filter taps compare against the receiver plane at each tap
+    float constant = 2.5f;      // texels (the floor of the slope-scaled bias)
+    float slope = 4.0f;         // texels, k in max(k (1 - N.L), constant)
+    float normalOffset = 0.0f;  // texels along the normal
+    float offsetFactor = 0.0f;  // glPolygonOffset factor
+    float offsetUnits = 0.0f;   // glPolygonOffset units
+    bool receiverPlane = true;  // filter taps compare against the receiver plane at each tap
   } bias;
   struct Filter {
     ShadowFilter type = ShadowFilter::Pcf;
@@ -83,12 +92,12 @@ struct ShadowsParams {
   } filter;
   struct View {
     ShadowView mode = ShadowView::Shaded;
-    int depthLight = 0;           // the map the depth views show: 0 key, 1 fill
-    int depthCascade = 0;         // ... and which cascade of the key light's
+    int depthLight = 0;    // the map the depth views show: 0 key, 1 fill
+    int depthCascade = 0;  // ... and which cascade of the key light's
     float depthZoom = 1.0f;
     float depthCentreU = 0.5f;
     float depthCentreV = 0.5f;
-    bool frameFaces = true;       // a cube's faces each zoomed to the geometry they see
+    bool frameFaces = true;  // a cube's faces each zoomed to the geometry they see
     bool showFrustum = false;
   } view;
   struct Truth {
@@ -100,7 +109,6 @@ struct ShadowsParams {
     bool floorUnderFiles = true;  // a mesh from a file stands on a floor: its shadow has a receiver
   } scene;
 };
-
 
 // The part of each face of a cube map centred at `light` that the boxes project to, as (centre,
 // half size) in the face's [-1, 1]^2 (the depth view's cross order: -X +Z +X -Z +Y -Y); (0, 0, 0)
@@ -123,7 +131,6 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   std::vector<ProgramSpec> allPrograms() const override;
 
   std::string setup(LabContext& ctx) override;
-  void teardown() override;
   void render(Frame& frame) override;
   std::vector<ProgramRef> activePrograms() const override;
   std::vector<std::string> warnings() const override;
@@ -179,23 +186,22 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   DummyDepthTextures dummies_;
   gl::VertexArray emptyVao_, frustumVao_;
   gl::Buffer frustumVbo_;
-  std::vector<Cascade> cascades_;  // the key light's maps, as last rendered
-  std::vector<int> boundSamplers_;  // units drawLit bound sampler objects to
-  glm::vec3 sceneLight_{0.0f};     // the current scene's own light, if it has one
+  std::vector<Cascade> cascades_;           // the key light's maps, as last rendered
+  std::vector<int> boundSamplers_;          // units drawLit bound sampler objects to
+  glm::vec3 sceneLight_{0.0f};              // the current scene's own light, if it has one
   std::vector<std::string> lightWarnings_;  // from the last render's light setup
   std::vector<std::string> mapWarnings_;    // maps the driver could only allocate smaller, this frame
-  // Allocates `map` for `shape`; false when no map could be had. A smaller map than asked is
-  // drawn with a warning naming both sizes.
-  // `map` allocated for `shape` within `budgetBytes` (what the lab's other maps leave of
-  // ShadowMap::kBudgetBytes); a warning when it is drawn smaller than asked.
+  // Allocates `map` for `shape` within `budgetBytes` (what the lab's other maps leave of
+  // ShadowMap::kBudgetBytes); false when no map could be had. A map smaller than asked is drawn
+  // with a warning naming both sizes.
   bool ensureMap(ShadowMap& map, const MapShape& shape, const char* which, double budgetBytes);
   // The size a map was allocated at (the texel size the shaders use), or the asked size if none.
   int sizeOf(const ShadowMap& map) const { return map ? map.size() : params.map.size(); }
   std::shared_ptr<const RayScene> rayScene_;  // shared with a trace job still running
   std::unique_ptr<GpuShadowTracer> tracer_;   // truth_tracer = gpu
   GpuShadowTracer::Shape tracerShape_;
-  bool softwareRenderer_ = true;              // the context draws in software (gl::softwareRenderer)
-  bool geometryShaders_ = true;               // the context has them (not WebGL2): else six cube passes
+  bool softwareRenderer_ = true;  // the context draws in software (gl::softwareRenderer)
+  bool geometryShaders_ = true;   // the context has them (not WebGL2): else six cube passes
   bool sixCubePasses() const { return params.map.sixCubePasses || !geometryShaders_; }
   // truth_tracer = auto resolved: the GPU tracer unless the context draws in software.
   bool tracesOnGpu() const {

@@ -5,7 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/procedural.h"
+#include "app/scene/procedural.h"
 
 #include "labs/shadows/ray_visibility.h"
 #include "labs/shadows/shadow_options.h"
@@ -39,11 +39,12 @@ ReferenceSpec ShadowsLab::reference() const {
   // The GPU trace runs in bands of about 25 ms between frames and a newer one supersedes it, so
   // Auto can follow the sliders (on a GPU the 64 samples land within a few frames).
   spec.cheap = spec.tracedOnGl;
-  spec.description = std::string(spec.tracedOnGl ? "GPU ray-traced (a BVH in a fragment shader)" : "Embree ray-traced") +
-                     " visibility of the key light on the same triangles and camera, two truths in "
-                     "one image: the point light (one ray per pixel; visibility_rmse_hard, misclassified_pct, acne_pct, "
-                     "leak_pct) and the area light of light_radius (8x8 stratified rays over its disk; "
-                     "visibility_rmse_area)";
+  spec.description =
+      std::string(spec.tracedOnGl ? "GPU ray-traced (a BVH in a fragment shader)" : "Embree ray-traced") +
+      " visibility of the key light on the same triangles and camera, two truths in "
+      "one image: the point light (one ray per pixel; visibility_rmse_hard, misclassified_pct, acne_pct, "
+      "leak_pct) and the area light of light_radius (8x8 stratified rays over its disk; "
+      "visibility_rmse_area)";
   return spec;
 }
 
@@ -123,8 +124,8 @@ GlTraceStep ShadowsLab::traceReferenceOnGl(Frame& frame) {
 
 Metrics ShadowsLab::metrics(const ImageF& image, const ImageF& reference) const {
   if (image.size != reference.size)
-    return {{"misclassified_pct", 100}, {"visibility_rmse_hard", 1}, {"visibility_rmse_area", 1}, {"acne_pct", 100},
-            {"leak_pct", 100}, {"valid_pct", 0}};
+    return {{"misclassified_pct", 100}, {"visibility_rmse_hard", 1}, {"visibility_rmse_area", 1},
+            {"acne_pct", 100},          {"leak_pct", 100},           {"valid_pct", 0}};
   double valid = 0, wrong = 0, hardSq = 0, areaSq = 0, lit = 0, acne = 0, shadowed = 0, leak = 0;
   const size_t pixels = size_t(image.size.x) * image.size.y;
   for (size_t i = 0; i < pixels; ++i) {
@@ -145,20 +146,26 @@ Metrics ShadowsLab::metrics(const ImageF& image, const ImageF& reference) const 
     }
   }
   const double n = std::max(valid, 1.0);
-  return {{"misclassified_pct", 100.0 * wrong / n}, {"visibility_rmse_hard", std::sqrt(hardSq / n)},
-          {"visibility_rmse_area", std::sqrt(areaSq / n)}, {"acne_pct", lit > 0 ? 100.0 * acne / lit : 0.0},
-          {"leak_pct", shadowed > 0 ? 100.0 * leak / shadowed : 0.0}, {"valid_pct", 100.0 * valid / double(pixels)}};
+  return {{"misclassified_pct", 100.0 * wrong / n},
+          {"visibility_rmse_hard", std::sqrt(hardSq / n)},
+          {"visibility_rmse_area", std::sqrt(areaSq / n)},
+          {"acne_pct", lit > 0 ? 100.0 * acne / lit : 0.0},
+          {"leak_pct", shadowed > 0 ? 100.0 * leak / shadowed : 0.0},
+          {"valid_pct", 100.0 * valid / double(pixels)}};
 }
 
 Settings ShadowsLab::metricNotes() const {
-  return {{"misclassified_pct", "pixels whose lit/shadowed verdict (visibility >= 0.5) differs from the point-light "
-                                "truth's, in % of the pixels that face the key light"},
+  return {{"misclassified_pct",
+           "pixels whose lit/shadowed verdict (visibility >= 0.5) differs from the point-light "
+           "truth's, in % of the pixels that face the key light"},
           {"visibility_rmse_hard", "RMS of (visibility - point-light truth) over the pixels that face the key light"},
           {"visibility_rmse_area", "RMS of (visibility - area-light truth, light_radius) over the same pixels"},
-          {"acne_pct", "pixels shadowed by the map (< 0.5) where the point-light truth is fully lit, in % of the "
-                       "fully lit pixels"},
-          {"leak_pct", "pixels lit by the map (>= 0.5) where the point-light truth is fully shadowed, in % of the "
-                       "fully shadowed pixels"},
+          {"acne_pct",
+           "pixels shadowed by the map (< 0.5) where the point-light truth is fully lit, in % of the "
+           "fully lit pixels"},
+          {"leak_pct",
+           "pixels lit by the map (>= 0.5) where the point-light truth is fully shadowed, in % of the "
+           "fully shadowed pixels"},
           {"valid_pct", "pixels that face the key light, in % of the image"}};
 }
 
@@ -274,8 +281,7 @@ std::vector<StressCase> ShadowsLab::stressCases() const {
        }),
        "", "", ""},
       {"pcss-point-light-scale-1e6", edit([](ShadowsParams& p) {
-         p.filter.type = ShadowFilter::Pcss, p.key.type = LightType::Point, p.key.radius = 0.1f,
-         p.scene.scale = 1e6f;
+         p.filter.type = ShadowFilter::Pcss, p.key.type = LightType::Point, p.key.radius = 0.1f, p.scene.scale = 1e6f;
        }),
        "", "", ""},
       {"vsm-point-light-falls-back",

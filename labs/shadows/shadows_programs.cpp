@@ -3,9 +3,9 @@
 #include <functional>
 #include <set>
 
+#include "app/lab/variants.h"
 #include "labs/shadows/shadow_options.h"
 #include "labs/shadows/shadows_lab.h"
-#include "lab/variants.h"
 
 namespace shadelab {
 
@@ -24,8 +24,11 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) c
   const ShadowFilter filter = effectiveFilterOf(p);
   spec.defines.emplace_back(rowOf(kShadowFilters, filter).define, "1");
   switch (rowOf(kShadowFilters, filter).settings) {
-    case FilterSettings::None: break;
-    case FilterSettings::PcfSize: spec.defines.emplace_back("PCF_SIZE", std::to_string(p.filter.pcfSize)); break;
+    case FilterSettings::None:
+      break;
+    case FilterSettings::PcfSize:
+      spec.defines.emplace_back("PCF_SIZE", std::to_string(p.filter.pcfSize));
+      break;
     case FilterSettings::PoissonDisk:
       spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.filter.poissonIndex));
       if (p.filter.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
@@ -39,7 +42,8 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) c
     spec.defines.emplace_back("CASCADE_COUNT", std::to_string(cascades));
   spec.defines.emplace_back(internal == InternalView::Position ? "VIEW_POSITION"
                             : internal == InternalView::Normal ? "VIEW_NORMAL"
-                                                               : rowOf(kShadowViews, p.view.mode).define, "1");
+                                                               : rowOf(kShadowViews, p.view.mode).define,
+                            "1");
   spec.name = "shadows/lit " + std::string(kLightTypes[int(p.key.type)]) + " " + filterName(filter);
   return spec;
 }
@@ -64,7 +68,7 @@ ProgramSpec ShadowsLab::depthSpec(bool cube, bool sixPasses, ShadowFilter filter
 ProgramSpec ShadowsLab::blurSpec() {
   ProgramSpec spec;
   spec.name = "shadows/moment blur";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/blur.frag"}};
+  spec.stages = {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/blur.frag"}};
   return spec;
 }
 
@@ -78,7 +82,7 @@ ProgramSpec ShadowsLab::linesSpec() {
 ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
   ProgramSpec spec;
   spec.name = "shadows/depth view";
-  spec.stages = {{GL_VERTEX_SHADER, "shadows/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/depth_view.frag"}};
+  spec.stages = {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/depth_view.frag"}};
   const LightType shown = p.view.depthLight == 1 ? LightType::Spot : p.key.type;  // the fill light is a spot
   spec.defines.emplace_back("KEY_TYPE", std::to_string(int(shown)));
   if (p.view.mode == ShadowView::DepthLinear) spec.defines.emplace_back("LINEAR_DEPTH", "1");
@@ -86,9 +90,13 @@ ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
 }
 
 std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
-  std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard), depthSpec(true, false, ShadowFilter::Hard),
-                                  depthSpec(true, true, ShadowFilter::Hard), linesSpec(), blurSpec(),
-                                  GpuShadowTracer::programSpec(false), GpuShadowTracer::programSpec(true),
+  std::vector<ProgramSpec> all = {depthSpec(false, false, ShadowFilter::Hard),
+                                  depthSpec(true, false, ShadowFilter::Hard),
+                                  depthSpec(true, true, ShadowFilter::Hard),
+                                  linesSpec(),
+                                  blurSpec(),
+                                  GpuShadowTracer::programSpec(false),
+                                  GpuShadowTracer::programSpec(true),
                                   GpuShadowTracer::resolveSpec()};
   for (const ShadowFilterRow& row : kShadowFilters)
     if (isMomentFilter(row.value)) all.push_back(depthSpec(false, false, row.value));
@@ -106,14 +114,18 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   // The lit program: every value of every parameter that shapes it, and every pair of values of
   // any two of them (app/lab/variants.h). A filter and its own settings form one dimension: pcf_size
   // means nothing to pcss.
-  struct FilterVariant { ShadowFilter filter; int a = 0, b = 0; };
+  struct FilterVariant {
+    ShadowFilter filter;
+    int a = 0, b = 0;
+  };
   std::vector<FilterVariant> filters;  // the filters without settings of their own first
   for (const ShadowFilterRow& row : kShadowFilters)
     if (row.settings == FilterSettings::None) filters.push_back({row.value});
   for (const ShadowFilterRow& row : kShadowFilters) {
     const ShadowFilter f = row.value;
     switch (row.settings) {
-      case FilterSettings::None: break;
+      case FilterSettings::None:
+        break;
       case FilterSettings::PcfSize:  // N x N taps
         for (int n = 1; n <= 15; ++n) filters.push_back({f, n});
         break;
@@ -127,8 +139,9 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
         break;
     }
   }
-  const ShadowView views[] = {ShadowView::Shaded, ShadowView::Visibility, ShadowView::BiasHeat, ShadowView::TexelDensity,
-                              ShadowView::PcssBlocker, ShadowView::PcssPenumbra, ShadowView::Cascades};
+  const ShadowView views[] = {ShadowView::Shaded,       ShadowView::Visibility,  ShadowView::BiasHeat,
+                              ShadowView::TexelDensity, ShadowView::PcssBlocker, ShadowView::PcssPenumbra,
+                              ShadowView::Cascades};
   const int viewCount = int(std::size(views)) + 2;  // + the reference's g-buffer views
   const int fits = 5;                               // scene, view, cascades x 2, 3, 4
   for (const auto& row : pairwiseCover({3, int(filters.size()), viewCount, 3, 2, 2, 2, fits})) {
@@ -137,14 +150,23 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
     const FilterVariant& f = filters[size_t(row[1])];
     q.filter.type = f.filter;
     switch (rowOf(kShadowFilters, f.filter).settings) {
-      case FilterSettings::None: break;
-      case FilterSettings::PcfSize: q.filter.pcfSize = f.a; break;
-      case FilterSettings::PoissonDisk: q.filter.poissonIndex = f.a, q.filter.rotateSamples = f.b == 1; break;
-      case FilterSettings::PcssSamples: q.filter.blockerIndex = f.a, q.filter.pcssIndex = f.b; break;
+      case FilterSettings::None:
+        break;
+      case FilterSettings::PcfSize:
+        q.filter.pcfSize = f.a;
+        break;
+      case FilterSettings::PoissonDisk:
+        q.filter.poissonIndex = f.a, q.filter.rotateSamples = f.b == 1;
+        break;
+      case FilterSettings::PcssSamples:
+        q.filter.blockerIndex = f.a, q.filter.pcssIndex = f.b;
+        break;
     }
     InternalView internal = InternalView::None;
-    if (row[2] < int(std::size(views))) q.view.mode = views[row[2]];
-    else internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;
+    if (row[2] < int(std::size(views)))
+      q.view.mode = views[row[2]];
+    else
+      internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;
     q.fill.on = row[3] > 0;
     q.fill.casts = row[3] == 2;
     q.key.casts = row[4] == 1;

@@ -21,7 +21,8 @@ float noise(float x, float y, float cell, int period, int seed) {
   const float tx = fx - float(ix), ty = fy - float(iy);
   auto at = [&](int i, int j) { return hash(((i % cells) + cells) % cells, ((j % cells) + cells) % cells, seed); };
   const float sx = tx * tx * (3 - 2 * tx), sy = ty * ty * (3 - 2 * ty);
-  return (at(ix, iy) * (1 - sx) + at(ix + 1, iy) * sx) * (1 - sy) + (at(ix, iy + 1) * (1 - sx) + at(ix + 1, iy + 1) * sx) * sy;
+  return (at(ix, iy) * (1 - sx) + at(ix + 1, iy) * sx) * (1 - sy) +
+         (at(ix, iy + 1) * (1 - sx) + at(ix + 1, iy + 1) * sx) * sy;
 }
 
 ImageSource blank(const char* name, int size) {
@@ -39,7 +40,9 @@ ImageSource normalMapFromHeight(const ImageSource& height, float depthPerUv) {
   ImageSource out = blank("normal map from height", w);
   out.size = height.size;
   out.rgba.assign(size_t(w) * size_t(h) * 4, 255);
-  auto at = [&](int x, int y) { return float(height.rgba[(size_t((y + h) % h) * size_t(w) + size_t((x + w) % w)) * 4]) / 255.0f; };
+  auto at = [&](int x, int y) {
+    return float(height.rgba[(size_t((y + h) % h) * size_t(w) + size_t((x + w) % w)) * 4]) / 255.0f;
+  };
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       // Central differences, periodic (the textures repeat). Rows run top-down and v runs up.
@@ -71,7 +74,8 @@ BrickTextures makeBrickTextures(int size, float depthPerUv) {
       const float grain = noise(float(x), float(y), float(size) / 64.0f, size, 7) - 0.5f;
       const float floorH = 0.08f + 0.06f * grain;
       // Each brick its own height and tilt, and a rough face.
-      const float own = hash(brick, course, 3), tiltX = hash(brick, course, 4) - 0.5f, tiltY = hash(brick, course, 5) - 0.5f;
+      const float own = hash(brick, course, 3), tiltX = hash(brick, course, 4) - 0.5f,
+                  tiltY = hash(brick, course, 5) - 0.5f;
       const float face = 0.82f + 0.1f * own + 0.05f * tiltX * (lx / brickW - 0.5f) * 2.0f +
                          0.05f * tiltY * (ly / brickH - 0.5f) * 2.0f + 0.03f * grain +
                          0.02f * (noise(float(x), float(y), float(size) / 160.0f, size, 9) - 0.5f);
@@ -81,7 +85,8 @@ BrickTextures makeBrickTextures(int size, float depthPerUv) {
       hp[0] = hp[1] = hp[2] = uint8_t(std::lround(std::clamp(height, 0.0f, 1.0f) * 255.0f));
       // Colour: brick reds varying per brick, mortar a warm grey.
       const float shade = 0.85f + 0.3f * own + 0.15f * grain;
-      const float r = edge < 0.0f ? 0.62f + 0.08f * grain : 0.55f * shade, g = edge < 0.0f ? 0.6f + 0.08f * grain : 0.24f * shade,
+      const float r = edge < 0.0f ? 0.62f + 0.08f * grain : 0.55f * shade,
+                  g = edge < 0.0f ? 0.6f + 0.08f * grain : 0.24f * shade,
                   b = edge < 0.0f ? 0.56f + 0.08f * grain : 0.17f * shade;
       unsigned char* cp = &t.color.rgba[(size_t(y) * size_t(size) + size_t(x)) * 4];
       cp[0] = uint8_t(std::clamp(r, 0.0f, 1.0f) * 255.0f);

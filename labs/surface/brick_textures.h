@@ -3,7 +3,7 @@
 // colour map. The normal map is baked for one depth: a height of 1 is `depthPerUv` world units
 // above 0 when one unit of UV spans one world unit, which is how the lab's scenes lay it out.
 #pragma once
-#include "scene/scene.h"
+#include "app/scene/scene.h"
 
 namespace shadelab {
 

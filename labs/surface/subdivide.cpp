@@ -103,12 +103,18 @@ MeshData splitEdges(const MeshData& in, int parts) {
     for (uint32_t j = 0; j <= n; ++j)
       for (uint32_t i = 0; i + j <= n; ++i) {
         const uint32_t r = n - i - j;
-        if (r == n) at(i, j) = c[0];
-        else if (i == n) at(i, j) = c[1];
-        else if (j == n) at(i, j) = c[2];
-        else if (j == 0) at(i, j) = edgePoint(c[0], c[1], i);
-        else if (i == 0) at(i, j) = edgePoint(c[0], c[2], j);
-        else if (r == 0) at(i, j) = edgePoint(c[1], c[2], j);
+        if (r == n)
+          at(i, j) = c[0];
+        else if (i == n)
+          at(i, j) = c[1];
+        else if (j == n)
+          at(i, j) = c[2];
+        else if (j == 0)
+          at(i, j) = edgePoint(c[0], c[1], i);
+        else if (i == 0)
+          at(i, j) = edgePoint(c[0], c[2], j);
+        else if (r == 0)
+          at(i, j) = edgePoint(c[1], c[2], j);
         else {
           const float w[3] = {float(r) / float(n), float(i) / float(n), float(j) / float(n)};
           at(i, j) = add(c, w);
@@ -136,7 +142,8 @@ std::vector<glm::vec2> uvScale(const MeshData& m) {
     const glm::vec2 scale(glm::length((e1 * d2.y - e2 * d1.y) / det), glm::length((e2 * d1.x - e1 * d2.x) / det));
     if (!std::isfinite(scale.x + scale.y)) continue;
     for (int k = 0; k < 3; ++k) {
-      const glm::vec3 a = m.positions[i[(k + 1) % 3]] - m.positions[i[k]], b = m.positions[i[(k + 2) % 3]] - m.positions[i[k]];
+      const glm::vec3 a = m.positions[i[(k + 1) % 3]] - m.positions[i[k]],
+                      b = m.positions[i[(k + 2) % 3]] - m.positions[i[k]];
       const float la = glm::length(a), lb = glm::length(b);
       if (!(la > 0.0f && lb > 0.0f)) continue;
       const float angle = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0f, 1.0f));

@@ -7,16 +7,16 @@
 #pragma once
 #include <vector>
 
-#include "scene/mesh.h"
+#include "app/scene/mesh.h"
 
 namespace shadelab {
 
 MeshData subdivide(const MeshData& mesh, int levels);
 
-// Tessellation at level `parts` done on the CPU where there are no tessellation stages (WebGL2): every edge cut into `parts` equal pieces, as the tessellator's equal spacing cuts
-// it, and the triangle into parts^2 on a regular grid (the tessellator places its inner points on
-// concentric rings instead: the two sample the height field differently at a low level and agree
-// as it rises). Attributes are interpolated linearly from the corners (normals and tangents
+// Tessellation at level `parts` done on the CPU where there are no tessellation stages (WebGL2): every edge cut into
+// `parts` equal pieces, as the tessellator's equal spacing cuts it, and the triangle into parts^2 on a regular grid
+// (the tessellator places its inner points on concentric rings instead: the two sample the height field differently at
+// a low level and agree as it rises). Attributes are interpolated linearly from the corners (normals and tangents
 // renormalised). Neighbours compute their shared edge's points from the same endpoints in the
 // same order, so nothing cracks.
 MeshData splitEdges(const MeshData& mesh, int parts);

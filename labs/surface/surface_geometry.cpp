@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
+#include "app/scene/mesh_topology.h"
 #include "labs/surface/subdivide.h"
-#include "scene/mesh_topology.h"
 
 namespace shadelab {
 namespace {
@@ -43,9 +43,10 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
     if (key.tangents && uvs) {
       const TangentReport r = computeTangents(m);  // may split vertices where mirrored UVs meet
       if (r.degenerateUvTriangles)
-        e.notes.push_back("mesh '" + m.name + "': " + std::to_string(r.degenerateUvTriangles) +
-                          " triangles have degenerate UVs (zero area in texture space) and add nothing to the tangents; " +
-                          std::to_string(r.fallbacks) + " vertices touch only such triangles and get an arbitrary frame");
+        e.notes.push_back(
+            "mesh '" + m.name + "': " + std::to_string(r.degenerateUvTriangles) +
+            " triangles have degenerate UVs (zero area in texture space) and add nothing to the tangents; " +
+            std::to_string(r.fallbacks) + " vertices touch only such triangles and get an arbitrary frame");
       const bool wantsOwn = key.source == TangentSource::Mesh || key.compare == TangentSource::Mesh;
       if (wantsOwn && m.sourceTangents.size() != m.positions.size())
         e.notes.push_back("mesh '" + m.name + "' has no tangents of its own (glTF TANGENT): generated ones stand in");
@@ -53,7 +54,9 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
     m = splitEdges(subdivide(m, key.level), uvs ? key.parts : 1);  // without UVs nothing is displaced
     const std::vector<glm::vec4> own = m.sourceTangents.size() == m.positions.size() ? m.sourceTangents : m.tangents;
     const std::vector<glm::vec4>& generated = m.tangents;
-    auto frames = [&](TangentSource s) -> const std::vector<glm::vec4>& { return s == TangentSource::Mesh ? own : generated; };
+    auto frames = [&](TangentSource s) -> const std::vector<glm::vec4>& {
+      return s == TangentSource::Mesh ? own : generated;
+    };
     std::vector<glm::vec4> compare = key.tangents && uvs ? frames(key.compare) : std::vector<glm::vec4>();
     if (key.tangents && uvs) m.tangents = frames(key.source);
     if (m.tangents.empty()) m.tangents.assign(m.positions.size(), glm::vec4(1, 0, 0, 1));  // unused, but bound

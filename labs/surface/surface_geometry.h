@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/gpu_mesh.h"
-#include "scene/scene.h"
+#include "app/scene/gpu_mesh.h"
+#include "app/scene/scene.h"
 
 namespace shadelab {
 
@@ -36,7 +36,8 @@ class SurfaceGeometry {
  public:
   // The meshes for `key`, built now if not kept. `notes` gets what the student should know (a mesh
   // with no tangents of its own, degenerate UVs).
-  const std::vector<SurfaceDraw>& get(const Scene& scene, const SurfaceGeometryKey& key, std::vector<std::string>& notes);
+  const std::vector<SurfaceDraw>& get(const Scene& scene, const SurfaceGeometryKey& key,
+                                      std::vector<std::string>& notes);
   void clear() { kept_.clear(); }
 
  private:

@@ -8,13 +8,24 @@
 // Tatarchuk 2006 (parallax occlusion mapping); Mikkelsen 2008 (tangent frames).
 // Read next: shaders/surface/surface.frag, shaders/surface/height.glsl, tutorials/surface.md.
 #pragma once
-#include "lab/lab.h"
-#include "lab/technique.h"
+#include "app/lab/lab.h"
+#include "app/lab/technique.h"
 #include "labs/surface/surface_geometry.h"
 
 namespace shadelab {
 
-enum class SurfaceTechnique { None, NormalMap, Bump, Displacement, Tessellation, Parallax, SteepParallax, Pom, Truth, Count };
+enum class SurfaceTechnique {
+  None,
+  NormalMap,
+  Bump,
+  Displacement,
+  Tessellation,
+  Parallax,
+  SteepParallax,
+  Pom,
+  Truth,
+  Count
+};
 
 // What a technique changes: the shading normal, the texture lookup (parallax), or the mesh itself
 // (on the CPU's subdivision, the GPU's, or as the truth).
@@ -26,7 +37,7 @@ struct SurfaceTechniqueRow {
   std::string_view name;    // --set surface.technique=NAME
   std::string_view define;  // what surface.vert/.frag test ("": nothing of its own)
   SurfaceChange changes;
-  bool needsHeight;         // reads the height map
+  bool needsHeight;  // reads the height map
 };
 inline constexpr SurfaceTechniqueRow kSurfaceTechniques[] = {
     {SurfaceTechnique::None, "none", "", SurfaceChange::Nothing, false},
@@ -73,11 +84,11 @@ struct SurfaceParams {
   int subdivision = 6;         // midpoint levels for vertex displacement
   int tessLevel = 16;
   DisplacedNormals displacedNormals = DisplacedNormals::FromHeight;
-  int layers = 16;             // steep parallax / POM depth slices
+  int layers = 16;  // steep parallax / POM depth slices
   bool selfShadow = false;
   TangentSource tangents = TangentSource::Generated;
   TangentSource compareWith = TangentSource::Screen;
-  float angleScale = 10.0f;    // degrees at full colour in the tangent-angle view
+  float angleScale = 10.0f;  // degrees at full colour in the tangent-angle view
   bool overlay = false;
   float overlayLength = 2.0f;
   bool addToOldNormal = false;
@@ -86,7 +97,7 @@ struct SurfaceParams {
   float lightElevationDeg = 20.0f;  // low: relief casts visible shade
   float lightAzimuthDeg = -40.0f;
   SurfaceView view = SurfaceView::Shaded;
-  int tessellation = 64;       // segments of the brick sphere
+  int tessellation = 64;  // segments of the brick sphere
 };
 
 class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
@@ -104,7 +115,6 @@ class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
   std::vector<ProgramSpec> allPrograms() const override;
 
   std::string setup(LabContext& ctx) override;
-  void teardown() override;
   void render(Frame& frame) override;
   std::vector<ProgramRef> activePrograms() const override;
   std::vector<std::string> warnings() const override;
@@ -124,6 +134,11 @@ class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
   static ProgramSpec overlaySpec();
   bool needsTangents() const;
   int levelFor(const Scene& scene) const;  // subdivision level the current technique draws at
+  int tessLevelFor(const Scene& scene);    // the tessellation level drawn: the asked one, held to the triangle cap
+  void measureUvShear(const Scene& scene);
+  void noteHeightless(const Frame& frame, std::span<const SurfaceDraw> draws);
+  void drawSurface(Frame& frame, const SurfaceDraw& d, int tessLevel);
+  void drawTangentFrames(Frame& frame, SurfaceGeometryKey key);
 
   ShaderLibrary* shaders_ = nullptr;
   ProgramSlot program_, overlay_;

@@ -4,20 +4,22 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/util/format.h"
 #include "labs/surface/surface_lab.h"
-#include "util/format.h"
 
 namespace shadelab {
 ReferenceSpec SurfaceLab::reference() const {
   ReferenceSpec spec;
   if (!heightless_.empty()) {  // the truth is the height field as geometry: without one there is none
-    spec.description = "material '" + heightless_ + "' has no height map, so there is no true surface to measure against";
+    spec.description =
+        "material '" + heightless_ + "' has no height map, so there is no true surface to measure against";
     return spec;
   }
   spec.kind = TruthKind::Image;
   spec.truth = "true surface";
-  spec.description = "the height field applied to the mesh subdivided to about one vertex per texel, normals from the "
-                     "field per fragment, Blinn-Phong as every technique; 4 x 4 jittered frames per pixel";
+  spec.description =
+      "the height field applied to the mesh subdivided to about one vertex per texel, normals from the "
+      "field per fragment, Blinn-Phong as every technique; 4 x 4 jittered frames per pixel";
   spec.overrides = edits<SurfaceLab>(params, [](SurfaceParams& p) {
     p.technique = SurfaceTechnique::Truth;
     p.displacedNormals = DisplacedNormals::FromHeight;
@@ -63,9 +65,7 @@ Metrics SurfaceLab::viewMetrics(const std::vector<ImageF>& images, const std::ve
           {"max_error", shaded.maxError}};
 }
 
-std::vector<PlotSpec> SurfaceLab::plots() const {
-  return {{"rmse"}, {"normal_angle_deg"}, {"silhouette_pct"}};
-}
+std::vector<PlotSpec> SurfaceLab::plots() const { return {{"rmse"}, {"normal_angle_deg"}, {"silhouette_pct"}}; }
 
 std::vector<std::string> SurfaceLab::warnings() const {
   std::vector<std::string> w = frameNotes_;
@@ -73,7 +73,8 @@ std::vector<std::string> SurfaceLab::warnings() const {
   if (p.addToOldNormal)
     w.push_back("wrong step: the map's normal is added to the old one (n_old + TBN (2c - 1)): the relief flattens");
   if (p.noRenormalize) w.push_back("wrong step: no renormalisation: interpolated vectors are short and the light dims");
-  if (p.noOrthogonalize) w.push_back("wrong step: the tangent is not made perpendicular to the normal again: a skewed frame");
+  if (p.noOrthogonalize)
+    w.push_back("wrong step: the tangent is not made perpendicular to the normal again: a skewed frame");
   if (p.decoding == MapDecoding::Srgb && p.technique == SurfaceTechnique::NormalMap)
     w.push_back("wrong step: the normal map is decoded as sRGB colour: its vectors bend towards the surface");
   if (p.green == GreenConvention::DirectX && p.technique == SurfaceTechnique::NormalMap)
@@ -84,8 +85,9 @@ std::vector<std::string> SurfaceLab::warnings() const {
                 ": relief this deep folds displaced geometry over itself and stretches parallax far beyond what one "
                 "layer of texels can show");
   if (isParallax(p.technique) && p.surfaceAt == SurfaceAt::Bottom)
-    w.push_back("parallax mapping reads depth below the polygon (the surface at the top of the field); with "
-                "surface_at = bottom the truth stands out by the height scale instead");
+    w.push_back(
+        "parallax mapping reads depth below the polygon (the surface at the top of the field); with "
+        "surface_at = bottom the truth stands out by the height scale instead");
   if (p.technique == SurfaceTechnique::Displacement && drawnLevel_ < p.subdivision)
     w.push_back("subdivision capped at level " + std::to_string(drawnLevel_) + " (2.5 M triangles)");
   if (p.technique == SurfaceTechnique::SteepParallax && p.layers < 4)
@@ -96,27 +98,27 @@ std::vector<std::string> SurfaceLab::warnings() const {
 
 std::vector<LabPanel> SurfaceLab::panels() const {
   LabPanel drawn{"Drawn", {}};
-  drawn.items.push_back(PanelTable{
-      {"", "value"},
-      {{"triangles drawn", std::to_string(drawnTriangles_)},
-       {"subdivision level", std::to_string(drawnLevel_)},
-       {"height scale (world)", formatFixed(params.heightScale, 4)},
-       {"UV shear, median (deg)", formatFixed(shearMedian_, 1)},
-       {"UV shear, 90 % (deg)", formatFixed(shearP90_, 1)}}});
-  drawn.items.push_back(PanelText{"Every technique is measured against the true surface (Measure): shaded RMSE, the "
-                                  "mean angle between its normals and the truth's, and the share of pixels covered by "
-                                  "one but not the other (silhouette). UV shear is the angle between dp/du and the "
-                                  "gradient of u per triangle: where generated and screen-space tangents part (the "
-                                  "tangent-angle view)."});
+  drawn.items.push_back(PanelTable{{"", "value"},
+                                   {{"triangles drawn", std::to_string(drawnTriangles_)},
+                                    {"subdivision level", std::to_string(drawnLevel_)},
+                                    {"height scale (world)", formatFixed(params.heightScale, 4)},
+                                    {"UV shear, median (deg)", formatFixed(shearMedian_, 1)},
+                                    {"UV shear, 90 % (deg)", formatFixed(shearP90_, 1)}}});
+  drawn.items.push_back(
+      PanelText{"Every technique is measured against the true surface (Measure): shaded RMSE, the "
+                "mean angle between its normals and the truth's, and the share of pixels covered by "
+                "one but not the other (silhouette). UV shear is the angle between dp/du and the "
+                "gradient of u per triangle: where generated and screen-space tangents part (the "
+                "tangent-angle view)."});
   return {drawn};
 }
 
 std::vector<SweepAxis> SurfaceLab::standardSweep() const {
-  return {{"technique", {"none", "normal-map", "bump", "displacement:subdivision=3", "displacement:subdivision=5",
-                         "displacement:subdivision=7", "tessellation:tess_level=4", "tessellation:tess_level=16",
-                         "tessellation:tess_level=64", "parallax", "steep-parallax:layers=8",
-                         "steep-parallax:layers=32", "pom:layers=4", "pom:layers=8", "pom:layers=16", "pom:layers=32",
-                         "pom:layers=64"}}};
+  return {{"technique",
+           {"none", "normal-map", "bump", "displacement:subdivision=3", "displacement:subdivision=5",
+            "displacement:subdivision=7", "tessellation:tess_level=4", "tessellation:tess_level=16",
+            "tessellation:tess_level=64", "parallax", "steep-parallax:layers=8", "steep-parallax:layers=32",
+            "pom:layers=4", "pom:layers=8", "pom:layers=16", "pom:layers=32", "pom:layers=64"}}};
 }
 
 std::vector<StressCase> SurfaceLab::stressCases() const {

@@ -2,9 +2,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/scene/loaders.h"
+#include "app/scene/procedural.h"
 #include "labs/surface/brick_textures.h"
-#include "scene/loaders.h"
-#include "scene/procedural.h"
 
 namespace fs = std::filesystem;
 
@@ -98,22 +98,23 @@ std::vector<SceneRecipe> surfaceScenes() {
                    return std::string();
                  }});
   if (fs::is_regular_file(dataDirectory() / "meshes/spot_pytorch3d/cow.obj", ec))
-    out.push_back({"spot-bricks", "Spot wearing the bricks: UV seams and charts of every size",
-                   [](Scene& s, const SceneNeeds&) {
-                     if (auto err = loadObj(dataDirectory() / "meshes/spot_pytorch3d/cow.obj", s); !err.empty()) return err;
-                     const int material = brickMaterial(s, makeBrickTextures(512, kBrickDepth));
-                     for (auto& m : s.meshes) {
-                       m.material = material;
-                       for (auto& uv : m.uvs) uv *= 6.0f;  // Spot's charts are small: bricks of a readable size
-                     }
-                     s.suggestedCamera = "yaw=210,pitch=15,distance=2.8";  // the lit side of the face
-                     return std::string();
-                   }});
+    out.push_back(
+        {"spot-bricks", "Spot wearing the bricks: UV seams and charts of every size", [](Scene& s, const SceneNeeds&) {
+           if (auto err = loadObj(dataDirectory() / "meshes/spot_pytorch3d/cow.obj", s); !err.empty()) return err;
+           const int material = brickMaterial(s, makeBrickTextures(512, kBrickDepth));
+           for (auto& m : s.meshes) {
+             m.material = material;
+             for (auto& uv : m.uvs) uv *= 6.0f;  // Spot's charts are small: bricks of a readable size
+           }
+           s.suggestedCamera = "yaw=210,pitch=15,distance=2.8";  // the lit side of the face
+           return std::string();
+         }});
   // Stress scenes: maps and meshes that break what is not written with care.
   out.push_back({"spike", "a flat wall whose height map is one spike: the steepest slope an 8-bit map can hold",
                  [](Scene& s, const SceneNeeds&) {
                    BrickTextures t = makeBrickTextures(64, kBrickDepth);
-                   for (size_t i = 0; i < t.height.rgba.size(); i += 4) t.height.rgba[i] = t.height.rgba[i + 1] = t.height.rgba[i + 2] = 0;
+                   for (size_t i = 0; i < t.height.rgba.size(); i += 4)
+                     t.height.rgba[i] = t.height.rgba[i + 1] = t.height.rgba[i + 2] = 0;
                    for (int y = 31; y <= 32; ++y)
                      for (int x = 31; x <= 32; ++x)
                        for (int c = 0; c < 3; ++c) t.height.rgba[(size_t(y) * 64 + size_t(x)) * 4 + size_t(c)] = 255;
@@ -121,22 +122,24 @@ std::vector<SceneRecipe> surfaceScenes() {
                    addMesh(s, wall(2.0f, 1.0f), brickMaterial(s, std::move(t)));
                    return std::string();
                  }});
-  out.push_back({"broken-maps", "a wall whose normal map holds zero-length and non-unit texels",
-                 [](Scene& s, const SceneNeeds&) {
-                   BrickTextures t = makeBrickTextures(128, kBrickDepth);
-                   for (size_t i = 0; i < t.normal.rgba.size(); i += 4) {
-                     const size_t texel = i / 4, x = texel % 128;
-                     if (x < 43) t.normal.rgba[i] = t.normal.rgba[i + 1] = t.normal.rgba[i + 2] = 128;  // ~ (0, 0, 0)
-                     else if (x < 86) t.normal.rgba[i] = t.normal.rgba[i + 1] = t.normal.rgba[i + 2] = 0;  // (-1, -1, -1)
-                   }
-                   addMesh(s, wall(2.0f, 2.0f), brickMaterial(s, std::move(t)));
-                   return std::string();
-                 }});
+  out.push_back(
+      {"broken-maps", "a wall whose normal map holds zero-length and non-unit texels", [](Scene& s, const SceneNeeds&) {
+         BrickTextures t = makeBrickTextures(128, kBrickDepth);
+         for (size_t i = 0; i < t.normal.rgba.size(); i += 4) {
+           const size_t texel = i / 4, x = texel % 128;
+           if (x < 43)
+             t.normal.rgba[i] = t.normal.rgba[i + 1] = t.normal.rgba[i + 2] = 128;  // ~ (0, 0, 0)
+           else if (x < 86)
+             t.normal.rgba[i] = t.normal.rgba[i + 1] = t.normal.rgba[i + 2] = 0;  // (-1, -1, -1)
+         }
+         addMesh(s, wall(2.0f, 2.0f), brickMaterial(s, std::move(t)));
+         return std::string();
+       }});
   out.push_back({"uv-trouble", "a strip whose UVs mirror at the middle and collapse to a point along one row",
                  [](Scene& s, const SceneNeeds&) {
                    MeshData m = makePlane(2.0f, 8, 1.0f);
                    for (size_t v = 0; v < m.positions.size(); ++v) {
-                     m.uvs[v].x = std::abs(m.uvs[v].x - 0.5f) * 2.0f;  // mirrored about x = 0
+                     m.uvs[v].x = std::abs(m.uvs[v].x - 0.5f) * 2.0f;     // mirrored about x = 0
                      if (v / 9 == 2) m.uvs[v] = glm::vec2(0.25f, 0.25f);  // one row: zero-area in UV
                    }
                    addMesh(s, std::move(m), brickMaterial(s, makeBrickTextures(256, kBrickDepth)));

@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 
-#include "scene/scene_catalog.h"
+#include "app/scene/scene_catalog.h"
 
 namespace shadelab {
 

@@ -9,12 +9,13 @@
 #include <set>
 #include <string>
 
-#include "measure/image.h"
+#include "app/measure/image.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: image_check FILE.png [--min-stddev S] [--min-colors N] [--min-pixels N --color R,G,B] "
-                         "[--crop X,Y,W,H]\n");
+    std::fprintf(stderr,
+                 "usage: image_check FILE.png [--min-stddev S] [--min-colors N] [--min-pixels N --color R,G,B] "
+                 "[--crop X,Y,W,H]\n");
     return 2;
   }
   double minStddev = 0.05;

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/options.h"
+#include "app/cli/options.h"
+#include "app/lab/lab.h"
+#include "app/scene/camera.h"
 #include "fuzz_files.h"
-#include "lab/lab.h"
-#include "scene/camera.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<std::string> args{"shadelab"};

@@ -14,14 +14,18 @@ namespace shadelab::fuzz {
 
 inline const std::filesystem::path& scratchDir() {
   static const std::filesystem::path dir = [] {
-    const std::filesystem::path base = std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
+    const std::filesystem::path base =
+        std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
     auto d = base / ("shadelab_fuzz_" + std::to_string(::getpid()));
     // A folder of this name is an earlier process's with the same pid that ended without its
     // atexit (libFuzzer leaves through _Exit on a finding or a time limit): its files are stale.
     std::error_code ec;
     std::filesystem::remove_all(d, ec);
     std::filesystem::create_directories(d);
-    std::atexit([] { std::error_code ec; std::filesystem::remove_all(scratchDir(), ec); });
+    std::atexit([] {
+      std::error_code ec;
+      std::filesystem::remove_all(scratchDir(), ec);
+    });
     return d;
   }();
   return dir;

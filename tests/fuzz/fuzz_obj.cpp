@@ -1,7 +1,7 @@
 // Wavefront OBJ with its MTL library: the input is the OBJ, then (after a line "#--mtl--") the
 // MTL it may name as "mtllib model.mtl".
+#include "app/scene/loaders.h"
 #include "fuzz_files.h"
-#include "scene/loaders.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto [obj, mtl] = shadelab::fuzz::splitAt(shadelab::fuzz::asText(data, size), "#--mtl--\n");

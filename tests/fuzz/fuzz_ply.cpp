@@ -1,6 +1,6 @@
 // PLY meshes, ASCII and binary (either byte order), as the scene loader reads a user's file.
+#include "app/scene/loaders.h"
 #include "fuzz_files.h"
-#include "scene/loaders.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto file = shadelab::fuzz::writeScratch("mesh.ply", shadelab::fuzz::asText(data, size));

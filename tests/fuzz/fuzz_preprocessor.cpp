@@ -4,9 +4,9 @@
 // desktop dialect and in GLSL ES (interface blocks flattened).
 #include <string>
 
+#include "app/shader/preprocessor.h"
+#include "app/util/contained_path.h"
 #include "fuzz_files.h"
-#include "shader/preprocessor.h"
-#include "util/contained_path.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace fs = std::filesystem;

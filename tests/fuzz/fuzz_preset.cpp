@@ -1,10 +1,10 @@
 // Preset JSON (saved beside every screenshot, applied by --preset and by a dropped .json): the
 // file is parsed and checked, then its params are set on a fresh lab of the kind it names and its
 // camera is parsed, which is everything applying it does short of drawing.
+#include "app/host/preset.h"
+#include "app/lab/lab.h"
+#include "app/scene/camera.h"
 #include "fuzz_files.h"
-#include "host/preset.h"
-#include "lab/lab.h"
-#include "scene/camera.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto file = shadelab::fuzz::writeScratch("preset.json", shadelab::fuzz::asText(data, size));

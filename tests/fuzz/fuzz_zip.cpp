@@ -1,6 +1,6 @@
 // A class's .zip submissions (grade --class): whatever the archive holds, unpacking writes only
 // inside its own folder, within its limits, and never crashes.
-#include "cli/submissions.h"
+#include "app/cli/submissions.h"
 #include "fuzz_files.h"
 
 namespace fs = std::filesystem;

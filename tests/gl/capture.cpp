@@ -3,9 +3,9 @@
 
 #include <cstdlib>
 
+#include "app/scene/gpu_mesh.h"
+#include "app/shader/preprocessor.h"
 #include "gl_test.h"
-#include "scene/gpu_mesh.h"
-#include "shader/preprocessor.h"
 
 namespace shadelab::test {
 

@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/scene/mesh_topology.h"
+#include "app/scene/scene_catalog.h"
 #include "gl_test.h"
 #include "labs/denoise/denoise_pipeline.h"
 #include "labs/denoise/denoise_scenes.h"
-#include "scene/mesh_topology.h"
-#include "scene/scene_catalog.h"
 
 using namespace shadelab;
 
@@ -81,12 +81,13 @@ TEST(Denoise, VertexShaderDisplacesWhereTheCpuSaysItDoes) {
     s.wrapS = s.wrapT = r.map->repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;  // as the bake and the read-back
     const std::vector<uint8_t> texels = encodeMap(*r.map, false);
     const gl::Texture2D map = gl::Texture2D::fromData(r.map->size, GL_R16, GL_RED, GL_UNSIGNED_SHORT, texels.data(), s);
-    const auto gpu = test::captureVertexOutput("denoise/mesh.vert", {{"DISPLACE_MAP", "1"}}, "v_world", mesh, [&](GLuint p) {
-      map.bind(0);
-      glUniform1i(glGetUniformLocation(p, "u_displacement"), 0);
-      glUniform1f(glGetUniformLocation(p, "u_bias"), r.map->bias);
-      glUniform1f(glGetUniformLocation(p, "u_scale"), r.map->scale);
-    });
+    const auto gpu =
+        test::captureVertexOutput("denoise/mesh.vert", {{"DISPLACE_MAP", "1"}}, "v_world", mesh, [&](GLuint p) {
+          map.bind(0);
+          glUniform1i(glGetUniformLocation(p, "u_displacement"), 0);
+          glUniform1f(glGetUniformLocation(p, "u_bias"), r.map->bias);
+          glUniform1f(glGetUniformLocation(p, "u_scale"), r.map->scale);
+        });
     // Nearest: the same texel, so the same number. Bilinear: GPUs quantise the weights (8 bits of
     // sub-texel position is common), so 0.1% of the offsets' range (llvmpipe agrees to 1e-7).
     const float tolerance = bilinear ? 1e-3f * r.map->scale : 1e-5f * r.map->scale + 1e-6f;
@@ -108,8 +109,8 @@ TEST(Denoise, AttributePathIsTheOffsetAlongTheNormal) {
   base.normals = r.noisyNormals;
   GpuMesh mesh = GpuMesh::upload(base);
   ASSERT_TRUE(mesh.setScalars(kScalar0, r.offsets));
-  const auto gpu = test::captureVertexOutput("denoise/mesh.vert", {{"DISPLACE_ATTRIBUTE", "1"}}, "v_world", mesh,
-                                             [](GLuint) {});
+  const auto gpu =
+      test::captureVertexOutput("denoise/mesh.vert", {{"DISPLACE_ATTRIBUTE", "1"}}, "v_world", mesh, [](GLuint) {});
   for (size_t v = 0; v < gpu.size(); ++v)
     ASSERT_LT(glm::length(gpu[v] - (r.noisy[v] + r.noisyNormals[v] * r.offsets[v])), 1e-5f) << v;
 }
@@ -150,9 +151,7 @@ TEST(Denoise, GeneratedNoiseInPlaceOfAMissingTwinIsNamed) {
   EXPECT_TRUE(test::warns(host.lab(), "this scene has no noisy twin, so the noise shown is generated gaussian noise"));
   // A clean file that is no pair for the scene: one line naming both, and the scene stays the clean mesh.
   auto off = std::filesystem::temp_directory_path() / "shadelab_not_a_pair.off";
-  {
-    std::ofstream(off) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-  }
+  { std::ofstream(off) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"; }
   ASSERT_EQ(host.set("denoise.clean=" + off.string()), "");
   host.settle();
   host.renderFrame({160, 120});

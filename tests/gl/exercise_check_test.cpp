@@ -6,10 +6,10 @@
 
 #include <fstream>
 
+#include "app/grade/exercise_check.h"
+#include "app/measure/report.h"
+#include "app/util/read_file.h"
 #include "gl_test.h"
-#include "grade/exercise_check.h"
-#include "measure/report.h"
-#include "util/read_file.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -100,7 +100,8 @@ TEST_F(Check, AFileThatDoesNotCompileIsNamedAtItsLine) {
   EXPECT_EQ(r.outcome(), Outcome::DidNotBuild);
   EXPECT_EQ(r.earned, 0.0);
   bool named = false;
-  for (auto& line : check.lines()) named |= line.find(kFile) != std::string::npos && line.find("error") != std::string::npos;
+  for (auto& line : check.lines())
+    named |= line.find(kFile) != std::string::npos && line.find("error") != std::string::npos;
   EXPECT_TRUE(named);
 }
 

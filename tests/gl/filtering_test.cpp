@@ -7,8 +7,8 @@
 
 #include <cmath>
 
+#include "app/host/measurer.h"
 #include "gl_test.h"
-#include "host/measurer.h"
 #include "labs/filtering/filtering_lab.h"
 
 using namespace shadelab;
@@ -188,7 +188,8 @@ TEST(Filtering, AnisotropyAtFineLevelsLeavesLlvmpipesProbesForTheShaders) {
     bool said = false;
     for (const std::string& w : host->warnings()) said |= w.find("probes are the shader's") != std::string::npos;
     EXPECT_EQ(said, llvmpipe) << fine;
-    EXPECT_EQ(passes.front().name.find("in shader") != std::string::npos, llvmpipe) << fine << ": " << passes.front().name;
+    EXPECT_EQ(passes.front().name.find("in shader") != std::string::npos, llvmpipe)
+        << fine << ": " << passes.front().name;
     EXPECT_EQ(countNonFinite(host->readImage()), 0u);
   }
   auto host = filteringHost({"filtering.anisotropy=16"});  // at the footprint's own levels the driver's probes serve
@@ -211,7 +212,8 @@ TEST(Filtering, ALabSwitchLetsTheCachedTruthsGo) {
   };
   measure();
   for (const Measurement& m : measurer.history())  // the numbers are kept, not the images' memory
-    EXPECT_EQ(m.image.rgba.capacity() + m.reference.rgba.capacity() + m.images.capacity() + m.references.capacity(), 0u);
+    EXPECT_EQ(m.image.rgba.capacity() + m.reference.rgba.capacity() + m.images.capacity() + m.references.capacity(),
+              0u);
   ASSERT_EQ(host->selectLab("shading"), "");
   host->renderFrame({160, 90});
   EXPECT_TRUE(measurer.history().empty());

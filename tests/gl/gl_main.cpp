@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "app/util/process_memory.h"
 #include "gl_test.h"
-#include "util/process_memory.h"
 
 namespace shadelab::test {
 GlContext* g_context = nullptr;

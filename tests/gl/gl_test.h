@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <vector>
 
-#include "context/gl_context.h"
-#include "host/lab_host.h"
+#include "app/context/gl_context.h"
+#include "app/host/lab_host.h"
 
 namespace shadelab::test {
 

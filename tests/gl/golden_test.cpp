@@ -25,9 +25,11 @@ TEST_P(Golden, MatchesWithinTolerance) {
 INSTANTIATE_TEST_SUITE_P(
     Shading, Golden,
     ::testing::Values(GoldenCase{"shading_phong", "shading", {}},
-                      GoldenCase{"shading_gouraud_affine", "shading",
+                      GoldenCase{"shading_gouraud_affine",
+                                 "shading",
                                  {"shading.mode=gouraud", "shading.uv_interpolation=affine", "shading.tessellation=8"}},
-                      GoldenCase{"shading_flat_phong_specular", "shading",
+                      GoldenCase{"shading_flat_phong_specular",
+                                 "shading",
                                  {"shading.mode=flat", "shading.specular=phong", "shading.lights=4"}},
                       GoldenCase{"shading_cube_no_lights", "cube", {"shading.lights=0", "shading.ka=0.8"}}),
     [](const auto& info) { return std::string(info.param.name); });

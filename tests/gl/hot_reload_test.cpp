@@ -232,10 +232,12 @@ TEST(ShaderDrops, ADropMatchingTwoFilesIsDecidedByItsPathOrRefused) {
   auto b = lib.program({"b", {{GL_VERTEX_SHADER, "beta/plain.vert"}, {GL_FRAGMENT_SHADER, "beta/lit.frag"}}, {}});
   fs::create_directories(root / "drops" / "beta");
   std::ofstream(root / "drops" / "lit.frag") << "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n";
-  std::ofstream(root / "drops" / "beta" / "lit.frag") << "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n";
+  std::ofstream(root / "drops" / "beta" / "lit.frag")
+      << "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.5); }\n";
   const auto ambiguous = lib.overrideByName(root / "drops" / "lit.frag");
   EXPECT_EQ(ambiguous.replaced, "");
-  EXPECT_NE(ambiguous.error.find("lit.frag is ambiguous: it could replace alpha/lit.frag, beta/lit.frag"), std::string::npos)
+  EXPECT_NE(ambiguous.error.find("lit.frag is ambiguous: it could replace alpha/lit.frag, beta/lit.frag"),
+            std::string::npos)
       << ambiguous.error;
   const auto byPath = lib.overrideByName(root / "drops" / "beta" / "lit.frag");
   EXPECT_EQ(byPath.replaced, "beta/lit.frag") << byPath.error;

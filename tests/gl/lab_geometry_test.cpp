@@ -2,9 +2,9 @@
 // attributes get one buffer; patches draw through a tessellation stage.
 #include <gtest/gtest.h>
 
-#include "gl/texture.h"
+#include "app/gl/texture.h"
+#include "app/scene/gpu_mesh.h"
 #include "gl_test.h"
-#include "scene/gpu_mesh.h"
 
 using namespace shadelab;
 
@@ -36,7 +36,8 @@ TEST(LabGeometry, ReplacedArraysTakeEffectAndAllocateNothing) {
   const int before = gl::liveObjectsTotal();
   {
     ShaderLibrary lib(testShaders());
-    auto prog = lib.program({"test/plain", {{GL_VERTEX_SHADER, "test/plain.vert"}, {GL_FRAGMENT_SHADER, "test/plain.frag"}}, {}});
+    auto prog = lib.program(
+        {"test/plain", {{GL_VERTEX_SHADER, "test/plain.vert"}, {GL_FRAGMENT_SHADER, "test/plain.frag"}}, {}});
     ASSERT_TRUE(prog->hasGoodProgram());
     gl::RenderTarget rt = gl::RenderTarget::create({64, 64});
     MeshData m = triangle(-1.0f + 2.0f / 64.0f);  // a sliver
@@ -75,8 +76,10 @@ TEST(LabGeometry, ReplacedArraysTakeEffectAndAllocateNothing) {
 TEST(LabGeometry, PatchesDrawThroughTessellation) {
   ShaderLibrary lib(testShaders());
   const ProgramSpec spec{"test/patch",
-                         {{GL_VERTEX_SHADER, "test/patch.vert"}, {GL_TESS_CONTROL_SHADER, "test/patch.tesc"},
-                          {GL_TESS_EVALUATION_SHADER, "test/patch.tese"}, {GL_FRAGMENT_SHADER, "test/patch.frag"}},
+                         {{GL_VERTEX_SHADER, "test/patch.vert"},
+                          {GL_TESS_CONTROL_SHADER, "test/patch.tesc"},
+                          {GL_TESS_EVALUATION_SHADER, "test/patch.tese"},
+                          {GL_FRAGMENT_SHADER, "test/patch.frag"}},
                          {{"LEVEL", "4"}}};
   auto prog = lib.program(spec);
   ASSERT_TRUE(prog->hasGoodProgram());

@@ -1,4 +1,4 @@
-// Every lab: every program variant compiles; setup -> 3 frames -> teardown with no GL error and
+// Every lab: every program variant compiles; setup -> 3 frames -> destruction with no GL error and
 // no GL object left behind; only the passes and textures the configuration needs.
 #include <gtest/gtest.h>
 
@@ -13,11 +13,11 @@
 #include <utility>
 #include <vector>
 
+#include "app/gl/pass_timer.h"
+#include "app/gl/pixel_probe.h"
+#include "app/host/share_link.h"
+#include "app/util/process_memory.h"
 #include "gl_test.h"
-#include "gl/pass_timer.h"
-#include "gl/pixel_probe.h"
-#include "host/share_link.h"
-#include "util/process_memory.h"
 
 using namespace shadelab;
 
@@ -109,7 +109,8 @@ TEST(Lifecycle, ATextureSampledInATessellationStageIsLetGo) {
   heapAfterFrame(host, {64, 36});
   const double before = heapAfterFrame(host, {64, 36});
   const GLuint program = linkedProgram(
-      {{GL_VERTEX_SHADER, "#version 400 core\nvoid main() { gl_Position = vec4(gl_VertexID & 1, gl_VertexID >> 1, 0.0, 1.0); }\n"},
+      {{GL_VERTEX_SHADER,
+        "#version 400 core\nvoid main() { gl_Position = vec4(gl_VertexID & 1, gl_VertexID >> 1, 0.0, 1.0); }\n"},
        {GL_TESS_CONTROL_SHADER,
         "#version 400 core\nlayout(vertices = 3) out;\nvoid main() {\n"
         "  gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;\n"
@@ -159,7 +160,9 @@ TEST(Lifecycle, ATextureHeldByTheDriversIdleScenesIsLetGo) {
   heapAfterFrame(host, {64, 36});
   const double before = heapAfterFrame(host, {64, 36});
   const GLuint program = linkedProgram(
-      {{GL_VERTEX_SHADER, "#version 330 core\nvoid main() { gl_Position = vec4(vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0, 0.0, 1.0); }\n"},
+      {{GL_VERTEX_SHADER,
+        "#version 330 core\nvoid main() { gl_Position = vec4(vec2(gl_VertexID & 1, gl_VertexID >> 1) * 2.0 - 1.0, 0.0, "
+        "1.0); }\n"},
        {GL_FRAGMENT_SHADER,
         "#version 330 core\nuniform sampler2D u_map;\nout vec4 o_color;\nvoid main() {\n  o_color = vec4(0.0);\n"
         "  for (int i = 0; i < 8; ++i) o_color += texture(u_map, gl_FragCoord.xy / (512.0 + float(i)));\n}\n"}});
@@ -197,11 +200,13 @@ TEST(Lifecycle, ATextureHeldByTheDriversIdleScenesIsLetGo) {
   // Weighed with no frame of the host's between: a lab's own frame may take the scenes again.
   returnFreePages();
   const double held = heapInUseMb();
-  if (held < before + 48.0) GTEST_SKIP() << "this driver let the texture go by itself (" << held - before << " MB held)";
+  if (held < before + 48.0)
+    GTEST_SKIP() << "this driver let the texture go by itself (" << held - before << " MB held)";
   ASSERT_EQ(host.selectLab("filtering"), "");  // leaving a lab hands out every scene
   returnFreePages();
   const double after = heapInUseMb();
-  std::printf("heap %.1f MB before, %.1f MB with the texture deleted, %.1f MB once the lab was left\n", before, held, after);
+  std::printf("heap %.1f MB before, %.1f MB with the texture deleted, %.1f MB once the lab was left\n", before, held,
+              after);
   EXPECT_LT(after, before + 16.0) << "the driver's idle scenes still hold the 64 MB texture";
   EXPECT_EQ(gl::drainErrors(), "");
 }
@@ -218,10 +223,10 @@ TEST(Lifecycle, LeavingTheSurfaceLabsHeaviestTessellationGivesItsScenesBack) {
   ASSERT_EQ(host.selectLab("surface"), "");
   ASSERT_EQ(host.selectScene("bricks"), "");
   for (const char* s : {"surface.technique=displacement", "surface.height_scale=-2", "surface.surface_at=bottom",
-                        "surface.normal_strength=4", "surface.decoding=srgb", "surface.subdivision=10", "surface.tess_level=64",
-                        "surface.displaced_normals=from-height", "surface.layers=16", "surface.self_shadow=on",
-                        "surface.tangents=screen", "surface.compare_with=screen", "surface.angle_scale=10",
-                        "surface.light_elevation=54.36352", "surface.tessellation=64"})
+                        "surface.normal_strength=4", "surface.decoding=srgb", "surface.subdivision=10",
+                        "surface.tess_level=64", "surface.displaced_normals=from-height", "surface.layers=16",
+                        "surface.self_shadow=on", "surface.tangents=screen", "surface.compare_with=screen",
+                        "surface.angle_scale=10", "surface.light_elevation=54.36352", "surface.tessellation=64"})
     ASSERT_EQ(host.set(s), "") << s;
   for (int i = 0; i < 3; ++i) host.renderFrame({800, 600});
   glFinish();
@@ -246,8 +251,9 @@ TEST(Lifecycle, RebuildingProgramsAlreadyMetKeepsNothing) {
   fs::create_directories(root);
   std::ofstream(root / "probe.vert") << "#version 330 core\nvoid main() { gl_Position = vec4(float(gl_VertexID & 1), "
                                         "float(gl_VertexID >> 1), 0.0, 1.0); }\n";
-  std::ofstream(root / "probe.frag") << "#version 330 core\nout vec4 o_color;\n"
-                                        "void main() { o_color = vec4(float(K) * 0.25, float(K) * 0.001, 0.5, 1.0); }\n";
+  std::ofstream(root / "probe.frag")
+      << "#version 330 core\nout vec4 o_color;\n"
+         "void main() { o_color = vec4(float(K) * 0.25, float(K) * 0.001, 0.5, 1.0); }\n";
   GLuint vao = 0, target = 0, framebuffer = 0;
   glGenVertexArrays(1, &vao);
   glBindVertexArray(vao);
@@ -263,7 +269,9 @@ TEST(Lifecycle, RebuildingProgramsAlreadyMetKeepsNothing) {
     {
       ShaderLibrary library{ShaderSearchPath({root})};
       for (int k = first; k < first + 100; ++k) {
-        ProgramSpec spec{"probe", {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}}, {{"K", std::to_string(k)}}};
+        ProgramSpec spec{"probe",
+                         {{GL_VERTEX_SHADER, "probe.vert"}, {GL_FRAGMENT_SHADER, "probe.frag"}},
+                         {{"K", std::to_string(k)}}};
         ProgramRef program = library.program(spec);
         EXPECT_TRUE(program->hasGoodProgram());
         program->use();
@@ -305,12 +313,19 @@ TEST(Lifecycle, LeavingALabGivesItsTexturesMemoryBack) {
       {"shadows.light_type=point", "shadows.fill_light=on", "shadows.fill_casts=on", "shadows.map_size=8192",
        "shadows.depth_format=24", "shadows.filter=hardware-pcf"},
       // The state the window's soak left before its largest heap on a lab entry (10 minutes, seed 11).
-      {"shadows.light_type=point", "shadows.key_casts=on", "shadows.scene_light=off", "shadows.light_elevation=40",
-       "shadows.light_distance=3", "shadows.light_radius=10", "shadows.fill_light=on", "shadows.fill_casts=on",
-       "shadows.map_size=8192", "shadows.depth_format=24", "shadows.auto_fit=off", "shadows.fit=view",
-       "shadows.cull_front=on", "shadows.filter=hardware-pcf", "shadows.pcf_size=15", "shadows.show_frustum=on",
-       "shadows.tessellation=256", "shadows.scene_scale=2.8909566", "shadows.offset_factor=20", "shadows.offset_units=5860.6978",
-       "shadows.bias=22.870691", "shadows.slope_bias=50", "shadows.border_clamp=on", "shadows.far=8606.267", "shadows.near=0.5"}};
+      {"shadows.light_type=point", "shadows.key_casts=on",
+       "shadows.scene_light=off",  "shadows.light_elevation=40",
+       "shadows.light_distance=3", "shadows.light_radius=10",
+       "shadows.fill_light=on",    "shadows.fill_casts=on",
+       "shadows.map_size=8192",    "shadows.depth_format=24",
+       "shadows.auto_fit=off",     "shadows.fit=view",
+       "shadows.cull_front=on",    "shadows.filter=hardware-pcf",
+       "shadows.pcf_size=15",      "shadows.show_frustum=on",
+       "shadows.tessellation=256", "shadows.scene_scale=2.8909566",
+       "shadows.offset_factor=20", "shadows.offset_units=5860.6978",
+       "shadows.bias=22.870691",   "shadows.slope_bias=50",
+       "shadows.border_clamp=on",  "shadows.far=8606.267",
+       "shadows.near=0.5"}};
   {
     // What the process keeps once, whatever the maps: the shadows lab's first compile (the
     // compiler's own tables). Left out of the baseline, so the margin below measures the maps
@@ -367,8 +382,8 @@ TEST(Lifecycle, AFailedJobIsShownUntilTheLabIsLeft) {
       if (w.find(text) != std::string::npos) return true;
     return false;
   };
-  host.jobs().submit("test", "a job that fails", [](JobContext&) -> int { throw std::runtime_error("bake failed"); },
-                     [](int) {});
+  host.jobs().submit(
+      "test", "a job that fails", [](JobContext&) -> int { throw std::runtime_error("bake failed"); }, [](int) {});
   host.settle();
   host.renderFrame({64, 36});
   EXPECT_TRUE(shows("bake failed"));

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "app/gl/driver_caveats.h"
+#include "app/host/random_settings.h"
 #include "gl_test.h"
-#include "gl/driver_caveats.h"
-#include "host/random_settings.h"
 
 using namespace shadelab;
 
@@ -78,15 +78,17 @@ TEST(Shaders, EveryLabDrawsOnlyWhatItsVariantSpaceCovers) {
       for (auto& p : host.lab().activePrograms()) {
         const ProgramSpec& spec = p->spec();
         const auto it = space.find(stagesOf(spec));
-        ASSERT_NE(it, space.end()) << id << " draws with stages " << stagesOf(spec) << ", which allPrograms() never uses";
+        ASSERT_NE(it, space.end()) << id << " draws with stages " << stagesOf(spec)
+                                   << ", which allPrograms() never uses";
         const auto d = definesOf(spec);
         for (size_t i = 0; i < d.size(); ++i)
           for (size_t j = i; j < d.size(); ++j) {
-            const bool covered = std::any_of(it->second.begin(), it->second.end(),
-                                             [&](const std::set<std::string>& s) { return s.count(d[i]) && s.count(d[j]); });
+            const bool covered = std::any_of(it->second.begin(), it->second.end(), [&](const std::set<std::string>& s) {
+              return s.count(d[i]) && s.count(d[j]);
+            });
             EXPECT_TRUE(covered) << id << ": " << d[i] << (i == j ? "" : " with " + d[j])
-                                 << " is in no program of allPrograms() (drawn as " << spec.key() << "; settings: "
-                                 << settingsAsArgs(id, host.currentSettings()) << ")";
+                                 << " is in no program of allPrograms() (drawn as " << spec.key()
+                                 << "; settings: " << settingsAsArgs(id, host.currentSettings()) << ")";
           }
         ++checked;
       }
@@ -111,7 +113,8 @@ TEST(DriverCaveats, ALabSwitchOnAnotherDriverDoesNoCaveatWork) {
       host.renderFrame({64, 48}, 0.0f, 1.0f / 60.0f);
     }
   };
-  const int textures = gl::workaroundRuns(gl::Caveat::HeldTextures), scenes = gl::workaroundRuns(gl::Caveat::HeldScenes);
+  const int textures = gl::workaroundRuns(gl::Caveat::HeldTextures),
+            scenes = gl::workaroundRuns(gl::Caveat::HeldScenes);
   gl::pretendRenderer("NVIDIA H100 PCIe/PCIe/SSE2");
   EXPECT_FALSE(gl::applies(gl::Caveat::HeldTextures));
   switchLabs();

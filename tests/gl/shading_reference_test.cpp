@@ -144,7 +144,8 @@ TEST(Shading, TinyScenesAreLitLikeLargeOnes) {
 // A student's lighting file changes the frame, never the truth it is judged against: truth frames
 // are drawn with the built-in shaders, the student's frame right after with theirs.
 TEST(ShadingReference, TheTruthIsDrawnWithTheBuiltInShadersWhateverTheStudentOverrides) {
-  const std::filesystem::path starter = std::filesystem::path(SHADELAB_SOURCE_DIR) / "exercises/shading/blinn-phong/starter";
+  const std::filesystem::path starter =
+      std::filesystem::path(SHADELAB_SOURCE_DIR) / "exercises/shading/blinn-phong/starter";
   LabHost builtin(test::builtinShaders());
   LabHost student(ShaderSearchPath({starter, std::filesystem::path(SHADELAB_SOURCE_DIR) / "shaders"}));
   for (LabHost* host : {&builtin, &student}) {
@@ -155,5 +156,6 @@ TEST(ShadingReference, TheTruthIsDrawnWithTheBuiltInShadersWhateverTheStudentOve
   EXPECT_EQ(compareImages(student.renderReference({128, 128}), truth).maxError, 0.0);
   builtin.renderFrame({128, 128});
   student.renderFrame({128, 128});
-  EXPECT_GT(compareImages(student.readImage(), builtin.readImage()).coveredRmse, 0.01) << "the starter has no highlight";
+  EXPECT_GT(compareImages(student.readImage(), builtin.readImage()).coveredRmse, 0.01)
+      << "the starter has no highlight";
 }

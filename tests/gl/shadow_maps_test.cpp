@@ -42,7 +42,8 @@ std::vector<float> depthLayer(const ShadowMap& map, int layer) {
 // floor's 50 units and gains less than 2x; cascades of the same memory gain several times that.
 TEST(ShadowMaps, CascadesAtLeastHalveTheErrorOnLearnOpenGlsSceneAtEqualMemory) {
   auto host = test::labHost(
-      "shadows", "learnopengl", {"shadows.map_size=1024", "shadows.filter=hard", "shadows.fit=scene"});  // the scene opens with cascades
+      "shadows", "learnopengl",
+      {"shadows.map_size=1024", "shadows.filter=hard", "shadows.fit=scene"});  // the scene opens with cascades
   const ImageF truth = host->renderReference({800, 600});
   const double scene = misclassified(*host, truth);
   host->set("shadows.fit=view");
@@ -61,8 +62,9 @@ TEST(ShadowMaps, CascadesAtLeastHalveTheErrorOnLearnOpenGlsSceneAtEqualMemory) {
 
 TEST(ShadowMaps, EveryVisiblePixelLandsInACascade) {
   auto host = test::labHost("shadows", "learnopengl", {"shadows.fit=cascades", "shadows.view=cascades"});
-  for (const char* cam : {"", "yaw=35,pitch=8,distance=4,near=0.1,far=100", "yaw=-120,pitch=60,distance=20,near=0.1,far=100",
-                          "yaw=10,pitch=2,distance=1.5,near=0.1,far=100"}) {
+  for (const char* cam :
+       {"", "yaw=35,pitch=8,distance=4,near=0.1,far=100", "yaw=-120,pitch=60,distance=20,near=0.1,far=100",
+        "yaw=10,pitch=2,distance=1.5,near=0.1,far=100"}) {
     if (*cam) ASSERT_EQ(host->camera().parse(cam), "");
     for (int count : {2, 3, 4}) {
       host->set("shadows.cascade_count=" + std::to_string(count));
@@ -84,8 +86,9 @@ TEST(ShadowMaps, EveryVisiblePixelLandsInACascade) {
 
 TEST(ShadowMaps, SnappedMapsStayStillUnderASubTexelCameraMove) {
   for (bool snap : {true, false}) {
-    auto host = test::labHost("shadows", "learnopengl", {"shadows.fit=cascades", "shadows.map_size=512",
-                                                         std::string("shadows.snap_texels=") + (snap ? "on" : "off")});
+    auto host = test::labHost(
+        "shadows", "learnopengl",
+        {"shadows.fit=cascades", "shadows.map_size=512", std::string("shadows.snap_texels=") + (snap ? "on" : "off")});
     host->renderFrame({200, 150});
     const auto& lab = shadowsOf(*host);
     const float texel = lab.cascades()[0].light.texelWorld(0, 512);
@@ -106,8 +109,10 @@ TEST(ShadowMaps, SnappedMapsStayStillUnderASubTexelCameraMove) {
             changed += std::abs(before[size_t(y * 512 + x)] - after[size_t((y + dy) * 512 + x + dx)]) > 1e-6f;
         fewest = std::min(fewest, changed);
       }
-    if (snap) EXPECT_LT(fewest, before.size() / 1000) << "a snapped map changed under a sub-texel move";
-    else EXPECT_GT(fewest, before.size() / 10) << "without snapping the map follows the camera (and shimmers)";
+    if (snap)
+      EXPECT_LT(fewest, before.size() / 1000) << "a snapped map changed under a sub-texel move";
+    else
+      EXPECT_GT(fewest, before.size() / 10) << "without snapping the map follows the camera (and shimmers)";
   }
 }
 
@@ -132,10 +137,10 @@ TEST(ShadowMaps, PcssPenumbraOnASlopeIsNotNarrowerThanOnTheFlat) {
   for (int sloped = 0; sloped < 2; ++sloped) {
     const std::string path = test::testOutput(sloped ? "pcss_slope.obj" : "pcss_flat.obj").string();
     writeScene(path, sloped ? 35.0f : 0.0f);
-    auto host = test::labHost("shadows", path.c_str(),
-                              {"shadows.filter=pcss", "shadows.light_elevation=90", "shadows.light_radius=0.5",
-                               "shadows.blocker_samples=32", "shadows.pcss_samples=32", "shadows.view=pcss-penumbra",
-                               "shadows.map_size=1024"});
+    auto host = test::labHost(
+        "shadows", path.c_str(),
+        {"shadows.filter=pcss", "shadows.light_elevation=90", "shadows.light_radius=0.5", "shadows.blocker_samples=32",
+         "shadows.pcss_samples=32", "shadows.view=pcss-penumbra", "shadows.map_size=1024"});
     // From the open side, so the floor under the plate's edge (the origin) is the image centre.
     host->renderFrame({64, 64});  // builds the scene (and frames the camera) first
     ASSERT_EQ(host->camera().parse("yaw=90,pitch=40,distance=5,target=0;0;0,near=0.05,far=50"), "");
@@ -176,7 +181,8 @@ TEST(ShadowMaps, ShadersHoldTheDiskOfTheirOwnSampleCount) {
       const auto& disk = ShadowsLab::disk(8 << index);
       for (const char* name : {"u_filterDisk", "u_blockerDisk"}) {
         for (int k = 0; k < (8 << index); ++k) {
-          const GLint loc = glGetUniformLocation(GLuint(program), (std::string(name) + "[" + std::to_string(k) + "]").c_str());
+          const GLint loc =
+              glGetUniformLocation(GLuint(program), (std::string(name) + "[" + std::to_string(k) + "]").c_str());
           if (loc < 0) continue;  // not used by this filter
           float v[2];
           glGetUniformfv(GLuint(program), loc, v);
@@ -232,7 +238,7 @@ TEST(ShadowMaps, FilteredCascadesLeaveNoDotsOnALitFloor) {
       for (int x = 0; x < size.x; ++x) {
         auto lum = [&](int dy) { return img.at(x, y + dy)[1]; };
         if (truth.at(x, y)[3] < 0.5f || truth.at(x, y)[0] < 0.99f) continue;  // truly lit only
-        dots += lum(0) < 0.85f * std::min(lum(-2), lum(2));  // darker than the floor above and below
+        dots += lum(0) < 0.85f * std::min(lum(-2), lum(2));                   // darker than the floor above and below
       }
     std::printf("%s: %d pixels darker than the lit floor two rows above and below\n", f, dots);
     EXPECT_LE(dots, 20) << f << ": thin dark lines on truly lit surfaces";  // ~250 with per-quad levels
@@ -248,7 +254,8 @@ TEST(ShadowMaps, CubeMapsFilterSeamlessly) {
 // pcf-bilinear writes out what the hardware-pcf sampler does (one depth for the four texels, so
 // without the receiver plane): the two visibility images agree.
 TEST(ShadowMaps, BilinearPcfInTheShaderMatchesTheSampler) {
-  auto host = test::labHost("shadows", nullptr, {"shadows.filter=hardware-pcf", "shadows.view=visibility", "shadows.receiver_plane=off"});
+  auto host = test::labHost("shadows", nullptr,
+                            {"shadows.filter=hardware-pcf", "shadows.view=visibility", "shadows.receiver_plane=off"});
   host->renderFrame({320, 180});
   const ImageF sampler = host->readImage();
   ASSERT_EQ(host->set("shadows.filter=pcf-bilinear"), "");
@@ -262,14 +269,16 @@ TEST(ShadowMaps, BilinearPcfInTheShaderMatchesTheSampler) {
 // EVSM moments with mips and the blur's scratch is 2.6 GiB, which a software renderer would take
 // from the machine's memory.
 TEST(ShadowMaps, AMapOverTheBudgetIsDrawnSmallerAndSaysSo) {
-  auto host = test::labHost("shadows", "shadow-test", {"shadows.fit=scene", "shadows.filter=evsm", "shadows.map_size=8192"});
+  auto host =
+      test::labHost("shadows", "shadow-test", {"shadows.fit=scene", "shadows.filter=evsm", "shadows.map_size=8192"});
   host->renderFrame({160, 90});
   EXPECT_EQ(shadowsOf(*host).keyMap().size(), 4096);
   bool said = false;
   for (const std::string& w : host->warnings()) said |= w.find("over the lab's 2 GiB budget") != std::string::npos;
   EXPECT_TRUE(said);
   EXPECT_GT(ShadowMap::bytesOf({false, 8192, 1, GL_DEPTH_COMPONENT24, GL_RGBA32F, true}), ShadowMap::kBudgetBytes);
-  EXPECT_LT(ShadowMap::bytesOf({false, 8192, 4, GL_DEPTH_COMPONENT24, 0, false}), ShadowMap::kBudgetBytes);  // depth alone fits
+  EXPECT_LT(ShadowMap::bytesOf({false, 8192, 4, GL_DEPTH_COMPONENT24, 0, false}),
+            ShadowMap::kBudgetBytes);  // depth alone fits
   EXPECT_EQ(gl::drainErrors(), "");
 }
 

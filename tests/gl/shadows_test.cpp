@@ -127,14 +127,18 @@ TEST(Shadows, DepthViewShowsEitherLightsMap) {
 TEST(Shadows, SoftShadowsApproachTheAreaLight) {
   auto host = shadowsHost({"shadows.filter=pcss", "shadows.light_radius=0.1"});
   const ImageF truth = host->renderReference({160, 90});
-  const double pcss = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
+  const double pcss =
+      metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
   host->set("shadows.filter=hard");  // the same area-light truth, judged against a hard shadow
-  const double hard = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
+  const double hard =
+      metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_area");
   EXPECT_LT(pcss, hard);
   // ... while against the point-light truth, the hard shadow is the closer of the two.
-  const double hardVsHard = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
+  const double hardVsHard =
+      metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
   host->set("shadows.filter=pcss");
-  const double pcssVsHard = metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
+  const double pcssVsHard =
+      metric(host->lab().judge()->metrics(host->renderMeasured({160, 90}), truth), "visibility_rmse_hard");
   EXPECT_LT(hardVsHard, pcssVsHard);
 }
 
@@ -155,8 +159,8 @@ INSTANTIATE_TEST_SUITE_P(
     Shadows, ShadowGoldens,
     ::testing::Values(ShadowGolden{"shadows_hard", {"shadows.filter=hard"}},
                       ShadowGolden{"shadows_pcf5", {"shadows.filter=pcf", "shadows.pcf_size=5"}},
-                      ShadowGolden{"shadows_pcss_spot", {"shadows.filter=pcss", "shadows.light_type=spot",
-                                                         "shadows.light_radius=0.1"}},
+                      ShadowGolden{"shadows_pcss_spot",
+                                   {"shadows.filter=pcss", "shadows.light_type=spot", "shadows.light_radius=0.1"}},
                       ShadowGolden{"shadows_point_pcf", {"shadows.light_type=point", "shadows.light_distance=1.2"}},
                       ShadowGolden{"shadows_bias_heat", {"shadows.view=bias-heat", "shadows.bias=0.5"}}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -216,16 +220,19 @@ TEST(Shadows, TheGpuTracerAgreesWithEmbree) {
 
 // How the tracer cuts its work (samples a draw, rays a walk, triangles a leaf, the cone test)
 // changes its speed alone: whether a ray meets a triangle is one test whatever the tree, each ray's
-// answer is the one a walk of its own gives, the cone turns away only nodes no ray enters, and the sums are of 0s and 1s, so every shape's truth is the same to the
-// bit, the hard ray (pass 0's first) and a last pass of fewer samples included.
+// answer is the one a walk of its own gives, the cone turns away only nodes no ray enters, and the sums are of 0s and
+// 1s, so every shape's truth is the same to the bit, the hard ray (pass 0's first) and a last pass of fewer samples
+// included.
 TEST(Shadows, TheGpuTracersShapesGiveTheSameTruth) {
   for (const char* light : {"directional", "point"}) {
-    auto host = test::labHost("shadows", "shadow-test", {"shadows.truth_tracer=gpu", std::string("shadows.light_type=") + light});
+    auto host = test::labHost("shadows", "shadow-test",
+                              {"shadows.truth_tracer=gpu", std::string("shadows.light_type=") + light});
     auto& lab = dynamic_cast<ShadowsLab&>(host->lab());
     host->renderFrame({96, 64});
     std::optional<ImageF> first;
-    for (GpuTraceShape shape : {GpuTraceShape{16, 16, 4, false}, GpuTraceShape{16, 1, 4, false}, GpuTraceShape{8, 4, 1, true},
-                                GpuTraceShape{5, 3, 8, false}, GpuTraceShape{16, 16, 2, true}, GpuTraceShape{16, 1, 1, true}}) {
+    for (GpuTraceShape shape :
+         {GpuTraceShape{16, 16, 4, false}, GpuTraceShape{16, 1, 4, false}, GpuTraceShape{8, 4, 1, true},
+          GpuTraceShape{5, 3, 8, false}, GpuTraceShape{16, 16, 2, true}, GpuTraceShape{16, 1, 1, true}}) {
       lab.setTracerShape(shape);
       const ImageF truth = host->renderReference({96, 64});
       ASSERT_NE(lab.gpuTracer(), nullptr);
@@ -268,15 +275,16 @@ TEST(Shadows, TheGpuTracerHoldsOnHugeTinyDegenerateAndCoplanarTriangles) {
       tri(c, c + glm::vec3(0.01f, 0.0f, 0.0f), c + glm::vec3(0.0f, 0.01f, 0.01f));
     }
     tri({0.2f, 0.3f, 0.2f}, {0.2f, 0.3f, 0.2f}, {0.2f, 0.3f, 0.2f});  // a point
-    tri({0, 0.2f, 0}, {0.5f, 0.2f, 0.5f}, {1, 0.2f, 1});               // a line
+    tri({0, 0.2f, 0}, {0.5f, 0.2f, 0.5f}, {1, 0.2f, 1});              // a line
     for (float shift : {0.0f, 0.3f}) {                                // coplanar, overlapping
       tri({-1 + shift, 0.05f, -1}, {1 + shift, 0.05f, -1}, {1 + shift, 0.05f, 1});
       tri({-1 + shift, 0.05f, -1}, {1 + shift, 0.05f, 1}, {-1 + shift, 0.05f, 1});
     }
   }
   for (const char* scale : {"1", "10000", "1000000"}) {
-    auto host = test::labHost("shadows", file.c_str(), {std::string("shadows.scene_scale=") + scale,
-                                                       "shadows.scene_light=off", "shadows.light_elevation=60"});
+    auto host = test::labHost(
+        "shadows", file.c_str(),
+        {std::string("shadows.scene_scale=") + scale, "shadows.scene_light=off", "shadows.light_elevation=60"});
     expectTracersAgree(*host, std::string("stress scene, scale ") + scale, false);
   }
   EXPECT_EQ(gl::drainErrors(), "");

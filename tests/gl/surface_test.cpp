@@ -11,10 +11,10 @@
 
 #include <unistd.h>
 
+#include "app/host/measurer.h"
+#include "app/measure/image.h"
+#include "app/scene/loaders.h"
 #include "gl_test.h"
-#include "host/measurer.h"
-#include "measure/image.h"
-#include "scene/loaders.h"
 
 using namespace shadelab;
 
@@ -57,7 +57,8 @@ TEST(Surface, AMeshWithoutUvsIsDrawnUnderEveryTechnique) {
     EXPECT_EQ(gl::drainErrors(), "") << technique;
     const ImageF image = host->readImage();
     int covered = 0;
-    for (size_t i = 0; i < image.rgba.size(); i += 4) covered += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2] > 0.1f;
+    for (size_t i = 0; i < image.rgba.size(); i += 4)
+      covered += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2] > 0.1f;
     EXPECT_GT(covered, 64 * 48 / 20) << technique << ": the quad is not on screen";
   }
 }
@@ -81,17 +82,17 @@ TEST(Surface, VertexDisplacementMovesExactlySTimesHAlongTheNormal) {
   const GpuMesh mesh = GpuMesh::upload(grid);
   for (float base : {1.0f, 0.0f})
     for (float s : {0.25f, -0.7f}) {
-      const auto out = test::captureVertexOutput("surface/surface.vert", {{"DISPLACE_VERTEX", "1"}}, "Surface.world", mesh,
-                                                 [&](GLuint p) {
-                                                   const glm::mat4 id(1.0f);
-                                                   const glm::mat3 id3(1.0f);
-                                                   glUniformMatrix4fv(glGetUniformLocation(p, "u_model"), 1, GL_FALSE, &id[0][0]);
-                                                   glUniformMatrix3fv(glGetUniformLocation(p, "u_normalMatrix"), 1, GL_FALSE, &id3[0][0]);
-                                                   map.bind(0);
-                                                   glUniform1i(glGetUniformLocation(p, "u_heightMap"), 0);
-                                                   glUniform1f(glGetUniformLocation(p, "u_heightScale"), s);
-                                                   glUniform1f(glGetUniformLocation(p, "u_heightBase"), base);
-                                                 });
+      const auto out = test::captureVertexOutput(
+          "surface/surface.vert", {{"DISPLACE_VERTEX", "1"}}, "Surface.world", mesh, [&](GLuint p) {
+            const glm::mat4 id(1.0f);
+            const glm::mat3 id3(1.0f);
+            glUniformMatrix4fv(glGetUniformLocation(p, "u_model"), 1, GL_FALSE, &id[0][0]);
+            glUniformMatrix3fv(glGetUniformLocation(p, "u_normalMatrix"), 1, GL_FALSE, &id3[0][0]);
+            map.bind(0);
+            glUniform1i(glGetUniformLocation(p, "u_heightMap"), 0);
+            glUniform1f(glGetUniformLocation(p, "u_heightScale"), s);
+            glUniform1f(glGetUniformLocation(p, "u_heightBase"), base);
+          });
       for (size_t v = 0; v < 16; ++v) {
         const glm::vec3 expected = grid.positions[v] + grid.normals[v] * s * (float(heights[v]) / 255.0f - base);
         EXPECT_LT(glm::length(out[v] - expected), 1e-5f) << "vertex " << v << " base " << base << " s " << s;
@@ -105,7 +106,8 @@ TEST(Surface, TheFilesOwnTangentsAreUsedWhenItHasThem) {
   // the tangent-angle view at a 90-degree scale shows in full yellow.
   const std::string quad = std::string(SHADELAB_SOURCE_DIR) + "/tests/data/tangent_quad.gltf";
   auto host = surfaceHost({"surface.technique=normal-map", "surface.view=tangent-angle", "surface.angle_scale=90",
-                           "surface.tangents=mesh", "surface.compare_with=generated"}, quad.c_str());
+                           "surface.tangents=mesh", "surface.compare_with=generated"},
+                          quad.c_str());
   host->set("surface.technique=normal-map");
   host->camera().parse("yaw=0,pitch=89");
   host->renderFrame({64, 64});
@@ -187,7 +189,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(SurfaceGolden{"surface_none", {"surface.technique=none"}},
                       SurfaceGolden{"surface_normal_map", {"surface.technique=normal-map"}},
                       SurfaceGolden{"surface_bump", {"surface.technique=bump"}},
-                      SurfaceGolden{"surface_displacement", {"surface.technique=displacement", "surface.subdivision=5"}},
+                      SurfaceGolden{"surface_displacement",
+                                    {"surface.technique=displacement", "surface.subdivision=5"}},
                       SurfaceGolden{"surface_tessellation", {"surface.technique=tessellation"}},
                       SurfaceGolden{"surface_parallax", {"surface.technique=parallax"}},
                       SurfaceGolden{"surface_steep_parallax", {"surface.technique=steep-parallax"}},
@@ -200,7 +203,8 @@ INSTANTIATE_TEST_SUITE_P(
 namespace {
 
 struct UsersQuad {
-  std::filesystem::path folder = std::filesystem::temp_directory_path() / ("shadelab_users_quad_" + std::to_string(::getpid()));
+  std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("shadelab_users_quad_" + std::to_string(::getpid()));
   explicit UsersQuad(const std::string& mtl) {
     std::filesystem::create_directories(folder);
     ImageF bumps{{64, 64}, {}}, normals{{8, 8}, {}};
@@ -213,8 +217,9 @@ struct UsersQuad {
     EXPECT_EQ(writePng((folder / "bumps.png").string(), bumps), "");
     EXPECT_EQ(writePng((folder / "normals.png").string(), normals), "");
     std::ofstream(folder / "quad.mtl") << "newmtl wall\nKd 0.8 0.7 0.6\n" << mtl;
-    std::ofstream(folder / "quad.obj") << "mtllib quad.mtl\nusemtl wall\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
-                                          "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+    std::ofstream(folder / "quad.obj")
+        << "mtllib quad.mtl\nusemtl wall\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+           "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
   }
   ~UsersQuad() { std::filesystem::remove_all(folder); }
   std::string obj() const { return (folder / "quad.obj").string(); }

@@ -10,14 +10,14 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
 #include <zip.h>
+#include <nlohmann/json.hpp>
 
-#include "cli/submissions.h"
-#include "grade/rubric.h"
-#include "util/zip_writer.h"
-#include "shader/preprocessor.h"
+#include "app/cli/submissions.h"
+#include "app/grade/rubric.h"
+#include "app/shader/preprocessor.h"
+#include "app/util/zip_writer.h"
 #include "test_files.h"
 
 namespace fs = std::filesystem;
@@ -54,7 +54,9 @@ std::string labFileWith(const std::string& file, const std::string& find, const 
   return text;
 }
 
-std::string pcfWith(const std::string& find, const std::string& replace) { return labFileWith("shadows/pcf.glsl", find, replace); }
+std::string pcfWith(const std::string& find, const std::string& replace) {
+  return labFileWith("shadows/pcf.glsl", find, replace);
+}
 
 const std::string kTap = "lit += tapCompare(type, L, map, cube, q, vec2(i, j) - 0.5 * float(PCF_SIZE - 1));";
 
@@ -97,8 +99,9 @@ std::map<std::string, Expected> makeClass(const fs::path& dir, bool withSlowOnes
   fs::copy(ex.dir / "starter", dir / "ben", fs::copy_options::recursive);
   // The bias with the wrong sign: acne everywhere (tests/grade's seeded mistake).
   writeText(dir / "cara/shadows/pcf.glsl",
-            pcfWith(kTap, "{ vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1); lit += receiverDepth(type, L, q, o) + q.bias > "
-                          "tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0; }"));
+            pcfWith(kTap,
+                    "{ vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1); lit += receiverDepth(type, L, q, o) + q.bias > "
+                    "tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0; }"));
   writeText(dir / "dan/shadows/pcf.glsl", pcfWith(kTap, kTap.substr(0, kTap.size() - 1)));  // a missing ';'
   fs::create_directories(dir / "eve");
   // A zip with the solution inside a folder of the student's name, as students zip it.
@@ -111,8 +114,9 @@ std::map<std::string, Expected> makeClass(const fs::path& dir, bool withSlowOnes
     writeText(dir / "fay/shadows/pcf.glsl", "#include \"../../ana/shadows/pcf.glsl\"\n");
     // Never ends: stopped by the watchdog in every configuration.
     writeText(dir / "hal/shadows/pcf.glsl",
-              pcfWith(kTap, "{ float s = 0.5; for (int k = 0; k >= 0; ++k) { s = fract(sin(s * 1.37) * 43758.5); "
-                            "s = fract(sin(s * 1.91) * 43758.5); s = fract(sin(s * 2.3) * 43758.5); } lit += s; }"));
+              pcfWith(kTap,
+                      "{ float s = 0.5; for (int k = 0; k >= 0; ++k) { s = fract(sin(s * 1.37) * 43758.5); "
+                      "s = fract(sin(s * 1.91) * 43758.5); s = fract(sin(s * 2.3) * 43758.5); } lit += s; }"));
     expected["fay"] = {"did not build", 0};
     expected["hal"] = {"stopped by the watchdog", 0};
   }
@@ -126,8 +130,8 @@ struct Ran {
 
 Ran runShadelab(const std::string& args, const std::string& env = "") {
   static int runs = 0;  // tests run side by side in processes of their own: the pid keeps their logs apart
-  const fs::path log =
-      fs::path(SHADELAB_TEST_OUT) / "grade-class" / ("run-" + std::to_string(getpid()) + "-" + std::to_string(++runs) + ".log");
+  const fs::path log = fs::path(SHADELAB_TEST_OUT) / "grade-class" /
+                       ("run-" + std::to_string(getpid()) + "-" + std::to_string(++runs) + ".log");
   fs::create_directories(log.parent_path());
   const int status = std::system((env + " " + SHADELAB_BINARY + " " + args + " > '" + log.string() + "' 2>&1").c_str());
   Ran r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(log)};
@@ -154,7 +158,8 @@ std::map<std::string, std::pair<std::string, double>> gradebook(const fs::path& 
 int fromCache(const std::string& output) {
   int total = 0, cached = -1;
   const size_t at = output.find("solutions: ");
-  if (at == std::string::npos || std::sscanf(output.c_str() + at, "solutions: %d configurations, %d from the cache", &total, &cached) != 2)
+  if (at == std::string::npos ||
+      std::sscanf(output.c_str() + at, "solutions: %d configurations, %d from the cache", &total, &cached) != 2)
     return -1;
   return cached;
 }
@@ -164,15 +169,17 @@ int fromCache(const std::string& output) {
 TEST(GradeClass, EverySubmissionGetsTheRightRowAndTheClassPageShowsTheMisses) {
   const fs::path root = scratch("whole"), cls = root / "class", out = root / "out";
   const auto expected = makeClass(cls, true);
-  const Ran r = runShadelab("grade --class '" + cls.string() + "' --exercise shadows/pcf --jobs 2 --watchdog 8 --out '" + out.string() +
-                         "' --cache '" + (root / "cache").string() + "'");
+  const Ran r =
+      runShadelab("grade --class '" + cls.string() + "' --exercise shadows/pcf --jobs 2 --watchdog 8 --out '" +
+                  out.string() + "' --cache '" + (root / "cache").string() + "'");
   EXPECT_EQ(r.exitCode, 0) << r.output;
   const auto rows = gradebook(out);
   ASSERT_EQ(rows.size(), expected.size()) << r.output;
   for (auto& [student, want] : expected) {
     ASSERT_TRUE(rows.count(student)) << student << " has no row\n" << r.output;
     EXPECT_EQ(rows.at(student).first, want.status) << student;
-    if (want.score >= 0) EXPECT_DOUBLE_EQ(rows.at(student).second, want.score) << student;
+    if (want.score >= 0)
+      EXPECT_DOUBLE_EQ(rows.at(student).second, want.score) << student;
     else
       EXPECT_LT(rows.at(student).second, 0.7 * pcfTotal()) << student;
     EXPECT_TRUE(fs::exists(out / "students" / student / "report.html")) << student;
@@ -209,26 +216,27 @@ TEST(GradeClass, ShardsMergedGiveTheSameGradebookAndPageAsOneRun) {
   ASSERT_EQ(whole.exitCode, 0) << whole.output;
   for (int i = 1; i <= 2; ++i) {
     const Ran shard = runShadelab("grade" + common + " --shard " + std::to_string(i) + "/2 --out '" +
-                               (root / ("shard" + std::to_string(i))).string() + "'");
+                                  (root / ("shard" + std::to_string(i))).string() + "'");
     ASSERT_EQ(shard.exitCode, 0) << shard.output;
     EXPECT_NE(shard.output.find("grading 3 of 6 submissions"), std::string::npos) << shard.output;
   }
   // A shard left out is named, and nothing is written.
-  const Ran partial = runShadelab("grade merge '" + (root / "shard1").string() + "' --out '" + (root / "partial").string() + "'");
+  const Ran partial =
+      runShadelab("grade merge '" + (root / "shard1").string() + "' --out '" + (root / "partial").string() + "'");
   EXPECT_EQ(partial.exitCode, 2);
   EXPECT_NE(partial.output.find("shard 2 of 2 is missing"), std::string::npos) << partial.output;
   EXPECT_FALSE(fs::exists(root / "partial" / "gradebook.csv"));
 
-  const Ran merged = runShadelab("grade merge '" + (root / "shard2").string() + "' '" + (root / "shard1").string() + "' --out '" +
-                              (root / "merged").string() + "'");
+  const Ran merged = runShadelab("grade merge '" + (root / "shard2").string() + "' '" + (root / "shard1").string() +
+                                 "' --out '" + (root / "merged").string() + "'");
   ASSERT_EQ(merged.exitCode, 0) << merged.output;
   for (const char* file : {"gradebook.csv", "class.html", "class.json"})
     EXPECT_EQ(readText(root / "merged" / file), readText(root / "whole" / file)) << file << " differs";
   EXPECT_EQ(gradebook(root / "merged").size(), 6u);
   EXPECT_TRUE(fs::exists(root / "merged/students/gus/report.html"));
   // Nothing is overwritten.
-  const Ran again = runShadelab("grade merge '" + (root / "shard1").string() + "' '" + (root / "shard2").string() + "' --out '" +
-                             (root / "merged").string() + "'");
+  const Ran again = runShadelab("grade merge '" + (root / "shard1").string() + "' '" + (root / "shard2").string() +
+                                "' --out '" + (root / "merged").string() + "'");
   EXPECT_EQ(again.exitCode, 2);
   EXPECT_NE(again.output.find("nothing is overwritten"), std::string::npos) << again.output;
 }
@@ -243,9 +251,9 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
                           (root / "exercises").string() + "'";
   int n = 0;
   const auto run = [&] {
-    const Ran r = runShadelab("grade --class '" + cls.string() + "' --exercise shadows/pcf --cache '" + cache.string() + "' --out '" +
-                               (root / ("out" + std::to_string(++n))).string() + "'",
-                           env);
+    const Ran r = runShadelab("grade --class '" + cls.string() + "' --exercise shadows/pcf --cache '" + cache.string() +
+                                  "' --out '" + (root / ("out" + std::to_string(++n))).string() + "'",
+                              env);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     const std::string points = std::to_string(int(pcfTotal()));
     EXPECT_NE(
@@ -265,9 +273,9 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
   writeText(rubric, readText(rubric) + "\n");
   EXPECT_EQ(run(), 0) << "a changed rubric";
   // One student's grade uses the cache too.
-  const Ran one = runShadelab("grade --exercise shadows/pcf --shaders '" + (cls / "ana").string() + "' --cache '" + cache.string() +
-                               "' --out '" + (root / "one").string() + "'",
-                           env);
+  const Ran one = runShadelab("grade --exercise shadows/pcf --shaders '" + (cls / "ana").string() + "' --cache '" +
+                                  cache.string() + "' --out '" + (root / "one").string() + "'",
+                              env);
   EXPECT_EQ(one.exitCode, 0) << one.output;
   EXPECT_NE(one.output.find("solutions: " + std::to_string(configurations) + " of " + std::to_string(configurations) +
                             " configurations from the cache"),
@@ -280,7 +288,8 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
 
 TEST(GradeClass, AZipIsUnpackedOnlyInsideItsFolder) {
   const fs::path root = scratch("zips");
-  const auto refused = [&](const std::string& name, const std::map<std::string, std::string>& files, const ZipLimits& limits = {}) {
+  const auto refused = [&](const std::string& name, const std::map<std::string, std::string>& files,
+                           const ZipLimits& limits = {}) {
     const fs::path zip = root / (name + ".zip");
     writeZip(zip, files);
     const std::string e = unpackZip(zip, root / ("unpacked-" + name), limits);
@@ -292,7 +301,8 @@ TEST(GradeClass, AZipIsUnpackedOnlyInsideItsFolder) {
   EXPECT_NE(refused("backslash", {{"a\\..\\..\\escaped.glsl", "x"}}).find("would land outside"), std::string::npos);
   ZipLimits small;
   small.fileBytes = 1000;
-  EXPECT_NE(refused("big", {{"shadows/pcf.glsl", std::string(5000, ' ')}}, small).find("unpacks to more than"), std::string::npos);
+  EXPECT_NE(refused("big", {{"shadows/pcf.glsl", std::string(5000, ' ')}}, small).find("unpacks to more than"),
+            std::string::npos);
   small.entries = 2;
   EXPECT_NE(refused("many", {{"a", "1"}, {"b", "2"}, {"c", "3"}}, small).find("at most 2"), std::string::npos);
   writeText(root / "notazip.zip", "PK but not really");
@@ -314,7 +324,8 @@ TEST(GradeClass, AZipIsUnpackedOnlyInsideItsFolder) {
   writeZip(root / "good.zip", {{"ivy/shadows/pcf.glsl", "// mine\n"}, {"ivy/notes.txt", "hello"}});
   ASSERT_EQ(unpackZip(root / "good.zip", root / "unpacked-good"), "");
   EXPECT_EQ(readText(root / "unpacked-good/ivy/shadows/pcf.glsl"), "// mine\n");
-  EXPECT_EQ(fs::status(root / "unpacked-good/ivy/shadows/pcf.glsl").permissions() & fs::perms::owner_write, fs::perms::none);
+  EXPECT_EQ(fs::status(root / "unpacked-good/ivy/shadows/pcf.glsl").permissions() & fs::perms::owner_write,
+            fs::perms::none);
   EXPECT_EQ(shaderRootOf(root / "unpacked-good"), root / "unpacked-good/ivy");
   // A folder holding only "shadows/" is the shader tree itself.
   writeText(root / "plain/shadows/pcf.glsl", "// mine\n");
@@ -338,12 +349,14 @@ TEST(GradeClass, TheEditorsDownloadIsASubmission) {
 TEST(GradeClass, BadArgumentsAreNamed) {
   const fs::path root = scratch("args");
   fs::create_directories(root / "empty");
-  const Ran none = runShadelab("grade --class '" + (root / "empty").string() + "' --exercise shadows/pcf --out '" + (root / "o").string() + "'");
+  const Ran none = runShadelab("grade --class '" + (root / "empty").string() + "' --exercise shadows/pcf --out '" +
+                               (root / "o").string() + "'");
   EXPECT_EQ(none.exitCode, 2);
   EXPECT_NE(none.output.find("holds no submissions"), std::string::npos) << none.output;
   writeText(root / "twice/ana/shadows/pcf.glsl", "//\n");
   writeZip(root / "twice/ana.zip", {{"shadows/pcf.glsl", "//\n"}});
-  const Ran twice = runShadelab("grade --class '" + (root / "twice").string() + "' --exercise shadows/pcf --out '" + (root / "o").string() + "'");
+  const Ran twice = runShadelab("grade --class '" + (root / "twice").string() + "' --exercise shadows/pcf --out '" +
+                                (root / "o").string() + "'");
   EXPECT_EQ(twice.exitCode, 2);
   EXPECT_NE(twice.output.find("two submissions are named 'ana'"), std::string::npos) << twice.output;
   writeText(root / "one/ana/shadows/pcf.glsl", "//\n");
@@ -352,7 +365,8 @@ TEST(GradeClass, BadArgumentsAreNamed) {
   EXPECT_EQ(inside.exitCode, 2);
   EXPECT_NE(inside.output.find("only ever read"), std::string::npos) << inside.output;
   for (const char* bad : {"0/2", "3/2", "1/0", "a/b", "1/2x"}) {
-    const Ran shard = runShadelab(std::string("grade --class '") + (root / "twice").string() + "' --exercise shadows/pcf --shard " + bad);
+    const Ran shard = runShadelab(std::string("grade --class '") + (root / "twice").string() +
+                                  "' --exercise shadows/pcf --shard " + bad);
     EXPECT_EQ(shard.exitCode, 2) << bad << ": grade exits 2 when it cannot grade";
     EXPECT_NE(shard.output.find("--shard: '" + std::string(bad) + "' is not i/n"), std::string::npos) << shard.output;
   }
@@ -375,25 +389,27 @@ TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) 
     std::string file, find, replace, exercise, check;
   };
   const std::vector<Mistake> mistakes = {
-      {"common/specular.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)", "max(dot(N, L + V), 0.0)", "shading/blinn-phong",
-       "highlight"},
+      {"common/specular.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)", "max(dot(N, L + V), 0.0)",
+       "shading/blinn-phong", "highlight"},
       {"shadows/pcf.glsl", kTap,
        "{ vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1); lit += receiverDepth(type, L, q, o) + q.bias > "
        "tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0; }",
        "shadows/pcf", "no acne"},
-      {"surface/bump.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));", "surface/bump",
-       "shaded relief"},
-      {"filtering/bilinear.glsl", "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
+      {"surface/bump.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));",
+       "surface/bump", "shaded relief"},
+      {"filtering/bilinear.glsl",
+       "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
        "vec2 p = fract(uv) * vec2(levelSize(s, level));", "filtering/bilinear", "smooth ramps between texels"},
   };
   for (auto& m : mistakes) writeText(cls / "mistakes" / m.file, labFileWith(m.file, m.find, m.replace));
 
-  const Ran r = runShadelab("grade --class '" + cls.string() + "' --all --jobs 2 --out '" + out.string() + "' --cache '" +
-                            (root / "cache").string() + "'");
+  const Ran r = runShadelab("grade --class '" + cls.string() + "' --all --jobs 2 --out '" + out.string() +
+                            "' --cache '" + (root / "cache").string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::map<std::pair<std::string, std::string>, nlohmann::json> rows;  // (student, exercise) -> its report entry
   for (const char* student : {"solution", "starters", "mistakes"}) {
-    const nlohmann::json report = nlohmann::json::parse(readText(out / "students" / student / "report.json"), nullptr, false);
+    const nlohmann::json report =
+        nlohmann::json::parse(readText(out / "students" / student / "report.json"), nullptr, false);
     ASSERT_TRUE(report.is_object()) << student;
     for (auto& e : report["exercises"]) rows[{student, e["id"].get<std::string>()}] = e;
   }

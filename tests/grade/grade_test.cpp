@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "grade/rubric.h"
-#include "shader/preprocessor.h"
+#include "app/grade/rubric.h"
+#include "app/shader/preprocessor.h"
 #include "test_files.h"
 
 using namespace shadelab;
@@ -40,10 +40,12 @@ fs::path scratch(const std::string& name) { return test::freshFolder("grade", na
 fs::path reportDir(const std::string& name) { return fs::path(SHADELAB_TEST_OUT) / "grade" / name / "report"; }
 
 Graded grade(const std::string& exercise, const fs::path& shaders, const fs::path& out, const std::string& extra = "") {
-  const fs::path log = fs::path(SHADELAB_TEST_OUT) / "grade" / (slug(out.string()) + ".log");  // outside any student folder
+  const fs::path log =
+      fs::path(SHADELAB_TEST_OUT) / "grade" / (slug(out.string()) + ".log");  // outside any student folder
   fs::remove_all(out);
-  const std::string cmd = std::string(SHADELAB_BINARY) + " grade --exercise " + exercise + " --shaders '" + shaders.string() +
-                          "' --out '" + out.string() + "' " + extra + " > '" + log.string() + "' 2>&1";
+  const std::string cmd = std::string(SHADELAB_BINARY) + " grade --exercise " + exercise + " --shaders '" +
+                          shaders.string() + "' --out '" + out.string() + "' " + extra + " > '" + log.string() +
+                          "' 2>&1";
   Graded g;
   const int status = std::system(cmd.c_str());
   g.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -115,11 +117,11 @@ TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
 }
 
 TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
-  const fs::path student =
-      seeded("bias-sign", "shadows/pcf.glsl",
-             "lit += tapCompare(type, L, map, cube, q, vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
-             "{\n      vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1);\n"
-             "      lit += receiverDepth(type, L, q, o) + q.bias > tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0;\n    }");
+  const fs::path student = seeded(
+      "bias-sign", "shadows/pcf.glsl",
+      "lit += tapCompare(type, L, map, cube, q, vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
+      "{\n      vec2 o = vec2(i, j) - 0.5 * float(PCF_SIZE - 1);\n"
+      "      lit += receiverDepth(type, L, q, o) + q.bias > tapLinear(type, L, map, cube, q, o) ? 0.0 : 1.0;\n    }");
   const Graded g = grade("shadows/pcf", student, reportDir("bias-sign"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.check("no acne")["result"], "FAIL");
@@ -128,8 +130,7 @@ TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
 }
 
 TEST(GradeMistakes, TapsInTextureCoordinatesInsteadOfTexelsFailTheSoftEdge) {
-  const fs::path student = seeded("tap-space", "shadows/pcf.glsl",
-                                  "vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
+  const fs::path student = seeded("tap-space", "shadows/pcf.glsl", "vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
                                   "(vec2(i, j) - 0.5 * float(PCF_SIZE - 1)) * q.texel);");
   const Graded g = grade("shadows/pcf", student, reportDir("tap-space"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
@@ -142,8 +143,8 @@ TEST(GradeMistakes, TapsInTextureCoordinatesInsteadOfTexelsFailTheSoftEdge) {
 }
 
 TEST(GradeMistakes, ABumpNormalLeaningWithTheSlopeFailsTheRelief) {
-  const fs::path student =
-      seeded("bump-sign", "surface/bump.glsl", "return normalize(vec3(-slope, 1.0));", "return normalize(vec3(slope, 1.0));");
+  const fs::path student = seeded("bump-sign", "surface/bump.glsl", "return normalize(vec3(-slope, 1.0));",
+                                  "return normalize(vec3(slope, 1.0));");
   const Graded g = grade("surface/bump", student, reportDir("bump-sign"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_EQ(g.check("shaded relief")["result"], "FAIL");
@@ -151,13 +152,15 @@ TEST(GradeMistakes, ABumpNormalLeaningWithTheSlopeFailsTheRelief) {
 }
 
 TEST(GradeMistakes, BilinearWithoutTheHalfTexelShiftFailsTheMagnifiedRamps) {
-  const fs::path student = seeded("half-texel", "filtering/bilinear.glsl",
-                                  "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
-                                  "vec2 p = fract(uv) * vec2(levelSize(s, level));");
+  const fs::path student =
+      seeded("half-texel", "filtering/bilinear.glsl",
+             "vec2 p = fract(uv) * vec2(levelSize(s, level)) - 0.5;  // texel centres at whole numbers",
+             "vec2 p = fract(uv) * vec2(levelSize(s, level));");
   const Graded g = grade("filtering/bilinear", student, reportDir("half-texel"));
   ASSERT_TRUE(g.report.is_object()) << g.output;
   EXPECT_NE(g.check("smooth ramps between texels")["result"], "PASS");
-  EXPECT_NE(g.check("smooth ramps between texels")["message"].get<std::string>().find("half a texel"), std::string::npos);
+  EXPECT_NE(g.check("smooth ramps between texels")["message"].get<std::string>().find("half a texel"),
+            std::string::npos);
 }
 
 TEST(GradeFailures, AnEndlessLoopIsStoppedByTheWatchdogAndGradingGoesOn) {

@@ -8,12 +8,12 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 
-#include "grade/rubric.h"
-#include "grade/solution_cache.h"
-#include "shader/preprocessor.h"
+#include "app/grade/rubric.h"
+#include "app/grade/solution_cache.h"
+#include "app/shader/preprocessor.h"
 #include "test_files.h"
 
 using namespace shadelab;

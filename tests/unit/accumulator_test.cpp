@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "measure/accumulator.h"
+#include "app/measure/accumulator.h"
 
 using namespace shadelab;
 

@@ -5,10 +5,10 @@
 
 #include <random>
 
+#include "app/measure/bvh.h"
+#include "app/scene/scene_catalog.h"
 #include "labs/shadows/gpu_tracer.h"
 #include "labs/shadows/ray_visibility.h"
-#include "measure/bvh.h"
-#include "scene/scene_catalog.h"
 
 using namespace shadelab;
 
@@ -26,7 +26,8 @@ std::vector<BvhTriangle> randomSoup(size_t n, unsigned seed, float size) {
   return out;
 }
 
-std::optional<BvhHit> bruteForce(const std::vector<BvhTriangle>& tris, glm::vec3 o, glm::vec3 d, float tMin, float tMax) {
+std::optional<BvhHit> bruteForce(const std::vector<BvhTriangle>& tris, glm::vec3 o, glm::vec3 d, float tMin,
+                                 float tMax) {
   std::optional<BvhHit> best;
   for (uint32_t i = 0; i < tris.size(); ++i) {
     auto hit = intersectTriangle(tris[i], o, d);
@@ -39,7 +40,9 @@ std::optional<BvhHit> bruteForce(const std::vector<BvhTriangle>& tris, glm::vec3
   return best;
 }
 
-bool contains(const BvhNode& n, glm::vec3 p) { return glm::all(glm::lessThanEqual(n.min, p)) && glm::all(glm::lessThanEqual(p, n.max)); }
+bool contains(const BvhNode& n, glm::vec3 p) {
+  return glm::all(glm::lessThanEqual(n.min, p)) && glm::all(glm::lessThanEqual(p, n.max));
+}
 
 // The structure: each triangle in one leaf, boxes holding their triangles and children.
 void checkStructure(const Bvh& bvh, size_t triangles) {
@@ -103,9 +106,10 @@ TEST(Bvh, FindsTheSameFirstHitAsTestingEveryTriangle) {
 TEST(Bvh, OneHugeAndManyTinyTrianglesAndDegenerateOnes) {
   auto tris = randomSoup(1000, 4, 0.002f);
   tris.push_back({{-10, -10, 0.01f}, {10, -10, 0.01f}, {0, 10, 0.01f}});
-  for (int i = 0; i < 50; ++i) tris.push_back({{-1, -1, 0.3f}, {1, -1, 0.3f}, {-1, 1, 0.3f}});  // the same triangle 50 times
-  tris.push_back({{0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}});                     // a point
-  tris.push_back({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}});                                                 // a line
+  for (int i = 0; i < 50; ++i)
+    tris.push_back({{-1, -1, 0.3f}, {1, -1, 0.3f}, {-1, 1, 0.3f}});              // the same triangle 50 times
+  tris.push_back({{0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}, {0.2f, 0.2f, 0.2f}});  // a point
+  tris.push_back({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}});                             // a line
   const Bvh bvh(tris);
   checkStructure(bvh, tris.size());
   checkAgainstBruteForce(tris, bvh, 5, 3000);
@@ -143,7 +147,8 @@ uint32_t walkTexels(const std::vector<glm::vec4>& nodes, const std::vector<glm::
       continue;
     }
     for (uint32_t i = glm::floatBitsToUint(lo.w); i < glm::floatBitsToUint(lo.w) + n; ++i) {
-      const BvhTriangle t{glm::vec3(triangles[3 * i]), glm::vec3(triangles[3 * i + 1]), glm::vec3(triangles[3 * i + 2])};
+      const BvhTriangle t{glm::vec3(triangles[3 * i]), glm::vec3(triangles[3 * i + 1]),
+                          glm::vec3(triangles[3 * i + 2])};
       for (size_t k = 0; k < dirs.size(); ++k) {
         if (!(entering >> k & 1u)) continue;
         const auto hit = intersectTriangle(t, o, dirs[k]);
@@ -206,7 +211,8 @@ TEST(Bvh, TexelsCarryTheTreeForAStacklessWalk) {
   EXPECT_LT(visits / 3000.0, 0.2 * double(nodes.size() / 2)) << "the walk skips what a ray misses";
   EXPECT_LT(packetVisits, 0.5 * apartVisits) << "rays walked together share their nodes";
   EXPECT_TRUE(Bvh(std::vector<BvhTriangle>{}).nodeTexels().empty()) << "an empty scene: a walk that ends at once";
-  EXPECT_FALSE(Bvh(std::vector<BvhTriangle>{}).anyHit({0, 0, 0}, {1, 0, 0}, 0.0f, 1.0f)) << "an empty scene hits nothing";
+  EXPECT_FALSE(Bvh(std::vector<BvhTriangle>{}).anyHit({0, 0, 0}, {1, 0, 0}, 0.0f, 1.0f))
+      << "an empty scene hits nothing";
 }
 
 // Against Embree on the shadows lab's own scene: shadow rays from points over the scene towards

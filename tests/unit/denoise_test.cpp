@@ -8,16 +8,16 @@
 
 #include <unistd.h>
 
+#include "app/scene/loaders.h"
+#include "app/scene/mesh_topology.h"
+#include "app/scene/procedural.h"
+#include "app/scene/scene_catalog.h"
 #include "labs/denoise/bilateral_normal.h"
 #include "labs/denoise/displacement_bake.h"
 #include "labs/denoise/laplacian.h"
 #include "labs/denoise/mesh_metrics.h"
-#include "labs/denoise/mesh_pair.h"
 #include "labs/denoise/mesh_noise.h"
-#include "scene/loaders.h"
-#include "scene/mesh_topology.h"
-#include "scene/procedural.h"
-#include "scene/scene_catalog.h"
+#include "labs/denoise/mesh_pair.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -55,8 +55,8 @@ TEST(DenoiseMetric, ReproducesThePublishedAnglesOfTheNoisyInputs) {
   if (!std::filesystem::is_directory(data)) GTEST_SKIP() << data << " is missing";
   // ../shared/data/PROVENANCE.md: the values of Zhang et al.'s code for the noisy inputs.
   const std::pair<const char*, double> published[] = {
-      {"Block0.4", 33.719}, {"Fandisk0.3", 28.421}, {"Fandisk0.7", 48.867}, {"SharpSphere0.3", 33.007},
-      {"Twelve0.5Impulsive", 28.854}, {"Nicolo0.2", 24.015}, {"Bunny0.2", 21.549}};
+      {"Block0.4", 33.719},           {"Fandisk0.3", 28.421}, {"Fandisk0.7", 48.867}, {"SharpSphere0.3", 33.007},
+      {"Twelve0.5Impulsive", 28.854}, {"Nicolo0.2", 24.015},  {"Bunny0.2", 21.549}};
   for (auto& [model, angle] : published) {
     const Welded clean = loadWelded(data / model / "Original.obj"), noisy = loadWelded(data / model / "Noisy.obj");
     ASSERT_EQ(clean.idx, noisy.idx) << model << ": the pair must share its faces";
@@ -124,8 +124,8 @@ TEST(Laplacian, ExplicitDivergenceIsDetectedBeyondTheStabilityLimit) {
 TEST(Laplacian, DegenerateInputStaysFinite) {
   // A sliver (negative cotangent weights), a zero-area face, a non-manifold edge, an isolated
   // vertex and a boundary, all in one mesh.
-  const std::vector<glm::dvec3> p = {{0, 0, 0}, {1, 0, 0}, {0.5, 1e-7, 0}, {0.5, 1, 0}, {0.5, -1, 0},
-                                     {0.5, 0, 1},  {2, 2, 2}, {0, 0, 0.0}};
+  const std::vector<glm::dvec3> p = {{0, 0, 0},    {1, 0, 0},   {0.5, 1e-7, 0}, {0.5, 1, 0},
+                                     {0.5, -1, 0}, {0.5, 0, 1}, {2, 2, 2},      {0, 0, 0.0}};
   const std::vector<uint32_t> idx = {0, 1, 2, 0, 2, 3, 1, 3, 2, 0, 4, 1, 0, 1, 5, 0, 1, 7, 2, 2, 3};
   const Adjacency a = buildAdjacency(p.size(), idx);
   EXPECT_EQ(a.isolatedVertices, 1u);
@@ -158,7 +158,8 @@ TEST(Noise, IsSeededAndHasTheAskedSigma) {
   EXPECT_NEAR(sigma, expected, 0.1 * expected);
   EXPECT_LT(tangential, 1e-9) << "noise moves along the normal only";
   size_t moved = 0;
-  for (size_t v = 0; v < a.size(); ++v) moved += addNoise(s.p, s.idx, {NoiseKind::Impulsive, 0.3, 0.1, 42})[v] != s.p[v];
+  for (size_t v = 0; v < a.size(); ++v)
+    moved += addNoise(s.p, s.idx, {NoiseKind::Impulsive, 0.3, 0.1, 42})[v] != s.p[v];
   EXPECT_NEAR(double(moved) / double(a.size()), 0.1, 0.03);
 }
 
@@ -183,8 +184,10 @@ TEST(Bilateral, KeepsTheEdgesOfACubeThatLaplacianRoundsOff) {
   const auto noisy = addNoise(clean.p, clean.idx, {NoiseKind::Gaussian, 0.2, 0.1, 3});
   SmoothingSettings lap;
   lap.iterations = 20;
-  const double laplacian = meanFaceNormalAngleDeg(smooth(noisy, clean.idx, clean.adj, lap).positions, clean.p, clean.idx);
-  const double bilateral = meanFaceNormalAngleDeg(bilateralNormalFilter(noisy, clean.idx, {}).positions, clean.p, clean.idx);
+  const double laplacian =
+      meanFaceNormalAngleDeg(smooth(noisy, clean.idx, clean.adj, lap).positions, clean.p, clean.idx);
+  const double bilateral =
+      meanFaceNormalAngleDeg(bilateralNormalFilter(noisy, clean.idx, {}).positions, clean.p, clean.idx);
   const double before = meanFaceNormalAngleDeg(noisy, clean.p, clean.idx);
   EXPECT_LT(bilateral, laplacian) << "noisy " << before << ", Laplacian " << laplacian << ", bilateral " << bilateral;
   EXPECT_LT(bilateral, 0.5 * before);
@@ -196,14 +199,16 @@ TEST(Bake, RasterisedMapReconstructsOffsetsWithinTolerance) {
   const MeshData sphere = makeUvSphere(1.0f, 48);
   std::vector<float> offsets;
   for (auto& uv : sphere.uvs) offsets.push_back(std::sin(6.0f * uv.x) * std::cos(3.0f * uv.y));
-  const BakeResult r = bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::Raster, 1024, 32, 4, MapFormat::Unorm16});
+  const BakeResult r =
+      bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::Raster, 1024, 32, 4, MapFormat::Unorm16});
   ASSERT_EQ(r.error, "");
   float worst = 0;
   for (size_t v = 0; v < offsets.size(); ++v)
     worst = std::max(worst, std::abs(sampleDisplacement(r.map, sphere.uvs[v], true) - offsets[v]));
   EXPECT_LT(worst, 0.002f * 2.0f) << "range 2: bound 0.004";
   // 8 bits quantise to range / 255: the same bake in Unorm8 is worse, but still within one step.
-  const BakeResult r8 = bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::Raster, 1024, 32, 4, MapFormat::Unorm8});
+  const BakeResult r8 =
+      bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::Raster, 1024, 32, 4, MapFormat::Unorm8});
   float worst8 = 0;
   for (size_t v = 0; v < offsets.size(); ++v)
     worst8 = std::max(worst8, std::abs(sampleDisplacement(r8.map, sphere.uvs[v], true) - offsets[v]));
@@ -215,7 +220,8 @@ TEST(Bake, NearestVertexByFlannMatchesBruteForce) {
   const MeshData sphere = makeUvSphere(1.0f, 16);
   std::vector<float> offsets(sphere.uvs.size());
   for (size_t v = 0; v < offsets.size(); ++v) offsets[v] = float(v);  // the map then names the vertex
-  const BakeResult r = bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::NearestExact, 64, 32, 0, MapFormat::Float32});
+  const BakeResult r =
+      bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::NearestExact, 64, 32, 0, MapFormat::Float32});
   ASSERT_EQ(r.error, "");
   for (int y = 0; y < 64; y += 7)
     for (int x = 0; x < 64; x += 5) {
@@ -225,8 +231,10 @@ TEST(Bake, NearestVertexByFlannMatchesBruteForce) {
       const size_t got = size_t(r.map.stored[size_t(y * 64 + x)]);
       EXPECT_NEAR(glm::distance(sphere.uvs[got], uv), best, 1e-6f);
     }
-  const BakeResult approx = bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::NearestApprox, 64, 1, 0, MapFormat::Float32});
-  const BakeResult many = bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::NearestApprox, 64, 512, 0, MapFormat::Float32});
+  const BakeResult approx =
+      bakeDisplacement(sphere.uvs, sphere.indices, offsets, {BakeMethod::NearestApprox, 64, 1, 0, MapFormat::Float32});
+  const BakeResult many = bakeDisplacement(sphere.uvs, sphere.indices, offsets,
+                                           {BakeMethod::NearestApprox, 64, 512, 0, MapFormat::Float32});
   EXPECT_LE(many.wrongNeighbours, approx.wrongNeighbours) << "more checks, fewer wrong neighbours";
 }
 
@@ -240,12 +248,14 @@ TEST(Bake, AMeshWithoutUvsIsRefusedWithAReason) {
 TEST(Bake, OverlappingUvLayoutsAreDetected) {
   // Two quads in different places with the same UVs (a mirrored model's layout): one map cannot
   // hold both; the raster bake counts the texels claimed twice.
-  const std::vector<glm::vec2> uvs = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}, {0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}};
+  const std::vector<glm::vec2> uvs = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f},
+                                      {0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}};
   const std::vector<uint32_t> idx = {0, 1, 2, 3, 4, 5};
   const std::vector<float> offsets = {0, 0, 0, 1, 1, 1};
   const BakeResult r = bakeDisplacement(uvs, idx, offsets, {BakeMethod::Raster, 64, 32, 0, MapFormat::Float32});
   EXPECT_GT(r.overlapping, 64u * 64u / 4);
-  const std::vector<glm::vec2> apart = {{0.1f, 0.1f}, {0.4f, 0.1f}, {0.1f, 0.4f}, {0.6f, 0.6f}, {0.9f, 0.6f}, {0.6f, 0.9f}};
+  const std::vector<glm::vec2> apart = {{0.1f, 0.1f}, {0.4f, 0.1f}, {0.1f, 0.4f},
+                                        {0.6f, 0.6f}, {0.9f, 0.6f}, {0.6f, 0.9f}};
   EXPECT_EQ(bakeDisplacement(apart, idx, offsets, {BakeMethod::Raster, 64, 32, 0, MapFormat::Float32}).overlapping, 0u);
 }
 
@@ -288,8 +298,8 @@ TEST(MeshPair, ObjFilesWithTheSameVerticesPairByVertexNumberWhateverTheFaceOrder
   // rotated corners, so the loader meets its vertices in another order than the clean file's.
   const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
   const MeshData clean = loadOne(writeMeshFile("clean.obj", v + "f 1 2 3\nf 1 3 4\n"));
-  const MeshData noisy = loadOne(writeMeshFile(
-      "noisy.obj", "v 0 0 0.1\nv 1 0 -0.1\nv 1 1 0.2\nv 0 1 -0.2\nf 4 1 3\nf 3 1 2\n"));
+  const MeshData noisy =
+      loadOne(writeMeshFile("noisy.obj", "v 0 0 0.1\nv 1 0 -0.1\nv 1 1 0.2\nv 0 1 -0.2\nf 4 1 3\nf 3 1 2\n"));
   ASSERT_NE(noisy.positions[0], glm::vec3(0, 0, 0.1f)) << "the test needs the loader to reorder the noisy vertices";
   MeshPair pair;
   ASSERT_EQ(pairWithClean(noisy, clean, "noisy.obj", "clean.obj", pair), "");
@@ -306,7 +316,7 @@ TEST(MeshPair, RenumberedVerticesPairByFaceOrder) {
   MeshData clean;
   clean.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}};
   clean.indices = {0, 1, 2, 0, 2, 3};  // vertex 4 is in no face
-  MeshData noisy;  // the same four vertices, numbered backwards, with noise in z; one fewer vertex
+  MeshData noisy;                      // the same four vertices, numbered backwards, with noise in z; one fewer vertex
   noisy.positions = {{0, 1, 0.4f}, {1, 1, 0.3f}, {1, 0, 0.2f}, {0, 0, 0.1f}};
   noisy.indices = {3, 2, 1, 3, 1, 0};
   MeshPair pair;

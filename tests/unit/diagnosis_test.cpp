@@ -1,14 +1,14 @@
 // The evidence a diagnosis rests on, on images made here: non-finite pixels counted and boxed,
 // values out of the view's range, umbra and lit levels, an edge shifted or widened against the
 // solution's; then which mistake explains a set of frames, and hints that need evidence.
-#include "grade/diagnosis.h"
+#include "app/grade/diagnosis.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "grade/frame_properties.h"
+#include "app/grade/frame_properties.h"
 
 using namespace shadelab;
 

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "grade/grading.h"
-#include "grade/rubric.h"
-#include "grade/watchdog.h"
-#include "shader/preprocessor.h"
+#include "app/grade/grading.h"
+#include "app/grade/rubric.h"
+#include "app/grade/watchdog.h"
+#include "app/shader/preprocessor.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -139,8 +139,13 @@ TEST(Grade, ABadRubricNamesItsFileAndKey) {
 
 TEST(Watchdog, AChildThatFinishesReportsItsExitCodeAndPhase) {
   const fs::path log = fs::temp_directory_path() / "shadelab-watchdog-exit.log";
-  const WatchedRun run = runWatched([](const auto& enter) { enter("solution"); enter("student"); return 3; },
-                                    [](const std::string&) { return 30.0; }, log.string());
+  const WatchedRun run = runWatched(
+      [](const auto& enter) {
+        enter("solution");
+        enter("student");
+        return 3;
+      },
+      [](const std::string&) { return 30.0; }, log.string());
   EXPECT_EQ(run.end, WatchedRun::End::Exited);
   EXPECT_EQ(run.status, 3);
   EXPECT_EQ(run.phase, "student");
@@ -168,8 +173,12 @@ TEST(Watchdog, AChildStuckInAPhaseIsStoppedAtThatPhasesLimit) {
 
 TEST(Watchdog, AChildThatCrashesIsReportedWithItsSignal) {
   const fs::path log = fs::temp_directory_path() / "shadelab-watchdog-crash.log";
-  const WatchedRun run = runWatched([](const auto&) { std::raise(SIGABRT); return 0; },
-                                    [](const std::string&) { return 30.0; }, log.string());
+  const WatchedRun run = runWatched(
+      [](const auto&) {
+        std::raise(SIGABRT);
+        return 0;
+      },
+      [](const std::string&) { return 30.0; }, log.string());
   EXPECT_EQ(run.end, WatchedRun::End::Signalled);
   EXPECT_EQ(run.status, SIGABRT);
 }

@@ -118,13 +118,14 @@ TEST(ShadowMetrics, CountsMisclassifiedAcneAndLeaks) {
     return -1.0;
   };
   EXPECT_NEAR(get("misclassified_pct"), 100.0 * 2 / 4, 1e-9);  // of the pixels that face the light
-  EXPECT_NEAR(get("acne_pct"), 100.0 / 2, 1e-9);                // of the truly lit pixels
-  EXPECT_NEAR(get("leak_pct"), 100.0 / 2, 1e-9);                // of the truly shadowed pixels
+  EXPECT_NEAR(get("acne_pct"), 100.0 / 2, 1e-9);               // of the truly lit pixels
+  EXPECT_NEAR(get("leak_pct"), 100.0 / 2, 1e-9);               // of the truly shadowed pixels
   EXPECT_NEAR(get("visibility_rmse_hard"), std::sqrt(2.0 / 4), 1e-6);
   EXPECT_NEAR(get("visibility_rmse_area"), std::sqrt((1 + 0.25) / 4), 1e-6);
   EXPECT_NEAR(get("valid_pct"), 80.0, 1e-9);
   // The CSV says what each is divided by.
-  for (const char* key : {"misclassified_pct", "acne_pct", "leak_pct", "visibility_rmse_hard", "visibility_rmse_area"}) {
+  for (const char* key :
+       {"misclassified_pct", "acne_pct", "leak_pct", "visibility_rmse_hard", "visibility_rmse_area"}) {
     const Settings notes = lab.metricNotes();
     EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [&](auto& n) { return n.first == key; })) << key;
   }

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "measure/image.h"
-#include "measure/report.h"
+#include "app/measure/image.h"
+#include "app/measure/report.h"
 
 using namespace shadelab;
 
@@ -101,7 +101,7 @@ TEST(Report, AxesAreLogarithmicWhereTheDataSpansDecades) {
   const std::string svg = sweepPlotSvg(wide, wide.plots[0], "");
   EXPECT_NE(svg.find("gpu_ms (median of the frame's passes, lower is cheaper), log scale"), std::string::npos);
   EXPECT_NE(svg.find(">rmse (log scale)</text>"), std::string::npos);
-  EXPECT_NE(svg.find(">100</text>"), std::string::npos);   // decade ticks
+  EXPECT_NE(svg.find(">100</text>"), std::string::npos);  // decade ticks
   EXPECT_NE(svg.find(">0.01</text>"), std::string::npos);
   const SweepReport narrow = report({{0.02, 10.0}, {0.03, 14.0}, {0.05, 20.0}});
   EXPECT_EQ(sweepPlotSvg(narrow, narrow.plots[0], "").find("log scale"), std::string::npos);
@@ -117,8 +117,8 @@ TEST(Report, AxesAreLogarithmicWhereTheDataSpansDecades) {
 TEST(Report, ThePlotFramesTheParetoFrontAndMarksOutliersAtTheEdge) {
   SweepReport r;
   r.plots = {{"rmse"}};
-  for (auto [err, ms] : std::vector<std::pair<double, double>>{{0.1, 1.0}, {0.05, 2.0}, {0.02, 4.0}, {0.08, 3.0},
-                                                               {0.5, 1000.0}, {9.0, 2.0}}) {
+  for (auto [err, ms] : std::vector<std::pair<double, double>>{
+           {0.1, 1.0}, {0.05, 2.0}, {0.02, 4.0}, {0.08, 3.0}, {0.5, 1000.0}, {9.0, 2.0}}) {
     SweepRow s;
     s.label = s.group = "c" + std::to_string(r.rows.size());
     s.values = {{"rmse", err}, {"gpu_ms", ms}};

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "scene/mesh_topology.h"
-#include "scene/procedural.h"
+#include "app/scene/mesh_topology.h"
+#include "app/scene/procedural.h"
 
 using namespace shadelab;
 
@@ -37,7 +37,8 @@ TEST(Topology, GridInteriorHasSixNeighboursAndBoundaryIsMarked) {
   EXPECT_TRUE(a.boundary[0]);
   EXPECT_EQ(a.boundaryEdges, 16u);
   EXPECT_EQ(a.nonManifoldEdges, 0u);
-  for (uint32_t n : a.neighbours(centre)) EXPECT_LE(glm::length(w.positions[n] - w.positions[centre]), 0.5f * std::sqrt(2.0f) + 1e-6f);
+  for (uint32_t n : a.neighbours(centre))
+    EXPECT_LE(glm::length(w.positions[n] - w.positions[centre]), 0.5f * std::sqrt(2.0f) + 1e-6f);
 }
 
 TEST(Topology, NonManifoldEdgesAndIsolatedVerticesAreCounted) {
@@ -61,7 +62,8 @@ TEST(Topology, AngleWeightedNormalsIgnoreHowAFaceIsTriangulated) {
     const auto n = vertexNormals(p, *idx, NormalWeighting::Angle);
     EXPECT_NEAR(glm::length(n[0] - expected), 0.0f, 1e-5f);
   }
-  const auto a1 = vertexNormals(p, oneTri, NormalWeighting::Area), a2 = vertexNormals(p, twoTris, NormalWeighting::Area);
+  const auto a1 = vertexNormals(p, oneTri, NormalWeighting::Area),
+             a2 = vertexNormals(p, twoTris, NormalWeighting::Area);
   EXPECT_GT(glm::length(a1[0] - a2[0]), 0.05f);
 }
 

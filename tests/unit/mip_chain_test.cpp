@@ -46,7 +46,8 @@ TEST(MipChain, TheBoxFilterKeepsTheMeanOfEveryLevelForOddSizes) {
     const auto chain = buildMipChain(noise(size, 3), MipDownsampler::Box);
     const glm::dvec4 m0 = mean(chain[0]);
     for (size_t l = 1; l < chain.size(); ++l)
-      for (int c = 0; c < 4; ++c) EXPECT_NEAR(mean(chain[l])[c], m0[c], 2e-6) << size.x << "x" << size.y << " level " << l;
+      for (int c = 0; c < 4; ++c)
+        EXPECT_NEAR(mean(chain[l])[c], m0[c], 2e-6) << size.x << "x" << size.y << " level " << l;
   }
 }
 
@@ -105,6 +106,7 @@ TEST(MipChain, TheKaiserKernelIsAWindowedSinc) {
 
 TEST(MipChain, SrgbBytesSurviveTheRoundTripThroughLinearLight) {
   std::vector<uint8_t> rgba(256 * 4);
-  for (int i = 0; i < 256; ++i) rgba[size_t(i) * 4] = rgba[size_t(i) * 4 + 1] = rgba[size_t(i) * 4 + 2] = rgba[size_t(i) * 4 + 3] = uint8_t(i);
+  for (int i = 0; i < 256; ++i)
+    rgba[size_t(i) * 4] = rgba[size_t(i) * 4 + 1] = rgba[size_t(i) * 4 + 2] = rgba[size_t(i) * 4 + 3] = uint8_t(i);
   EXPECT_EQ(encodeSrgb8(decodeSrgb8({256, 1}, rgba)), rgba);
 }

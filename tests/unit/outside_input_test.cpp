@@ -7,11 +7,11 @@
 
 #include <fstream>
 
-#include "grade/rubric.h"
-#include "host/preset.h"
-#include "scene/loaders.h"
-#include "util/contained_path.h"
-#include "util/zip_writer.h"
+#include "app/grade/rubric.h"
+#include "app/host/preset.h"
+#include "app/scene/loaders.h"
+#include "app/util/contained_path.h"
+#include "app/util/zip_writer.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -41,7 +41,8 @@ class OutsideInput : public ::testing::Test {
       "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
       "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
       "bufferViews": [{"buffer": 0, "byteLength": 36}],
-      "buffers": [{"byteLength": 36, "uri": ")" + uri + R"("}]})");
+      "buffers": [{"byteLength": 36, "uri": ")" +
+                    uri + R"("}]})");
     return file;
   }
   fs::path base, model;
@@ -54,7 +55,8 @@ TEST_F(OutsideInput, GltfReadsItsOwnBuffer) {
 }
 
 TEST_F(OutsideInput, GltfBufferOutsideItsFolderIsNotRead) {
-  for (const std::string& uri : std::vector<std::string>{"../../private/secret.bin", (base / "private" / "secret.bin").string()}) {
+  for (const std::string& uri :
+       std::vector<std::string>{"../../private/secret.bin", (base / "private" / "secret.bin").string()}) {
     Scene s;
     const std::string err = loadSceneFile(gltfWithBuffer(uri, base / "private" / "secret.bin"), s);
     EXPECT_NE(err, "") << uri;
@@ -69,7 +71,8 @@ TEST_F(OutsideInput, GltfBufferOutsideItsFolderIsNotRead) {
 TEST_F(OutsideInput, ObjMaterialLibraryAndTexturesOutsideItsFolderAreNotRead) {
   write(base / "private" / "secret.mtl", "newmtl stolen\nKd 1 0 0\nmap_Kd secret.png\n");
   write(model / "own.mtl", "newmtl own\nKd 0 1 0\nmap_Kd ../../private/secret.png\n");
-  write(model / "m.obj", "mtllib ../../private/secret.mtl\nmtllib own.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl own\nf 1 2 3\n");
+  write(model / "m.obj",
+        "mtllib ../../private/secret.mtl\nmtllib own.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl own\nf 1 2 3\n");
   Scene s;
   ASSERT_EQ(loadSceneFile(model / "m.obj", s), "");
   for (auto& m : s.materials) EXPECT_NE(m.name, "stolen");
@@ -85,7 +88,9 @@ TEST_F(OutsideInput, ObjMaterialLibraryAndTexturesOutsideItsFolderAreNotRead) {
 TEST(Presets, EveryFieldIsCheckedBeforeAnythingIsApplied) {
   Preset p;
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"lab": "shading", "params": {"mode": "flat", "tessellation": 12,
-      "textures": true}, "camera": "yaw=10", "size": [640, 480], "time": 2.5})"), p), "");
+      "textures": true}, "camera": "yaw=10", "size": [640, 480], "time": 2.5})"),
+                        p),
+            "");
   EXPECT_EQ(*p.lab, "shading");
   ASSERT_EQ(p.params.size(), 3u);
   EXPECT_EQ(p.params[2], (std::pair<std::string, std::string>("textures", "true")));
@@ -97,7 +102,8 @@ TEST(Presets, EveryFieldIsCheckedBeforeAnythingIsApplied) {
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"params": [1]})"), p), "'params' must be an object of key: value");
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"params": {"mode": {"a": 1}}})"), p),
             "params.mode: must be a number, a string or true/false");
-  EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"time": 1e300})"), p), "'time' must be a number of seconds in [-1e6, 1e6]");
+  EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"time": 1e300})"), p),
+            "'time' must be a number of seconds in [-1e6, 1e6]");
   EXPECT_EQ(parsePreset(nlohmann::json::parse(R"({"size": [1e300, -5]})"), p), "");
   EXPECT_EQ(*p.size, glm::ivec2(16384, 16)) << "sizes are clamped, never cast out of range";
   EXPECT_EQ(parsePreset(nlohmann::json::parse("[]"), p), "expected a JSON object with lab, scene, params, camera");
@@ -114,7 +120,8 @@ TEST(Presets, OnlyRegularFilesOfModestSizeAreRead) {
 
 TEST(ContainedPath, NamesThatLeaveAFolderAreEmpty) {
   EXPECT_EQ(containedName("a/./b/../c.glsl"), fs::path("a/c.glsl"));
-  for (const char* bad : {"", "/abs", "..", "../x", "a/../../x", "./../x"}) EXPECT_TRUE(containedName(bad).empty()) << bad;
+  for (const char* bad : {"", "/abs", "..", "../x", "a/../../x", "./../x"})
+    EXPECT_TRUE(containedName(bad).empty()) << bad;
   EXPECT_TRUE(containedName(std::string_view("a\0b", 3)).empty());
 }
 
@@ -128,7 +135,8 @@ TEST(Grade, ARubricsFilesStayInsideAShaderFolder) {
                {"name": "a", "checks": [{"name": "x", "metric": "rmse", "against": "solution", "full": 1}]}]})";
     Exercise ex;
     const std::string err = loadExercise(root, "shading/bad", ex);
-    EXPECT_NE(err.find("\"files\" must hold paths relative to a shader folder"), std::string::npos) << file << ": " << err;
+    EXPECT_NE(err.find("\"files\" must hold paths relative to a shader folder"), std::string::npos)
+        << file << ": " << err;
   }
   fs::remove_all(root);
 }

@@ -31,11 +31,13 @@ TEST(Params, RejectsOutOfRangeAndKeepsValue) {
   const float before = lab.params.shininess;
   EXPECT_EQ(setParam(lab, "shininess", "0"), "shading.shininess: invalid value '0' (valid: a number in [1, 1024])");
   EXPECT_EQ(setParam(lab, "shininess", "nan"), "shading.shininess: invalid value 'nan' (valid: a number in [1, 1024])");
-  EXPECT_EQ(setParam(lab, "shininess", "12abc"), "shading.shininess: invalid value '12abc' (valid: a number in [1, 1024])");
+  EXPECT_EQ(setParam(lab, "shininess", "12abc"),
+            "shading.shininess: invalid value '12abc' (valid: a number in [1, 1024])");
   EXPECT_FLOAT_EQ(lab.params.shininess, before);
   EXPECT_EQ(setParam(lab, "lights", "2.5"), "shading.lights: invalid value '2.5' (valid: an integer in [0, 4])");
   EXPECT_EQ(setParam(lab, "lights", "5"), "shading.lights: invalid value '5' (valid: an integer in [0, 4])");
-  EXPECT_EQ(setParam(lab, "textures", "maybe"), "shading.textures: invalid value 'maybe' (valid: on, off, true, false, 1, 0)");
+  EXPECT_EQ(setParam(lab, "textures", "maybe"),
+            "shading.textures: invalid value 'maybe' (valid: on, off, true, false, 1, 0)");
   EXPECT_EQ(setParam(lab, "mode", "toon"), "shading.mode: invalid value 'toon' (valid: flat, gouraud, phong)");
 }
 
@@ -91,9 +93,11 @@ TEST(Params, ProgramVariantsAreDistinct) {
   for (const char* mode : {"MODE_FLAT", "MODE_GOURAUD", "MODE_PHONG"})
     for (int lights = 0; lights <= 4; ++lights) {
       const std::string define = "NUM_LIGHTS=" + std::to_string(lights) + ";";
-      EXPECT_TRUE(std::any_of(keys.begin(), keys.end(), [&](const std::string& k) {
-        return k.find(mode) != std::string::npos && k.find(define) != std::string::npos;
-      })) << mode << " with " << lights << " lights is never compiled";
+      EXPECT_TRUE(std::any_of(keys.begin(), keys.end(),
+                              [&](const std::string& k) {
+                                return k.find(mode) != std::string::npos && k.find(define) != std::string::npos;
+                              }))
+          << mode << " with " << lights << " lights is never compiled";
     }
   EXPECT_LT(keys.size(), 60u);
 }
@@ -184,7 +188,6 @@ TEST(Registry, ALabWithoutAJudgeHasNoTruthAndNoStressCases) {
     SceneNeeds needs() const override { return {}; }
     std::vector<ProgramSpec> allPrograms() const override { return {}; }
     std::string setup(LabContext&) override { return ""; }
-    void teardown() override {}
     void render(Frame&) override {}
     std::vector<ProgramRef> activePrograms() const override { return {}; }
   } lab;

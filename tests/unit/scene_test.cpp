@@ -7,10 +7,10 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/camera.h"
-#include "scene/loaders.h"
-#include "scene/procedural.h"
-#include "scene/scene_catalog.h"
+#include "app/scene/camera.h"
+#include "app/scene/loaders.h"
+#include "app/scene/procedural.h"
+#include "app/scene/scene_catalog.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -33,7 +33,8 @@ TEST(Loaders, OffTriangulatesPolygons) {
 
 TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
   Scene s;
-  EXPECT_EQ(loadSceneFile(kData / "malformed.off", s), (kData / "malformed.off").string() + ": face 1 has too few indices");
+  EXPECT_EQ(loadSceneFile(kData / "malformed.off", s),
+            (kData / "malformed.off").string() + ": face 1 has too few indices");
   const auto badIndex = tempFile("shadelab_badindex.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
   EXPECT_EQ(loadSceneFile(badIndex, s), badIndex.string() + ": index 7 out of range (3 vertices)");
   const auto nanVertex = tempFile("shadelab_nan.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
@@ -41,7 +42,8 @@ TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
   const auto notOff = tempFile("shadelab_not.off", "PLY\n");
   EXPECT_EQ(loadSceneFile(notOff, s), notOff.string() + ": not an OFF file (first line must be OFF)");
   EXPECT_EQ(loadSceneFile("/no/such.obj", s), "/no/such.obj: no such file");
-  EXPECT_EQ(loadSceneFile("mesh.stl", s), "mesh.stl: unknown scene file type '.stl' (valid: .gltf, .glb, .obj, .off, .ply)");
+  EXPECT_EQ(loadSceneFile("mesh.stl", s),
+            "mesh.stl: unknown scene file type '.stl' (valid: .gltf, .glb, .obj, .off, .ply)");
   const auto badGltf = tempFile("shadelab_bad.gltf", "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { ");
   EXPECT_EQ(loadSceneFile(badGltf, s).rfind(badGltf.string() + ": ", 0), 0u);
   const auto emptyObj = tempFile("shadelab_empty.obj", "# nothing\n");
@@ -51,7 +53,7 @@ TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
 TEST(Loaders, GltfWithNodeTransformsAndMaterial) {
   Scene s;
   ASSERT_EQ(loadSceneFile(kData / "triangle.gltf", s), "");
-  ASSERT_EQ(s.instances.size(), 2u);  // one mesh, two nodes
+  ASSERT_EQ(s.instances.size(), 2u);                  // one mesh, two nodes
   EXPECT_FLOAT_EQ(s.instances[1].model[3][0], 2.0f);  // translation of the second node
   EXPECT_EQ(s.meshes[0].triangleCount(), 1u);
   EXPECT_EQ(s.meshes[0].uvs.size(), 3u);
@@ -146,7 +148,8 @@ TEST(Mesh, SphereNormalsPointOutAndTessellationScales) {
   const MeshData coarse = makeUvSphere(1.0f, 8), fine = makeUvSphere(1.0f, 64);
   EXPECT_EQ(coarse.triangleCount(), 8u * 4 * 2);
   EXPECT_EQ(fine.triangleCount(), 64u * 32 * 2);
-  for (size_t i = 0; i < fine.positions.size(); ++i) EXPECT_NEAR(glm::dot(fine.positions[i], fine.normals[i]), 1.0f, 1e-5f);
+  for (size_t i = 0; i < fine.positions.size(); ++i)
+    EXPECT_NEAR(glm::dot(fine.positions[i], fine.normals[i]), 1.0f, 1e-5f);
   // Winding: counter-clockwise seen from outside, so the geometric normal agrees with the vertex normals.
   MeshData recomputed = fine;
   computeNormals(recomputed);
@@ -185,7 +188,8 @@ TEST(Camera, ParseAndErrors) {
   OrbitCamera again;
   EXPECT_EQ(again.parse(c.toString()), "");
   EXPECT_NEAR(glm::length(again.eye() - c.eye()), 0.0f, 1e-5f);
-  EXPECT_EQ(c.parse("tilt=3"), "--camera: unknown key 'tilt' (valid keys: yaw, pitch, distance, target=x;y;z, fov, near, far)");
+  EXPECT_EQ(c.parse("tilt=3"),
+            "--camera: unknown key 'tilt' (valid keys: yaw, pitch, distance, target=x;y;z, fov, near, far)");
   EXPECT_EQ(c.parse("pitch=95"), "--camera: bad value for pitch: '95'");
   EXPECT_EQ(c.parse("target=1;2"), "--camera: bad value for target: '1;2'");
   EXPECT_EQ(c.parse("near=10,far=1"), "--camera: near must be smaller than far");
@@ -204,9 +208,10 @@ TEST(Camera, ProjectionFinite) {
 }
 
 TEST(Loaders, PlyAsciiAndBinaryReadTheSameMesh) {
-  const std::string header = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
-                             "property float s\nproperty float t\nelement face 1\n"
-                             "property list uchar int vertex_indices\nend_header\n";
+  const std::string header =
+      "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float s\nproperty float t\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
   const auto ascii = tempFile("shadelab_quad.ply", "ply\nformat ascii 1.0\ncomment a quad\n" + header +
                                                        "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n4 0 1 2 3\n");
   std::string binary = "ply\nformat binary_big_endian 1.0\n" + header;
@@ -233,22 +238,25 @@ TEST(Loaders, PlyAsciiAndBinaryReadTheSameMesh) {
 
 TEST(Loaders, MalformedPlyNamesTheFileAndTheProblem) {
   Scene s;
-  const auto truncated = tempFile("shadelab_cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                                      "property float y\nproperty float z\nelement face 1\n"
-                                                      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
+  const auto truncated = tempFile("shadelab_cut.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                  "property float y\nproperty float z\nelement face 1\n"
+                                  "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n");
   EXPECT_EQ(loadSceneFile(truncated, s), truncated.string() + ": vertex 2 is missing or malformed");
-  const auto badIndex = tempFile("shadelab_idx.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                                     "property float y\nproperty float z\nelement face 1\n"
-                                                     "property list uchar int vertex_indices\nend_header\n"
-                                                     "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+  const auto badIndex = tempFile("shadelab_idx.ply",
+                                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                 "property float y\nproperty float z\nelement face 1\n"
+                                 "property list uchar int vertex_indices\nend_header\n"
+                                 "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
   EXPECT_EQ(loadSceneFile(badIndex, s), badIndex.string() + ": index 7 out of range (3 vertices)");
-  const auto nan = tempFile("shadelab_nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                                "property float y\nproperty float z\nelement face 1\n"
-                                                "property list uchar int vertex_indices\nend_header\n"
-                                                "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
+  const auto nan = tempFile("shadelab_nan.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                            "property float y\nproperty float z\nelement face 1\n"
+                            "property list uchar int vertex_indices\nend_header\n"
+                            "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(loadSceneFile(nan, s), nan.string() + ": a vertex position is NaN or Inf");
-  EXPECT_EQ(loadSceneFile(tempFile("shadelab_fmt.ply", "ply\nformat weird 1.0\nend_header\n"), s).find("unknown format 'weird'") !=
-                std::string::npos,
+  EXPECT_EQ(loadSceneFile(tempFile("shadelab_fmt.ply", "ply\nformat weird 1.0\nend_header\n"), s)
+                    .find("unknown format 'weird'") != std::string::npos,
             true);
 }
 
@@ -262,9 +270,11 @@ TEST(Tangents, GeneratedMatchAnalyticOnASphereAndAPlane) {
     const glm::vec2 uv = sphere.uvs[v];
     if (uv.y < 0.1f || uv.y > 0.9f) continue;  // the poles: every direction is a tangent
     const float f = uv.x * 2.0f * glm::pi<float>(), t = uv.y * glm::pi<float>();
-    const glm::vec3 T(std::cos(f), 0.0f, -std::sin(f)), B(std::cos(t) * std::sin(f), -std::sin(t), std::cos(t) * std::cos(f));
+    const glm::vec3 T(std::cos(f), 0.0f, -std::sin(f)),
+        B(std::cos(t) * std::sin(f), -std::sin(t), std::cos(t) * std::cos(f));
     const float off = glm::degrees(std::acos(std::clamp(glm::dot(glm::vec3(sphere.tangents[v]), T), -1.0f, 1.0f)));
-    (uv.x == 0.0f || uv.x == 1.0f ? worstSeam : worstInterior) = std::max(uv.x == 0.0f || uv.x == 1.0f ? worstSeam : worstInterior, off);
+    (uv.x == 0.0f || uv.x == 1.0f ? worstSeam : worstInterior) =
+        std::max(uv.x == 0.0f || uv.x == 1.0f ? worstSeam : worstInterior, off);
     const glm::vec3 bitangent = glm::cross(sphere.normals[v], glm::vec3(sphere.tangents[v])) * sphere.tangents[v].w;
     EXPECT_GT(glm::dot(bitangent, B), 0.99f) << "handedness at vertex " << v;
   }

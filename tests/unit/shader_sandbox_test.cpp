@@ -7,7 +7,7 @@
 
 #include <fstream>
 
-#include "shader/preprocessor.h"
+#include "app/shader/preprocessor.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -116,7 +116,8 @@ TEST_F(ShaderSandbox, ARootReachedThroughALinkIsItsOwnFolder) {
   fs::create_directory_symlink(student, base / "alice_link");
   write(student / "common" / "mine.glsl", "float mine() { return 2.0; }\n");
   write(student / "shading" / "shade.frag", "#version 330 core\n#include \"../common/mine.glsl\"\nvoid main() {}\n");
-  const PreprocessedSource out = preprocessShader(ShaderSearchPath({base / "alice_link", builtin}), "shading/shade.frag", {});
+  const PreprocessedSource out =
+      preprocessShader(ShaderSearchPath({base / "alice_link", builtin}), "shading/shade.frag", {});
   EXPECT_TRUE(out.ok()) << out.error;
 }
 

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <fstream>
 
-#include "shader/compile_log.h"
-#include "shader/preprocessor.h"
-#include "shader/shader_library.h"
+#include "app/shader/compile_log.h"
+#include "app/shader/preprocessor.h"
+#include "app/shader/shader_library.h"
 
 using namespace shadelab;
 namespace fs = std::filesystem;
@@ -38,14 +38,14 @@ TEST_F(ShaderText, VersionFirstThenDefinesThenLineMappedSource) {
 
 TEST_F(ShaderText, IncludesAreExpandedOnceWithLineDirectives) {
   write("common/light.glsl", "float light() { return 1.0; }\n");
-  write("lab/b.frag", "#version 330 core\n#include \"common/light.glsl\"\n#include \"common/light.glsl\"\nvoid main() {}\n");
+  write("lab/b.frag",
+        "#version 330 core\n#include \"common/light.glsl\"\n#include \"common/light.glsl\"\nvoid main() {}\n");
   auto out = preprocessShader(ShaderSearchPath({root}), "lab/b.frag", {});
   ASSERT_TRUE(out.ok()) << out.error;
   ASSERT_EQ(out.files.size(), 2u);
   EXPECT_EQ(out.files[1], root / "common/light.glsl");
   // The included file's lines carry its index twice: as the source string and as 100000 x index + line.
-  EXPECT_NE(out.text.find("#line 100001 1\nfloat light() { return 1.0; }\n#line 3 0\n"), std::string::npos)
-      << out.text;
+  EXPECT_NE(out.text.find("#line 100001 1\nfloat light() { return 1.0; }\n#line 3 0\n"), std::string::npos) << out.text;
   EXPECT_EQ(out.text.find("float light()"), out.text.rfind("float light()"));  // included once
   EXPECT_NE(out.text.find("#line 4 0\nvoid main"), std::string::npos) << out.text;
 }
@@ -80,19 +80,20 @@ TEST_F(ShaderText, MissingAndCircularIncludesAreErrorsAtFileLine) {
 // The ES dialect: "#version 300 es" with precision for every sampler type, and interface blocks
 // flattened into varyings named by their members, line for line, #ifdef lines and heads kept out.
 TEST_F(ShaderText, TheEsDialectWritesItsVersionAndFlattensInterfaceBlocks) {
-  write("lab/a.vert", "#version 330 core\n"
-                      "#ifdef MODE_FLAT\n"
-                      "out Vertex {\n"
-                      "#else\n"
-                      "out Surface {  // to the fragment stage\n"
-                      "#endif\n"
-                      "  vec3 worldPos;\n"
-                      "  UV_INTERP vec2 uv;\n"
-                      "#ifdef MODE_GOURAUD\n"
-                      "  flat vec3 colour[2];\n"
-                      "#endif\n"
-                      "} vout;\n"
-                      "void main() { vout.worldPos = vec3(0.0); vout.uv = myvout.uv; }\n");
+  write("lab/a.vert",
+        "#version 330 core\n"
+        "#ifdef MODE_FLAT\n"
+        "out Vertex {\n"
+        "#else\n"
+        "out Surface {  // to the fragment stage\n"
+        "#endif\n"
+        "  vec3 worldPos;\n"
+        "  UV_INTERP vec2 uv;\n"
+        "#ifdef MODE_GOURAUD\n"
+        "  flat vec3 colour[2];\n"
+        "#endif\n"
+        "} vout;\n"
+        "void main() { vout.worldPos = vec3(0.0); vout.uv = myvout.uv; }\n");
   setGlslDialect(GlslDialect::Es300);
   auto es = preprocessShader(ShaderSearchPath({root}), "lab/a.vert", {});
   setGlslDialect(GlslDialect::Desktop);
@@ -105,13 +106,15 @@ TEST_F(ShaderText, TheEsDialectWritesItsVersionAndFlattensInterfaceBlocks) {
             std::string::npos)
       << es.text;
   EXPECT_NE(es.text.find("io_worldPos = vec3(0.0); io_uv = myvout.uv;"), std::string::npos)
-      << "instance.member renamed, a longer name ending in the instance's left alone:\n" << es.text;
+      << "instance.member renamed, a longer name ending in the instance's left alone:\n"
+      << es.text;
   EXPECT_EQ(es.text.find("vout."), es.text.find("myvout.") + 2);
   const auto desktop = preprocessShader(ShaderSearchPath({root}), "lab/a.vert", {});
   EXPECT_EQ(desktop.text.rfind("#version 330 core\n", 0), 0u);
   EXPECT_NE(desktop.text.find("} vout;"), std::string::npos) << "the desktop keeps its blocks";
-  EXPECT_EQ(std::count(es.text.begin(), es.text.end(), '\n') - std::count(desktop.text.begin(), desktop.text.end(), '\n'),
-            12) << "the preamble's lines alone: the source keeps its line numbers";
+  EXPECT_EQ(
+      std::count(es.text.begin(), es.text.end(), '\n') - std::count(desktop.text.begin(), desktop.text.end(), '\n'), 12)
+      << "the preamble's lines alone: the source keeps its line numbers";
 }
 
 // A line of 100,000 characters inside and after a block: no pattern runs on it (std::regex
@@ -161,8 +164,9 @@ TEST(CompileLog, UnknownSourceStringIsNamedNotDropped) {
 }
 
 TEST(UniformNames, ASourceMentionsBaseNamesAndMembersAsWholeWords) {
-  const std::string src = "struct ShadowLight { mat4 viewProj; float layer; };\nuniform ShadowLight u_key;\n"
-                          "uniform vec2 u_disk[64];\nuniform float u_biasScale;\n";
+  const std::string src =
+      "struct ShadowLight { mat4 viewProj; float layer; };\nuniform ShadowLight u_key;\n"
+      "uniform vec2 u_disk[64];\nuniform float u_biasScale;\n";
   EXPECT_TRUE(sourceMentionsUniform(src, "u_key"));
   EXPECT_TRUE(sourceMentionsUniform(src, "u_key.viewProj"));
   EXPECT_TRUE(sourceMentionsUniform(src, "u_disk[3]"));

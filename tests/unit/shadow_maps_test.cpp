@@ -9,9 +9,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/lab/variants.h"
 #include "labs/shadows/light_rig.h"
 #include "labs/shadows/shadows_lab.h"
-#include "lab/variants.h"
 
 using namespace shadelab;
 
@@ -93,7 +93,9 @@ TEST(Variants, EverySingleParameterChangeIsCompiledByCheckShaders) {
     void intParam(const ParamInfo& info, int& v, int lo, int hi) override {
       if (hi - lo <= 16) knobs.push_back({std::string(info.key), &v, nullptr, lo, hi});
     }
-    void boolParam(const ParamInfo& info, bool& v) override { knobs.push_back({std::string(info.key), nullptr, &v, 0, 1}); }
+    void boolParam(const ParamInfo& info, bool& v) override {
+      knobs.push_back({std::string(info.key), nullptr, &v, 0, 1});
+    }
     void choiceParam(const ParamInfo& info, int& v, std::span<const std::string_view> names) override {
       knobs.push_back({std::string(info.key), &v, nullptr, 0, int(names.size()) - 1});
     }
@@ -104,8 +106,10 @@ TEST(Variants, EverySingleParameterChangeIsCompiledByCheckShaders) {
   for (auto& k : collect.knobs)
     for (int v = k.lo; v <= k.hi; ++v) {
       lab.resetParams();
-      if (k.i) *k.i = v;
-      else *k.b = v != 0;
+      if (k.i)
+        *k.i = v;
+      else
+        *k.b = v != 0;
       for (auto& spec : lab.currentPrograms()) {
         EXPECT_TRUE(compiled.count(spec.key())) << k.key << "=" << v << ": " << spec.key();
         ++checked;
@@ -155,7 +159,8 @@ TEST(Cascades, CoverEveryVisiblePointWithNoGap) {
           const glm::vec4 clip = cascades[use].light.viewProj * glm::vec4(p, 1.0f);
           for (int axis = 0; axis < 3; ++axis)
             ASSERT_LE(std::abs(clip[axis]), 1.0f + 1e-4f) << "cascade " << use << " of " << count << " misses a point"
-                << " axis " << axis << " eye " << eye.x << " depth " << depth << " p " << p.x << "," << p.y << "," << p.z;
+                                                          << " axis " << axis << " eye " << eye.x << " depth " << depth
+                                                          << " p " << p.x << "," << p.y << "," << p.z;
         }
       }
       EXPECT_GT(inside, 500);
@@ -189,10 +194,11 @@ TEST(Cascades, SnappingKeepsTheMapStillUnderASubTexelMove) {
     if (!snap) continue;
     // A move of many texels moves the map by a whole number of texels.
     const glm::vec3 far(37.3f * before[0].light.texelWorld(0, 1024), 0, 0);
-    const auto later = buildCascades(base, {3, 0.75f, 0.1f, true, 1024}, camera(a.eye + far, glm::vec3(0, 0, 0.5f) + far), b);
+    const auto later =
+        buildCascades(base, {3, 0.75f, 0.1f, true, 1024}, camera(a.eye + far, glm::vec3(0, 0, 0.5f) + far), b);
     if (later[0].light.orthoHalfExtent == before[0].light.orthoHalfExtent) {
-      const glm::vec2 moveTexels = (later[0].light.orthoCentre - before[0].light.orthoCentre) /
-                                   before[0].light.texelWorld(0, 1024);
+      const glm::vec2 moveTexels =
+          (later[0].light.orthoCentre - before[0].light.orthoCentre) / before[0].light.texelWorld(0, 1024);
       EXPECT_NEAR(moveTexels.x, std::round(moveTexels.x), 1e-2f);
       EXPECT_NEAR(moveTexels.y, std::round(moveTexels.y), 1e-2f);
     }
@@ -226,9 +232,9 @@ TEST(CubeFaceWindows, FramesOnlyTheFacesThatSeeTheBoxes) {
   beside.min = glm::vec3(-1.0f, -2.0f, 0.2f);
   beside.max = glm::vec3(1.0f, -1.0f, 3.0f);
   const auto v = cubeFaceWindows(std::vector<Bounds>{beside}, glm::vec3(0.0f), true);
-  EXPECT_GT(v[1].z, 0.0f);  // +Z sees it
-  EXPECT_GT(v[5].z, 0.0f);  // so does -Y
-  EXPECT_EQ(v[4].z, 0.0f);  // +Y does not
+  EXPECT_GT(v[1].z, 0.0f);                     // +Z sees it
+  EXPECT_GT(v[5].z, 0.0f);                     // so does -Y
+  EXPECT_EQ(v[4].z, 0.0f);                     // +Y does not
   EXPECT_NEAR(v[1].y - v[1].z, -1.0f, 1e-4f);  // +Z's window reaches the face's bottom edge
 
   // frame = false: every face whole, the plain cross.

@@ -8,11 +8,11 @@
 #include <map>
 #include <set>
 
+#include "app/scene/mesh_topology.h"
+#include "app/scene/procedural.h"
 #include "labs/surface/brick_textures.h"
 #include "labs/surface/subdivide.h"
 #include "labs/surface/surface_scenes.h"
-#include "scene/mesh_topology.h"
-#include "scene/procedural.h"
 
 using namespace shadelab;
 
@@ -95,7 +95,7 @@ TEST(SurfaceGeometry, UvScaleIsTheWorldLengthOfAUvUnit) {
 
 TEST(SurfaceGeometry, LevelsBringEdgesDownToATexel) {
   const MeshData wall = makePlane(2.0f, 1, 2.0f);  // mean UV edge (2 + 2 + 2 sqrt 2) / 3 = 2.28
-  EXPECT_EQ(levelsForTexelSize(wall, 64, 20), 8);   // 2.28 / 2^8 = 0.0089 <= 1/64
+  EXPECT_EQ(levelsForTexelSize(wall, 64, 20), 8);  // 2.28 / 2^8 = 0.0089 <= 1/64
   EXPECT_EQ(levelsForTexelSize(wall, 512, 20), 11);
   EXPECT_EQ(levelsForTexelSize(wall, 512, 10), 10) << "capped";
   MeshData noUvs = wall;
@@ -164,11 +164,13 @@ TEST(NormalMaps, TheLabsBricksLeanAgainstTheirOwnHeightField) {
 TEST(NormalMaps, LearnOpenGLsBricksLeanAgainstTheirOwnHeightFieldReadAsTheirMaterialSays) {
   // LearnOpenGL's bricks2 is listed only where ../shared/data holds it.
   const auto recipes = surfaceScenes();
-  const auto recipe = std::find_if(recipes.begin(), recipes.end(), [](auto& r) { return r.id == "bricks-learnopengl"; });
+  const auto recipe =
+      std::find_if(recipes.begin(), recipes.end(), [](auto& r) { return r.id == "bricks-learnopengl"; });
   if (recipe == recipes.end()) GTEST_SKIP() << "bricks-learnopengl needs ../shared/data";
   Scene s;
   ASSERT_EQ(recipe->build(s, {}), "");
-  const auto bricks2 = std::find_if(s.materials.begin(), s.materials.end(), [](auto& m) { return m.name == "bricks2"; });
+  const auto bricks2 =
+      std::find_if(s.materials.begin(), s.materials.end(), [](auto& m) { return m.name == "bricks2"; });
   ASSERT_NE(bricks2, s.materials.end());
   const Material& m = *bricks2;
   const ImageSource &normal = s.images.at(size_t(m.normalImage)), &height = s.images.at(size_t(m.heightImage));
