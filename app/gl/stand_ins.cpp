@@ -13,6 +13,10 @@ namespace gl {
 
 namespace {
 
+// Makes `previous` current again, unless it went when it stopped being current: a program deleted
+// while in use lives only as long as it stays so, and naming it afterwards is GL_INVALID_VALUE.
+void restoreProgram(GLint previous) { glUseProgram(glIsProgram(GLuint(previous)) ? GLuint(previous) : 0); }
+
 constexpr int kUnits = 16;  // the texture units every stage is sure to have
 
 // The program of these stages, its samplers u_unit0-15 (if it has them) on units 0-15; empty if it
@@ -35,7 +39,7 @@ ProgramName linkedProgram(const std::vector<std::pair<GLenum, std::string>>& sta
   glUseProgram(program.get());
   for (int u = 0; u < kUnits; ++u)
     glUniform1i(glGetUniformLocation(program.get(), ("u_unit" + std::to_string(u)).c_str()), u);
-  glUseProgram(GLuint(previous));
+  restoreProgram(previous);
   return program;
 }
 
@@ -113,7 +117,7 @@ class PlainRaster {
       if (enabled_[i]) glEnable(kCaps[i]);
     glColorMask(mask_[0], mask_[1], mask_[2], mask_[3]);
     glBindVertexArray(GLuint(vao_));
-    glUseProgram(GLuint(program_));
+    restoreProgram(program_);
   }
   PlainRaster(const PlainRaster&) = delete;
   PlainRaster& operator=(const PlainRaster&) = delete;

@@ -339,12 +339,15 @@ void DenoiseLab::update(const Scene& scene, float) {
   const DenoiseConfig want = config();
   if (requested_ && *requested_ == want) return;  // computed, or being computed
   requested_ = want;
+  // Steps on the GPU run here, on the GL thread (a change of settings, not a frame, asks for them:
+  // headless runs settle() on update() alone); the job takes their result and does the rest.
+  submit(want, smoothsOnGpu(want) ? std::make_shared<const SmoothedElsewhere>(smoothOnGpu(want)) : nullptr);
+}
+
+void DenoiseLab::submit(const DenoiseConfig& want, std::shared_ptr<const SmoothedElsewhere> smoothed) {
   const std::string label = std::string(kMethods[int(want.method)]) + " on " + modelScene_ + " (" +
                             std::to_string(model_->statistics.logicalVertices) + " vertices)" +
-                            (smoothsOnGpu(want) ? ", smoothed on the GPU" : "");
-  // Steps on the GPU run here, on the GL thread; the job takes their result and does the rest.
-  std::shared_ptr<const SmoothedElsewhere> smoothed;
-  if (smoothsOnGpu(want)) smoothed = std::make_shared<const SmoothedElsewhere>(smoothOnGpu(want));
+                            (smoothed ? ", smoothed on the GPU" : "");
   // The job owns what it reads: the model (shared, const), the settings (a copy), the GPU's result.
   jobs_->submit(
       "denoise", label,
@@ -459,7 +462,7 @@ void DenoiseLab::uploadViewData() {
   if (mapMesh_ && r.map) mapMesh_.setScalars(kScalar1, heat(r.readBack, r.errorMapped, r.seamGap));
 }
 
-void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 vp) {
+void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 vp, Style style) {
   glViewport(vp.x, vp.y, vp.z, vp.w);
   Program& prog = programs_[int(path)].get(*shaders_, programSpec(path));
   prog.use();
@@ -474,6 +477,8 @@ void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::iv
   const glm::vec3 back = glm::normalize(frame.camera.eye() - frame.camera.target);
   prog.set("u_keyDir", glm::normalize(-0.55f * right + 0.75f * up + 0.45f * back));
   prog.set("u_heatScale", params.view.heatScale);
+  prog.set("u_style", int(style));
+  prog.set("u_pointSize", 9.0f);
   if (path == Path::Map && mapTexture_) {
     mapTexture_.bind(0);
     const GLint filter = params.map.bilinear ? GL_LINEAR : GL_NEAREST;
@@ -483,7 +488,14 @@ void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::iv
     prog.set("u_bias", result_->map->bias);
     prog.set("u_scale", result_->map->scale);
   }
-  mesh.draw();
+  if (style == Style::Marker) {
+    if (!gl::esContext()) glEnable(GL_PROGRAM_POINT_SIZE);  // WebGL2 always takes gl_PointSize
+    glDisable(GL_DEPTH_TEST);
+    mesh.draw(Primitive::Points);
+    glEnable(GL_DEPTH_TEST);
+  } else {
+    mesh.draw();
+  }
 }
 
 void DenoiseLab::render(Frame& frame) {
@@ -521,11 +533,18 @@ void DenoiseLab::render(Frame& frame) {
   }
   static const char* names[] = {"draw: smoothed", "draw: noisy", "draw: clean", "draw: map path",
                                 "draw: attribute path"};
-  auto pass = frame.pass(names[int(show)]);
+  const bool collapsed = show == DenoiseShow::Smoothed && result_->collapsed;
+  auto pass = frame.pass(collapsed ? "draw: noisy input (ghost), the point it collapsed to" : names[int(show)]);
   if (show == DenoiseShow::Map) {
     drawPanel(frame, Path::Map, mapMesh_, {0, 0, size.x, size.y});
   } else if (show == DenoiseShow::Attribute) {
     drawPanel(frame, Path::Attribute, attributeMesh_, {0, 0, size.x, size.y});
+  } else if (collapsed) {
+    // Collapsed to a point: a speck on its own. The noisy input as a ghost (the attribute mesh's
+    // positions, undisplaced by the plain program) and the point it went to, in orange.
+    const glm::ivec4 full{0, 0, size.x, size.y};
+    drawPanel(frame, Path::Plain, attributeMesh_, full, Style::Ghost);
+    drawPanel(frame, Path::Plain, plainMesh_, full, Style::Marker);
   } else {
     drawPanel(frame, Path::Plain, plainMesh_, {0, 0, size.x, size.y});  // holds what `show` asks (update())
   }

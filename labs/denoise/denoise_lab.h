@@ -87,10 +87,13 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   ProgramSpec programSpec(Path path) const;
   void rebuildModel(const Scene& scene);
   void upload(DenoiseResult result);
-  void uploadViewData();  // the positions and heat scalars the current show and view draw
-  void drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 viewport);
+  void uploadViewData();                        // the positions and heat scalars the current show and view draw
+  enum class Style { Surface, Ghost, Marker };  // mesh.frag's u_style
+  void drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 viewport, Style style = Style::Surface);
   std::string saveMap();  // the bake action
   bool smoothsOnGpu(const DenoiseConfig& c) const;
+  // The job that computes `want`, with the GPU's smoothing where it ran (else it smooths itself).
+  void submit(const DenoiseConfig& want, std::shared_ptr<const SmoothedElsewhere> smoothed);
   // The explicit or Taubin steps of `c` on the GPU, on the GL thread, for the job that does the rest.
   SmoothedElsewhere smoothOnGpu(const DenoiseConfig& c);
 

@@ -1,5 +1,6 @@
 // The denoising lab against its truth, the clean mesh: metrics, what the panels show, what the
 // student is warned about, the standard sweep and the stress cases.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -213,7 +214,7 @@ std::vector<SweepAxis> DenoiseLab::standardSweep() const {
 
 std::vector<StressCase> DenoiseLab::stressCases() const {
   const auto edit = [](auto change) { return fromDefaults<DenoiseLab>(change); };
-  return {
+  std::vector<StressCase> cases = {
       {"explicit-lambda-2", edit([](DenoiseParams& p) {
          p.smoothing.laplacian.lambda = 2.0f, p.smoothing.laplacian.iterations = 30,
          p.smoothing.laplacian.alongNormal = false;
@@ -312,6 +313,17 @@ std::vector<StressCase> DenoiseLab::stressCases() const {
        "no UVs"},
       {"empty-scene", {}, "empty", "", "nothing to denoise"},
   };
+  // The explicit and Taubin cases again with their steps on the GPU: the same verdicts, named alike.
+  for (const char* name : {"explicit-lambda-2", "explicit-lambda-2-along-normal", "cotangent-beyond-its-limit",
+                           "explicit-lambda-huge", "explicit-lambda-1.5-runs-away", "taubin-unclamped-cotangent",
+                           "slivers-cotangent", "slivers-unclamped", "weld-off-cracks"}) {
+    auto it = std::find_if(cases.begin(), cases.end(), [&](const StressCase& c) { return c.name == name; });
+    StressCase onGpu = *it;
+    onGpu.name += "-gpu";
+    onGpu.settings.emplace_back("device", "gpu");
+    cases.push_back(std::move(onGpu));
+  }
+  return cases;
 }
 
 }  // namespace shadelab

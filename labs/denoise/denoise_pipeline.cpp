@@ -204,7 +204,8 @@ void noteWhatHappened(const DenoiseModel& m, const DenoiseConfig& c, DenoiseResu
     r.notes.push_back(
         std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: " : "") +
         "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
-        "draw or to rescale; lower lambda or the iterations");
+        "rescale; drawn: the noisy input as a ghost and, in orange, the point it collapsed to. Lower lambda or "
+        "the iterations");
   else if (shrinkPct >= 10.0)
     r.notes.push_back(std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: "
                                                                       : "the smoothing shrank the mesh: ") +

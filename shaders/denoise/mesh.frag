@@ -9,6 +9,9 @@
 uniform vec3 u_eye;
 uniform vec3 u_keyDir;  // towards the key light: above and to the left of the camera, whatever the orbit
 uniform float u_heatScale;
+// 0: the surface; 1: a ghost (dimmed, bluish: the input behind a result that collapsed); 2: a
+// marker (orange: the point the mesh collapsed to, drawn as points).
+uniform int u_style;
 
 in vec3 v_world;
 in float v_heat;
@@ -29,6 +32,10 @@ vec3 signedRamp(float t) {
 }
 
 void main() {
+  if (u_style == 2) {
+    o_color = vec4(1.0, 0.55, 0.1, 1.0);
+    return;
+  }
   vec3 n = cross(dFdx(v_world), dFdy(v_world));
   float len = length(n);
   n = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
@@ -46,6 +53,8 @@ void main() {
   float light = 0.06 + 0.8 * max(dot(n, u_keyDir), 0.0) + 0.22 * max(dot(n, v), 0.0);
   vec3 h = normalize(u_keyDir + v);
   float gloss = 0.12 * pow(max(dot(n, h), 0.0), 40.0);
-  o_color = encodeOutput(albedo * light + vec3(gloss));
+  vec3 lit = albedo * light + vec3(gloss);
+  if (u_style == 1) lit = mix(vec3(0.05, 0.07, 0.11), vec3(0.25, 0.32, 0.45) * light, 0.6);
+  o_color = encodeOutput(lit);
   o_color.a = 1.0;
 }

@@ -15,6 +15,7 @@ layout(location = 4) in float a_offset;   // DISPLACE_ATTRIBUTE
 layout(location = 5) in float a_heat;     // the view's scalar: error, offset or seam gap
 
 uniform mat4 u_viewProj;
+uniform float u_pointSize;  // pixels, where the mesh is drawn as points (the point a mesh collapsed to)
 #ifdef DISPLACE_MAP
 uniform sampler2D u_displacement;  // one channel; nearest or bilinear as the lab sets it
 uniform float u_bias;              // offset = stored * u_scale + u_bias
@@ -36,4 +37,5 @@ void main() {
   v_world = p;
   v_heat = a_heat;
   gl_Position = u_viewProj * vec4(p, 1.0);
+  gl_PointSize = u_pointSize;
 }

@@ -62,8 +62,11 @@ Compared compare(const Case& c, const SmoothingSettings& s) {
   ShaderLibrary shaders(test::builtinShaders());
   GpuSmoother gpu;
   gpu.setMesh(c.start.size(), m.welded.indices, m.weldedAdjacency);
+  EXPECT_EQ(gl::drainErrors(), "") << "uploading the mesh";
   out.gpu = gpu.run(shaders, c.start, s);
+  EXPECT_EQ(gl::drainErrors(), "") << "smoothing";
   const std::vector<glm::dvec3> p = gpu.readPositions();
+  EXPECT_EQ(gl::drainErrors(), "") << "reading back";
   for (size_t v = 0; v < p.size(); ++v) {
     const double d = glm::length(p[v] - out.cpu.positions[v]) / m.meanEdge;
     out.worstEdges = std::max(out.worstEdges, d);
@@ -143,11 +146,15 @@ TEST(DenoiseGpu, TheLabMeasuresTheSameOnBothDevices) {
                                 {"denoise.lambda=" + std::string(lambda), "denoise.iterations=60",
                                  std::string("denoise.device=") + (device ? "gpu" : "cpu")});
       host->settle();
+      EXPECT_EQ(gl::drainErrors(), "") << "settle";
       host->renderFrame({96, 72});
+      EXPECT_EQ(gl::drainErrors(), "") << "render";
       on[device] = host->lab().judge()->meshMetrics();
       for (const std::string& w : host->lab().warnings())
         if (w.find("diverging") != std::string::npos || w.find("stopped at") != std::string::npos)
           notes[device].push_back(w);
+      host.reset();
+      EXPECT_EQ(gl::drainErrors(), "") << "leaving the lab";
     }
     ASSERT_EQ(on[0].size(), on[1].size());
     for (size_t i = 0; i < on[0].size(); ++i) {
