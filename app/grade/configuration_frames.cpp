@@ -156,9 +156,15 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
                            {"edge_width_ratio", properties.edgeWidthRatio}};
   if (c.needsTruth() && student["errors"].empty()) {
     const Judge& judge = *host.lab().judge();  // the solution was measured against its truth: the lab judges
-    std::vector<ImageF> views;
-    for (auto& view : judge.measuredViews()) views.push_back(host.renderView(ex.size, 0.0f, view.settings));
-    student["vs_truth"] = metricsJson(judge.viewMetrics(views, solution.truths));
+    if (referenceOf(host.lab()).kind == TruthKind::Mesh) {
+      // A mesh truth: the lab's numbers on the mesh the student's shaders made (read back by the
+      // lab's own job, which settle() waited for), as the solution's were measured.
+      student["vs_truth"] = metricsJson(judge.meshMetrics());
+    } else {
+      std::vector<ImageF> views;
+      for (auto& view : judge.measuredViews()) views.push_back(host.renderView(ex.size, 0.0f, view.settings));
+      student["vs_truth"] = metricsJson(judge.viewMetrics(views, solution.truths));
+    }
   }
   return student;
 }

@@ -132,6 +132,12 @@ void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
                "shaders/denoise/smooth_step.frag with your laplacian_step.glsl, positions in float textures; "
                "the same weights, normals and divergence checks as the CPU, in float rather than double."},
               smoothing.device, kDevices);
+  if (smoothing.device != SmoothingDevice::Gpu) v.unavailable("only with device gpu");
+  v.boolParam({"cpu_reference", "CPU reference", "",
+               "With device gpu, smooth on the CPU too and report how far the GPU's mesh lies from it "
+               "(reference_distance, in mean edges) and by how many steps their divergence verdicts differ "
+               "(verdict_steps_off). Off for a mesh too large for the CPU to keep up."},
+              smoothing.cpuReference);
   v.floatParam({"sigma_r", "Bilateral sigma_r", "",
                 "How different two face normals (|n_i - n_j|) may be and still "
                 "be averaged: small keeps more edges."},
@@ -228,6 +234,7 @@ DenoiseConfig DenoiseLab::config() const {
   c.weld = p.smoothing.weld;
   c.preserveVolume = p.smoothing.preserveVolume;
   c.device = p.smoothing.device;
+  c.cpuReference = p.smoothing.cpuReference;
   c.bake = p.map.bake;
   c.bake.resolution = 64 << p.map.sizeIndex;
   c.bilinear = p.map.bilinear;

@@ -36,6 +36,7 @@ struct DenoiseParams {
     bool weld = true;             // smoothing on the welded surface (off: the seam bug)
     bool preserveVolume = false;  // rescale the result to the input's volume (closed meshes)
     SmoothingDevice device = SmoothingDevice::Cpu;  // explicit and Taubin steps on the GPU, or here
+    bool cpuReference = true;                       // with the GPU's steps, the CPU's beside them
   } smoothing;
   struct Map {             // the displacement map
     int sizeIndex = 4;     // 64 << index: 64 .. 4096

@@ -53,6 +53,10 @@ Metrics DenoiseLab::meshMetrics() const {
     m.push_back({"bake_ms", r.bakeMs});
   }
   m.push_back({"attribute_gap_max", r.attributeGapMax});
+  if (r.referenceDistance) {
+    m.push_back({"reference_distance", *r.referenceDistance});
+    m.push_back({"verdict_steps_off", double(r.verdictStepsOff)});
+  }
   return m;
 }
 
@@ -149,7 +153,13 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   errors.rows.push_back(errorRow("attribute path", r.attributeError));
   if (r.map) errors.rows.push_back(errorRow("map path", r.mappedError));
   result.items.push_back(std::move(errors));
-  PanelTable cost{{"", "value"}, {{"smoothing ms", formatFixed(r.solveMs, 1)}}};
+  const bool gpu = r.config.device == SmoothingDevice::Gpu && (r.config.method == DenoiseMethod::Explicit ||
+                                                                r.config.method == DenoiseMethod::Taubin);
+  PanelTable cost{{"", "value"}, {{gpu ? "smoothing ms (GPU)" : "smoothing ms", formatFixed(r.solveMs, 1)}}};
+  if (r.referenceDistance) {
+    cost.rows.push_back({"GPU vs CPU, RMS (edges)", formatNumber(*r.referenceDistance)});
+    cost.rows.push_back({"GPU vs CPU, verdict steps apart", std::to_string(r.verdictStepsOff)});
+  }
   if (r.config.method == DenoiseMethod::Implicit)
     cost.rows.push_back({"  of which factorisation ms", formatFixed(r.factorMs, 1)});
   if (r.config.method != DenoiseMethod::Bilateral)

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "app/scene/mesh_topology.h"
 
@@ -121,6 +122,22 @@ std::vector<glm::dvec3> smoothPositions(const DenoiseConfig& c, std::span<const 
   r.factorMs = sr.factorMs;
   r.weights = std::move(sr.weightsUsed);
   return std::move(sr.positions);
+}
+
+// The GPU's smoothing against the CPU's of the same input: the reference a student's
+// laplacian_step.glsl is held to.
+void compareWithCpu(const DenoiseConfig& c, std::span<const glm::dvec3> start, std::span<const uint32_t> indices,
+                    const Adjacency& adjacency, const SmoothedElsewhere& gpu, double meanEdge, DenoiseResult& r,
+                    JobContext* job) {
+  DenoiseResult cpu;
+  const std::vector<glm::dvec3> reference = smoothPositions(c, start, indices, adjacency, cpu, job);
+  double sum = 0.0;
+  for (size_t v = 0; v < reference.size() && v < gpu.positions.size(); ++v) {
+    const double d = glm::length(gpu.positions[v] - reference[v]);
+    sum += std::isfinite(d) ? d * d : std::numeric_limits<double>::infinity();
+  }
+  r.referenceDistance = std::sqrt(sum / double(std::max<size_t>(reference.size(), 1))) / meanEdge;
+  r.verdictStepsOff = std::abs(gpu.grewAt - cpu.grewAt) + std::abs(gpu.stoppedAt - cpu.stoppedAt);
 }
 
 // Per render vertex: the positions to draw, the offsets along the noisy surface's normals, and
@@ -293,6 +310,7 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
     r.grewAt = smoothed->grewAt;
     r.stoppedAt = smoothed->stoppedAt;
     r.weights = edgeWeights(start, indices, adjacency, c.smoothing.weights, c.smoothing.clampNegative);
+    if (c.cpuReference) compareWithCpu(c, start, indices, adjacency, *smoothed, m.meanEdge, r, job);
   } else {
     result = smoothPositions(c, start, indices, adjacency, r, job);
   }

@@ -51,6 +51,9 @@ struct DenoiseConfig {
   // Explicit and Taubin steps on the GPU (gpu_smoother.h), where the lab can run them; the rest of
   // the pipeline takes the smoothed positions from there.
   SmoothingDevice device = SmoothingDevice::Cpu;
+  // With the steps on the GPU, smooth on the CPU as well and report how far the two results lie
+  // apart (off: a mesh too large for the CPU to keep up with the GPU).
+  bool cpuReference = true;
   BilateralSettings bilateral;
   bool weld = true;             // smoothing and normals on the welded surface (off: the homework's bug)
   bool preserveVolume = false;  // rescale the smoothed mesh about its centroid to the input's volume
@@ -87,6 +90,10 @@ struct DenoiseResult {
   bool collapsed = false;               // smoothed to a point: under a millionth of the input's volume
   EdgeWeights weights;
   double noiseMs = 0, solveMs = 0, factorMs = 0, bakeMs = 0;
+  // Smoothed on the GPU with the CPU's reference beside it: the root mean square distance between
+  // the two meshes, in mean edges, and by how many steps their verdicts (grew at, stopped at) differ.
+  std::optional<double> referenceDistance;
+  int verdictStepsOff = 0;
   std::vector<std::string> notes;  // what the student should know about this result
   bool complete = false;           // false when the job was cancelled part way
 };

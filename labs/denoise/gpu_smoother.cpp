@@ -17,7 +17,7 @@ constexpr double kDivergedEnergy = 100.0;  // laplacian.cpp's: 100x the start is
 // a few parts in a million of rounding, which would read as growth where the energy is flat.
 constexpr double kGrowth = 1e-5;
 
-enum Unit { kPositions, kNormals, kRanges, kList };
+enum Unit { kPositions, kRanges, kRing, kFaces };
 
 glm::ivec2 listSize(size_t entries) { return {kListWidth, std::max(1, int((entries + kListWidth - 1) / kListWidth))}; }
 
@@ -45,13 +45,6 @@ ProgramSpec stepSpec(bool alongNormal, LaplacianWeights weights, bool clampNegat
     spec.defines.emplace_back("COTANGENT", "1");
     if (clampNegative) spec.defines.emplace_back("CLAMP_NEGATIVE", "1");
   }
-  return spec;
-}
-
-ProgramSpec normalsSpec() {
-  ProgramSpec spec;
-  spec.name = "denoise/vertex_normals";
-  spec.stages = {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "denoise/vertex_normals.frag"}};
   return spec;
 }
 
@@ -90,7 +83,7 @@ std::string GpuSmoother::unavailableReason() {
 }
 
 std::vector<ProgramSpec> GpuSmoother::programSpecs() {
-  std::vector<ProgramSpec> all{normalsSpec()};
+  std::vector<ProgramSpec> all;
   for (bool alongNormal : {true, false}) {
     all.push_back(stepSpec(alongNormal, LaplacianWeights::Uniform, true));
     for (bool clamp : {true, false}) all.push_back(stepSpec(alongNormal, LaplacianWeights::Cotangent, clamp));
@@ -164,8 +157,6 @@ void GpuSmoother::setMesh(size_t vertexCount, std::span<const uint32_t> indices,
     positionFbo_[k] = framebufferOf(positions_[k].id(), 0);
     topLevelFbo_[k] = framebufferOf(positions_[k].id(), levels_ - 1);
   }
-  normals_ = gl::Texture2D::allocate(size_, GL_RGBA32F);
-  normalFbo_ = framebufferOf(normals_.id(), 0);
   history_ = gl::Texture2D::allocate(listSize(size_t(kMaxIterations) + 1), GL_RGBA32F);
   historyFbo_ = framebufferOf(history_.id(), 0);
   if (!emptyVao_) emptyVao_ = gl::VertexArray::make();
@@ -190,31 +181,18 @@ void GpuSmoother::upload(std::span<const glm::dvec3> start) {
   current_ = 0;
 }
 
-void GpuSmoother::drawNormals(Program& normals) {
-  glBindFramebuffer(GL_FRAMEBUFFER, normalFbo_.get());
-  normals.use();
-  positions_[current_].bind(kPositions);
-  ranges_.bind(kRanges);
-  faces_.bind(kList);
-  normals.set("u_positions", int(kPositions));
-  normals.set("u_ranges", int(kRanges));
-  normals.set("u_faces", int(kList));
-  normals.set("u_vertexCount", int(vertexCount_));
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
 void GpuSmoother::step(Program& step, float lambda, int historySlot) {
   const int next = 1 - current_;
   glBindFramebuffer(GL_FRAMEBUFFER, positionFbo_[next].get());
   step.use();
   positions_[current_].bind(kPositions);
-  normals_.bind(kNormals);
   ranges_.bind(kRanges);
-  ring_.bind(kList);
+  ring_.bind(kRing);
+  faces_.bind(kFaces);
   step.set("u_positions", int(kPositions));
-  step.set("u_normals", int(kNormals));
   step.set("u_ranges", int(kRanges));
-  step.set("u_ring", int(kList));
+  step.set("u_ring", int(kRing));
+  step.set("u_faces", int(kFaces));
   step.set("u_vertexCount", int(vertexCount_));
   step.set("u_lambda", lambda);
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -248,18 +226,13 @@ GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, std::span<const glm::dvec3
   glViewport(0, 0, size_.x, size_.y);
   glBindVertexArray(emptyVao_.get());
   const ProgramRef stepProgram = shaders.program(stepSpec(s.alongNormal, s.weights, s.clampNegative));
-  const ProgramRef normalsProgram = shaders.program(normalsSpec());
   const bool taubin = s.method == SmoothingMethod::Taubin;
   const float lambda = s.lambda, mu = taubin ? float(1.0 / (s.passBand - 1.0 / s.lambda)) : 0.0f;
   const int iterations = std::clamp(s.iterations, 0, kMaxIterations);
-  // One iteration: the normals of the current positions, then the step (and Taubin's mu step).
+  // One iteration: the step (and Taubin's mu step), each with the normals of its input.
   const auto iterate = [&](int slot) {
-    drawNormals(*normalsProgram);
     step(*stepProgram, lambda, slot);
-    if (taubin) {
-      drawNormals(*normalsProgram);
-      step(*stepProgram, mu, -1);
-    }
+    if (taubin) step(*stepProgram, mu, -1);
   };
 
   GpuSmoothing r;
@@ -284,7 +257,6 @@ GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, std::span<const glm::dvec3
     if ((it + 1) % kCheckEvery == 0) stopped = judge(it + 1);
   }
   if (stopped < 0) {  // the energy after the last step: a step of size 0
-    drawNormals(*normalsProgram);
     step(*stepProgram, 0.0f, iterations);
     stopped = judge(iterations + 1);
     if (stopped >= iterations) stopped = -1;  // diverged at the very end: every step ran, as on the CPU

@@ -6,10 +6,10 @@
 //   positions   RGBA32F, two of them (ping-pong), relative to the mesh's centre for precision; .w
 //               holds the vertex's energy term of the step that wrote it, and the mip chain's top
 //               level averages it: the step's energy without reading the mesh back
-//   normals     RGBA32F, recomputed from the faces before every step (vertex_normals.frag)
 //   ranges      RGBA32I: where the vertex's ring and its faces start in the two lists, and their counts
 //   ring        RGBA32I: each neighbour j with the vertices opposite the edge (v, j), for cotangent weights
-//   faces       RG32I: each incident face's other two corners, in winding order
+//   faces       RG32I: each incident face's other two corners, in winding order: the step shader
+//               recomputes the vertex normal from them before every step, as the CPU does
 // Each step's energy is copied into a history texture on the GPU; the history is read every
 // kCheckEvery steps to find divergence (growth, 100x the start, non-finite values) at the same
 // step the CPU finds it. Float, not double: positions agree with the CPU's to about 1e-6 of the
@@ -59,7 +59,6 @@ class GpuSmoother {
 
  private:
   void upload(std::span<const glm::dvec3> start);
-  void drawNormals(Program& normals);
   // One step of size `lambda` from positions_[current_] into the other; `historySlot` >= 0 copies
   // the step's energy (the average of .w over the texture) into that texel of the history.
   void step(Program& step, float lambda, int historySlot);
@@ -68,8 +67,8 @@ class GpuSmoother {
   size_t vertexCount_ = 0;
   glm::ivec2 size_{0};
   glm::dvec3 centre_{0.0};
-  gl::Texture2D positions_[2], normals_, ranges_, ring_, faces_, history_;
-  gl::FramebufferName positionFbo_[2], normalFbo_, topLevelFbo_[2], historyFbo_;
+  gl::Texture2D positions_[2], ranges_, ring_, faces_, history_;
+  gl::FramebufferName positionFbo_[2], topLevelFbo_[2], historyFbo_;
   gl::VertexArray emptyVao_;
   int current_ = 0;
   int levels_ = 1;

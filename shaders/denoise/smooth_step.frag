@@ -1,23 +1,38 @@
 #version 330 core
 // Denoising on the GPU: one explicit step for every vertex, a fragment each (labs/denoise/gpu_smoother.h).
 // Vertex v lives at texel (v % width, v / width) of every per-vertex texture. Its one-ring comes
-// from a compressed-row layout: u_ranges gives where v's neighbours start and how many there are;
-// u_ring gives each neighbour j and the vertices opposite the edge (v, j) (-1: none), whose angles
-// make the cotangent weight. The weights follow laplacian.cpp's edgeWeights() rule for rule, so
-// the CPU and the GPU smooth the same mesh the same way.
+// from a compressed-row layout: u_ranges gives where v's neighbours and its faces start in two
+// lists and how many there are; u_ring gives each neighbour j and the vertices opposite the edge
+// (v, j) (-1: none), whose angles make the cotangent weight; u_faces gives each face's other two
+// corners in winding order, for the vertex normal. Weights and normal follow laplacian.cpp's
+// edgeWeights() and normalsOf() rule for rule, so the CPU and the GPU smooth the same mesh alike.
 // Writes the new position in .xyz and this vertex's energy term, measured before the step, in .w.
 #include "denoise/laplacian_step.glsl"
 
 uniform sampler2D u_positions;  // .xyz, relative to the mesh's centre
-uniform sampler2D u_normals;    // unit vertex normals of u_positions (vertex_normals.frag)
 uniform isampler2D u_ranges;    // ring start, ring count, face start, face count
 uniform isampler2D u_ring;      // neighbour, opposite vertex, the other opposite vertex
+uniform isampler2D u_faces;     // the face's next corner, the one after
 uniform int u_vertexCount;
 uniform float u_lambda;
 out vec4 o_position;
 
 ivec2 texelOf(int index, int width) { return ivec2(index % width, index / width); }
 vec3 positionOf(int v) { return texelFetch(u_positions, texelOf(v, textureSize(u_positions, 0).x), 0).xyz; }
+
+// The area-weighted unit normal at p: the faces' cross products summed (+Z where they give no
+// direction), scaled before its length is taken, since a huge normal's squared length overflows.
+vec3 vertexNormal(vec3 p, ivec4 range) {
+  int faceWidth = textureSize(u_faces, 0).x;
+  vec3 n = vec3(0.0);
+  for (int k = 0; k < range.w; ++k) {
+    ivec2 corners = texelFetch(u_faces, texelOf(range.z + k, faceWidth), 0).xy;
+    vec3 c = cross(positionOf(corners.x) - p, positionOf(corners.y) - p);
+    if (!any(isnan(c)) && !any(isinf(c))) n += c;
+  }
+  float largest = max(max(abs(n.x), abs(n.y)), abs(n.z));
+  return largest > 0.0 && !isinf(largest) ? normalize(n / largest) : vec3(0.0, 0.0, 1.0);
+}
 
 // Half the cotangent of the angle at o in the triangle (o, a, b); 0 where the corner has no angle
 // to speak of (a zero-area triangle), as on the CPU.
@@ -69,7 +84,7 @@ void main() {
   if (range.y > 0) {  // an isolated vertex stays where it is
     // Every weight ~0 (a vertex amid slivers): no direction to move in, so uniform weights.
     vec3 mean = abs(weights) > 1e-9 * max(magnitude, 1e-30) ? sum / weights : uniformSum / float(range.y);
-    next = laplacianStep(here.xyz, mean, texelFetch(u_normals, texel, 0).xyz, u_lambda, energy);
+    next = laplacianStep(here.xyz, mean, vertexNormal(here.xyz, range), u_lambda, energy);
   }
   o_position = vec4(next, energy);
 }

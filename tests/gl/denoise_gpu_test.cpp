@@ -156,12 +156,14 @@ TEST(DenoiseGpu, TheLabMeasuresTheSameOnBothDevices) {
       host.reset();
       EXPECT_EQ(gl::drainErrors(), "") << "leaving the lab";
     }
-    ASSERT_EQ(on[0].size(), on[1].size());
-    for (size_t i = 0; i < on[0].size(); ++i) {
-      const auto& [key, cpu] = on[0][i];
+    for (const auto& [key, cpu] : on[0]) {
       if (key.ends_with("_ms")) continue;  // the costs differ: that is the point
-      EXPECT_NEAR(on[1][i].second, cpu, 5e-4 * std::max(std::abs(cpu), 1e-3)) << key;
+      EXPECT_NEAR(test::metric(on[1], key.c_str()), cpu, 5e-4 * std::max(std::abs(cpu), 1e-3)) << key;
     }
+    // The GPU's run measures itself against the CPU's reference: the numbers a grader reads.
+    // (A diverging mesh grows float's rounding with it: looser there.)
+    EXPECT_LT(test::metric(on[1], "reference_distance"), std::string(lambda) == "3" ? 1e-3 : 1e-5);
+    EXPECT_EQ(test::metric(on[1], "verdict_steps_off"), 0.0);
     EXPECT_EQ(notes[0], notes[1]);
     if (std::string(lambda) == "3")
       EXPECT_FALSE(notes[0].empty()) << "lambda 3 did not diverge: the case tests nothing";
