@@ -276,7 +276,7 @@ std::string DenoiseLab::setup(LabContext& ctx) {
 
 void DenoiseLab::rebuildModel(const Scene& scene) {
   modelRevision_ = scene.revision;
-  gpuMeshRevision_ = -1;  // another model (the same scene with another clean file, too): upload its mesh again
+  gpuInput_.reset();  // another model (the same scene with another clean file, too): upload its mesh again
   modelScene_ = scene.name;
   modelNote_.clear();
   result_.reset();
@@ -372,15 +372,18 @@ bool DenoiseLab::smoothsOnGpu(const DenoiseConfig& c) const {
 }
 
 SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {
-  SmoothingInput in = smoothingInput(*model_, c);
-  if (gpuMeshRevision_ != modelRevision_ || gpuMeshWelded_ != c.weld) {
-    gpu_.setMesh(in.start.size(), in.indices, *in.adjacency);
-    gpuMeshRevision_ = modelRevision_;
-    gpuMeshWelded_ = c.weld;
+  // The mesh and the noisy input go up once each: a lambda or iterations drag changes neither.
+  const GpuInput input{modelRevision_, c.weld, c.publishedInput, c.noise};
+  if (!gpuInput_ || !(*gpuInput_ == input)) {
+    SmoothingInput in = smoothingInput(*model_, c);
+    if (!gpuInput_ || gpuInput_->model != input.model || gpuInput_->weld != input.weld)
+      gpu_.setMesh(in.start.size(), in.indices, *in.adjacency);
+    gpu_.setStart(in.start);
+    gpuInput_ = input;
   }
   SmoothingSettings s = c.smoothing;
   s.method = c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin : SmoothingMethod::Explicit;
-  const GpuSmoothing run = gpu_.run(*shaders_, in.start, s);
+  const GpuSmoothing run = gpu_.run(*shaders_, s);
   return {gpu_.readPositions(), run.energy, run.grewAt, run.stoppedAt, run.ms};
 }
 

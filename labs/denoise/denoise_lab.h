@@ -115,8 +115,14 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   GpuMesh plainMesh_, mapMesh_, attributeMesh_;
   GpuSmoother gpu_;
   std::string gpuUnavailable_;  // why this context cannot smooth on the GPU, or ""
-  int gpuMeshRevision_ = -1;    // the model revision and weld setting the smoother's mesh is of
-  bool gpuMeshWelded_ = true;
+  // What the smoother holds: the mesh of a model (welded or not) and the input noise on it.
+  struct GpuInput {
+    int model = -1;
+    bool weld = true, published = true;
+    NoiseSettings noise;
+    bool operator==(const GpuInput&) const = default;
+  };
+  std::optional<GpuInput> gpuInput_;
   gl::Texture2D mapTexture_, mapPreview_;
   std::string lastAction_;
   // What the GPU meshes hold now: re-uploaded when the show or view changes, not per frame.

@@ -153,8 +153,8 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   errors.rows.push_back(errorRow("attribute path", r.attributeError));
   if (r.map) errors.rows.push_back(errorRow("map path", r.mappedError));
   result.items.push_back(std::move(errors));
-  const bool gpu = r.config.device == SmoothingDevice::Gpu && (r.config.method == DenoiseMethod::Explicit ||
-                                                                r.config.method == DenoiseMethod::Taubin);
+  const bool gpu = r.config.device == SmoothingDevice::Gpu &&
+                   (r.config.method == DenoiseMethod::Explicit || r.config.method == DenoiseMethod::Taubin);
   PanelTable cost{{"", "value"}, {{gpu ? "smoothing ms (GPU)" : "smoothing ms", formatFixed(r.solveMs, 1)}}};
   if (r.referenceDistance) {
     cost.rows.push_back({"GPU vs CPU, RMS (edges)", formatNumber(*r.referenceDistance)});

@@ -11,7 +11,7 @@
 namespace shadelab {
 namespace {
 
-constexpr int kListWidth = 1024;           // texels per row of the ring, face and history lists
+constexpr int kListWidth = 1024;           // texels per row of every texture: smooth_step.frag masks and shifts by it
 constexpr double kDivergedEnergy = 100.0;  // laplacian.cpp's: 100x the start is divergence beyond doubt
 // Growth is told from rounding by more than the CPU's 1e-9: float sums of a mesh's energy carry
 // a few parts in a million of rounding, which would read as growth where the energy is flat.
@@ -94,8 +94,8 @@ std::vector<ProgramSpec> GpuSmoother::programSpecs() {
 void GpuSmoother::setMesh(size_t vertexCount, std::span<const uint32_t> indices, const Adjacency& adjacency) {
   SavedTarget saved;
   vertexCount_ = vertexCount;
-  const int width = int(std::min<size_t>(kListWidth, std::bit_ceil(std::max<size_t>(vertexCount, 1))));
-  size_ = {width, int(std::bit_ceil((std::max<size_t>(vertexCount, 1) + size_t(width) - 1) / size_t(width)))};
+  // Rows a power of two too: the mip chain's top level is then the exact average of every texel.
+  size_ = {kListWidth, int(std::bit_ceil((std::max<size_t>(vertexCount, 1) + kListWidth - 1) / kListWidth))};
   const size_t texels = size_t(size_.x) * size_t(size_.y);
 
   // Each ring entry: the neighbour and up to two vertices opposite the edge (more only where the
@@ -152,6 +152,9 @@ void GpuSmoother::setMesh(size_t vertexCount, std::span<const uint32_t> indices,
   ring_ = integerTexture(listSize(adjacency.ring.size()), GL_RGBA32I, GL_RGBA_INTEGER, ring);
   faces_ = integerTexture(facesSize, GL_RG32I, GL_RG_INTEGER, faces);
   levels_ = std::bit_width(unsigned(std::max(size_.x, size_.y)));
+  start_ = gl::Texture2D::allocate(size_, GL_RGBA32F);
+  startFbo_ = framebufferOf(start_.id(), 0);
+  current_ = -1;
   for (int k = 0; k < 2; ++k) {
     positions_[k] = gl::Texture2D::allocate(size_, GL_RGBA32F, 0);
     positionFbo_[k] = framebufferOf(positions_[k].id(), 0);
@@ -162,7 +165,7 @@ void GpuSmoother::setMesh(size_t vertexCount, std::span<const uint32_t> indices,
   if (!emptyVao_) emptyVao_ = gl::VertexArray::make();
 }
 
-void GpuSmoother::upload(std::span<const glm::dvec3> start) {
+void GpuSmoother::setStart(std::span<const glm::dvec3> start) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const glm::dvec3& p : start) {
     lo = glm::min(lo, p);
@@ -176,16 +179,16 @@ void GpuSmoother::upload(std::span<const glm::dvec3> start) {
     texels[v * 4 + 1] = float(p.y);
     texels[v * 4 + 2] = float(p.z);
   }
-  glBindTexture(GL_TEXTURE_2D, positions_[0].id());
+  glBindTexture(GL_TEXTURE_2D, start_.id());
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, texels.data());
-  current_ = 0;
+  current_ = -1;
 }
 
 void GpuSmoother::step(Program& step, float lambda, int historySlot) {
-  const int next = 1 - current_;
+  const int next = current_ == 0 ? 1 : 0;
   glBindFramebuffer(GL_FRAMEBUFFER, positionFbo_[next].get());
   step.use();
-  positions_[current_].bind(kPositions);
+  (current_ < 0 ? start_ : positions_[current_]).bind(kPositions);
   ranges_.bind(kRanges);
   ring_.bind(kRing);
   faces_.bind(kFaces);
@@ -217,7 +220,7 @@ std::vector<float> GpuSmoother::readHistory(int count) const {
   return energy;
 }
 
-GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, std::span<const glm::dvec3> start, const SmoothingSettings& s) {
+GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, const SmoothingSettings& s) {
   SavedTarget saved;
   const auto t0 = std::chrono::steady_clock::now();
   glDisable(GL_DEPTH_TEST);
@@ -236,7 +239,7 @@ GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, std::span<const glm::dvec3
   };
 
   GpuSmoothing r;
-  upload(start);
+  current_ = -1;
   int checked = 0;  // history entries judged so far
   // The CPU's rules over the history: energy grew; 100x the start or not finite: stop there.
   const auto judge = [&](int count) {
@@ -263,7 +266,7 @@ GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, std::span<const glm::dvec3
   }
   if (stopped >= 0) {  // run again to the step it stopped at: the mesh the CPU keeps
     r.stoppedAt = std::max(stopped, 0);
-    upload(start);
+    current_ = -1;
     for (int it = 0; it < r.stoppedAt; ++it) iterate(-1);
   }
   glFinish();
@@ -274,7 +277,7 @@ GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, std::span<const glm::dvec3
 std::vector<glm::dvec3> GpuSmoother::readPositions() const {
   SavedTarget saved;
   std::vector<float> texels(size_t(size_.x) * size_t(size_.y) * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, positionFbo_[current_].get());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, current_ < 0 ? startFbo_.get() : positionFbo_[current_].get());
   glReadPixels(0, 0, size_.x, size_.y, GL_RGBA, GL_FLOAT, texels.data());
   std::vector<glm::dvec3> p(vertexCount_);
   for (size_t v = 0; v < vertexCount_; ++v)

@@ -2,7 +2,9 @@
 // (laplacian.h), one fragment per vertex, so a lambda drag stays live on meshes far larger than
 // the CPU can smooth between two frames.
 //
-// Every per-vertex value lives at texel (v % width, v / width) of a power-of-two texture:
+// Every per-vertex value lives at texel (v % 1024, v / 1024) of a texture 1024 wide and a power of
+// two high:
+//   start       RGBA32F, the input, uploaded once per input (a lambda drag reuses it)
 //   positions   RGBA32F, two of them (ping-pong), relative to the mesh's centre for precision; .w
 //               holds the vertex's energy term of the step that wrote it, and the mip chain's top
 //               level averages it: the step's energy without reading the mesh back
@@ -47,19 +49,21 @@ class GpuSmoother {
 
   // The connectivity, uploaded once per mesh: `indices` over `vertexCount` vertices.
   void setMesh(size_t vertexCount, std::span<const uint32_t> indices, const Adjacency& adjacency);
-  // Explicit or Taubin smoothing of `start` (one position per vertex of setMesh) as `settings`
-  // says; the result stays on the GPU until readPositions().
-  GpuSmoothing run(ShaderLibrary& shaders, std::span<const glm::dvec3> start, const SmoothingSettings& settings);
+  // The positions smoothing starts from, one per vertex of setMesh: uploaded until the next call.
+  void setStart(std::span<const glm::dvec3> start);
+  // Explicit or Taubin smoothing of the start as `settings` says; the result stays on the GPU
+  // until readPositions().
+  GpuSmoothing run(ShaderLibrary& shaders, const SmoothingSettings& settings);
   std::vector<glm::dvec3> readPositions() const;
   // The texture the last run's result is in (.xyz relative to centre()).
-  GLuint positionTexture() const { return positions_[current_].id(); }
+  GLuint positionTexture() const { return current_ < 0 ? start_.id() : positions_[current_].id(); }
   glm::dvec3 centre() const { return centre_; }
   glm::ivec2 layout() const { return size_; }
   size_t vertexCount() const { return vertexCount_; }
 
  private:
-  void upload(std::span<const glm::dvec3> start);
-  // One step of size `lambda` from positions_[current_] into the other; `historySlot` >= 0 copies
+  // One step of size `lambda` from the current positions (the start's, first) into the other
+  // texture of the pair; `historySlot` >= 0 copies
   // the step's energy (the average of .w over the texture) into that texel of the history.
   void step(Program& step, float lambda, int historySlot);
   std::vector<float> readHistory(int count) const;
@@ -67,10 +71,10 @@ class GpuSmoother {
   size_t vertexCount_ = 0;
   glm::ivec2 size_{0};
   glm::dvec3 centre_{0.0};
-  gl::Texture2D positions_[2], ranges_, ring_, faces_, history_;
-  gl::FramebufferName positionFbo_[2], topLevelFbo_[2], historyFbo_;
+  gl::Texture2D start_, positions_[2], ranges_, ring_, faces_, history_;
+  gl::FramebufferName startFbo_, positionFbo_[2], topLevelFbo_[2], historyFbo_;
   gl::VertexArray emptyVao_;
-  int current_ = 0;
+  int current_ = -1;  // which of positions_ holds the current positions; -1: start_ does
   int levels_ = 1;
 };
 
