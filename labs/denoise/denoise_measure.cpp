@@ -56,6 +56,7 @@ Metrics DenoiseLab::meshMetrics() const {
   if (r.referenceDistance) {
     m.push_back({"reference_distance", *r.referenceDistance});
     m.push_back({"verdict_steps_off", double(r.verdictStepsOff)});
+    m.push_back({"energy_difference", r.energyDifference});
   }
   return m;
 }
@@ -159,6 +160,7 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   if (r.referenceDistance) {
     cost.rows.push_back({"GPU vs CPU, RMS (edges)", formatNumber(*r.referenceDistance)});
     cost.rows.push_back({"GPU vs CPU, verdict steps apart", std::to_string(r.verdictStepsOff)});
+    cost.rows.push_back({"GPU vs CPU, energy (largest relative difference)", formatNumber(r.energyDifference)});
   }
   if (r.config.method == DenoiseMethod::Implicit)
     cost.rows.push_back({"  of which factorisation ms", formatFixed(r.factorMs, 1)});

@@ -138,6 +138,12 @@ void compareWithCpu(const DenoiseConfig& c, std::span<const glm::dvec3> start, s
   }
   r.referenceDistance = std::sqrt(sum / double(std::max<size_t>(reference.size(), 1))) / meanEdge;
   r.verdictStepsOff = std::abs(gpu.grewAt - cpu.grewAt) + std::abs(gpu.stoppedAt - cpu.stoppedAt);
+  double worst = 0.0;  // over the iterations both ran
+  for (size_t i = 0; i < std::min(gpu.energy.size(), cpu.energy.size()); ++i) {
+    const double d = std::abs(gpu.energy[i] - cpu.energy[i]) / std::max(std::abs(cpu.energy[i]), 1e-300);
+    worst = std::max(worst, std::isfinite(d) ? d : std::numeric_limits<double>::infinity());
+  }
+  r.energyDifference = worst;
 }
 
 // Per render vertex: the positions to draw, the offsets along the noisy surface's normals, and

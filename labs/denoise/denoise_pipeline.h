@@ -91,9 +91,11 @@ struct DenoiseResult {
   EdgeWeights weights;
   double noiseMs = 0, solveMs = 0, factorMs = 0, bakeMs = 0;
   // Smoothed on the GPU with the CPU's reference beside it: the root mean square distance between
-  // the two meshes, in mean edges, and by how many steps their verdicts (grew at, stopped at) differ.
+  // the two meshes, in mean edges; by how many steps their verdicts (grew at, stopped at) differ;
+  // and the largest relative difference between their energies, iteration by iteration.
   std::optional<double> referenceDistance;
   int verdictStepsOff = 0;
+  double energyDifference = 0.0;
   std::vector<std::string> notes;  // what the student should know about this result
   bool complete = false;           // false when the job was cancelled part way
 };

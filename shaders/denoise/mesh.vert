@@ -7,7 +7,12 @@
 //                     the copies part and the mesh cracks.
 //   DISPLACE_ATTRIBUTE the same offsets per vertex, as an attribute: copies that share a
 //                     position share the offset (computed on the welded mesh), so nothing parts.
-// Read next: mesh.frag (flat shading and the heat views), labs/denoise/displacement_bake.h.
+// Read next: apply_map.glsl (the map's lookup), mesh.frag (flat shading and the heat views),
+// labs/denoise/displacement_bake.h.
+#ifdef DISPLACE_MAP
+#include "denoise/apply_map.glsl"
+#endif
+
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;    // the noisy surface's normal: the direction offsets move along
 layout(location = 2) in vec2 a_uv;
@@ -16,11 +21,6 @@ layout(location = 5) in float a_heat;     // the view's scalar: error, offset or
 
 uniform mat4 u_viewProj;
 uniform float u_pointSize;  // pixels, where the mesh is drawn as points (the point a mesh collapsed to)
-#ifdef DISPLACE_MAP
-uniform sampler2D u_displacement;  // one channel; nearest or bilinear as the lab sets it
-uniform float u_bias;              // offset = stored * u_scale + u_bias
-uniform float u_scale;
-#endif
 
 out vec3 v_world;
 out float v_heat;
@@ -28,9 +28,7 @@ out float v_heat;
 void main() {
   vec3 p = a_position;
 #if defined(DISPLACE_MAP)
-  // No derivatives in a vertex shader: level 0, explicitly.
-  float stored = textureLod(u_displacement, a_uv, 0.0).r;
-  p += a_normal * (stored * u_scale + u_bias);
+  p = displacedByMap(p, a_normal, a_uv);
 #elif defined(DISPLACE_ATTRIBUTE)
   p += a_normal * a_offset;
 #endif
