@@ -51,6 +51,61 @@ static ImageF thumbnail(const ImageF& image) {
   return downsample(image, f);
 }
 
+// The command that makes this sweep again, for the report.
+static std::string sweepCommand(const Options& o, const std::string& labId, const std::string& sceneId) {
+  std::string cmd = "shadelab sweep --lab " + labId + " --scene " + sceneId + " --size " + std::to_string(o.size.x) +
+                    "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
+  for (auto& v : o.varies) cmd += " --vary " + v;
+  for (auto& v : o.sets) cmd += " --set " + v;
+  if (!o.camera.empty()) cmd += " --camera '" + o.camera + "'";
+  return cmd + " --out " + o.out;
+}
+
+// Row `index` of the sweep's grid: each axis's value applied (the last axis varies fastest).
+static std::string applyGridPoint(LabHost& host, const std::vector<SweepAxis>& axes, size_t index) {
+  std::vector<std::string> parts(axes.size());
+  for (size_t a = axes.size(); a-- > 0;) {
+    const std::string& v = axes[a].values[index % axes[a].values.size()];
+    index /= axes[a].values.size();
+    applyAxisValue(host, axes[a].key, v);
+    parts[a] = axes[a].key + "=" + v;
+  }
+  std::string label;
+  for (auto& part : parts) label += (label.empty() ? "" : " ") + part;
+  return label;
+}
+
+// The CSV, the HTML page and one SVG per plot and truth; "" or what could not be written.
+static std::string writeSweep(const SweepReport& report, const std::string& out, const std::string& labId) {
+  if (auto err = writeTextFile(out + "/" + labId + "_sweep.csv", sweepCsv(report)); !err.empty()) return err;
+  if (auto err = writeTextFile(out + "/" + labId + "_sweep.html", sweepHtml(report)); !err.empty()) return err;
+  const auto truths = truthsOf(report);
+  for (auto& plot : report.plots)
+    for (auto& truth : truths) {
+      std::string file = out + "/" + labId + "_" + plot.error;
+      if (truths.size() > 1) file.append("_").append(slug(truth));
+      file += ".svg";
+      if (auto err = writeTextFile(file, sweepPlotSvg(report, plot, truth)); !err.empty()) return err;
+    }
+  return {};
+}
+
+// The table on stdout: every plotted error and cost once, in plot order.
+static void printSweep(const SweepReport& report) {
+  std::vector<std::string> columns;
+  for (auto& plot : report.plots)
+    for (auto& key : {plot.error, plot.cost})
+      if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
+  std::printf("%-44s", "configuration");
+  for (auto& key : columns) std::printf(" %14s", key.c_str());
+  std::printf("  truth\n");
+  for (auto& row : report.rows) {
+    std::printf("%-44s", row.label.c_str());
+    for (auto& key : columns) std::printf(" %14.5f", row.value(key));
+    std::printf("  %s\n", row.truth.c_str());
+  }
+}
+
 int runSweep(const Options& o) {
   if (o.out.empty()) return fail("sweep: --out DIR is required");
   Session s;
@@ -89,28 +144,13 @@ int runSweep(const Options& o) {
   report.costClock = host.timerClock();
   report.metricNotes = judge->metricNotes();
   report.plots = judge->plots();
-  std::string cmd = "shadelab sweep --lab " + labId + " --scene " + host.sceneId() + " --size " +
-                    std::to_string(o.size.x) + "x" + std::to_string(o.size.y) + " --frames " + std::to_string(o.frames);
-  for (auto& v : o.varies) cmd += " --vary " + v;
-  for (auto& v : o.sets) cmd += " --set " + v;
-  if (!o.camera.empty()) cmd += " --camera '" + o.camera + "'";
-  cmd += " --out " + o.out;
-  report.command = cmd;
+  report.command = sweepCommand(o, labId, host.sceneId());
 
   Measurer measurer(host);  // caches each truth: rows that share one trace or render it once
   std::vector<std::string> shaderErrorRows;
   for (size_t index = 0; index < total; ++index) {
     host.applySettings(base);
-    std::string label;
-    size_t rest = index;
-    std::vector<std::string> parts(axes.size());
-    for (size_t a = axes.size(); a-- > 0;) {
-      const std::string& v = axes[a].values[rest % axes[a].values.size()];
-      rest /= axes[a].values.size();
-      applyAxisValue(host, axes[a].key, v);
-      parts[a] = axes[a].key + "=" + v;
-    }
-    for (auto& part : parts) label += (label.empty() ? "" : " ") + part;
+    const std::string label = applyGridPoint(host, axes, index);
     auto jobProgress = [&](const std::vector<JobStatus>& jobs) {
       progress(int(index), int(total), label + (jobs.empty() ? "" : ": " + describeJobs(jobs)));
     };
@@ -152,30 +192,9 @@ int runSweep(const Options& o) {
   }
   progress(int(total), int(total), "done");
 
-  const std::string csvPath = o.out + "/" + labId + "_sweep.csv", htmlPath = o.out + "/" + labId + "_sweep.html";
-  if (auto err = writeTextFile(csvPath, sweepCsv(report)); !err.empty()) return fail(err);
-  if (auto err = writeTextFile(htmlPath, sweepHtml(report)); !err.empty()) return fail(err);
-  const auto truths = truthsOf(report);
-  for (auto& plot : report.plots)
-    for (auto& truth : truths) {
-      const std::string file =
-          o.out + "/" + labId + "_" + plot.error + (truths.size() > 1 ? "_" + slug(truth) : "") + ".svg";
-      if (auto err = writeTextFile(file, sweepPlotSvg(report, plot, truth)); !err.empty()) return fail(err);
-    }
-  // The table on stdout: every plotted error and cost once, in plot order.
-  std::vector<std::string> columns;
-  for (auto& plot : report.plots)
-    for (auto& key : {plot.error, plot.cost})
-      if (std::find(columns.begin(), columns.end(), key) == columns.end()) columns.push_back(key);
-  std::printf("%-44s", "configuration");
-  for (auto& key : columns) std::printf(" %14s", key.c_str());
-  std::printf("  truth\n");
-  for (auto& row : report.rows) {
-    std::printf("%-44s", row.label.c_str());
-    for (auto& key : columns) std::printf(" %14.5f", row.value(key));
-    std::printf("  %s\n", row.truth.c_str());
-  }
-  std::printf("wrote %s and %s\n", csvPath.c_str(), htmlPath.c_str());
+  if (auto err = writeSweep(report, o.out, labId); !err.empty()) return fail(err);
+  printSweep(report);
+  std::printf("wrote %s/%s_sweep.csv and %s_sweep.html\n", o.out.c_str(), labId.c_str(), labId.c_str());
   for (auto& label : shaderErrorRows)
     std::fprintf(stderr, "warning: %s: a program did not build; that row shows a fallback (shader_errors > 0)\n",
                  label.c_str());

@@ -70,56 +70,27 @@ void Measurer::finish(Measurement m, const std::vector<std::shared_ptr<const Ima
   last_ = std::move(m);
 }
 
-std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
-  followLab();
-  Lab& lab = host_.lab();
-  const ReferenceSpec spec = referenceOf(lab);
-  if (spec.kind == TruthKind::None)
-    return std::string(lab.id()) + ": this configuration has no ground truth to measure against" +
-           (spec.description.empty() ? "" : " (" + spec.description + ")");
-  Measurement m;
-  m.lab = std::string(lab.id());
-  m.settings = host_.currentSettings();
-  m.label = labelOf(m.settings);
-  m.truth = spec.truth;
-  m.values = std::move(costs);
-  JobRunner& jobs = host_.jobs();
+// The lab's own jobs compute a mesh result and its metrics: wait for them, then read.
+void Measurer::waitForMeshTruth(Measurement m, const ReferenceSpec& spec) {
+  host_.jobs().submitGlSteps(kJobKey, "measuring against " + spec.truth, [this, m](JobContext& job) mutable {
+    if (host_.jobs().busyOtherThan(kJobKey)) {
+      job.progress(0.0f, "waiting for the result");
+      return GlStep::Wait;
+    }
+    finish(std::move(m), {});
+    return GlStep::Done;
+  });
+}
 
-  if (spec.kind == TruthKind::Mesh) {
-    // The lab's own jobs compute the result and its metrics: wait for them, then read.
-    jobs.submitGlSteps(kJobKey, "measuring against " + spec.truth, [this, m](JobContext& job) mutable {
-      if (host_.jobs().busyOtherThan(kJobKey)) {
-        job.progress(0.0f, "waiting for the result");
-        return GlStep::Wait;
-      }
-      finish(std::move(m), {});
-      return GlStep::Done;
-    });
-    return {};
-  }
-
-  // Every measured view of this configuration now (the GL thread), and the truth in each view:
-  // from the cache, traced in a CPU job, or accumulated from jittered frames in GL slices.
-  const std::vector<MeasuredView> views = lab.judge()->measuredViews();
-  for (auto& view : views) m.images.push_back(host_.renderView(size, time, view.settings));
-  m.image = m.images.front();
-  std::vector<TruthRequest> requests;
-  std::vector<std::shared_ptr<const ImageF>> cached;
-  for (auto& view : views) {
-    requests.push_back(describeTruth(host_, size, time, view.settings));
-    cached.push_back(cachedTruth(requests.back().key));
-  }
-  if (std::all_of(cached.begin(), cached.end(), [](auto& c) { return bool(c); })) {
-    jobs.cancel(kJobKey);  // an older measurement would land after this one
-    finish(std::move(m), cached);
-    return {};
-  }
-  const std::string label = "truth for " + m.label;
-  if (spec.traced && spec.tracedOnGl) {  // traced on the GPU: a pass per GL step, between frames
-    const gl::RenderTarget target = gl::RenderTarget::create(size);
-    GlTraceStep step = beginGlTrace(host_, requests.front(), target);
-    if (!step) return std::string(lab.id()) + ": the lab traced no reference";
-    jobs.submitGlSteps(kJobKey, label, [this, m, step, key = requests.front().key](JobContext& job) mutable {
+// A traced truth, which has one view (the lab's trace is that view): on the GPU a pass per GL
+// step between frames, or on the CPU in a job. "" or why the lab traced none.
+std::string Measurer::traceTruth(Measurement m, const ReferenceSpec& spec, const TruthRequest& request,
+                                 const std::string& label) {
+  const gl::RenderTarget target = gl::RenderTarget::create(request.size);
+  if (spec.tracedOnGl) {  // on the GPU: a pass per GL step, between frames
+    GlTraceStep step = beginGlTrace(host_, request, target);
+    if (!step) return std::string(host_.lab().id()) + ": the lab traced no reference";
+    host_.jobs().submitGlSteps(kJobKey, label, [this, m, step, key = request.key](JobContext& job) mutable {
       std::optional<ImageF> truth = step(job);
       if (!truth) return GlStep::More;
       auto image = std::make_shared<const ImageF>(std::move(*truth));
@@ -129,18 +100,20 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
     });
     return {};
   }
-  if (spec.traced) {  // traced truths have one view: the lab's trace is that view
-    const gl::RenderTarget target = gl::RenderTarget::create(size);
-    TraceWork work = beginTrace(host_, requests.front(), target);
-    if (!work) return std::string(lab.id()) + ": the lab traced no reference";
-    jobs.submit(kJobKey, label, std::move(work), [this, m, key = requests.front().key](ImageF truth) mutable {
-      auto image = std::make_shared<const ImageF>(std::move(truth));
-      cacheTruth(key, image);
-      finish(std::move(m), {image});
-    });
-    return {};
-  }
-  // Rasterised truth: one jittered frame per slice, view after view; the target lives with the job.
+  TraceWork work = beginTrace(host_, request, target);  // on the CPU, in a job
+  if (!work) return std::string(host_.lab().id()) + ": the lab traced no reference";
+  host_.jobs().submit(kJobKey, label, std::move(work), [this, m, key = request.key](ImageF truth) mutable {
+    auto image = std::make_shared<const ImageF>(std::move(truth));
+    cacheTruth(key, image);
+    finish(std::move(m), {image});
+  });
+  return {};
+}
+
+// A rasterised truth: one jittered frame per slice, view after view; the target lives with the job.
+void Measurer::accumulateTruth(Measurement m, const ReferenceSpec& spec, const std::vector<TruthRequest>& requests,
+                               std::vector<std::shared_ptr<const ImageF>> cached,
+                               const std::vector<MeasuredView>& views, const std::string& label) {
   struct Accumulation {
     std::vector<JitterSample> samples;
     size_t view = 0, next = 0;
@@ -151,8 +124,8 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
   };
   auto acc = std::make_shared<Accumulation>();
   acc->samples = jitterSamples(spec.jitterGrid, spec.pixelFilter);
-  acc->truths = cached;
-  jobs.submitGlSteps(kJobKey, label, [this, m, requests, acc, views](JobContext& job) mutable {
+  acc->truths = std::move(cached);
+  host_.jobs().submitGlSteps(kJobKey, label, [this, m, requests, acc, views](JobContext& job) mutable {
     while (acc->view < requests.size() && acc->truths[acc->view]) ++acc->view;  // cached views
     if (acc->view == requests.size()) {
       acc->target.reset();
@@ -185,6 +158,46 @@ std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
     }
     return GlStep::More;
   });
+}
+
+std::string Measurer::start(glm::ivec2 size, float time, Metrics costs) {
+  followLab();
+  Lab& lab = host_.lab();
+  const ReferenceSpec spec = referenceOf(lab);
+  if (spec.kind == TruthKind::None)
+    return std::string(lab.id()) + ": this configuration has no ground truth to measure against" +
+           (spec.description.empty() ? "" : " (" + spec.description + ")");
+  Measurement m;
+  m.lab = std::string(lab.id());
+  m.settings = host_.currentSettings();
+  m.label = labelOf(m.settings);
+  m.truth = spec.truth;
+  m.values = std::move(costs);
+  JobRunner& jobs = host_.jobs();
+
+  if (spec.kind == TruthKind::Mesh) {
+    waitForMeshTruth(std::move(m), spec);
+    return {};
+  }
+  // Every measured view of this configuration now (the GL thread), and the truth in each view:
+  // from the cache, traced in a CPU job, or accumulated from jittered frames in GL slices.
+  const std::vector<MeasuredView> views = lab.judge()->measuredViews();
+  for (auto& view : views) m.images.push_back(host_.renderView(size, time, view.settings));
+  m.image = m.images.front();
+  std::vector<TruthRequest> requests;
+  std::vector<std::shared_ptr<const ImageF>> cached;
+  for (auto& view : views) {
+    requests.push_back(describeTruth(host_, size, time, view.settings));
+    cached.push_back(cachedTruth(requests.back().key));
+  }
+  if (std::all_of(cached.begin(), cached.end(), [](auto& c) { return bool(c); })) {
+    jobs.cancel(kJobKey);  // an older measurement would land after this one
+    finish(std::move(m), cached);
+    return {};
+  }
+  const std::string label = "truth for " + m.label;
+  if (spec.traced) return traceTruth(std::move(m), spec, requests.front(), label);
+  accumulateTruth(std::move(m), spec, requests, std::move(cached), views, label);
   return {};
 }
 

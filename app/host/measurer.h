@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "app/host/lab_host.h"
+#include "app/host/truth.h"
 
 namespace shadelab {
 
@@ -63,6 +64,13 @@ class Measurer {
 
  private:
   void finish(Measurement m, const std::vector<std::shared_ptr<const ImageF>>& truths);
+  // start()'s three ways to a truth, each ending in finish().
+  void waitForMeshTruth(Measurement m, const ReferenceSpec& spec);
+  std::string traceTruth(Measurement m, const ReferenceSpec& spec, const TruthRequest& request,
+                         const std::string& label);
+  void accumulateTruth(Measurement m, const ReferenceSpec& spec, const std::vector<TruthRequest>& requests,
+                       std::vector<std::shared_ptr<const ImageF>> cached, const std::vector<MeasuredView>& views,
+                       const std::string& label);
   std::shared_ptr<const ImageF> cachedTruth(const std::string& key) const;
   void cacheTruth(const std::string& key, std::shared_ptr<const ImageF> image);
   std::string labelOf(const Settings& settings);

@@ -200,15 +200,16 @@ void SoakDriver::afterFrame(LabHost& host, bool readPixels) {
   }
 }
 
-SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) const {
-  std::ostringstream rows, s;
+// The samples, and every lab entry beside them: a step (memory taken once and kept) and a ramp
+// (taken again and again) give the same slope over a short run, and only the series tells them
+// apart. "" or what could not be written.
+std::string SoakDriver::writeRecords(const fs::path& csv, const fs::path& entriesCsv) const {
+  std::ostringstream rows;
   rows << "seconds,resident_mb,gl_objects,jobs,frames,steps\n";
   for (auto& x : samples_)
     rows << formatNumber(x.seconds) << "," << formatNumber(x.residentMb) << "," << x.glObjects << "," << x.jobs << ","
          << x.frames << "," << x.steps << "\n";
   std::string written = writeTextFile(csv.string(), rows.str());
-  // Every lab entry beside it: a step (memory taken once and kept) and a ramp (taken again and
-  // again) give the same slope over a short run, and only the series tells them apart.
   std::vector<std::pair<std::string, const LabEntry*>> byTime;
   for (auto& [lab, entries] : entries_)
     for (auto& e : entries) byTime.emplace_back(lab, &e);
@@ -220,17 +221,16 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
               << formatNumber(e->heapMb) << "," << std::accumulate(e->glObjects.begin(), e->glObjects.end(), 0) << ","
               << formatNumber(e->resident.anonymousMb) << "," << formatNumber(e->resident.fileMb) << "," << e->programs
               << "," << csvField(e->left) << "\n";
-  const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
   if (written.empty()) written = writeTextFile(entriesCsv.string(), entryRows.str());
 
-  bool passed = written.empty() && nonFiniteFrames_ == 0 && glErrors_ == 0;
-  s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_
-    << " lab switches, " << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, "
-    << supersedes_ << " jobs superseded), " << frames_ << " frames\n";
-  s << "soak: " << nonFiniteFrames_ << " frames with NaN/Inf, " << glErrors_ << " GL errors\n";
+  return written;
+}
 
-  // Memory on lab entries after warm-up (the first fifth of the run): each entry as its growth
-  // over that lab's first entry after warm-up, and the least-squares slope of those over time.
+// Memory on lab entries after warm-up (the first fifth of the run): each entry as its growth
+// over that lab's first entry after warm-up, and the least-squares slope of those over time.
+// False when the slope is judged and missed its goal.
+bool SoakDriver::reportMemory(std::ostringstream& s, bool judgeSlope) const {
+  bool passed = true;
   const double warm = seconds() * 0.2;
   auto growthSlope = [&](auto mb, size_t& n) {
     std::vector<std::pair<double, double>> growth;
@@ -244,14 +244,6 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     }
     n = growth.size();
     return n >= 3 ? leastSquaresSlope(growth) * 600.0 : 0.0;  // MB per 10 minutes
-  };
-  auto total = [](const LabEntry& e) { return std::accumulate(e.glObjects.begin(), e.glObjects.end(), 0); };
-  auto kinds = [](const LabEntry& e) {
-    std::string d;
-    for (size_t k = 0; k < e.glObjects.size(); ++k)
-      if (e.glObjects[k])
-        d += (d.empty() ? "" : ", ") + std::to_string(e.glObjects[k]) + " " + gl::kindName(gl::Kind(k));
-    return d;
   };
   for (auto& [lab, entries] : entries_) {
     const LabEntry &first = entries.front(), &last = entries.back();
@@ -283,6 +275,46 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
     s << "soak: distinct programs linked: " << atWarm << " by the end of warm-up, " << atEnd
       << " by the last lab entry\n";
   }
+  return passed;
+}
+
+// GL objects: every entry into a lab must hold no more than the first did. False where one held more.
+bool SoakDriver::reportGlObjects(std::ostringstream& s) const {
+  auto total = [](const LabEntry& e) { return std::accumulate(e.glObjects.begin(), e.glObjects.end(), 0); };
+  auto kinds = [](const LabEntry& e) {
+    std::string d;
+    for (size_t k = 0; k < e.glObjects.size(); ++k)
+      if (e.glObjects[k])
+        d += (d.empty() ? "" : ", ") + std::to_string(e.glObjects[k]) + " " + gl::kindName(gl::Kind(k));
+    return d;
+  };
+  bool passed = true;
+  for (auto& [lab, entries] : entries_) {
+    const auto [least, most] =
+        std::minmax_element(entries.begin(), entries.end(), [&](auto& a, auto& b) { return total(a) < total(b); });
+    const bool same = total(*most) <= total(entries.front());
+    s << "soak: GL objects on entering " << lab << ": " << entries.size() << " entries, first "
+      << total(entries.front()) << ", min " << total(*least) << ", max " << total(*most);
+    if (same)
+      s << " (back to baseline)\n";
+    else
+      s << " (ABOVE the first entry: " << kinds(*most) << " against " << kinds(entries.front()) << ")\n";
+    passed = passed && same;
+  }
+  return passed;
+}
+
+SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) const {
+  std::ostringstream s;
+  const fs::path entriesCsv = csv.parent_path() / (csv.stem().string() + "-entries.csv");
+  const std::string written = writeRecords(csv, entriesCsv);
+  bool passed = written.empty() && nonFiniteFrames_ == 0 && glErrors_ == 0;
+  s << "soak: " << formatNumber(seconds() / 60.0) << " min, " << steps_ << " steps (" << labSwitches_
+    << " lab switches, " << shaderEdits_ << " shader files broken and fixed, " << meshLoads_ << " meshes loaded, "
+    << supersedes_ << " jobs superseded), " << frames_ << " frames\n";
+  s << "soak: " << nonFiniteFrames_ << " frames with NaN/Inf, " << glErrors_ << " GL errors\n";
+
+  passed = reportMemory(s, judgeSlope) && passed;
   // The entry furthest above its lab's median heap, and the lab it came from: memory the lab
   // before kept past the switch.
   const LabEntry* outlier = nullptr;
@@ -313,19 +345,7 @@ SoakDriver::Verdict SoakDriver::finish(const fs::path& csv, bool judgeSlope) con
   if (!slowestState_.empty())
     s << "soak: the longest step and frame (waits for jobs to end left out): " << formatNumber(slowestSeconds_)
       << " s, ending in " << slowestState_ << "\n";
-  // GL objects: every entry into a lab must hold no more than the first did.
-  for (auto& [lab, entries] : entries_) {
-    const auto [least, most] =
-        std::minmax_element(entries.begin(), entries.end(), [&](auto& a, auto& b) { return total(a) < total(b); });
-    const bool same = total(*most) <= total(entries.front());
-    s << "soak: GL objects on entering " << lab << ": " << entries.size() << " entries, first "
-      << total(entries.front()) << ", min " << total(*least) << ", max " << total(*most);
-    if (same)
-      s << " (back to baseline)\n";
-    else
-      s << " (ABOVE the first entry: " << kinds(*most) << " against " << kinds(entries.front()) << ")\n";
-    passed = passed && same;
-  }
+  passed = reportGlObjects(s) && passed;
   for (auto& p : problems_) s << "soak: problem: " << p << "\n";
   if (!written.empty()) s << "soak: " << written << "\n";
   s << "soak: samples in " << csv.string() << ", lab entries in " << entriesCsv.string() << "; "

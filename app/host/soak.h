@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,10 @@ class SoakDriver {
                                  // lab's others names what to reproduce
   };
   std::map<std::string, std::vector<LabEntry>> entries_;  // lab -> its entries in order
+  // finish()'s parts: the CSV files, the memory's slopes, the GL objects per lab entry.
+  std::string writeRecords(const std::filesystem::path& csv, const std::filesystem::path& entriesCsv) const;
+  bool reportMemory(std::ostringstream& s, bool judgeSlope) const;
+  bool reportGlObjects(std::ostringstream& s) const;
   std::vector<Sample> samples_;
   std::vector<std::string> problems_;  // bad frames and GL errors (the first few of each), one line each
 };

@@ -38,6 +38,8 @@ ShlGlProc webglProc(const char* name) {
 
 }  // namespace
 
+// JavaScript inside, which clang-format would take for C++:
+// clang-format off
 std::string copyLink(const std::string& fragment) {
   const std::string link =
       std::string(emscripten_run_script_string("location.origin + location.pathname")) + "#" + fragment;
@@ -46,20 +48,23 @@ std::string copyLink(const std::string& fragment) {
       {
         const url = UTF8ToString($0);
         history.replaceState(null, '', url);
-        if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() = > {});
+        if (navigator.clipboard) navigator.clipboard.writeText(url).catch(() => {});
       },
       link.c_str());
   return link;
 }
+// clang-format on
 
+// JavaScript inside, which clang-format would take for C++:
+// clang-format off
 void persistStudentFiles() {
   EM_ASM({
-    FS.syncfs(
-        false, (err) = > {
-          if (err) console.warn("shadelab: your shaders could not be kept in the browser's storage: " + err);
-        });
+    FS.syncfs(false, (err) => {
+      if (err) console.warn("shadelab: your shaders could not be kept in the browser's storage: " + err);
+    });
   });
 }
+// clang-format on
 
 const char* missingDataAdvice() {
   return "The page does not carry them (the desktop build fetches them with tools/get_data.sh); drop a mesh file "
@@ -68,6 +73,8 @@ const char* missingDataAdvice() {
 
 void waitForEvents(double) { glfwPollEvents(); }
 
+// JavaScript inside, which clang-format would take for C++:
+// clang-format off
 void offerDownload(const std::string& path) {
   // The file's bytes from the page's file system, as a Blob the browser saves under its name.
   // Module.shadelabSaved lists what was offered (the page's tests read the files back).
@@ -75,24 +82,21 @@ void offerDownload(const std::string& path) {
       {
         const path = UTF8ToString($0);
         const bytes = FS.readFile(path);
-        const type = path.endsWith('.png')    ? 'image/png'
-                     : path.endsWith('.json') ? 'application/json'
-                                              : 'application/octet-stream';
-        const url = URL.createObjectURL(new Blob([bytes], {
-          type:
-            type
-        }));
+        const type = path.endsWith('.png') ? 'image/png'
+                   : path.endsWith('.json') ? 'application/json' : 'application/octet-stream';
+        const url = URL.createObjectURL(new Blob([bytes], {type : type}));
         const a = document.createElement('a');
         a.href = url;
         a.download = path.substring(path.lastIndexOf('/') + 1);
         document.body.appendChild(a);
         a.click();
         a.remove();
-        setTimeout(() = > URL.revokeObjectURL(url), 10000);
+        setTimeout(() => URL.revokeObjectURL(url), 10000);
         Module.shadelabSaved = (Module.shadelabSaved || []).concat([path]);
       },
       path.c_str());
 }
+// clang-format on
 
 ShlGetProcAddress glProcLoader() { return webglProc; }
 

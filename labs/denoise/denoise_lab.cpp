@@ -244,9 +244,10 @@ DenoiseConfig DenoiseLab::config() const {
 ProgramSpec DenoiseLab::programSpec(Path path) const {
   ProgramSpec spec;
   spec.stages = {{GL_VERTEX_SHADER, "denoise/mesh.vert"}, {GL_FRAGMENT_SHADER, "denoise/mesh.frag"}};
-  static const char* pathNames[] = {"plain", "map", "attribute"};
+  static const char* pathNames[] = {"plain", "map", "attribute", "smoothed-on-gpu"};
   spec.name = std::string("denoise/") + pathNames[int(path)];
   if (path == Path::Map) spec.defines.emplace_back("DISPLACE_MAP", "1");
+  if (path == Path::SmoothedOnGpu) spec.defines.emplace_back("SMOOTHED_ON_GPU", "1");
   if (path == Path::Attribute) spec.defines.emplace_back("DISPLACE_ATTRIBUTE", "1");
   if (params.view.mode == DenoiseView::Offset)
     spec.defines.emplace_back("VIEW_SIGNED", "1");
@@ -259,7 +260,7 @@ std::vector<ProgramSpec> DenoiseLab::allPrograms() const {
   std::vector<ProgramSpec> all;
   DenoiseLab probe;
   for (int view = 0; view < 4; ++view)
-    for (Path path : {Path::Plain, Path::Map, Path::Attribute}) {
+    for (Path path : {Path::Plain, Path::Map, Path::Attribute, Path::SmoothedOnGpu}) {
       probe.params.view.mode = DenoiseView(view);
       all.push_back(probe.programSpec(path));
     }
@@ -348,6 +349,7 @@ void DenoiseLab::update(const Scene& scene, float) {
   requested_ = want;
   // Steps on the GPU run here, on the GL thread (a change of settings, not a frame, asks for them:
   // headless runs settle() on update() alone); the job takes their result and does the rest.
+  if (!smoothsOnGpu(want)) gpuDrawn_ = false;  // the GPU's texture is not what this job computes
   submit(want, smoothsOnGpu(want) ? std::make_shared<const SmoothedElsewhere>(smoothOnGpu(want)) : nullptr);
 }
 
@@ -384,11 +386,21 @@ SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {
   SmoothingSettings s = c.smoothing;
   s.method = c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin : SmoothingMethod::Explicit;
   const GpuSmoothing run = gpu_.run(*shaders_, s);
+  // Drawn from the smoother's texture until the job's result arrives: each render vertex at the
+  // texel of the vertex it was smoothed as (its welded vertex, or itself without weld).
+  if (!gpuDrawn_ || gpuDrawnWelded_ != c.weld) {
+    std::vector<float> index(model_->render.positions.size());
+    for (size_t v = 0; v < index.size(); ++v) index[v] = float(c.weld ? model_->welded.logicalOf[v] : uint32_t(v));
+    plainMesh_.setScalars(kScalar0, index);  // exact: float holds every index below 2^24
+    gpuDrawnWelded_ = c.weld;
+  }
+  gpuDrawn_ = true;
   return {gpu_.readPositions(), run.energy, run.grewAt, run.stoppedAt, run.ms};
 }
 
 void DenoiseLab::upload(DenoiseResult r) {
   result_ = std::make_unique<DenoiseResult>(std::move(r));
+  gpuDrawn_ = false;  // the result's own positions, from here on
   const DenoiseResult& res = *result_;
   attributeMesh_.updatePositions(res.noisy);
   attributeMesh_.updateNormals(res.noisyNormals);
@@ -498,6 +510,12 @@ void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::iv
     prog.set("u_bias", result_->map->bias);
     prog.set("u_scale", result_->map->scale);
   }
+  if (path == Path::SmoothedOnGpu) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, gpu_.positionTexture());
+    prog.set("u_smoothed", 0);
+    prog.set("u_centre", glm::vec3(gpu_.centre()));
+  }
   if (style == Style::Marker) {
     if (!gl::esContext()) glEnable(GL_PROGRAM_POINT_SIZE);  // WebGL2 always takes gl_PointSize
     glDisable(GL_DEPTH_TEST);
@@ -514,9 +532,13 @@ void DenoiseLab::render(Frame& frame) {
   glClearColor(0.02f, 0.02f, 0.025f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (!model_) return;
-  if (!result_) {  // the first result is on its way (the jobs bar shows it): the input meanwhile
-    auto pass = frame.pass("draw: noisy input (smoothing in progress)");
-    drawPanel(frame, Path::Plain, plainMesh_, {0, 0, frame.size().x, frame.size().y});
+  const bool fromGpu = gpuDrawn_ && params.view.show == DenoiseShow::Smoothed;
+  if (!result_ || fromGpu) {
+    // The first result is on its way (the jobs bar shows it): the input meanwhile, or what the
+    // GPU smoothed, straight from its texture, while the job measures it.
+    auto pass =
+        frame.pass(fromGpu ? "draw: smoothed, from the GPU's texture" : "draw: noisy input (smoothing in progress)");
+    drawPanel(frame, fromGpu ? Path::SmoothedOnGpu : Path::Plain, plainMesh_, {0, 0, frame.size().x, frame.size().y});
     return;
   }
   const glm::ivec2 size = frame.size();

@@ -83,7 +83,7 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   std::vector<SweepAxis> standardSweep() const override;
 
  private:
-  enum class Path { Plain, Map, Attribute };
+  enum class Path { Plain, Map, Attribute, SmoothedOnGpu };
   DenoiseConfig config() const;
   ProgramSpec programSpec(Path path) const;
   void rebuildModel(const Scene& scene);
@@ -100,7 +100,7 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
 
   ShaderLibrary* shaders_ = nullptr;
   JobRunner* jobs_ = nullptr;
-  ProgramSlot programs_[3];  // by Path
+  ProgramSlot programs_[4];  // by Path
   int modelRevision_ = -1;   // scene revision the model was built from
   std::string modelScene_;
   bool sceneIsFile_ = false;  // a user's file, not one of the lab's scenes
@@ -123,6 +123,10 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
     bool operator==(const GpuInput&) const = default;
   };
   std::optional<GpuInput> gpuInput_;
+  // The smoother's last run is newer than the result drawn: the smoothed mesh is drawn from its
+  // texture (no read-back) until the job's result arrives. plainMesh_'s kScalar0 holds each
+  // vertex's texel index, for weld on or off.
+  bool gpuDrawn_ = false, gpuDrawnWelded_ = true;
   gl::Texture2D mapTexture_, mapPreview_;
   std::string lastAction_;
   // What the GPU meshes hold now: re-uploaded when the show or view changes, not per frame.

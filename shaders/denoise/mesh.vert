@@ -7,6 +7,9 @@
 //                     the copies part and the mesh cracks.
 //   DISPLACE_ATTRIBUTE the same offsets per vertex, as an attribute: copies that share a
 //                     position share the offset (computed on the welded mesh), so nothing parts.
+//   SMOOTHED_ON_GPU   the smoothed positions straight from the GPU smoother's texture, at the
+//                     vertex's index there (labs/denoise/gpu_smoother.h): no read-back to draw
+//                     them, while the job that measures them still runs.
 // Read next: apply_map.glsl (the map's lookup), mesh.frag (flat shading and the heat views),
 // labs/denoise/displacement_bake.h.
 #ifdef DISPLACE_MAP
@@ -16,7 +19,13 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;    // the noisy surface's normal: the direction offsets move along
 layout(location = 2) in vec2 a_uv;
+#ifdef SMOOTHED_ON_GPU
+layout(location = 4) in float a_vertex;   // the index of this vertex's texel in u_smoothed
+uniform sampler2D u_smoothed;             // .xyz relative to u_centre, 1024 texels a row
+uniform vec3 u_centre;
+#else
 layout(location = 4) in float a_offset;   // DISPLACE_ATTRIBUTE
+#endif
 layout(location = 5) in float a_heat;     // the view's scalar: error, offset or seam gap
 
 uniform mat4 u_viewProj;
@@ -27,7 +36,10 @@ out float v_heat;
 
 void main() {
   vec3 p = a_position;
-#if defined(DISPLACE_MAP)
+#if defined(SMOOTHED_ON_GPU)
+  int i = int(a_vertex);
+  p = texelFetch(u_smoothed, ivec2(i & 1023, i >> 10), 0).xyz + u_centre;
+#elif defined(DISPLACE_MAP)
   p = displacedByMap(p, a_normal, a_uv);
 #elif defined(DISPLACE_ATTRIBUTE)
   p += a_normal * a_offset;

@@ -112,8 +112,9 @@ grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" 
   { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
-# The exercises added since: each starter checked in the page, told it is the starter, not passed.
-for exercise in filtering/mip-level filtering/trilinear shading/perspective-correct shadows/pcss-penumbra shadows/shadow-lookup shadows/point-light surface/displacement surface/normal-map surface/screen-tbn; do
+# One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
+# each starter checked in the page, told it is the starter, not passed.
+for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
   name=check-${exercise//\//-}
   file=$(cd "$repo/exercises/$exercise/starter" && find . -type f | sed 's|^\./||' | head -1)
   starter=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$repo/exercises/$exercise/starter/$file")
