@@ -7,6 +7,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/options.h"
+#include "app/grade/rubric.h"
 #include "app/util/process_memory.h"
 #ifdef SHADELAB_HAS_WINDOW
 #include "app/ui/window_app.h"
@@ -66,6 +67,7 @@ int run(int argc, char** argv) {
     std::printf("%s", usage().c_str());
     return 0;
   }
+  setCourseFolders({o.exerciseDirs.begin(), o.exerciseDirs.end()});
   if (o.command == "render") return runRender(o);
   if (o.command == "sweep") return runSweep(o);
   if (o.command == "stress") return runStress(o);
@@ -75,6 +77,7 @@ int run(int argc, char** argv) {
   if (o.command == "grade") return runGrade(o);
   if (o.command == "random") return runRandom(o);
   if (o.command == "soak") return runSoak(o);
+  if (o.command == "exercise") return runExercise(o);
 
 #ifdef SHADELAB_HAS_WINDOW
   const int rc = runWindow(o, window);

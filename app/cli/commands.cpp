@@ -105,10 +105,12 @@ int runList(const Options& o) {
     for (auto& id : missing) ids += (ids.empty() ? "" : ", ") + id;
     std::printf("  not here (their files are not downloaded; %s fetches them): %s\n", kGetDataCommand, ids.c_str());
   }
-  std::printf("\nexercises (shadelab grade --exercise ID --shaders DIR; %s):\n", exercisesRoot().c_str());
-  for (auto& id : listExercises(exercisesRoot())) {
+  std::string roots;
+  for (auto& r : exerciseRoots()) roots += (roots.empty() ? "" : ", ") + r.string();
+  std::printf("\nexercises (shadelab grade --exercise ID --shaders DIR; from %s):\n", roots.c_str());
+  for (auto& id : listExercises()) {
     Exercise ex;
-    const std::string err = loadExercise(exercisesRoot(), id, ex);
+    const std::string err = loadExercise(id, ex);
     if (err.empty())
       std::printf("  %-26s %-13s %s\n", id.c_str(), ex.level.c_str(), ex.title.c_str());
     else

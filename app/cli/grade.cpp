@@ -12,6 +12,7 @@
 #include "app/cli/grade_student.h"
 #include "app/grade/configuration_frames.h"
 #include "app/grade/diagnosis.h"
+#include "app/grade/gradebooks.h"
 #include "app/grade/grading.h"
 #include "app/grade/watchdog.h"
 #include "app/measure/report.h"
@@ -60,7 +61,7 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
 std::string gradeExercise(const std::string& id, const StudentGrading& g, ExerciseResult& out, std::string& renderer,
                           CacheCount& cache) {
   Exercise ex;
-  if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
+  if (auto e = loadExercise(id, ex); !e.empty()) return e;
   out = ExerciseResult{};
   out.id = ex.id;
   out.title = ex.title;
@@ -156,7 +157,7 @@ std::string prepareSolutions(const std::vector<std::string>& ids, const std::str
                              const SolutionCache& cache, const fs::path& scratch, CacheCount& count) {
   for (auto& id : ids) {
     Exercise ex;
-    if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
+    if (auto e = loadExercise(id, ex); !e.empty()) return e;
     for (size_t i = 0; i < ex.configurations.size(); ++i) {
       ConfigurationJob job{
           &ex,     &ex.configurations[i],
@@ -187,8 +188,10 @@ int runGrade(const Options& o) {
   if (o.shaderDirs.empty())
     return cannotGrade("--shaders DIR is required: the folder holding the student's shader files");
   if (o.jobs != 1 || o.shards != 1) return cannotGrade("--jobs and --shard are for a class (--class DIR)");
-  std::vector<std::string> ids = o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
-  if (ids.empty()) return cannotGrade("no exercises in " + exercisesRoot().string());
+  if (!o.format.empty() && o.format != "gradescope")
+    return cannotGrade("--format " + o.format + " is a class's gradebook (--class DIR); one student: gradescope");
+  std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
+  if (ids.empty()) return cannotGrade("no exercises in " + builtinExercisesRoot().string() + " or a course folder");
 
   // The report folder: fresh, and never inside what is being graded (the student's folder is only read).
   fs::path dir =
@@ -216,6 +219,11 @@ int runGrade(const Options& o) {
   for (auto& d : o.shaderDirs) report.command += " --shaders " + d.string();
   CacheCount cache;
   if (auto e = gradeStudent(ids, g, report, cache); !e.empty()) return cannotGrade(e);
+  if (o.format == "gradescope") {
+    const nlohmann::json results = gradescopeResults(nlohmann::json::parse(gradeJson(report)));
+    if (auto e = writeTextFile((dir / "results.json").string(), results.dump(2) + "\n"); !e.empty())
+      return cannotGrade(e);
+  }
 
   double earned = 0, total = 0;
   bool passed = true;
@@ -231,7 +239,8 @@ int runGrade(const Options& o) {
   if (g.cache.enabled())
     std::printf("solutions: %d of %d configurations from the cache (%s)\n", cache.fromCache,
                 cache.fromCache + cache.rendered, g.cache.dir().c_str());
-  std::printf("report: %s (also report.md, report.json)\n", (dir / "report.html").c_str());
+  std::printf("report: %s (also report.md, report.json%s)\n", (dir / "report.html").c_str(),
+              o.format == "gradescope" ? ", results.json for Gradescope" : "");
   return passed ? 0 : 1;
 }
 

@@ -28,6 +28,7 @@
 #include "app/cli/grade_student.h"
 #include "app/cli/submissions.h"
 #include "app/grade/class_report.h"
+#include "app/grade/gradebooks.h"
 #include "app/grade/rubric.h"
 #include "app/measure/report.h"
 #include "app/util/output_files.h"
@@ -87,7 +88,7 @@ struct Summary {
 // student whose report is missing (the grader itself failed on it) gets a "crashed" row per
 // exercise. "" or why the outputs could not be written.
 std::string writeClassOutputs(const fs::path& out, const std::vector<std::string>& ids,
-                              const std::vector<std::string>& students, Summary& summary) {
+                              const std::vector<std::string>& students, const std::string& format, Summary& summary) {
   std::vector<ClassRow> rows;
   for (auto& s : students) {
     const fs::path report = out / "students" / s / "report.json";
@@ -108,6 +109,8 @@ std::string writeClassOutputs(const fs::path& out, const std::vector<std::string
   for (auto& [name, text] :
        {std::pair{"gradebook.csv", gradebookCsv(rows)}, std::pair{"class.html", classHtml(rows, out / "students")}})
     if (auto e = writeTextFile((out / name).string(), text); !e.empty()) return e;
+  if (format == "moodle") return writeTextFile((out / "moodle.csv").string(), moodleCsv(rows));
+  if (format == "canvas") return writeTextFile((out / "canvas.csv").string(), canvasCsv(rows));
   return {};
 }
 
@@ -145,11 +148,12 @@ int runGradeClass(const Options& o) {
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
   if (!o.shaderDirs.empty())
     return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
-  const std::vector<std::string> ids =
-      o.allExercises ? listExercises(exercisesRoot()) : std::vector<std::string>{o.exercise};
+  if (o.format == "gradescope")
+    return cannotGrade("--format gradescope is one student's results.json (no --class); a class: moodle or canvas");
+  const std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
   for (auto& id : ids) {
     Exercise ex;
-    if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return cannotGrade(e);
+    if (auto e = loadExercise(id, ex); !e.empty()) return cannotGrade(e);
   }
   std::vector<Submission> all;
   if (auto e = listSubmissions(o.classDir, all); !e.empty()) return cannotGrade(e);
@@ -214,7 +218,7 @@ int runGradeClass(const Options& o) {
   std::vector<std::string> names;
   for (auto& s : mine) names.push_back(s.name);
   Summary summary;
-  if (auto e = writeClassOutputs(out, ids, names, summary); !e.empty()) return cannotGrade(e);
+  if (auto e = writeClassOutputs(out, ids, names, o.format, summary); !e.empty()) return cannotGrade(e);
   if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, o.shard, o.shards, names).dump(2) + "\n");
       !e.empty())
     return cannotGrade(e);
@@ -289,7 +293,7 @@ int runGradeMerge(const Options& o) {
     if (ec) return cannotGrade("merge: " + (from[s] / "students" / s).string() + ": " + ec.message());
   }
   Summary summary;
-  if (auto e = writeClassOutputs(out, ids, students, summary); !e.empty()) return cannotGrade(e);
+  if (auto e = writeClassOutputs(out, ids, students, o.format, summary); !e.empty()) return cannotGrade(e);
   if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, 1, 1, students).dump(2) + "\n"); !e.empty())
     return cannotGrade(e);
   printSummary(out, summary);

@@ -1,6 +1,7 @@
 #include "app/cli/options.h"
 
 #include <cstdlib>
+#include <filesystem>
 
 #include "app/util/format.h"
 
@@ -30,6 +31,11 @@ commands:
                   a class:  --class DIR (each subfolder or .zip one student) [--jobs N] [--shard i/n]:
                   gradebook.csv, a class page and every student's report; exit 0 when all were graded
   grade merge     join the outputs of --shard runs:  grade merge DIR... --out DIR
+  exercise check [ID | DIR]
+                  an exercise (an id, an exercise's folder, or a course folder: all of it; none: every
+                  exercise) checked before it goes out: its rubric, its starter against the lab's file,
+                  and the solution, starter, listed mistakes and correct variants graded as a class;
+                  one line per problem, exit 1 if any
 
 options:
   --lab ID            lab to run (see `shadelab list`)
@@ -50,9 +56,14 @@ options:
   --measure           measure the frame against the lab's ground truth (render: printed and in the JSON;
                       the window: as if Measure were pressed)
   --exercise ID       grade: the exercise (see `shadelab list`), e.g. shadows/pcf
+  --exercises DIR     a course folder of exercises, laid out as exercises/ (repeatable; searched first,
+                      before the built-in ones): the window, list, grade, grade --class and exercise check
   --all               grade: every exercise
   --watchdog SECONDS  grade: how long the student's shader may take per configuration (default 20)
   --class DIR         grade: every submission in DIR (a folder or a .zip per student)
+  --format F          grade: also write the grades where a course keeps them: gradescope (one student:
+                      results.json, Gradescope's autograder results), moodle or canvas (a class:
+                      moodle.csv or canvas.csv, the CSV their gradebooks import)
   --jobs N            grade --class: submissions graded at a time (default 1)
   --shard i/n         grade --class: grade the i-th of n deterministic slices (1 <= i <= n), for array jobs
   --cache DIR         grade: keep the solution's frames and truths here (default $SHADELAB_CACHE/solutions
@@ -88,7 +99,7 @@ std::string parseSize(const std::string& option, const std::string& text, glm::i
 
 std::string parseOptions(int argc, char** argv, Options& o) {
   static const char* kCommands[] = {"render",  "sweep", "stress", "list", "check-shaders",
-                                    "compare", "grade", "random", "soak"};
+                                    "compare", "grade", "random", "soak", "exercise"};
   int i = 1;
   if (i < argc && argv[i][0] != '-') {
     o.command = argv[i++];
@@ -96,7 +107,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     for (auto c : kCommands) known |= o.command == c;
     if (!known)
       return "unknown command '" + o.command +
-             "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak)";
+             "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak, exercise)";
   }
   for (; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -118,7 +129,8 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     }
     if (arg.rfind("--", 0) != 0) {
       const bool merge = o.command == "grade" && (!o.positional.empty() ? o.positional[0] == "merge" : arg == "merge");
-      if (o.command != "compare" && !merge) return "unexpected argument '" + arg + "' (see --help)";
+      if (o.command != "compare" && o.command != "exercise" && !merge)
+        return "unexpected argument '" + arg + "' (see --help)";
       o.positional.push_back(arg);
       continue;
     }
@@ -151,9 +163,19 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.out = v;
     else if (arg == "--exercise")
       o.exercise = v;
-    else if (arg == "--class")
+    else if (arg == "--exercises") {
+      std::error_code ec;
+      if (!std::filesystem::is_directory(v, ec))
+        return "--exercises: '" + v +
+               "' is not a folder (a course folder is laid out as exercises/: LAB/NAME/rubric.json)";
+      o.exerciseDirs.push_back(v);
+    } else if (arg == "--class")
       o.classDir = v;
-    else if (arg == "--cache")
+    else if (arg == "--format") {
+      if (v != "gradescope" && v != "moodle" && v != "canvas")
+        return "--format: invalid value '" + v + "' (valid: gradescope, moodle, canvas)";
+      o.format = v;
+    } else if (arg == "--cache")
       o.cacheDir = v;
     else if (arg == "--jobs") {
       long n = 0;
@@ -201,7 +223,9 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, "
              "--frames, --shaders, "
-             "--backend, --dialect, --out, --measure, --exercise, --all, --watchdog, --class, --jobs, --shard, "
+             "--backend, --dialect, --out, --measure, --exercise, --exercises, --format, --all, --watchdog, --class, "
+             "--jobs, "
+             "--shard, "
              "--cache, --no-cache, --count, "
              "--seed, --minutes)";
     }

@@ -28,10 +28,12 @@ struct Options {
   float time = 0.0f;
   int frames = 5;  // timed frames per configuration (medians)
   int warmup = 2;
-  bool measure = false;            // render: measure against the lab's truth too
-  std::string exercise;            // grade: --exercise lab/name
-  bool allExercises = false;       // grade: --all
-  double watchdog = 20.0;          // grade: seconds a student's frames may take
+  bool measure = false;                   // render: measure against the lab's truth too
+  std::string exercise;                   // grade: --exercise lab/name
+  std::vector<std::string> exerciseDirs;  // --exercises DIR (repeatable): course folders, before exercises/
+  std::string format;         // grade: gradescope (one student), moodle or canvas (a class); "": ShadeLab's own only
+  bool allExercises = false;  // grade: --all
+  double watchdog = 20.0;     // grade: seconds a student's frames may take
   std::filesystem::path classDir;  // grade: --class DIR, one submission per folder or .zip
   int jobs = 1;                    // grade --class: submissions graded at a time
   int shard = 1, shards = 1;       // grade --class: --shard i/n

@@ -39,12 +39,15 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   error_.clear();
   result_ = ExerciseResult{};
   Exercise ex;
-  if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return error_ = e;
+  if (auto e = loadExercise(id, ex); !e.empty()) return error_ = e;
   exercise_ = std::move(ex);
   studentDirs_ = std::move(studentDirs);
   // The kept solutions (and mistakes) hold only while the built-in shaders and the exercises (rubrics,
   // starters) they were drawn from are unchanged.
-  const std::string hash = ContentHash().addTree(builtinShaderDir()).add("\nexercises ").addTree(exercisesRoot()).hex();
+  ContentHash content;
+  content.addTree(builtinShaderDir());
+  for (const auto& root : exerciseRoots()) content.add("\nexercises ").addTree(root);
+  const std::string hash = content.hex();
   if (hash != shadersHash_) solutions_.clear();
   shadersHash_ = hash;
   result_.id = exercise_.id;

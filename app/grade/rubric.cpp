@@ -65,9 +65,53 @@ double Exercise::totalPoints() const {
   return sum;
 }
 
-fs::path exercisesRoot() {
-  if (const char* env = std::getenv("SHADELAB_EXERCISES"); env && *env) return env;
-  return fs::path(SHADELAB_SOURCE_DIR) / "exercises";
+namespace {
+std::vector<fs::path>& courseFolders() {
+  static std::vector<fs::path> folders;
+  return folders;
+}
+}  // namespace
+
+void setCourseFolders(std::vector<fs::path> folders) { courseFolders() = std::move(folders); }
+
+fs::path builtinExercisesRoot() { return fs::path(SHADELAB_SOURCE_DIR) / "exercises"; }
+
+std::vector<fs::path> exerciseRoots() {
+  std::vector<fs::path> roots = courseFolders();
+  if (const char* env = std::getenv("SHADELAB_EXERCISES"); env && *env) {
+    std::string list = env;
+    for (size_t at = 0; at <= list.size();) {
+      const size_t end = std::min(list.find(':', at), list.size());
+      if (end > at) roots.emplace_back(list.substr(at, end - at));
+      at = end + 1;
+    }
+  }
+  roots.push_back(builtinExercisesRoot());
+  return roots;
+}
+
+std::vector<std::string> listExercises() {
+  std::vector<std::string> ids;
+  for (const fs::path& root : exerciseRoots())
+    for (std::string& id : listExercises(root)) ids.push_back(std::move(id));
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+fs::path exerciseRootOf(const std::string& id) {
+  std::error_code ec;
+  if (id.find("..") == std::string::npos)
+    for (const fs::path& root : exerciseRoots())
+      if (fs::is_regular_file(root / id / "rubric.json", ec)) return root;
+  return {};
+}
+
+std::string loadExercise(const std::string& id, Exercise& out) {
+  if (const fs::path root = exerciseRootOf(id); !root.empty()) return loadExercise(root, id, out);
+  std::string valid;
+  for (auto& e : listExercises()) valid += (valid.empty() ? "" : ", ") + e;
+  return "unknown exercise '" + id + "' (valid: " + (valid.empty() ? "none" : valid) + ")";
 }
 
 std::vector<std::string> listExercises(const fs::path& root) {
@@ -202,12 +246,13 @@ bool checkExists(const std::vector<Configuration>& all, const Configuration& her
   return has(here, ref);
 }
 
+// A mistake, or (`correct`) a right answer written differently, which has no diagnosis.
 std::string loadMistake(const nlohmann::json& j, const std::string& where, const std::vector<std::string>& files,
-                        Mistake& m) {
+                        Mistake& m, bool correct = false) {
   if (!j.is_object()) return where + ": not an object";
   if (!text(j, "name", m.name) || m.name.empty()) return where + ": \"name\" is missing";
   const std::string at = where + " (" + m.name + ")";
-  if (!text(j, "diagnosis", m.diagnosis) || m.diagnosis.empty())
+  if (!correct && (!text(j, "diagnosis", m.diagnosis) || m.diagnosis.empty()))
     return at + ": \"diagnosis\" is missing: one sentence naming the cause and the fix";
   m.file = files.front();
   if (text(j, "file", m.file) && std::find(files.begin(), files.end(), m.file) == files.end())
@@ -339,6 +384,19 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
       std::string source;
       if (auto e = mistakeSource(out, m, source); !e.empty()) return e;
       out.mistakes.push_back(std::move(m));
+    }
+  }
+  if (j.contains("correct")) {
+    if (!j["correct"].is_array()) return where + ": \"correct\" must be an array";
+    for (size_t i = 0; i < j["correct"].size(); ++i) {
+      Mistake m;
+      const std::string at = where + ": correct[" + std::to_string(i) + "]";
+      if (auto e = loadMistake(j["correct"][i], at, out.files, m, true); !e.empty()) return e;
+      if (std::any_of(out.correct.begin(), out.correct.end(), [&](const Mistake& o) { return o.name == m.name; }))
+        return at + ": the name '" + m.name + "' is used twice";
+      std::string source;
+      if (auto e = mistakeSource(out, m, source); !e.empty()) return e;
+      out.correct.push_back(std::move(m));
     }
   }
   return {};

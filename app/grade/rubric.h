@@ -92,15 +92,31 @@ struct Exercise {
   glm::ivec2 size{320, 240};
   std::vector<Configuration> configurations;
   std::vector<Mistake> mistakes;  // the starter first, then the rubric's in order
+  // Right answers written differently from the lab's file (other loop forms, another but equal
+  // formula): each must score full marks with no diagnosis, or the rubric is too tight. Their
+  // `diagnosis` is empty.
+  std::vector<Mistake> correct;
   double totalPoints() const;
 };
 
-// exercises/ in the source tree (or $SHADELAB_EXERCISES).
-std::filesystem::path exercisesRoot();
+// Where exercises come from: course folders, in the order given (`--exercises DIR`, repeatable,
+// then the folders of $SHADELAB_EXERCISES, separated by ':'), then the built-in exercises/. A
+// course folder is laid out as exercises/ is (LAB/NAME/rubric.json, statement.md, starter/); an
+// id in an earlier folder hides the same id in a later one, so a course can also replace a
+// built-in exercise. Its files are read only inside it, as a student's are.
+void setCourseFolders(std::vector<std::filesystem::path> folders);
+std::vector<std::filesystem::path> exerciseRoots();
+std::filesystem::path builtinExercisesRoot();  // exercises/ in the source tree
 // Every exercise id under `root`, sorted ("shading/blinn-phong", ...).
 std::vector<std::string> listExercises(const std::filesystem::path& root);
+// Every exercise id over exerciseRoots(), sorted, each once.
+std::vector<std::string> listExercises();
 // Reads root/<id>/rubric.json. "" on success, else one line naming the file and the key.
 std::string loadExercise(const std::filesystem::path& root, const std::string& id, Exercise& out);
+// The same from the first of exerciseRoots() that holds `id`.
+std::string loadExercise(const std::string& id, Exercise& out);
+// That root, or an empty path where none holds `id`.
+std::filesystem::path exerciseRootOf(const std::string& id);
 
 // The text of the mistake's file: the starter with its TODO region replaced, or the lab's own file
 // with `find` replaced. "" on success, else one line naming the rubric's mistake and what is wrong.

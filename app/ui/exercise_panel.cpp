@@ -30,7 +30,7 @@ std::vector<fs::path> studentFolders(LabHost& host) {
 // the lab switched to the exercise's and its first file opened in the editor.
 std::string openStarter(const std::string& id, LabHost& host, ShaderEditor& editor) {
   Exercise ex;
-  if (auto e = loadExercise(exercisesRoot(), id, ex); !e.empty()) return e;
+  if (auto e = loadExercise(id, ex); !e.empty()) return e;
   if (host.lab().id() != ex.lab)
     if (auto e = host.selectLab(ex.lab); !e.empty()) return e;
   std::vector<std::string> copied, kept;
@@ -55,36 +55,43 @@ const ImVec4 kPass{0.45f, 0.85f, 0.45f, 1.0f}, kPartial{0.95f, 0.8f, 0.3f, 1.0f}
 
 void ExercisePanel::select(const std::string& id) {
   selected = id;
-  statement = readWholeFile(exercisesRoot() / id / "statement.md");
+  statement = readWholeFile(exerciseRootOf(id) / id / "statement.md");
 }
 
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
   if (!panel.listed) {  // once: the exercises ship with the program
-    // Grouped as exercises/README.md lists them: per lab, the guided exercises before those written
-    // from scratch.
+    // A course's exercises first, under its folder's name; then as exercises/README.md lists
+    // them: per lab, the guided exercises before those written from scratch.
     struct Entry {
-      std::string lab, level, id;
+      std::string course, lab, level, id;
     };
     std::vector<Entry> entries;
-    for (auto& id : listExercises(exercisesRoot())) {
+    const std::filesystem::path builtin = builtinExercisesRoot();
+    for (auto& id : listExercises()) {
       Exercise ex;
-      const bool loaded = loadExercise(exercisesRoot(), id, ex).empty();
-      entries.push_back({id.substr(0, id.find('/')), loaded ? ex.level : "", id});
+      const bool loaded = loadExercise(id, ex).empty();
+      const std::filesystem::path root = exerciseRootOf(id);
+      const std::string course = root == builtin ? "" : root.filename().string();
+      entries.push_back({course, id.substr(0, id.find('/')), loaded ? ex.level : "", id});
     }
     const auto rank = [](const Entry& e) { return e.level == "guided" ? 0 : e.level == "from-scratch" ? 1 : 2; };
     std::stable_sort(entries.begin(), entries.end(), [&](const Entry& a, const Entry& b) {
-      return std::tuple(a.lab, rank(a), a.id) < std::tuple(b.lab, rank(b), b.id);
+      return std::tuple(a.course.empty(), a.course, a.lab, rank(a), a.id) <
+             std::tuple(b.course.empty(), b.course, b.lab, rank(b), b.id);
     });
     for (size_t i = 0; i < entries.size(); ++i) {
       const Entry& e = entries[i];
-      const bool first = i == 0 || e.lab != entries[i - 1].lab || e.level != entries[i - 1].level;
-      panel.headers.push_back(first ? e.lab + (e.level.empty() ? "" : ": " + e.level) : "");
+      const bool first =
+          i == 0 || e.course != entries[i - 1].course || e.lab != entries[i - 1].lab || e.level != entries[i - 1].level;
+      const std::string title =
+          (e.course.empty() ? "" : e.course + " / ") + e.lab + (e.level.empty() ? "" : ": " + e.level);
+      panel.headers.push_back(first ? title : "");
       panel.ids.push_back(e.id);
     }
     panel.listed = true;
   }
   if (panel.ids.empty()) {
-    ImGui::TextDisabled("No exercises in %s.", exercisesRoot().c_str());
+    ImGui::TextDisabled("No exercises in %s.", builtinExercisesRoot().c_str());
     return;
   }
   if (panel.reveal) {  // a Check runs: its results in view, below the section's top

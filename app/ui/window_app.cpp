@@ -358,7 +358,7 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   note(applyCamera(host, options.camera));
   if (!options.exercise.empty()) {  // --exercise (the page's link): the Exercises section opens on it
     Exercise ex;
-    if (auto e = loadExercise(exercisesRoot(), options.exercise, ex); !e.empty())
+    if (auto e = loadExercise(options.exercise, ex); !e.empty())
       note(e);
     else
       app.exercises.select(ex.id);

@@ -57,7 +57,7 @@ TEST_F(Check, TheLabsOwnFileScoresFullMarks) {
 }
 
 TEST_F(Check, TheStarterScoresNothingAndEveryCheckSaysWhy) {
-  submit(readWholeFile(exercisesRoot() / kExercise / "starter" / kFile));
+  submit(readWholeFile(builtinExercisesRoot() / kExercise / "starter" / kFile));
   ExerciseCheck check;
   const ExerciseResult& r = run(check);
   EXPECT_FALSE(r.passed());
@@ -109,7 +109,7 @@ TEST_F(Check, AFileThatDoesNotCompileIsNamedAtItsLine) {
 // and then Check grades what was copied.
 TEST_F(Check, TheStarterIsCopiedOnlyWhereTheStudentHasNoFile) {
   Exercise ex;
-  ASSERT_EQ(loadExercise(exercisesRoot(), kExercise, ex), "");
+  ASSERT_EQ(loadExercise(kExercise, ex), "");
   fs::remove_all(student);
   std::vector<std::string> copied, kept;
   ASSERT_EQ(copyStarter(ex, student, copied, kept), "");

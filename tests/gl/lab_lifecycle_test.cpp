@@ -432,7 +432,8 @@ TEST(Host, BadInputKeepsLastGoodState) {
   ASSERT_EQ(host.selectScene("sphere"), "");
   EXPECT_NE(host.selectScene("/no/such/file.obj"), "");
   EXPECT_EQ(host.sceneId(), "sphere");
-  EXPECT_EQ(host.selectLab("nope"), "unknown lab 'nope' (valid: shading, shadows, surface, denoise, filtering)");
+  EXPECT_EQ(host.selectLab("nope"),
+            "unknown lab 'nope' (valid: shading, shadows, surface, denoise, filtering, minimal)");
   EXPECT_EQ(host.lab().id(), "shading");
   nlohmann::json bad = {{"params", {{"mode", "phong"}, {"shininess", 99999}}}};
   host.set("shading.mode=flat");

@@ -75,13 +75,13 @@ void writeZip(const fs::path& zipFile, const std::map<std::string, std::string>&
 // The PCF rubric's points in all.
 double pcfTotal() {
   Exercise ex;
-  EXPECT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
+  EXPECT_EQ(loadExercise("shadows/pcf", ex), "");
   return ex.totalPoints();
 }
 
 size_t pcfConfigurations() {
   Exercise ex;
-  EXPECT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
+  EXPECT_EQ(loadExercise("shadows/pcf", ex), "");
   return ex.configurations.size();
 }
 
@@ -95,7 +95,7 @@ std::map<std::string, Expected> makeClass(const fs::path& dir, bool withSlowOnes
   const std::string solution = readText(builtinShaderDir() / "shadows/pcf.glsl");
   writeText(dir / "ana/shadows/pcf.glsl", solution);
   Exercise ex;
-  EXPECT_EQ(loadExercise(exercisesRoot(), "shadows/pcf", ex), "");
+  EXPECT_EQ(loadExercise("shadows/pcf", ex), "");
   fs::copy(ex.dir / "starter", dir / "ben", fs::copy_options::recursive);
   // The bias with the wrong sign: acne everywhere (tests/grade's seeded mistake).
   writeText(dir / "cara/shadows/pcf.glsl",
@@ -246,7 +246,7 @@ TEST(GradeClass, ASecondRunTakesTheSolutionsFromTheCacheAndAChangedBuiltInFileMi
   writeText(cls / "ana/shadows/pcf.glsl", readText(builtinShaderDir() / "shadows/pcf.glsl"));
   // The built-in shaders and exercises, copied so that they can be changed.
   fs::copy(builtinShaderDir(), root / "shaders", fs::copy_options::recursive);
-  fs::copy(exercisesRoot(), root / "exercises", fs::copy_options::recursive);
+  fs::copy(builtinExercisesRoot(), root / "exercises", fs::copy_options::recursive);
   const std::string env = "SHADELAB_SHADERS='" + (root / "shaders").string() + "' SHADELAB_EXERCISES='" +
                           (root / "exercises").string() + "'";
   int n = 0;
@@ -373,16 +373,16 @@ TEST(GradeClass, BadArgumentsAreNamed) {
 }
 
 // --all over a class of three: the lab's own shaders (full marks everywhere), every exercise's
-// starter (each below 30 %), and the seeded mistakes of tests/grade in one folder, each failing
-// the check meant to catch it.
+// starter (each below 30 %, compiling and drawing, and told it is the starter), and the seeded mistakes of tests/grade
+// in one folder, each failing the check meant to catch it.
 TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) {
   const fs::path root = scratch("all"), cls = root / "class", out = root / "out";
   fs::create_directories(cls);
   fs::copy(builtinShaderDir(), cls / "solution", fs::copy_options::recursive);
-  const std::vector<std::string> ids = listExercises(exercisesRoot());
+  const std::vector<std::string> ids = listExercises();
   for (auto& id : ids) {
     Exercise ex;
-    ASSERT_EQ(loadExercise(exercisesRoot(), id, ex), "");
+    ASSERT_EQ(loadExercise(id, ex), "");
     fs::copy(ex.dir / "starter", cls / "starters", fs::copy_options::recursive | fs::copy_options::overwrite_existing);
   }
   struct Mistake {
@@ -419,6 +419,11 @@ TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) 
     EXPECT_DOUBLE_EQ(solution["percent"].get<double>(), 100.0) << id;
     EXPECT_EQ(starter["status"], "graded") << id;
     EXPECT_LT(starter["percent"].get<double>(), 30.0) << id;
+    EXPECT_EQ(starter.value("mistake", ""), "starter") << id << ": an untouched starter is told so";
+    for (auto& c : starter["checks"]) {  // the starter compiles and draws: every check has a number
+      EXPECT_TRUE(c["errors"].empty()) << id << ": " << c["errors"];
+      EXPECT_TRUE(c["value"].is_number()) << id << ": " << c["check"];
+    }
   }
   for (auto& m : mistakes) {
     const nlohmann::json& e = rows[{"mistakes", m.exercise}];

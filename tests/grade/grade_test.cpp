@@ -1,7 +1,7 @@
-// `shadelab grade` end to end, through the real binary: the lab's own shaders score full marks,
-// the starters score low, seeded mistakes fail the check meant to catch them with a message that
-// points at the cause, an endless loop is stopped and grading goes on, a syntax error is reported
-// at the student's file:line, and the student's folder is never written.
+// `shadelab grade` end to end, through the real binary: seeded mistakes fail the check meant to
+// catch them with a message that points at the cause (every exercise's solution and starter are
+// graded in class_test.cpp, its listed mistakes in mistakes_test.cpp), an endless loop is stopped and grading goes on,
+// a syntax error is reported at the student's file:line, and the student's folder is never written.
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -75,33 +75,7 @@ fs::path seeded(const std::string& name, const std::string& file, const std::str
   return dir;
 }
 
-class EveryExercise : public ::testing::TestWithParam<std::string> {};
-
 }  // namespace
-
-TEST_P(EveryExercise, TheLabsOwnShaderScoresFullMarks) {
-  const Graded g = grade(GetParam(), builtinShaderDir(), scratch("solution-" + slug(GetParam())));
-  ASSERT_TRUE(g.report.is_object()) << g.output;
-  EXPECT_EQ(g.exitCode, 0) << g.output;
-  EXPECT_DOUBLE_EQ(g.percent(), 100.0) << g.output;
-}
-
-TEST_P(EveryExercise, TheStarterRendersButScoresLow) {
-  Exercise ex;
-  ASSERT_EQ(loadExercise(exercisesRoot(), GetParam(), ex), "");
-  const Graded g = grade(GetParam(), ex.dir / "starter", scratch("starter-" + slug(GetParam())));
-  ASSERT_TRUE(g.report.is_object()) << g.output;
-  EXPECT_EQ(g.exitCode, 1) << g.output;
-  EXPECT_LT(g.percent(), 30.0) << g.output;
-  EXPECT_EQ(g.exercise()["mistake"], "starter") << "an untouched starter is told so";
-  for (auto& c : g.report["exercises"][0]["checks"]) {
-    EXPECT_TRUE(c["errors"].empty()) << "the starter must compile and draw: " << c["errors"];
-    EXPECT_TRUE(c["value"].is_number()) << c["check"];
-  }
-}
-
-INSTANTIATE_TEST_SUITE_P(Grade, EveryExercise, ::testing::ValuesIn(listExercises(exercisesRoot())),
-                         [](const auto& info) { return slug(info.param); });
 
 TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
   const fs::path student = seeded("half-vector", "common/specular.glsl", "max(dot(N, safeNormalize(L + V, N)), 0.0)",
@@ -255,7 +229,7 @@ TEST(GradeFailures, AnIncludeLeavingTheStudentsFolderIsRefusedAndNeverQuoted) {
 
 TEST(GradeFailures, TheStudentsFolderIsOnlyRead) {
   Exercise ex;
-  ASSERT_EQ(loadExercise(exercisesRoot(), "shading/blinn-phong", ex), "");
+  ASSERT_EQ(loadExercise("shading/blinn-phong", ex), "");
   const fs::path student = scratch("read-only") / "student";
   fs::copy(ex.dir / "starter", student, fs::copy_options::recursive);
   const auto snapshot = [&] {

@@ -81,15 +81,19 @@ TEST(Grade, ACheckCountsOnlyWhenTheCheckItRequiresDoesNotFail) {
 }
 
 TEST(Grade, EveryExerciseLoadsWithAStatementAndItsStarterFiles) {
-  const auto ids = listExercises(exercisesRoot());
+  const auto ids = listExercises();
   ASSERT_GE(ids.size(), 5u);
   for (auto& id : ids) {
     SCOPED_TRACE(id);
     Exercise ex;
-    ASSERT_EQ(loadExercise(exercisesRoot(), id, ex), "");
+    ASSERT_EQ(loadExercise(id, ex), "");
     EXPECT_TRUE(fs::is_regular_file(ex.dir / "statement.md"));
     EXPECT_GT(ex.totalPoints(), 0.0);
     for (auto& f : ex.files) EXPECT_TRUE(fs::is_regular_file(ex.dir / "starter" / f)) << f;
+    // The built-in exercises' own standard (`shadelab exercise check` holds each to its rubric):
+    // at least five mistakes students make, and three right answers written differently.
+    EXPECT_GE(ex.mistakes.size(), 6u) << "the starter and at least five mistakes students make";
+    EXPECT_GE(ex.correct.size(), 3u) << "three correct submissions written differently from the lab's file";
   }
 }
 
@@ -97,9 +101,9 @@ TEST(Grade, EveryExerciseLoadsWithAStatementAndItsStarterFiles) {
 // after its end marker are the built-in file's first and last lines, so a change to the lab's
 // shader that the starter misses fails here.
 TEST(Grade, StartersAreTheLabsShadersOutsideTheirTodoRegion) {
-  for (auto& id : listExercises(exercisesRoot())) {
+  for (auto& id : listExercises()) {
     Exercise ex;
-    ASSERT_EQ(loadExercise(exercisesRoot(), id, ex), "");
+    ASSERT_EQ(loadExercise(id, ex), "");
     for (auto& f : ex.files) {
       SCOPED_TRACE(id + ": " + f);
       const auto starter = lines(ex.dir / "starter" / f), builtin = lines(builtinShaderDir() / f);

@@ -1,0 +1,240 @@
+// shadelab exercise check [ID | DIR]: an exercise checked before it goes out to students. The
+// rubric loads (keys, thresholds, mistakes); the starter is the lab's file outside its TODO
+// region; then the solution, the starter, every listed mistake and every correct variant are
+// graded as one class (by this program's own `grade --class`, child processes and all), and the
+// results must say that the rubric can tell them apart: the solution and each correct variant
+// score 100 % with no diagnosis, the starter compiles, draws and scores under 30 %, each mistake
+// loses points and is diagnosed as itself, every check fails for the starter or some mistake,
+// and every hint is shown to one of them.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli/commands.h"
+#include "app/grade/rubric.h"
+#include "app/shader/preprocessor.h"
+#include "app/util/format.h"
+#include "app/util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kStarterBelow = 30.0;  // percent: a starter that scores more gives away the exercise
+
+// The starter equals the lab's file but for its TODO region: "" or where they part.
+std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
+  const std::string starter = readWholeFile(ex.dir / "starter" / file), lab = readWholeFile(builtinShaderDir() / file);
+  const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
+  const size_t b = starter.find(begin), e = starter.find(end);
+  if (b == std::string::npos || e == std::string::npos || e < b) return {};  // a whole-file starter: nothing to compare
+  const std::string before = starter.substr(0, starter.rfind('\n', b) + 1);
+  const size_t afterAt = starter.find('\n', e);
+  const std::string after = afterAt == std::string::npos ? "" : starter.substr(afterAt + 1);
+  const auto lineOf = [](const std::string& text, size_t at) {
+    return 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(at, text.size())), '\n');
+  };
+  if (lab.compare(0, before.size(), before) != 0) {
+    size_t at = 0;
+    while (at < before.size() && at < lab.size() && before[at] == lab[at]) ++at;
+    return "starter/" + file + " differs from the lab's " + file + " before its TODO region, at line " +
+           std::to_string(lineOf(starter, at));
+  }
+  if (lab.size() < after.size() || lab.compare(lab.size() - after.size(), after.size(), after) != 0)
+    return "starter/" + file + " differs from the lab's " + file + " after its TODO region (from line " +
+           std::to_string(lineOf(starter, afterAt + 1)) + ")";
+  return {};
+}
+
+// The grading of the class the check writes: each submission's exercise entry of report.json.
+std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs::path& work,
+                                                   const std::vector<std::string>& courseArgs, std::string& error) {
+  const fs::path cls = work / "class", out = work / "out";
+  // The solution: the lab's own files.
+  for (auto& file : ex.files) {
+    fs::create_directories((cls / "solution" / file).parent_path());
+    fs::copy_file(builtinShaderDir() / file, cls / "solution" / file, fs::copy_options::overwrite_existing);
+  }
+  for (auto& m : ex.mistakes)
+    if (auto e = writeMistakeFolder(ex, m, cls / (m.starter ? "starter" : "mistake-" + m.name)); !e.empty()) {
+      error = e;
+      return {};
+    }
+  for (auto& c : ex.correct)
+    if (auto e = writeMistakeFolder(ex, c, cls / ("correct-" + c.name)); !e.empty()) {
+      error = e;
+      return {};
+    }
+  std::string command = "'" + fs::read_symlink("/proc/self/exe").string() + "' grade --class '" + cls.string() +
+                        "' --exercise " + ex.id + " --jobs 2 --out '" + out.string() + "'";
+  for (auto& dir : courseArgs) command += " --exercises '" + dir + "'";
+  const fs::path log = work / "grade.log";
+  const int status = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    error = "grading the class failed: " + readWholeFile(log);
+    return {};
+  }
+  std::map<std::string, nlohmann::json> rows;
+  for (auto& entry : fs::directory_iterator(out / "students")) {
+    const nlohmann::json report = nlohmann::json::parse(readWholeFile(entry.path() / "report.json"), nullptr, false);
+    if (report.is_object() && report.contains("exercises") && !report["exercises"].empty())
+      rows[entry.path().filename().string()] = report["exercises"][0];
+  }
+  return rows;
+}
+
+// A check that only a broken frame fails (no NaN or Inf, values inside the view's range): it guards
+// against what no listed mistake has to show, so no mistake needs to fail it.
+bool isGuard(const Check& c) {
+  return (c.metric == "non_finite_pct" || c.metric == "out_of_range_pct") && c.full.base == Threshold::Base::Absolute &&
+         c.full.value == 0.0;
+}
+
+// Every problem of one exercise, one line each; none when it is ready to go out. `warnings`: what
+// a teacher should know but need not fix (a hint whose evidence no listed mistake brings about).
+std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std::string>& courseArgs,
+                                       std::string& summary, std::vector<std::string>& warnings) {
+  std::vector<std::string> problems;
+  for (auto& file : ex.files)
+    if (auto e = starterMatchesLabFile(ex, file); !e.empty()) problems.push_back(e);
+  const fs::path work = fs::temp_directory_path() / ("shadelab-exercise-check-" + std::to_string(getpid()));
+  std::error_code ec;
+  fs::remove_all(work, ec);
+  std::string error;
+  const auto rows = gradeAsClass(ex, work, courseArgs, error);
+  fs::remove_all(work, ec);
+  if (!error.empty()) return {error};
+  const auto row = [&](const std::string& name) -> const nlohmann::json& {
+    static const nlohmann::json none = nlohmann::json::object();
+    const auto it = rows.find(name);
+    return it == rows.end() ? none : it->second;
+  };
+  const auto percent = [](const nlohmann::json& e) { return e.value("percent", -1.0); };
+
+  const nlohmann::json& solution = row("solution");
+  if (percent(solution) != 100.0)
+    problems.push_back("the lab's own file scores " + formatNumber(percent(solution)) + " %, not 100 %");
+  for (auto& c : ex.correct) {
+    const nlohmann::json& e = row("correct-" + c.name);
+    if (percent(e) != 100.0 || e.contains("diagnosis"))
+      problems.push_back("correct variant '" + c.name + "' scores " + formatNumber(percent(e)) + " %" +
+                         (e.contains("diagnosis") ? " and is diagnosed: " + e["diagnosis"].get<std::string>() : "") +
+                         ": a check is tighter than the answer");
+  }
+  const nlohmann::json& starter = row("starter");
+  if (!(percent(starter) >= 0.0 && percent(starter) < kStarterBelow))
+    problems.push_back("the starter scores " + formatNumber(percent(starter)) +
+                       " %: under 30 % leaves the exercise to do");
+  for (auto& c : starter.value("checks", nlohmann::json::array()))
+    if (!c["errors"].empty()) {
+      problems.push_back("the starter does not build: " + c["errors"][0].get<std::string>());
+      break;
+    }
+  size_t named = 0;
+  for (auto& m : ex.mistakes) {
+    if (m.starter) continue;
+    const nlohmann::json& e = row("mistake-" + m.name);
+    if (!(percent(e) < 100.0)) problems.push_back("mistake '" + m.name + "' loses no points: no check sees it");
+    if (e.value("mistake", "") != m.name)
+      problems.push_back("mistake '" + m.name + "' is diagnosed as " +
+                         (e.contains("mistake") ? "'" + e["mistake"].get<std::string>() + "'" : "nothing") +
+                         ": its frames are not told apart from the others'");
+    else
+      ++named;
+  }
+  // Each check fails for some submission that should not pass, and each hint reaches one of them.
+  std::map<std::string, std::pair<bool, bool>> checks;  // "configuration: check" -> (failed, hint shown)
+  std::map<std::string, std::string> hints;
+  for (const auto& [name, e] : rows) {
+    if (name == "solution" || name.rfind("correct-", 0) == 0) continue;
+    for (auto& c : e.value("checks", nlohmann::json::array())) {
+      const std::string key = c["configuration"].get<std::string>() + ": " + c["check"].get<std::string>();
+      auto& [failed, shown] = checks[key];
+      const std::string hint = c.value("hint", ""), message = c.value("message", "");
+      hints[key] = hint;
+      if (c["result"] != "PASS") {
+        failed = true;
+        shown |= !hint.empty() && message.find(hint) != std::string::npos;
+      }
+    }
+  }
+  std::map<std::string, bool> guards;
+  for (auto& c : ex.configurations)
+    for (auto& k : c.checks) guards[c.name + ": " + k.name] = isGuard(k);
+  for (const auto& [key, state] : checks) {
+    if (!state.first && !guards[key])
+      problems.push_back("check '" + key + "' passes for the starter and every mistake: it cannot fail");
+    else if (state.first && !hints[key].empty() && !state.second)
+      warnings.push_back("the hint of check '" + key +
+                         "' is shown to none of the listed mistakes: its hint_when evidence never comes together");
+  }
+  summary = "solution " + formatNumber(percent(solution)) + " %, starter " + formatNumber(percent(starter)) + " %, " +
+            std::to_string(named) + " of " + std::to_string(ex.mistakes.size() - 1) + " mistakes named, " +
+            std::to_string(ex.correct.size()) + " correct variants, " + std::to_string(checks.size()) + " checks";
+  return problems;
+}
+
+int runExerciseCheck(const Options& o) {
+  std::vector<std::string> ids;
+  std::vector<std::string> courseArgs = o.exerciseDirs;
+  const std::string target = o.positional.size() > 1 ? o.positional[1] : "";
+  std::error_code ec;
+  if (target.empty()) {
+    ids = listExercises();
+  } else if (fs::is_regular_file(fs::path(target) / "rubric.json", ec)) {  // one exercise's folder
+    const fs::path dir = fs::absolute(target).lexically_normal();
+    const fs::path root = (dir.filename().empty() ? dir.parent_path() : dir).parent_path().parent_path();
+    courseArgs.insert(courseArgs.begin(), root.string());
+    setCourseFolders({courseArgs.begin(), courseArgs.end()});
+    ids.push_back((dir.filename().empty() ? dir.parent_path() : dir).parent_path().filename().string() + "/" +
+                  (dir.filename().empty() ? dir.parent_path() : dir).filename().string());
+  } else if (fs::is_directory(target, ec)) {  // a course folder
+    courseArgs.insert(courseArgs.begin(), target);
+    setCourseFolders({courseArgs.begin(), courseArgs.end()});
+    ids = listExercises(target);
+    if (ids.empty()) {
+      std::fprintf(stderr, "exercise check: %s holds no exercise (LAB/NAME/rubric.json)\n", target.c_str());
+      return 1;
+    }
+  } else {
+    ids.push_back(target);
+  }
+  int failed = 0;
+  for (auto& id : ids) {
+    Exercise ex;
+    if (auto e = loadExercise(id, ex); !e.empty()) {
+      std::printf("FAIL %s: %s\n", id.c_str(), e.c_str());
+      ++failed;
+      continue;
+    }
+    std::string summary;
+    std::vector<std::string> warnings;
+    const std::vector<std::string> problems = checkExercise(ex, courseArgs, summary, warnings);
+    std::printf("%s %s (%s)\n", problems.empty() ? "ok  " : "FAIL", id.c_str(), summary.c_str());
+    for (auto& p : problems) std::printf("       %s\n", p.c_str());
+    for (auto& w : warnings) std::printf("  warn %s\n", w.c_str());
+    std::fflush(stdout);
+    failed += !problems.empty();
+  }
+  std::printf("exercise check: %zu exercises, %d not ready\n", ids.size(), failed);
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int runExercise(const Options& o) {
+  const std::string verb = o.positional.empty() ? "" : o.positional[0];
+  if (verb == "check") return runExerciseCheck(o);
+  std::fprintf(stderr, "shadelab: exercise: '%s' is not a verb (valid: check)\n", verb.c_str());
+  return 2;
+}
+
+}  // namespace shadelab
