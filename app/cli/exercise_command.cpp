@@ -94,8 +94,7 @@ std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs:
 // A check that only a broken frame fails (no NaN or Inf, values inside the view's range): it guards
 // against what no listed mistake has to show, so no mistake needs to fail it.
 bool isGuard(const Check& c) {
-  return (c.metric == "non_finite_pct" || c.metric == "out_of_range_pct") && c.full.base == Threshold::Base::Absolute &&
-         c.full.value == 0.0;
+  return (c.metric == "non_finite_pct" || c.metric == "out_of_range_pct") && c.full.base == Threshold::Base::Absolute;
 }
 
 // Every problem of one exercise, one line each; none when it is ready to go out. `warnings`: what
