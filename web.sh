@@ -4,19 +4,24 @@
 #   ./web.sh --port N     the same on port N
 #   ./web.sh --out DIR    build, then write the static site to DIR for any web host (no server started)
 #   ./web.sh --build      build only
+#   ./web.sh --exercises DIR   (with any of the above) a course folder in the site, listed before the
+#                         built-in exercises; without it, none
 # Installs what is missing from Debian's packages (tools/install_deps.sh web) and fetches the sources
 # Debian ships compiled for the desktop only (Dear ImGui; LZ4, which FLANN calls) through Debian's
 # source packages into build-web/src, never into the repository.
 set -euo pipefail
+caller=$PWD  # where relative paths given on the command line start
 cd "$(dirname "$0")"
-mode=serve port=8080 out=""
+mode=serve port=8080 out="" course=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --out) mode=out; out=${2:?--out needs a folder}; shift ;;
     --port) port=${2:?--port needs a number}; shift ;;
     --build) mode=build ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
-    *) echo "web.sh: unknown argument '$1' (valid: --out DIR, --port N, --build)" >&2; exit 2 ;;
+    --exercises) course=$(cd "$caller" && realpath -m "${2:?--exercises needs a course folder}"); shift
+      [ -d "$course" ] || { echo "web.sh: --exercises: '$course' is not a folder" >&2; exit 2; } ;;
+    -h|--help) sed -n "2,10p" "$0"; exit 0 ;;
+    *) echo "web.sh: unknown argument '$1' (valid: --out DIR, --port N, --build, --exercises DIR)" >&2; exit 2 ;;
   esac
   shift
 done
@@ -48,6 +53,7 @@ export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
 
 [ -f "$build/build.ninja" ] || emcmake cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DIMGUI_SOURCE_DIR="$PWD/$imgui" -DLZ4_SOURCE_DIR="$PWD/$src/lz4" >/dev/null
+cmake -S . -B "$build" -DSHADELAB_COURSE="$course" >/dev/null  # the course this build carries, or none
 cmake --build "$build"
 site=(index.html isolation.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js)
 

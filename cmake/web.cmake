@@ -62,9 +62,17 @@ target_link_options(shadelab PRIVATE -pthread -fexceptions -sPTHREAD_POOL_SIZE=6
   --profiling-funcs  # function names in the .wasm: a stack trace in the console names them
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/shaders@/shadelab/shaders"
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/exercises@/shadelab/exercises")
+# A course folder in the site beside the built-in exercises (./web.sh --exercises DIR), listed first.
+set(SHADELAB_COURSE "" CACHE PATH "a course folder the page carries beside exercises/ (web.sh --exercises DIR)")
+set(WEB_COURSE_FILES "")
+if(SHADELAB_COURSE)
+  target_link_options(shadelab PRIVATE "SHELL:--preload-file ${SHADELAB_COURSE}@/shadelab/course")
+  file(GLOB_RECURSE WEB_COURSE_FILES CONFIGURE_DEPENDS ${SHADELAB_COURSE}/*)
+endif()
 # The preloaded folders go into shadelab.data when the program links: a changed shader or exercise
 # file must link it again, or the page keeps the old one.
 file(GLOB_RECURSE WEB_PRELOADED CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/* ${CMAKE_SOURCE_DIR}/exercises/*)
+list(APPEND WEB_PRELOADED ${WEB_COURSE_FILES})
 set_property(TARGET shadelab APPEND PROPERTY LINK_DEPENDS ${WEB_PRELOADED})
 # The page around it: copied whenever it changes, whether or not the program was rebuilt.
 add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/index.html ${CMAKE_BINARY_DIR}/isolation.js

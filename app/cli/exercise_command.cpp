@@ -18,6 +18,8 @@
 
 #include "app/cli/commands.h"
 #include "app/grade/rubric.h"
+#include "app/measure/report.h"
+#include "app/shader/function_parts.h"
 #include "app/shader/preprocessor.h"
 #include "app/util/format.h"
 #include "app/util/read_file.h"
@@ -30,9 +32,26 @@ namespace {
 
 constexpr double kStarterBelow = 30.0;  // percent: a starter that scores more gives away the exercise
 
+// The lab's own text of one of an exercise's files: the built-in file, or for a part file
+// (function_parts.h) the built-in functions its starter gives, as the lab defines them.
+std::string labText(const Exercise& ex, const std::string& file) {
+  if (!file.ends_with(kPartSuffix)) return readWholeFile(builtinShaderDir() / file);
+  std::vector<std::string> names;
+  for (auto& f : findFunctions(readWholeFile(ex.dir / "starter" / file))) names.push_back(f.name);
+  return extractPart(readWholeFile(builtinShaderDir() / file.substr(0, file.size() - kPartSuffix.size())), names);
+}
+
 // The starter equals the lab's file but for its TODO region: "" or where they part.
 std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
-  const std::string starter = readWholeFile(ex.dir / "starter" / file), lab = readWholeFile(builtinShaderDir() / file);
+  std::string starter = readWholeFile(ex.dir / "starter" / file);
+  const std::string lab = labText(ex, file);
+  if (file.ends_with(kPartSuffix)) {  // a part's prose before its first function is the teacher's own
+    const std::vector<FunctionSpan> spans = findFunctions(starter);
+    size_t at = 0;
+    for (int line = 1; !spans.empty() && line < spans.front().firstLine && at != std::string::npos; ++line)
+      at = starter.find('\n', at) + 1;
+    starter = starter.substr(std::min(at, starter.size()));
+  }
   const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
   const size_t b = starter.find(begin), e = starter.find(end);
   if (b == std::string::npos || e == std::string::npos || e < b) return {};  // a whole-file starter: nothing to compare
@@ -58,11 +77,12 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
 std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs::path& work,
                                                    const std::vector<std::string>& courseArgs, std::string& error) {
   const fs::path cls = work / "class", out = work / "out";
-  // The solution: the lab's own files.
-  for (auto& file : ex.files) {
-    fs::create_directories((cls / "solution" / file).parent_path());
-    fs::copy_file(builtinShaderDir() / file, cls / "solution" / file, fs::copy_options::overwrite_existing);
-  }
+  // The solution: the lab's own files (a part file: its functions as the lab defines them).
+  for (auto& file : ex.files)
+    if (auto e = writeTextFile((cls / "solution" / file).string(), labText(ex, file)); !e.empty()) {
+      error = e;
+      return {};
+    }
   for (auto& m : ex.mistakes)
     if (auto e = writeMistakeFolder(ex, m, cls / (m.starter ? "starter" : "mistake-" + m.name)); !e.empty()) {
       error = e;

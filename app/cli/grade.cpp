@@ -188,8 +188,9 @@ int runGrade(const Options& o) {
   if (o.shaderDirs.empty())
     return cannotGrade("--shaders DIR is required: the folder holding the student's shader files");
   if (o.jobs != 1 || o.shards != 1) return cannotGrade("--jobs and --shard are for a class (--class DIR)");
-  if (!o.format.empty() && o.format != "gradescope")
-    return cannotGrade("--format " + o.format + " is a class's gradebook (--class DIR); one student: gradescope");
+  if (o.format == "moodle" || o.format == "canvas")
+    return cannotGrade("--format " + o.format +
+                       " is a class's gradebook (--class DIR); one student: gradescope, classroom");
   std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
   if (ids.empty()) return cannotGrade("no exercises in " + builtinExercisesRoot().string() + " or a course folder");
 
@@ -219,9 +220,11 @@ int runGrade(const Options& o) {
   for (auto& d : o.shaderDirs) report.command += " --shaders " + d.string();
   CacheCount cache;
   if (auto e = gradeStudent(ids, g, report, cache); !e.empty()) return cannotGrade(e);
-  if (o.format == "gradescope") {
-    const nlohmann::json results = gradescopeResults(nlohmann::json::parse(gradeJson(report)));
-    if (auto e = writeTextFile((dir / "results.json").string(), results.dump(2) + "\n"); !e.empty())
+  if (o.format == "gradescope" || o.format == "classroom") {
+    const nlohmann::json j = nlohmann::json::parse(gradeJson(report));
+    const bool gradescope = o.format == "gradescope";
+    const std::string text = (gradescope ? gradescopeResults(j) : classroomResults(j)).dump(2) + "\n";
+    if (auto e = writeTextFile((dir / (gradescope ? "results.json" : "classroom.json")).string(), text); !e.empty())
       return cannotGrade(e);
   }
 
@@ -240,7 +243,9 @@ int runGrade(const Options& o) {
     std::printf("solutions: %d of %d configurations from the cache (%s)\n", cache.fromCache,
                 cache.fromCache + cache.rendered, g.cache.dir().c_str());
   std::printf("report: %s (also report.md, report.json%s)\n", (dir / "report.html").c_str(),
-              o.format == "gradescope" ? ", results.json for Gradescope" : "");
+              o.format == "gradescope"  ? ", results.json for Gradescope"
+              : o.format == "classroom" ? ", classroom.json for GitHub Classroom"
+                                        : "");
   return passed ? 0 : 1;
 }
 

@@ -62,8 +62,9 @@ options:
   --watchdog SECONDS  grade: how long the student's shader may take per configuration (default 20)
   --class DIR         grade: every submission in DIR (a folder or a .zip per student)
   --format F          grade: also write the grades where a course keeps them: gradescope (one student:
-                      results.json, Gradescope's autograder results), moodle or canvas (a class:
-                      moodle.csv or canvas.csv, the CSV their gradebooks import)
+                      results.json, Gradescope's autograder results), classroom (one student:
+                      classroom.json, for GitHub Classroom's grading reporter), moodle or canvas (a
+                      class: moodle.csv or canvas.csv, the CSV their gradebooks import)
   --jobs N            grade --class: submissions graded at a time (default 1)
   --shard i/n         grade --class: grade the i-th of n deterministic slices (1 <= i <= n), for array jobs
   --cache DIR         grade: keep the solution's frames and truths here (default $SHADELAB_CACHE/solutions
@@ -172,8 +173,8 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else if (arg == "--class")
       o.classDir = v;
     else if (arg == "--format") {
-      if (v != "gradescope" && v != "moodle" && v != "canvas")
-        return "--format: invalid value '" + v + "' (valid: gradescope, moodle, canvas)";
+      if (v != "gradescope" && v != "classroom" && v != "moodle" && v != "canvas")
+        return "--format: invalid value '" + v + "' (valid: gradescope, classroom, moodle, canvas)";
       o.format = v;
     } else if (arg == "--cache")
       o.cacheDir = v;

@@ -96,6 +96,32 @@ nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string
           {"tests", tests}};
 }
 
+nlohmann::json classroomResults(const nlohmann::json& report) {
+  nlohmann::json tests = nlohmann::json::array();
+  double total = 0.0;
+  bool passed = true;
+  for (auto& e : report.value("exercises", nlohmann::json::array())) {
+    total += e.value("total", 0.0);
+    passed &= e.value("passed", false);
+    const std::string title = e.value("title", e.value("id", ""));
+    const std::string diagnosis = e.value("diagnosis", "");
+    for (auto& c : e.value("checks", nlohmann::json::array())) {
+      std::string message = c.value("message", "");
+      for (auto& err : c.value("errors", nlohmann::json::array())) message += "\n" + err.get<std::string>();
+      if (c.value("result", "") != "PASS" && !diagnosis.empty()) message = diagnosis + "\n" + message;
+      tests.push_back({{"name", title + ": " + c.value("configuration", "") + ": " + c.value("check", "")},
+                       {"status", c.value("result", "") == "PASS" ? "pass" : "fail"},
+                       {"score", c.value("points", 0.0)},
+                       {"message", message},
+                       {"test_code", c.value("metric", "") + " against the " + c.value("against", "solution")},
+                       {"filename", ""},
+                       {"line_no", 0},
+                       {"execution_time", ""}});
+    }
+  }
+  return {{"version", 1}, {"status", passed ? "pass" : "fail"}, {"max_score", total}, {"tests", tests}};
+}
+
 std::string moodleCsv(const std::vector<ClassRow>& rows) {
   const std::vector<Column> columns = exerciseColumns(rows);
   std::string csv = "Username";

@@ -19,6 +19,13 @@ namespace shadelab {
 nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string& visibility = "visible");
 bool validGradescopeVisibility(const std::string& visibility);
 
+// GitHub Classroom's grading reporter (classroom-resources/autograding-grading-reporter) reads one
+// runner's results, base64-encoded, from <RUNNER>_RESULTS: {"version", "status": pass | fail,
+// "max_score", "tests": [{"name", "status": pass | fail, "score", "message", ...}]}; it adds up
+// the tests' scores against max_score and reports the points to the classroom.
+// tools/github-classroom/grade.sh encodes this for it.
+nlohmann::json classroomResults(const nlohmann::json& report);
+
 // Moodle's "Import grades: CSV file": a header row, a Username column to map to the user's
 // username, then per exercise its points and its feedback (the diagnosis), each mapped to a grade
 // item and to "Feedback for" that item at import.

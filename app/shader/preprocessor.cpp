@@ -1,10 +1,12 @@
 #include "app/shader/preprocessor.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cstdio>
 #include <regex>
 
+#include "app/shader/function_parts.h"
 #include "app/util/contained_path.h"
 #include "app/util/read_file.h"
 
@@ -112,14 +114,59 @@ struct Expander {
     return {rel, path.find(rel)};
   }
 
+  // The part file of `rel` (function_parts.h), where a folder holds one: its functions matched
+  // with `text`'s and its file recorded. False (and `out` failed) when it cannot be used.
+  struct Parts {
+    int index = -1;  // source-string number of the part file; -1: none
+    std::string text;
+    std::vector<FunctionSpan> base, part;
+  };
+  bool findParts(const std::string& rel, const std::string& text, Parts& parts) {
+    const std::string partRel = rel + std::string(kPartSuffix);
+    const ShaderSearchPath::Lookup found = path.find(partRel);
+    if (!found.refused.empty()) {
+      fail(out, partRel, 0, 0, found.refused);
+      return false;
+    }
+    if (found.file.empty()) return true;
+    if (auto why = readShaderFile(found.file, parts.text); !why.empty()) {
+      fail(out, found.file.string(), 0, 0, why);
+      return false;
+    }
+    if (auto e = matchParts(text, parts.text, parts.base, parts.part); !e.empty()) {
+      const size_t colon = e.find(':');
+      fail(out, found.file.string(), std::atoi(e.c_str()), 1, e.substr(colon + 2));
+      return false;
+    }
+    parts.index = int(out.files.size());
+    out.files.push_back(found.file);
+    out.relPaths.push_back(partRel);
+    return true;
+  }
+
   bool expand(const std::string& rel, const std::string& text, int fileIndex, bool isMain) {
+    Parts parts;
+    if (!findParts(rel, text, parts)) return false;
     std::istringstream in(text);
     std::string line;
-    int lineNo = 0;
+    int lineNo = 0, skipThrough = 0;
     bool sawVersion = false;
     while (std::getline(in, line)) {
       ++lineNo;
+      if (lineNo <= skipThrough) continue;  // a function the part file replaced
       if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (auto at = std::find_if(parts.base.begin(), parts.base.end(),
+                                 [&](const FunctionSpan& s) { return s.firstLine == lineNo; });
+          at != parts.base.end()) {
+        const FunctionSpan& replacement = parts.part[size_t(at - parts.base.begin())];
+        out.text += "#line " + std::to_string(encodeLine(parts.index, replacement.firstLine)) + " " +
+                    std::to_string(parts.index) + "\n";
+        out.text += linesOf(parts.text, replacement);
+        out.text +=
+            "#line " + std::to_string(encodeLine(fileIndex, at->lastLine + 1)) + " " + std::to_string(fileIndex) + "\n";
+        skipThrough = at->lastLine;
+        continue;
+      }
       if (isMain && !sawVersion && isVersionLine(line)) {
         sawVersion = true;
         out.text += '\n';  // already emitted ahead of the defines; an empty line keeps numbering

@@ -10,6 +10,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/shader/function_parts.h"
+
 namespace fs = std::filesystem;
 
 namespace shadelab {
@@ -337,10 +339,13 @@ bool ShaderLibrary::rebuild(Program& p, bool force) {
 }
 
 void ShaderLibrary::watchFiles(const Program& p) {
-  // Every root's candidate for every file, so a student's new copy that starts overriding a
-  // built-in file is picked up too.
+  // Every root's candidate for every file, and for its part file (function_parts.h), so a
+  // student's new copy that starts overriding a built-in file or function is picked up too.
   for (auto& rel : p.relPaths_)
-    for (auto& root : pathOf(p).roots()) watcher_.watch(root / rel);
+    for (auto& root : pathOf(p).roots()) {
+      watcher_.watch(root / rel);
+      watcher_.watch(root / (rel + std::string(kPartSuffix)));
+    }
   for (auto& f : p.files_) watcher_.watch(f);
 }
 
@@ -352,7 +357,10 @@ int ShaderLibrary::reloadChanged() {
   for (auto& p : livePrograms()) {
     bool affected = false;
     for (auto& c : changed) {
-      for (auto& rel : p->relPaths_) affected |= c.filename() == fs::path(rel).filename();
+      for (auto& rel : p->relPaths_) {
+        const std::string name = fs::path(rel).filename().string();
+        affected |= c.filename() == name || c.filename() == name + std::string(kPartSuffix);
+      }
     }
     if (affected) {
       rebuild(*p);

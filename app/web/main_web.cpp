@@ -8,10 +8,12 @@
 #include <emscripten.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "app/cli/options.h"
+#include "app/grade/rubric.h"
 #include "app/host/share_link.h"
 #include "app/ui/window_app.h"
 
@@ -24,6 +26,10 @@ int main() {
   // searched, only edited: the student fixes the file, then opens the page without "builtin".
   std::vector<std::string> args{"shadelab"};
   if (!link.builtin) args.insert(args.end(), {"--shaders", "/student"});
+  // A course folder built into the site (./web.sh --exercises DIR): listed before the built-in exercises.
+  std::error_code ec;
+  if (std::filesystem::is_directory("/shadelab/course", ec))
+    args.insert(args.end(), {"--exercises", "/shadelab/course"});
   for (auto [key, value] : {std::pair{"--lab", &link.lab},
                             {"--scene", &link.scene},
                             {"--camera", &link.camera},
@@ -38,6 +44,7 @@ int main() {
   Options options;
   if (auto err = parseOptions(int(argv.size()), argv.data(), options); !err.empty())
     problems += (problems.empty() ? "" : "\n") + ("the link: " + err);
+  setCourseFolders({options.exerciseDirs.begin(), options.exerciseDirs.end()});
   WindowOptions window;
   window.message = problems;
   window.check = link.check;
