@@ -157,6 +157,9 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
       problems.push_back("the starter does not build: " + c["errors"][0].get<std::string>());
       break;
     }
+  if (starter.value("mistake", "") != "starter")
+    problems.push_back("the untouched starter is not told it is the starter (diagnosed: " +
+                       starter.value("diagnosis", std::string("nothing")) + ")");
   size_t named = 0;
   for (auto& m : ex.mistakes) {
     if (m.starter) continue;
