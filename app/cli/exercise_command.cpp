@@ -18,6 +18,7 @@
 
 #include "app/cli/commands.h"
 #include "app/grade/rubric.h"
+#include "app/lab/lab.h"
 #include "app/measure/report.h"
 #include "app/shader/function_parts.h"
 #include "app/shader/preprocessor.h"
@@ -250,12 +251,113 @@ int runExerciseCheck(const Options& o) {
   return failed ? 1 : 0;
 }
 
+// The placeholder a starter's TODO region returns: the function draws, and visibly does nothing.
+std::string placeholderFor(const std::string& head) {
+  const size_t type = head.find_first_not_of(" \t"), typeEnd = head.find_first_of(" \t", type);
+  const std::string t = type == std::string::npos ? "" : head.substr(type, typeEnd - type);
+  if (t == "void") return "";
+  if (t == "float") return "  return 0.0;\n";
+  if (t == "int" || t == "uint") return "  return " + t + "(0);\n";
+  if (t == "bool") return "  return false;\n";
+  if (t.rfind("vec", 0) == 0 || t.rfind("ivec", 0) == 0 || t.rfind("mat", 0) == 0) return "  return " + t + "(0.0);\n";
+  return "  " + t + " placeholder;\n  return placeholder;  // replace: this returns no values you chose\n";
+}
+
+int runExerciseNew(const Options& o) {
+  const auto fail = [](const std::string& why) {
+    std::fprintf(stderr, "shadelab: exercise new: %s\n", why.c_str());
+    return 1;
+  };
+  const std::string id = o.positional.size() > 1 ? o.positional[1] : "";
+  const size_t slash = id.find('/');
+  const std::string labId = id.substr(0, slash), name = slash == std::string::npos ? "" : id.substr(slash + 1);
+  const auto lab = makeLab(labId);
+  if (!lab) return fail("'" + id + "' is not LAB/NAME with a lab of `shadelab list`");
+  if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+    return fail("the exercise's name '" + name + "' may hold only a-z, 0-9 and '-'");
+  if (o.exerciseDirs.empty()) return fail("--exercises DIR is required: the course folder the exercise goes into");
+  const size_t colon = o.function.rfind(':');
+  if (colon == std::string::npos)
+    return fail("--function FILE:NAME is required, e.g. common/lighting.glsl:reflectLights");
+  const std::string file = o.function.substr(0, colon), function = o.function.substr(colon + 1);
+  const ShaderSearchPath builtin({builtinShaderDir()});
+  const fs::path source = builtin.resolve(file);
+  if (source.empty()) return fail("--function: the lab's shaders have no file '" + file + "'");
+  const std::string text = readWholeFile(source);
+  const std::vector<FunctionSpan> spans = findFunctions(text);
+  const auto span = std::find_if(spans.begin(), spans.end(), [&](const FunctionSpan& s) { return s.name == function; });
+  if (span == spans.end()) {
+    std::string names;
+    for (auto& s : spans) names += (names.empty() ? "" : ", ") + s.name;
+    return fail("--function: " + file + " defines no function '" + function + "' (it defines: " + names + ")");
+  }
+  const fs::path dir = fs::path(o.exerciseDirs.front()) / labId / name;
+  std::error_code ec;
+  if (fs::exists(dir, ec)) return fail(dir.string() + " already exists; nothing is overwritten");
+
+  // The starter: the function with its body cut to a TODO region, as a part file.
+  const std::string whole = linesOf(text, *span);
+  const size_t open = whole.find('{'), close = whole.rfind('}');
+  const std::string head = whole.substr(0, open + 1), marker = "TODO(exercise " + id + ")";
+  const std::string starter = "// " + function + "() of " + file + ", as a part file: ShadeLab puts it in place of\n" +
+                              "// the lab's own wherever a program reads " + file + ".\n" + head + "\n  // " + marker +
+                              ": begin\n" + placeholderFor(head) + "  // " + marker + ": end\n" + whole.substr(close) +
+                              (whole.back() == '\n' ? "" : "\n");
+  // The rubric: the lab's defaults, against the solution and (where the lab has one) the truth.
+  nlohmann::json checks = nlohmann::json::array();
+  checks.push_back({{"name", "matches the solution"},
+                    {"metric", "covered_rmse"},
+                    {"against", "solution"},
+                    {"full", 0.004},
+                    {"partial", 0.02},
+                    {"points", 3},
+                    {"hint", "Your frame differs from the solution's: say here where to look first."}});
+  const Judge* judge = lab->judge();
+  if (judge && !judge->plots().empty() && referenceOf(*lab).kind == TruthKind::Image)
+    checks.push_back({{"name", "against the truth"},
+                      {"metric", judge->plots().front().error},
+                      {"against", "truth"},
+                      {"full", "solution+0.002"},
+                      {"partial", "solution+0.01"},
+                      {"points", 1},
+                      {"hint", "Your frame is further from the lab's truth than the solution's."}});
+  const nlohmann::json rubric = {
+      {"title", "TODO: the exercise's title"},
+      {"lab", labId},
+      {"level", "guided"},
+      {"files", {file + std::string(kPartSuffix)}},
+      {"pass_mark", 70},
+      {"size", {320, 240}},
+      {"configurations",
+       {{{"name", "the lab's defaults"}, {"scene", std::string(lab->defaultScene())}, {"checks", checks}}}},
+      {"mistakes", nlohmann::json::array()},
+      {"correct", nlohmann::json::array()}};
+  const std::string statement =
+      "# TODO: the exercise's title\n\n**Lab:** `" + labId + "` · **File you edit:** `" + file +
+      std::string(kPartSuffix) + "` (a part file: `" + function + "()` of `" + file +
+      "`)\n\nTODO: what the function computes, the formula, what the starter draws.\n\n"
+      "```sh\ncp -r starter/. my_shaders/\nbuild/shadelab grade --exercises COURSE --exercise " +
+      id + " --shaders my_shaders\n```\n";
+  for (auto& [path, content] :
+       {std::pair{dir / "starter" / (file + std::string(kPartSuffix)), starter},
+        std::pair{dir / "rubric.json", rubric.dump(2) + "\n"}, std::pair{dir / "statement.md", statement}})
+    if (auto e = writeTextFile(path.string(), content); !e.empty()) return fail(e);
+  std::printf("exercise new: %s in %s (the starter %s, rubric.json, statement.md)\n", id.c_str(), dir.string().c_str(),
+              (file + std::string(kPartSuffix)).c_str());
+  std::printf(
+      "next: write the statement and the title, list the mistakes students make and two or three right\n"
+      "answers written differently, then: shadelab exercise check %s\n",
+      dir.string().c_str());
+  return 0;
+}
+
 }  // namespace
 
 int runExercise(const Options& o) {
   const std::string verb = o.positional.empty() ? "" : o.positional[0];
   if (verb == "check") return runExerciseCheck(o);
-  std::fprintf(stderr, "shadelab: exercise: '%s' is not a verb (valid: check)\n", verb.c_str());
+  if (verb == "new") return runExerciseNew(o);
+  std::fprintf(stderr, "shadelab: exercise: '%s' is not a verb (valid: new, check)\n", verb.c_str());
   return 2;
 }
 

@@ -31,6 +31,11 @@ commands:
                   a class:  --class DIR (each subfolder or .zip one student) [--jobs N] [--shard i/n]:
                   gradebook.csv, a class page and every student's report; exit 0 when all were graded
   grade merge     join the outputs of --shard runs:  grade merge DIR... --out DIR
+  exercise new LAB/NAME --function FILE:NAME --exercises DIR
+                  a new exercise in the course folder DIR on one function of the lab's FILE: the
+                  starter (a part file holding the function, its body cut to a TODO region), a
+                  rubric with one configuration of the lab's defaults, a check against the
+                  solution and one against the truth, and a statement to fill in
   exercise check [ID | DIR]
                   an exercise (an id, an exercise's folder, or a course folder: all of it; none: every
                   exercise) checked before it goes out: its rubric, its starter against the lab's file,
@@ -166,12 +171,14 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.exercise = v;
     else if (arg == "--exercises") {
       std::error_code ec;
-      if (!std::filesystem::is_directory(v, ec))
+      if (o.command != "exercise" && !std::filesystem::is_directory(v, ec))  // `exercise new` may make it
         return "--exercises: '" + v +
                "' is not a folder (a course folder is laid out as exercises/: LAB/NAME/rubric.json)";
       o.exerciseDirs.push_back(v);
     } else if (arg == "--class")
       o.classDir = v;
+    else if (arg == "--function")
+      o.function = v;
     else if (arg == "--format") {
       if (v != "gradescope" && v != "classroom" && v != "moodle" && v != "canvas")
         return "--format: invalid value '" + v + "' (valid: gradescope, classroom, moodle, canvas)";
@@ -224,7 +231,8 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       return "unknown option '" + arg +
              "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, "
              "--frames, --shaders, "
-             "--backend, --dialect, --out, --measure, --exercise, --exercises, --format, --all, --watchdog, --class, "
+             "--backend, --dialect, --out, --measure, --exercise, --exercises, --function, --format, --all, "
+             "--watchdog, --class, "
              "--jobs, "
              "--shard, "
              "--cache, --no-cache, --count, "
