@@ -100,7 +100,14 @@ std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs:
   const fs::path log = work / "grade.log";
   const int status = std::system((command + " > '" + log.string() + "' 2>&1").c_str());
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    error = "grading the class failed: " + readWholeFile(log);
+    // The grader's own one-line reasons (a rubric's key, a starter that does not build), else all it said.
+    const std::string said = readWholeFile(log);
+    std::string reasons;
+    for (size_t at = said.find("shadelab: "); at != std::string::npos; at = said.find("\nshadelab: ", at + 1)) {
+      const size_t from = said[at] == '\n' ? at + 1 : at;
+      reasons += (reasons.empty() ? "" : "; ") + said.substr(from + 10, said.find('\n', from) - from - 10);
+    }
+    error = reasons.empty() ? "grading the class failed: " + said : reasons;
     return {};
   }
   std::map<std::string, nlohmann::json> rows;
@@ -241,7 +248,8 @@ int runExerciseCheck(const Options& o) {
     std::string summary;
     std::vector<std::string> warnings;
     const std::vector<std::string> problems = checkExercise(ex, courseArgs, summary, warnings);
-    std::printf("%s %s (%s)\n", problems.empty() ? "ok  " : "FAIL", id.c_str(), summary.c_str());
+    std::printf("%s %s%s\n", problems.empty() ? "ok  " : "FAIL", id.c_str(),
+                summary.empty() ? "" : (" (" + summary + ")").c_str());
     for (auto& p : problems) std::printf("       %s\n", p.c_str());
     for (auto& w : warnings) std::printf("  warn %s\n", w.c_str());
     std::fflush(stdout);
