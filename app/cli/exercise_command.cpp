@@ -219,13 +219,12 @@ int runExerciseCheck(const Options& o) {
   std::error_code ec;
   if (target.empty()) {
     ids = listExercises();
-  } else if (fs::is_regular_file(fs::path(target) / "rubric.json", ec)) {  // one exercise's folder
-    const fs::path dir = fs::absolute(target).lexically_normal();
-    const fs::path root = (dir.filename().empty() ? dir.parent_path() : dir).parent_path().parent_path();
-    courseArgs.insert(courseArgs.begin(), root.string());
+  } else if (fs::is_regular_file(fs::path(target) / "rubric.json", ec)) {  // one exercise's folder: ROOT/LAB/NAME
+    fs::path dir = fs::absolute(target).lexically_normal();
+    if (dir.filename().empty()) dir = dir.parent_path();  // a trailing slash
+    courseArgs.insert(courseArgs.begin(), dir.parent_path().parent_path().string());
     setCourseFolders({courseArgs.begin(), courseArgs.end()});
-    ids.push_back((dir.filename().empty() ? dir.parent_path() : dir).parent_path().filename().string() + "/" +
-                  (dir.filename().empty() ? dir.parent_path() : dir).filename().string());
+    ids.push_back(dir.parent_path().filename().string() + "/" + dir.filename().string());
   } else if (fs::is_directory(target, ec)) {  // a course folder
     courseArgs.insert(courseArgs.begin(), target);
     setCourseFolders({courseArgs.begin(), courseArgs.end()});

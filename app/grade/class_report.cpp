@@ -27,8 +27,11 @@ std::string format(const char* fmt, double v) {
   return s;
 }
 
-// Points as the reports print them: "2", "1.5".
-std::string points(double v) { return format("%g", std::round(v * 100) / 100); }
+}  // namespace
+
+std::string formatPoints(double v) { return format("%g", std::round(v * 100) / 100); }
+
+namespace {
 
 std::string checkKey(const ClassRow& row, const ClassCheck& c) {
   return row.exercise + ": " + c.configuration + ": " + c.check;
@@ -177,12 +180,13 @@ std::string gradebookCsv(const std::vector<ClassRow>& rows) {
   for (auto& c : columns) csv.append(",").append(csvField(c));
   csv += "\n";
   for (auto& row : rows) {
-    csv += csvField(row.student) + "," + csvField(row.exercise) + "," + csvField(row.status) + "," + points(row.score) +
-           "," + points(row.total) + "," + format("%.1f", row.percent) + "," + (row.passed ? "yes" : "no");
+    csv += csvField(row.student) + "," + csvField(row.exercise) + "," + csvField(row.status) + "," +
+           formatPoints(row.score) + "," + formatPoints(row.total) + "," + format("%.1f", row.percent) + "," +
+           (row.passed ? "yes" : "no");
     for (auto& column : columns) {
       csv += ",";
       for (auto& c : row.checks)
-        if (checkKey(row, c) == column) csv += points(c.points);
+        if (checkKey(row, c) == column) csv += formatPoints(c.points);
     }
     csv += "\n";
   }
@@ -308,8 +312,8 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
       for (size_t i = 0; i < m.misses.size() && i < 3; ++i) {
         const auto& [row, c] = m.misses[i];
         std::string who = reportLink(row->student) + ": " + htmlEscape(c->metric) + " " + format("%.4g", c->value) +
-                          ", full points at " + format("%.4g", c->fullAt) + ", " + points(c->points) + " of " +
-                          points(c->maxPoints) + " points";
+                          ", full points at " + format("%.4g", c->fullAt) + ", " + formatPoints(c->points) + " of " +
+                          formatPoints(c->maxPoints) + " points";
         // Within the bound yet not passed: another check it requires failed; the report says which.
         if (c->value <= c->fullAt && !c->message.empty()) who += " (" + htmlEscape(c->message) + ")";
         h += "<div class='who'><p>" + who + "</p>";
@@ -335,8 +339,8 @@ std::string classHtml(const std::vector<ClassRow>& rows, const fs::path& student
         h += "<td></td>";
         continue;
       }
-      h += std::string("<td class='") + (r->passed ? "yes" : "no") + "'>" + points(r->score) + " / " +
-           points(r->total) + (r->status == "graded" ? "" : " (" + r->status + ")") + "</td>";
+      h += std::string("<td class='") + (r->passed ? "yes" : "no") + "'>" + formatPoints(r->score) + " / " +
+           formatPoints(r->total) + (r->status == "graded" ? "" : " (" + r->status + ")") + "</td>";
     }
     h += "</tr>\n";
   }

@@ -1,17 +1,11 @@
 #include "app/grade/gradebooks.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
+
+#include "app/util/format.h"
 
 namespace shadelab {
 namespace {
-
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", std::round(v * 100.0) / 100.0);
-  return b;
-}
 
 // The exercises in the order the rows first name them, with their titles and totals.
 struct Column {
@@ -46,8 +40,8 @@ const ClassRow* rowOf(const std::vector<ClassRow>& rows, const std::string& stud
 // What a student reads for one exercise: the status where it was not graded, then the diagnosis.
 std::string feedbackOf(const ClassRow& r) {
   std::string text = r.status == "graded" ? "" : r.status + ". ";
-  text += number(r.score) + " / " + number(r.total) + " points (" + number(r.percent) + " %, pass mark " +
-          number(r.passMark) + " %).";
+  text += formatPoints(r.score) + " / " + formatPoints(r.total) + " points (" + formatPoints(r.percent) +
+          " %, pass mark " + formatPoints(r.passMark) + " %).";
   if (!r.diagnosis.empty()) text += " " + r.diagnosis;
   return text;
 }
@@ -65,18 +59,18 @@ nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string
   for (auto& e : report.value("exercises", nlohmann::json::array())) {
     const std::string id = e.value("id", ""), title = e.value("title", id);
     score += e.value("score", 0.0);
-    output += title + " (" + id + "): " + number(e.value("score", 0.0)) + " / " + number(e.value("total", 0.0)) +
-              " points, " + number(e.value("percent", 0.0)) + " % (pass mark " + number(e.value("pass_mark", 0.0)) +
-              " %), " + e.value("status", "") + "\n";
+    output += title + " (" + id + "): " + formatPoints(e.value("score", 0.0)) + " / " +
+              formatPoints(e.value("total", 0.0)) + " points, " + formatPoints(e.value("percent", 0.0)) +
+              " % (pass mark " + formatPoints(e.value("pass_mark", 0.0)) + " %), " + e.value("status", "") + "\n";
     if (e.contains("diagnosis")) output += "  diagnosis: " + e["diagnosis"].get<std::string>() + "\n";
     for (auto& f : e.value("missing_files", nlohmann::json::array()))
       output += "  not submitted: " + f.get<std::string>() + "\n";
     for (auto& n : e.value("notes", nlohmann::json::array())) output += "  note: " + n.get<std::string>() + "\n";
     for (auto& c : e.value("checks", nlohmann::json::array())) {
       std::string text = c.value("result", "") + ": " + c.value("metric", "") + " " +
-                         (c["value"].is_number() ? number(c["value"].get<double>()) : std::string("n/a"));
-      if (c["full_at"].is_number()) text += ", full marks at <= " + number(c["full_at"].get<double>());
-      if (c["partial_at"].is_number()) text += ", partial at <= " + number(c["partial_at"].get<double>());
+                         (c["value"].is_number() ? formatNumber(c["value"].get<double>()) : std::string("n/a"));
+      if (c["full_at"].is_number()) text += ", full marks at <= " + formatNumber(c["full_at"].get<double>());
+      if (c["partial_at"].is_number()) text += ", partial at <= " + formatNumber(c["partial_at"].get<double>());
       if (!c.value("message", "").empty()) text += "\n" + c["message"].get<std::string>();
       for (auto& err : c.value("errors", nlohmann::json::array())) text += "\n" + err.get<std::string>();
       tests.push_back({{"name", title + ": " + c.value("configuration", "") + ": " + c.value("check", "")},
@@ -132,7 +126,7 @@ std::string moodleCsv(const std::vector<ClassRow>& rows) {
     csv += csvField(student);
     for (auto& c : columns) {
       const ClassRow* r = rowOf(rows, student, c.id);
-      csv += "," + (r ? number(r->score) : std::string("-")) + "," + (r ? csvField(feedbackOf(*r)) : "");
+      csv += "," + (r ? formatPoints(r->score) : std::string("-")) + "," + (r ? csvField(feedbackOf(*r)) : "");
     }
     csv += "\n";
   }
@@ -145,13 +139,13 @@ std::string canvasCsv(const std::vector<ClassRow>& rows) {
   // A name ending in "(digits)" would be taken for an existing assignment's id: none here.
   for (auto& c : columns) csv += "," + csvField("ShadeLab: " + c.title + " [" + c.id + "]");
   csv += "\n    Points Possible,,,,";
-  for (auto& c : columns) csv += "," + number(c.total);
+  for (auto& c : columns) csv += "," + formatPoints(c.total);
   csv += "\n";
   for (auto& student : studentsOf(rows)) {
     csv += csvField(student) + ",,," + csvField(student) + ",";
     for (auto& c : columns) {
       const ClassRow* r = rowOf(rows, student, c.id);
-      csv += "," + (r ? number(r->score) : std::string());
+      csv += "," + (r ? formatPoints(r->score) : std::string());
     }
     csv += "\n";
   }

@@ -27,11 +27,9 @@ std::vector<FunctionSpan> findFunctions(std::string_view source) {
   std::vector<FunctionSpan> out;
   int depth = 0, line = 1;
   int declarationLine = 0;  // where the current top-level declaration began (its first token)
-  std::string lastName;     // the identifier before the last '(' at depth 0
-  int nameLine = 0;
-  bool sawParen = false;
+  std::string name;         // the identifier before its first '(': a function's name
+  FunctionSpan open;        // the body being read; no name: a struct's or a block's, not recorded
   bool block = false, lineComment = false, lineStart = true, directive = false;
-  FunctionSpan open;
   for (size_t i = 0; i < source.size(); ++i) {
     const char c = source[i];
     const char next = i + 1 < source.size() ? source[i + 1] : '\0';
@@ -46,62 +44,38 @@ std::vector<FunctionSpan> findFunctions(std::string_view source) {
       continue;
     }
     if (lineComment || directive) continue;
-    if (c == '/' && next == '*') {
-      block = true, ++i;
-      continue;
-    }
-    if (c == '/' && next == '/') {
-      lineComment = true, ++i;
+    if (c == '/' && (next == '*' || next == '/')) {
+      (next == '*' ? block : lineComment) = true, ++i;
       continue;
     }
     if (lineStart && c == '#') {
       directive = true;
       continue;
     }
-    if (!std::isspace(static_cast<unsigned char>(c))) lineStart = false;
-    if (depth > 0) {
+    if (std::isspace(static_cast<unsigned char>(c))) continue;
+    lineStart = false;
+    if (depth > 0) {  // inside a body: only its end matters
       if (c == '{') ++depth;
       if (c == '}' && --depth == 0) {
         open.lastLine = line;
-        out.push_back(open);
-        declarationLine = 0, sawParen = false, lastName.clear();
+        if (!open.name.empty()) out.push_back(open);
+        declarationLine = 0, name.clear();
       }
       continue;
     }
-    if (std::isspace(static_cast<unsigned char>(c))) continue;
     if (declarationLine == 0) declarationLine = line;
     if (c == ';' || c == '}') {
-      declarationLine = 0, sawParen = false, lastName.clear();
-      continue;
-    }
-    if (c == '(' && !sawParen) {
-      // The identifier just before it is the function's name.
+      declarationLine = 0, name.clear();
+    } else if (c == '(' && name.empty()) {
       size_t e = i;
       while (e > 0 && std::isspace(static_cast<unsigned char>(source[e - 1]))) --e;
       size_t b = e;
       while (b > 0 && identifierChar(source[b - 1])) --b;
-      lastName = std::string(source.substr(b, e - b));
-      nameLine = line;
-      sawParen = true;
-      continue;
-    }
-    if (c == '{') {
+      name = std::string(source.substr(b, e - b));
+      if (name == "layout") name.clear();  // layout(...) qualifies a block or a variable, not a function
+    } else if (c == '{') {
       depth = 1;
-      if (sawParen && !lastName.empty())
-        open = {lastName, declarationLine, 0};
-      else
-        open = {"", declarationLine, 0};  // a struct or an interface block: not a function
-      if (open.name.empty()) {            // skip to its end without recording it
-        int d = 1;
-        for (++i; i < source.size() && d > 0; ++i) {
-          if (source[i] == '\n') ++line;
-          if (source[i] == '{') ++d;
-          if (source[i] == '}') --d;
-        }
-        --i;
-        depth = 0, declarationLine = 0, sawParen = false, lastName.clear();
-      }
-      (void)nameLine;
+      open = {name, declarationLine, 0};
     }
   }
   return out;

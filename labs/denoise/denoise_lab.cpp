@@ -368,36 +368,6 @@ void DenoiseLab::submit(const DenoiseConfig& want, std::shared_ptr<const Smoothe
       });
 }
 
-bool DenoiseLab::smoothsOnGpu(const DenoiseConfig& c) const {
-  return c.device == SmoothingDevice::Gpu && gpuUnavailable_.empty() &&
-         (c.method == DenoiseMethod::Explicit || c.method == DenoiseMethod::Taubin);
-}
-
-SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {
-  // The mesh and the noisy input go up once each: a lambda or iterations drag changes neither.
-  const GpuInput input{modelRevision_, c.weld, c.publishedInput, c.noise};
-  if (!gpuInput_ || !(*gpuInput_ == input)) {
-    SmoothingInput in = smoothingInput(*model_, c);
-    if (!gpuInput_ || gpuInput_->model != input.model || gpuInput_->weld != input.weld)
-      gpu_.setMesh(in.start.size(), in.indices, *in.adjacency);
-    gpu_.setStart(in.start);
-    gpuInput_ = input;
-  }
-  SmoothingSettings s = c.smoothing;
-  s.method = c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin : SmoothingMethod::Explicit;
-  const GpuSmoothing run = gpu_.run(*shaders_, s);
-  // Drawn from the smoother's texture until the job's result arrives: each render vertex at the
-  // texel of the vertex it was smoothed as (its welded vertex, or itself without weld).
-  if (!gpuDrawn_ || gpuDrawnWelded_ != c.weld) {
-    std::vector<float> index(model_->render.positions.size());
-    for (size_t v = 0; v < index.size(); ++v) index[v] = float(c.weld ? model_->welded.logicalOf[v] : uint32_t(v));
-    plainMesh_.setScalars(kScalar0, index);  // exact: float holds every index below 2^24
-    gpuDrawnWelded_ = c.weld;
-  }
-  gpuDrawn_ = true;
-  return {gpu_.readPositions(), run.energy, run.grewAt, run.stoppedAt, run.ms};
-}
-
 void DenoiseLab::upload(DenoiseResult r) {
   result_ = std::make_unique<DenoiseResult>(std::move(r));
   gpuDrawn_ = false;  // the result's own positions, from here on

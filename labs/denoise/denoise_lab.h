@@ -124,9 +124,9 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   };
   std::optional<GpuInput> gpuInput_;
   // The smoother's last run is newer than the result drawn: the smoothed mesh is drawn from its
-  // texture (no read-back) until the job's result arrives. plainMesh_'s kScalar0 holds each
-  // vertex's texel index, for weld on or off.
-  bool gpuDrawn_ = false, gpuDrawnWelded_ = true;
+  // texture (no read-back) until the job's result arrives; plainMesh_'s kScalar0 holds each
+  // vertex's texel index there (set with the smoother's mesh).
+  bool gpuDrawn_ = false;
   gl::Texture2D mapTexture_, mapPreview_;
   std::string lastAction_;
   // What the GPU meshes hold now: re-uploaded when the show or view changes, not per frame.

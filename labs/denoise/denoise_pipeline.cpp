@@ -324,8 +324,8 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   r.solveMs = smoothed ? smoothed->ms : msSince(t0);
   if (job && job->cancelled()) return r;
   if (c.method != DenoiseMethod::Bilateral)
-    r.stabilityLimit = stabilityLimit(
-        adjacency, edgeWeights(start, indices, adjacency, c.smoothing.weights, c.smoothing.clampNegative), 200);
+    r.stabilityLimit =
+        stabilityLimit(adjacency, r.weights, 200);  // the weights of the start, as the smoothing had them
 
   // 4. Offsets along the noisy surface's normals, per render vertex.
   if (job) job->stage(0.8f, 0.82f);

@@ -58,8 +58,6 @@ class GpuSmoother {
   // The texture the last run's result is in (.xyz relative to centre()).
   GLuint positionTexture() const { return current_ < 0 ? start_.id() : positions_[current_].id(); }
   glm::dvec3 centre() const { return centre_; }
-  glm::ivec2 layout() const { return size_; }
-  size_t vertexCount() const { return vertexCount_; }
 
  private:
   // One step of size `lambda` from the current positions (the start's, first) into the other

@@ -386,7 +386,12 @@ void SurfaceLab::render(Frame& frame) {
   if (tessellating) what += ", level " + std::to_string(tessLevel) + (tess ? "" : " (cut on the CPU)");
   {
     auto pass = frame.pass("surface: " + what);
-    for (const SurfaceDraw& d : draws) drawSurface(frame, d, tess ? tessLevel : 0);
+    // The light: elevation above the wall's plane (its normal is +z) or the ground's (+y).
+    const float el = glm::radians(params.lightElevationDeg), az = glm::radians(params.lightAzimuthDeg);
+    const bool wall = frame.scene.name == "bricks" || frame.scene.name == "bricks-learnopengl";
+    const glm::vec3 lightDir = wall ? glm::vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el))
+                                    : glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+    for (const SurfaceDraw& d : draws) drawSurface(frame, d, tess ? tessLevel : 0, glm::normalize(lightDir));
   }
   if (params.overlay && frame.slice + 1 == frame.slices) {
     auto pass = frame.pass("tangent frames");
@@ -395,12 +400,7 @@ void SurfaceLab::render(Frame& frame) {
 }
 
 // One draw of the surface; `tessLevel` 0 without tessellation stages.
-void SurfaceLab::drawSurface(Frame& frame, const SurfaceDraw& d, int tessLevel) {
-  // The light: elevation above the wall's plane (its normal is +z) or the ground's (+y).
-  const float el = glm::radians(params.lightElevationDeg), az = glm::radians(params.lightAzimuthDeg);
-  const bool wall = frame.scene.name == "bricks" || frame.scene.name == "bricks-learnopengl";
-  const glm::vec3 lightDir = wall ? glm::vec3(std::cos(el) * std::sin(az), std::cos(el) * std::cos(az), std::sin(el))
-                                  : glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+void SurfaceLab::drawSurface(Frame& frame, const SurfaceDraw& d, int tessLevel, glm::vec3 lightDir) {
   static const std::string noUvs =
       "a mesh has no UVs: there is nothing to look the maps up with, so it is "
       "drawn with its own normals and no surface detail";
@@ -414,7 +414,7 @@ void SurfaceLab::drawSurface(Frame& frame, const SurfaceDraw& d, int tessLevel) 
   prog.set("u_normalMatrix", glm::mat3(glm::inverseTranspose(d.model)));
   prog.set("u_viewProj", frame.viewProj());
   prog.set("u_eye", frame.camera.eye());
-  prog.set("u_lightDir", glm::normalize(lightDir));
+  prog.set("u_lightDir", lightDir);
   prog.set("u_baseColor", mat.baseColor);
   const gl::Texture2D* color = frame.gpu.baseColorTexture(mat);
   const gl::Texture2D* normal = frame.gpu.normalTexture(mat);

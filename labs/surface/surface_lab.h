@@ -137,7 +137,7 @@ class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
   int tessLevelFor(const Scene& scene);    // the tessellation level drawn: the asked one, held to the triangle cap
   void measureUvShear(const Scene& scene);
   void noteHeightless(const Frame& frame, std::span<const SurfaceDraw> draws);
-  void drawSurface(Frame& frame, const SurfaceDraw& d, int tessLevel);
+  void drawSurface(Frame& frame, const SurfaceDraw& d, int tessLevel, glm::vec3 lightDir);
   void drawTangentFrames(Frame& frame, SurfaceGeometryKey key);
 
   ShaderLibrary* shaders_ = nullptr;
