@@ -57,7 +57,7 @@ target_compile_options(shadelab PRIVATE -pthread -fexceptions -Wall -Wextra -Wno
 # COOP/COEP (web.sh). A pool started with the page, so that no job waits for a worker to be made.
 target_link_options(shadelab PRIVATE -pthread -fexceptions -sPTHREAD_POOL_SIZE=6 -sUSE_GLFW=3
   -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=268435456
-  -sMAXIMUM_MEMORY=2147483648 -sENVIRONMENT=web,worker -sEXIT_RUNTIME=0 -sEXPORTED_RUNTIME_METHODS=[FS,addRunDependency,removeRunDependency]
+  -sMAXIMUM_MEMORY=2147483648 -sENVIRONMENT=web,worker -sEXIT_RUNTIME=0 -sEXPORTED_RUNTIME_METHODS=[FS,addRunDependency,removeRunDependency,ccall]
   -lidbfs.js  # the student's folder, kept in the browser's storage (IndexedDB)
   --profiling-funcs  # function names in the .wasm: a stack trace in the console names them
   "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/shaders@/shadelab/shaders"
@@ -75,7 +75,10 @@ file(GLOB_RECURSE WEB_PRELOADED CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/* 
 list(APPEND WEB_PRELOADED ${WEB_COURSE_FILES})
 set_property(TARGET shadelab APPEND PROPERTY LINK_DEPENDS ${WEB_PRELOADED})
 # The page around it: copied whenever it changes, whether or not the program was rebuilt.
-add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/index.html ${CMAKE_BINARY_DIR}/isolation.js
-  COMMAND ${CMAKE_COMMAND} -E copy ${CMAKE_SOURCE_DIR}/web/index.html ${CMAKE_SOURCE_DIR}/web/isolation.js ${CMAKE_BINARY_DIR}
-  DEPENDS ${CMAKE_SOURCE_DIR}/web/index.html ${CMAKE_SOURCE_DIR}/web/isolation.js)
-add_custom_target(web_page ALL DEPENDS ${CMAKE_BINARY_DIR}/index.html ${CMAKE_BINARY_DIR}/isolation.js)
+set(WEB_PAGE index.html isolation.js course.js)
+list(TRANSFORM WEB_PAGE PREPEND ${CMAKE_SOURCE_DIR}/web/ OUTPUT_VARIABLE WEB_PAGE_SOURCES)
+list(TRANSFORM WEB_PAGE PREPEND ${CMAKE_BINARY_DIR}/ OUTPUT_VARIABLE WEB_PAGE_COPIES)
+add_custom_command(OUTPUT ${WEB_PAGE_COPIES}
+  COMMAND ${CMAKE_COMMAND} -E copy ${WEB_PAGE_SOURCES} ${CMAKE_BINARY_DIR}
+  DEPENDS ${WEB_PAGE_SOURCES})
+add_custom_target(web_page ALL DEPENDS ${WEB_PAGE_COPIES})

@@ -74,6 +74,12 @@ std::vector<fs::path>& courseFolders() {
 
 void setCourseFolders(std::vector<fs::path> folders) { courseFolders() = std::move(folders); }
 
+void addCourseFolder(const fs::path& folder) {
+  std::vector<fs::path>& folders = courseFolders();
+  folders.erase(std::remove(folders.begin(), folders.end(), folder), folders.end());
+  folders.insert(folders.begin(), folder);
+}
+
 fs::path builtinExercisesRoot() { return fs::path(SHADELAB_SOURCE_DIR) / "exercises"; }
 
 std::vector<fs::path> exerciseRoots() {

@@ -105,6 +105,9 @@ struct Exercise {
 // id in an earlier folder hides the same id in a later one, so a course can also replace a
 // built-in exercise. Its files are read only inside it, as a student's are.
 void setCourseFolders(std::vector<std::filesystem::path> folders);
+// One more course folder, ahead of those already there (a course dropped on the window or the
+// page); one already among them moves to the front.
+void addCourseFolder(const std::filesystem::path& folder);
 std::vector<std::filesystem::path> exerciseRoots();
 std::filesystem::path builtinExercisesRoot();  // exercises/ in the source tree
 // Every exercise id under `root`, sorted ("shading/blinn-phong", ...).

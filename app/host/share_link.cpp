@@ -64,6 +64,8 @@ OpenedLink openLink(const std::string& fragment) {
       link.measure = true;
     else if (key == "exercise")
       link.exercise = value;
+    else if (key == "course")
+      link.course = value;
     else if (key == "check")
       link.check = true;
     else if (key == "builtin")
@@ -81,8 +83,8 @@ OpenedLink openLink(const std::string& fragment) {
       link.sets.push_back(item);
     else
       link.problems.push_back("the link's key '" + key +
-                              "' is unknown (valid: lab, scene, camera, measure, exercise, check, builtin, present, "
-                              "frames, cycle, LAB.KEY)");
+                              "' is unknown (valid: lab, scene, camera, measure, exercise, course, check, builtin, "
+                              "present, frames, cycle, LAB.KEY)");
   }
   return link;
 }

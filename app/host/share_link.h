@@ -24,6 +24,7 @@ struct OpenedLink {
   std::vector<std::string> sets;  // "lab.key=value"
   bool measure = false;
   std::string exercise;               // "shading/blinn-phong": the Exercises section opens on it
+  std::string course;                 // "week3.zip": a course zip of the page's site (web/course.js unpacks it)
   bool check = false;                 // press its Check once the page has drawn
   bool builtin = false;               // the student's folder is not searched (after a shader lost the context)
   bool present = false;               // presentation mode: the viewport fills the page (F11 / Esc leave it)

@@ -58,6 +58,22 @@ void ExercisePanel::select(const std::string& id) {
   statement = readWholeFile(exerciseRootOf(id) / id / "statement.md");
 }
 
+std::string openCourseFolder(ExercisePanel& panel, const fs::path& folder) {
+  const std::vector<std::string> ids = listExercises(folder);
+  if (ids.empty())
+    return folder.string() + " holds no exercise (a course folder holds LAB/NAME/rubric.json, as exercises/ does)";
+  std::string problems;
+  for (const std::string& id : ids)
+    if (Exercise ex; !loadExercise(folder, id, ex).empty()) problems += (problems.empty() ? "" : ", ") + id;
+  addCourseFolder(folder);
+  panel.listed = false;  // listed again on the next frame, this course first
+  panel.select(ids.front());
+  std::string list;
+  for (const std::string& id : ids) list += (list.empty() ? "" : ", ") + id;
+  return "course " + folder.filename().string() + " opened (Exercises): " + list +
+         (problems.empty() ? "" : "; these do not load, `shadelab exercise check` says why: " + problems);
+}
+
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
   if (!panel.listed) {  // once: the exercises ship with the program
     // A course's exercises first, under its folder's name; then as exercises/README.md lists
@@ -118,6 +134,7 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     ImGui::TextWrapped(
         "Each exercise asks for one function of a lab's shader: open its starter, write the "
         "function in the editor, and press Check to have it graded here.");
+    ImGui::TextDisabled("A course of your own: drop its folder on the window (in the page: its .zip).");
     return;
   }
   if (editor.folder.empty()) {

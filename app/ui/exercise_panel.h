@@ -3,6 +3,7 @@
 // which runs the exercise's rubric in place (grade/exercise_check.h) and shows the grader's lines:
 // one per check, PASS / PARTIAL / FAIL, the hint under each that lost points, and the total.
 #pragma once
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct ExercisePanel {
 
   void select(const std::string& id);
 };
+
+// A course folder dropped on the window (or a zip on the page, unpacked): its exercises listed
+// first, its first one selected. Returns the line for the Messages panel: what opened, or why not.
+std::string openCourseFolder(ExercisePanel& panel, const std::filesystem::path& folder);
 
 // The section's contents; `status` receives what happened (the starter copied, why not).
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status);

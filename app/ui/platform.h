@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "app/context/load_gl.h"
 
@@ -49,6 +50,14 @@ void enableContextFeatures();
 // The page's canvas fills the browser's window and follows it when it is resized (the layout
 // follows the framebuffer every frame); the desktop's window is the user's to size.
 void followPageSize(GLFWwindow* window);
+
+// Course folders the page opened on its own since the last call: zips dropped on it, unpacked by
+// web/course.js (a folder, or the one-line problem that kept it from opening). Never any on the
+// desktop, where a dropped course folder arrives as any other drop.
+struct OpenedCourse {
+  std::string folder, problem;
+};
+std::vector<OpenedCourse> takeOpenedCourses();
 
 // The #version line Dear ImGui's OpenGL backend writes into its shaders.
 const char* imguiGlslVersion();

@@ -7,10 +7,12 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <utility>
 
 #include <GLFW/glfw3.h>
 
 #include "app/shader/preprocessor.h"
+#include "app/ui/window_events.h"
 
 extern "C" void* emscripten_webgl1_get_proc_address(const char* name);  // emscripten's system/lib/gl
 extern "C" void* emscripten_webgl2_get_proc_address(const char* name);
@@ -65,6 +67,15 @@ void persistStudentFiles() {
   });
 }
 // clang-format on
+
+namespace {
+std::vector<OpenedCourse>& openedCourses() {
+  static std::vector<OpenedCourse> opened;
+  return opened;
+}
+}  // namespace
+
+std::vector<OpenedCourse> takeOpenedCourses() { return std::exchange(openedCourses(), {}); }
 
 const char* missingDataAdvice() {
   return "The page does not carry them (the desktop build fetches them with tools/get_data.sh); drop a mesh file "
@@ -130,3 +141,9 @@ const char* imguiGlslVersion() { return "#version 300 es"; }
 float contentScale(GLFWwindow*) { return 1.0f; }
 
 }  // namespace shadelab
+
+// web/course.js, once a dropped zip is unpacked (on the page's main thread, between frames).
+extern "C" EMSCRIPTEN_KEEPALIVE void shadelab_course_opened(const char* folder, const char* problem) {
+  shadelab::openedCourses().push_back({folder, problem});
+  shadelab::countWindowEvent(nullptr);  // a window that waits for events draws again
+}

@@ -98,10 +98,23 @@ void presentationOverlay(AppState& app, const std::vector<gl::PassTiming>& passe
 }
 
 void handleDrops(AppState& app) {
+  for (const OpenedCourse& course : takeOpenedCourses()) {  // the page's dropped zips, unpacked
+    if (course.problem.empty())
+      app.dropped.push_back(course.folder);
+    else
+      app.message = course.problem;
+    std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
+  }
   for (auto& path : app.dropped) {
     const std::filesystem::path p(path);
     const std::string ext = p.extension().string();
-    if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl" || ext == ".tesc" || ext == ".tese") {
+    std::error_code ec;
+    if (std::filesystem::is_directory(p, ec)) {
+      app.message = openCourseFolder(app.exercises, p);
+      std::printf("shadelab: %s\n", app.message.c_str());  // the page's console, a terminal
+      std::fflush(stdout);
+    } else if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl" || ext == ".tesc" ||
+               ext == ".tese") {
       const auto result = app.host->shaders().overrideByName(p);
       app.message =
           !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;

@@ -2,7 +2,8 @@
 //   index.html#lab=shadows&scene=learnopengl&shadows.filter=pcss&camera=yaw=30,pitch=20
 // lab, scene and camera as the desktop's --lab, --scene and --camera; every "lab.key=value" a --set;
 // "measure" presses Measure once the first frames are timed (--measure); "exercise=shading/blinn-phong"
-// opens the Exercises section on it and "check" presses its Check; "builtin" leaves the student's
+// opens the Exercises section on it and "check" presses its Check; "course=week3.zip" adds a course zip of the
+// same site (web/course.js); "builtin" leaves the student's
 // folder out of the search (the page's reload after a shader lost the WebGL context). What the link gets wrong is
 // shown in the page's Messages panel.
 #include <emscripten.h>
@@ -26,7 +27,16 @@ int main() {
   // searched, only edited: the student fixes the file, then opens the page without "builtin".
   std::vector<std::string> args{"shadelab"};
   if (!link.builtin) args.insert(args.end(), {"--shaders", "/student"});
-  // A course folder built into the site (./web.sh --exercises DIR): listed before the built-in exercises.
+  // A course folder built into the site (./web.sh --exercises DIR): listed before the built-in exercises;
+  // the link's course zip, unpacked by the page before main (web/course.js), before that.
+  std::string problems;
+  if (!link.course.empty()) {
+    const std::string folder = emscripten_run_script_string("(Module.shadelabLinkCourse || {}).folder || ''");
+    if (!folder.empty())
+      args.insert(args.end(), {"--exercises", folder});
+    else
+      problems = emscripten_run_script_string("(Module.shadelabLinkCourse || {}).problem || 'the course did not open'");
+  }
   std::error_code ec;
   if (std::filesystem::is_directory("/shadelab/course", ec))
     args.insert(args.end(), {"--exercises", "/shadelab/course"});
@@ -37,7 +47,6 @@ int main() {
     if (!value->empty()) args.insert(args.end(), {key, *value});
   for (auto& s : link.sets) args.insert(args.end(), {"--set", s});
   if (link.measure) args.push_back("--measure");
-  std::string problems;
   for (auto& p : link.problems) problems += (problems.empty() ? "" : "\n") + p;
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());

@@ -477,9 +477,11 @@ TEST(Host, ASharedLinkOpensTheSameFrame) {
 
   // The page's own keys: an exercise and its Check, the lab's own shaders, presentation mode, a
   // number of frames (a bad one named), cycling the labs.
-  const OpenedLink page = openLink("exercise=shading%2Fblinn-phong&check&builtin&present&frames=120&cycle");
+  const OpenedLink page =
+      openLink("exercise=shading%2Fblinn-phong&course=week3.zip&check&builtin&present&frames=120&cycle");
   EXPECT_TRUE(page.problems.empty());
   EXPECT_EQ(page.exercise, "shading/blinn-phong");
+  EXPECT_EQ(page.course, "week3.zip");
   EXPECT_TRUE(page.check && page.builtin && page.present && page.cycle);
   EXPECT_EQ(page.frames, 120);
   const OpenedLink badFrames = openLink("frames=-3");

@@ -43,10 +43,10 @@ open_lab shadows "lab=shadows"
 open_lab shadows-point-pcss "lab=shadows&shadows.light_type=point&shadows.filter=pcss"  # six cube passes
 echo "every lab draws in the page"
 
-drive() {  # drive NAME LINK ARGS...: the page at LINK, driven by tools/web_driver.py ARGS
+drive() {  # drive NAME LINK ARGS...: the page at LINK (of the site on $drive_port), driven by tools/web_driver.py ARGS
   local name=$1 link=$2
   shift 2
-  python3 "$repo/tools/web_driver.py" "http://127.0.0.1:$port/index.html#$link" --frames 5 --timeout 180 \
+  python3 "$repo/tools/web_driver.py" "http://127.0.0.1:${drive_port:-$port}/index.html#$link" --frames 5 --timeout 180 \
     --screenshot "$out/$name.png" "$@" >"$out/$name.log" 2>&1 || { cat "$out/$name.log"; echo "$name: failed"; exit 1; }
 }
 
@@ -128,6 +128,56 @@ for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-l
     { cat "$out/$name.log"; echo "Check in the page did not grade the $exercise starter"; exit 1; }
   grep -m1 -E "$exercise: [0-9.]+ / " <<<"$checked"
 done
+# A course zip of the site, as a teacher puts one beside the page: opened by the link, its part-file
+# exercise listed and graded by Check; a zip that is not one, and one whose names leave its folder, are
+# refused with the zip's name; a zip dropped on the page opens as a course.
+course_site=$out/course-site
+rm -rf "$course_site" && mkdir -p "$course_site"
+for f in index.html isolation.js course.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js; do
+  ln -s "$(realpath "$site/$f")" "$course_site/$f"
+done
+python3 - "$repo/tests/data/course" "$course_site" <<'ZIP'
+import os, sys, zipfile
+course, site = sys.argv[1:]
+with zipfile.ZipFile(os.path.join(site, "week3.zip"), "w", zipfile.ZIP_DEFLATED) as z:
+    for folder, _, files in os.walk(course):
+        for f in files:
+            z.write(os.path.join(folder, f), os.path.join("week3", os.path.relpath(os.path.join(folder, f), course)))
+with zipfile.ZipFile(os.path.join(site, "evil.zip"), "w") as z:
+    z.writestr("week3/shading/x/rubric.json", "{}")
+    z.writestr("week3/../../student/common/lighting.glsl.part", "overwritten")
+open(os.path.join(site, "broken.zip"), "w").write("not a zip")
+ZIP
+course_port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+python3 "$repo/tools/serve_web.py" "$course_site" --port "$course_port" >"$out/course-serve.log" 2>&1 &
+course_server=$!
+trap 'kill $server $course_server 2>/dev/null || true' EXIT
+for _ in $(seq 50); do grep -q "http://" "$out/course-serve.log" 2>/dev/null && break; sleep 0.1; done
+drive_port=$course_port
+part=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' \
+  "$repo/tests/data/course/shading/point-lights/starter/common/lighting.glsl.part")
+save="(async () => { Module.FS.mkdirTree('/student/common'); Module.FS.writeFile('/student/common/lighting.glsl.part', $part);
+  await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
+drive course-link "lab=shading&course=week3.zip&exercise=shading/point-lights&check" --frames 10 --eval "$save" \
+  --wait-console "shading/point-lights: " --reload --wait-console-after-reload "shading/point-lights: "
+checked=$(sed -n '/--- reloaded ---/,$p' "$out/course-link.log")
+grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
+  grep -qE "shading/point-lights: [0-9.]+ / [0-9.]+ points .*NOT PASSED" <<<"$checked" ||
+  { cat "$out/course-link.log"; echo "Check in the page did not grade the linked course's exercise"; exit 1; }
+grep -m1 -E "shading/point-lights: [0-9.]+ / " <<<"$checked"
+drive course-broken "lab=shading&course=broken.zip" --wait-console "broken.zip: not a zip archive"
+drop_zip="(async () => { for (const name of ['evil.zip', 'week3.zip']) {
+    const bytes = await (await fetch(name)).arrayBuffer();
+    const dt = new DataTransfer(); dt.items.add(new File([bytes], name, {type: 'application/zip'}));
+    Module.canvas.dispatchEvent(new DragEvent('drop', {dataTransfer: dt, bubbles: true, cancelable: true})); }
+  return 'dropped'; })()"
+drive course-drop "lab=shading" --frames 10 --eval "$drop_zip" --wait-console "course week3 opened"
+grep -q "evil.zip: 'week3/../../student/common/lighting.glsl.part' leaves the course's folder" "$out/course-drop.log" &&
+  grep -q "course week3 opened (Exercises): shading/point-lights, shading/specular-lobe" "$out/course-drop.log" ||
+  { cat "$out/course-drop.log"; echo "a dropped course zip was not opened (or a hostile one not refused)"; exit 1; }
+unset drive_port
+echo "a course zip opens in the page by link and by drop, and is graded there"
+
 # A shader that runs too long makes the browser take the WebGL context away (here: asked for with
 # WEBGL_lose_context): the page stops drawing, says why and offers a reload without the student's folder.
 lose="(async () => { Module.canvas.getContext('webgl2').getExtension('WEBGL_lose_context').loseContext();
@@ -141,7 +191,7 @@ echo "a lost WebGL context is reported, with a reload"
 plain_port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$plain_port" --bind 127.0.0.1 --directory "$site" >"$out/plain-host-server.log" 2>&1 &
 plain=$!
-trap 'kill $server $plain 2>/dev/null || true' EXIT
+trap 'kill $server $course_server $plain 2>/dev/null || true' EXIT
 for _ in $(seq 50); do grep -q "Serving HTTP" "$out/plain-host-server.log" 2>/dev/null && break; sleep 0.1; done
 python3 "$repo/tools/web_driver.py" "http://127.0.0.1:$plain_port/index.html#lab=shading" --frames 10 --timeout 90 \
   --screenshot "$out/plain-host.png" >"$out/plain-host.log" 2>&1 || { cat "$out/plain-host.log"; echo "the page did not start on a host without headers"; exit 1; }
