@@ -228,6 +228,12 @@ LightFrame fitDirectional(const LightFrame& sceneFit, const std::vector<glm::vec
   return L;
 }
 
+glm::vec4 cascadeBox(const LightFrame& first, const LightFrame& cascade) {
+  const float h = std::max(cascade.orthoHalfExtent, 1e-30f);
+  const glm::vec2 t = (first.orthoCentre - cascade.orthoCentre) / h;
+  return {first.orthoHalfExtent / h, t.x, t.y, cascade.orthoHalfExtent};
+}
+
 std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
                                    const Bounds& bounds, const std::vector<Bounds>& someParts) {
   const std::vector<Bounds> parts = someParts.empty() ? std::vector<Bounds>{bounds} : someParts;

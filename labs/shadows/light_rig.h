@@ -55,6 +55,12 @@ struct LightFrame {
   float texelWorld(float depth, int resolution) const;
 };
 
+// A cascade as the lit shader reads it (shaders/shadows/lit.frag, cascadeLight): its box relative
+// to the first cascade's, (s, t.x, t.y, half extent) with clip.xy = s * first's clip.xy + t. The
+// cascades of one light share its view and its depth range (fitDirectional keeps both), so that
+// is all that differs between their matrices.
+glm::vec4 cascadeBox(const LightFrame& first, const LightFrame& cascade);
+
 // Builds the light for `bounds`. Adds a line to `warnings` for configurations that cannot work
 // well (the scene outside the light's frustum, near/far ratio beyond depth precision, ...).
 LightFrame buildLight(const LightSetup& setup, const Bounds& bounds, std::vector<std::string>& warnings);

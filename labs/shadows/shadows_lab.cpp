@@ -174,8 +174,7 @@ void ShadowsLab::drawLit(Frame& frame, Program& prog, const LightFrame& key, con
   setLight(prog, "u_key", cascades_.empty() ? key : cascades_[0].light, sizeOf(keyMap_));
   if (cascades_.size() >= 2) {
     for (size_t i = 0; i < cascades_.size(); ++i) {
-      const std::string n = "u_cascade[" + std::to_string(i) + "]";
-      setLight(prog, n, cascades_[i].light, sizeOf(keyMap_), int(i));
+      prog.set(("u_cascadeBox[" + std::to_string(i) + "]").c_str(), cascadeBox(cascades_[0].light, cascades_[i].light));
       prog.set(("u_cascadeFar[" + std::to_string(i) + "]").c_str(), cascades_[i].splitFar);
       prog.set(("u_blendFrom[" + std::to_string(i) + "]").c_str(), cascades_[i].blendFrom);
     }

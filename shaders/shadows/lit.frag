@@ -25,10 +25,27 @@ uniform samplerCubeShadow u_keyCmpCube;
 uniform sampler2DArray u_keyMoments;
 #endif
 #ifdef CASCADE_COUNT
-uniform ShadowLight u_cascade[CASCADE_COUNT];
+// Every cascade is the first one's orthographic box (u_key) moved and scaled in the light's view
+// plane: one light direction, one depth range. So a cascade is four numbers, u_cascadeBox[i] =
+// (s, t.x, t.y, half width), with clip_i.xy = s clip_1.xy + t: one vec4 read per pixel for the
+// cascade it picked, where a whole ShadowLight per cascade, indexed per pixel, cost llvmpipe as
+// much as the rest of the lighting pass together.
+uniform vec4 u_cascadeBox[CASCADE_COUNT];
 uniform float u_cascadeFar[CASCADE_COUNT];    // view depth where cascade i hands over to i + 1
 uniform float u_blendFrom[CASCADE_COUNT];     // view depth where blending into i + 1 begins
 uniform vec3 u_viewForward;
+
+ShadowLight cascadeLight(int i) {
+  vec4 box = u_cascadeBox[i];
+  ShadowLight L = u_key;
+  L.viewProj[0].xy *= box.x;
+  L.viewProj[1].xy *= box.x;
+  L.viewProj[2].xy *= box.x;
+  L.viewProj[3].xy = L.viewProj[3].xy * box.x + box.yz;
+  L.halfWidth = box.w;
+  L.layer = float(i);
+  return L;
+}
 #endif
 #ifdef FILL_LIGHT
 uniform ShadowLight u_fill;
@@ -99,26 +116,26 @@ void main() {
   dbg.blocker = -1.0;
   dbg.penumbra = 0.0;
   float keyVis = 1.0;
-  int cascade = 0;
-  float blend = 0.0;
+  int cascade = 0;  // the cascade whose map this pixel reads
 #ifdef KEY_CASTS
 #ifdef CASCADE_COUNT
+  // The cascade is the slice the pixel's view depth falls in. The last stretch of each slice (the
+  // blend band) hands over to the next cascade, which covers it too: a share of its pixels that
+  // grows across the band, picked per pixel by a dither (interleaved gradient noise), reads the
+  // next map. One lookup per pixel, never two blended: llvmpipe runs both sides of every branch,
+  // so a second lookup "only inside the band" costs it a second lookup everywhere.
   float viewDepth = dot(P - u_eye, u_viewForward);
-  for (int i = 0; i < CASCADE_COUNT - 1; ++i)
-    if (viewDepth > u_cascadeFar[i]) cascade = i + 1;
-  keyVis = keyShadow(u_cascade[cascade], surface, dbg);
-  if (cascade < CASCADE_COUNT - 1 && viewDepth > u_blendFrom[cascade])
-    blend = clamp((viewDepth - u_blendFrom[cascade]) / max(u_cascadeFar[cascade] - u_blendFrom[cascade], 1e-30), 0.0, 1.0);
-  // The last stretch of a cascade fades into the next, which covers it too: no visible seam.
-  ShadowDebug next;
-#ifdef FILTER_MOMENTS
-  // One lookup of a mipmapped map, made by every pixel: inside a branch that only some pixels of
-  // a 2x2 quad take, llvmpipe (Mesa 22.3) reads the wrong level and draws a dark line along the
-  // start of each blend band.
-  keyVis = mix(keyVis, keyShadow(u_cascade[min(cascade + 1, CASCADE_COUNT - 1)], surface, next), blend);
-#else
-  if (blend > 0.0) keyVis = mix(keyVis, keyShadow(u_cascade[cascade + 1], surface, next), blend);
-#endif
+  float bandFrom = u_blendFrom[0], bandTo = u_cascadeFar[0];
+  for (int i = 0; i < CASCADE_COUNT - 1; ++i) {  // constant indices: no per-pixel array reads
+    if (viewDepth > u_cascadeFar[i]) {
+      cascade = i + 1;
+      bandFrom = u_blendFrom[i + 1];
+      bandTo = u_cascadeFar[i + 1];
+    }
+  }
+  float handOver = clamp((viewDepth - bandFrom) / max(bandTo - bandFrom, 1e-30), 0.0, 1.0);
+  if (cascade < CASCADE_COUNT - 1 && handOver > pixelNoise()) cascade += 1;
+  keyVis = keyShadow(cascadeLight(cascade), surface, dbg);
 #else
   keyVis = keyShadow(u_key, surface, dbg);
 #endif
@@ -137,7 +154,7 @@ void main() {
   // than the screen (jagged edges), blue = finer (wasted texels).
   float pixelWorld = max(length(fwidth(P)), 1e-30);
 #ifdef CASCADE_COUNT
-  ShadowLight T = u_cascade[cascade];
+  ShadowLight T = cascadeLight(cascade);
 #else
   ShadowLight T = u_key;
 #endif
@@ -146,20 +163,18 @@ void main() {
                        : mix(vec3(0.2, 0.8, 0.2), vec3(0.1, 0.2, 1.0), clamp(-ratio / 3.0, 0.0, 1.0));
   o_color = encodeOutput(c * (0.35 + 0.65 * max(keyNdotL, 0.0)));
 #elif defined(VIEW_CASCADES)
-  // One colour per cascade, the blend band striped towards the next; magenta where a pixel falls
-  // outside the map of its cascade (a gap in the cover: there must be none).
+  // One colour per cascade (the blend band a dither of two: each pixel reads one map); magenta
+  // where a pixel falls outside the map it reads (a gap in the cover: there must be none).
   const vec3 colours[4] = vec3[4](vec3(0.9, 0.3, 0.25), vec3(0.3, 0.8, 0.3), vec3(0.3, 0.5, 1.0), vec3(0.95, 0.8, 0.2));
 #ifdef CASCADE_COUNT
-  ShadowLight C = u_cascade[cascade];
+  ShadowLight C = cascadeLight(cascade);
 #else
   ShadowLight C = u_key;
 #endif
   vec4 clip = C.viewProj * vec4(P, 1.0);
   vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
   bool outside = any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)));
-  vec3 c = colours[cascade];
-  if (blend > 0.0 && fract((gl_FragCoord.x + gl_FragCoord.y) / 12.0) < 0.5) c = mix(c, colours[min(cascade + 1, 3)], blend);
-  c *= 0.45 + 0.55 * keyVis;
+  vec3 c = colours[cascade] * (0.45 + 0.55 * keyVis);
   o_color = encodeOutput(outside && KEY_TYPE == LIGHT_DIRECTIONAL ? vec3(1.0, 0.0, 1.0) : c);
 #elif defined(VIEW_PCSS_BLOCKER)
   o_color = encodeOutput(dbg.blocker < 0.0 ? vec3(0.0, 0.15, 0.0) : vec3(dbg.blocker));

@@ -190,11 +190,11 @@ float tapCompare(int type, ShadowLight L, sampler2DArray map, samplerCube cube, 
   return receiverDepth(type, L, q, offsetTexels) - q.bias > tapLinear(type, L, map, cube, q, offsetTexels) ? 0.0 : 1.0;
 }
 
-// Interleaved gradient noise (Jimenez 2014): a per-pixel rotation that turns Poisson banding into
-// fine noise.
-float pixelAngle() {
-  return 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-}
+// Interleaved gradient noise (Jimenez 2014): a per-pixel value in [0, 1) with no visible pattern;
+// as a rotation it turns Poisson banding into fine noise.
+float pixelNoise() { return fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))); }
+
+float pixelAngle() { return 6.2831853 * pixelNoise(); }
 
 vec2 rotated(vec2 v, float a) {
   float c = cos(a), s = sin(a);

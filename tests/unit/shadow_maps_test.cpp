@@ -167,6 +167,27 @@ TEST(Cascades, CoverEveryVisiblePointWithNoGap) {
     }
 }
 
+// The lit shader rebuilds each cascade's matrix from the first one's and four numbers
+// (cascadeLight in shaders/shadows/lit.frag); done here the same way, it is the cascade's own.
+TEST(Cascades, BoxRebuildsEachCascadesMatrixFromTheFirst) {
+  const Bounds b = floorAndCubes();
+  const LightFrame base = sceneFit(b);
+  for (glm::vec3 eye : {glm::vec3(0, 3, 7), glm::vec3(-6, 1, 4), glm::vec3(20, 10, 20)}) {
+    const auto cascades = buildCascades(base, {4, 0.75f, 0.1f, true, 1024}, camera(eye, {0, 0, 0.5f}), b);
+    for (const Cascade& c : cascades) {
+      const glm::vec4 box = cascadeBox(cascades[0].light, c.light);
+      glm::mat4 m = cascades[0].light.viewProj;
+      for (int col = 0; col < 3; ++col) m[col] = glm::vec4(glm::vec2(m[col]) * box.x, m[col].z, m[col].w);
+      m[3] = glm::vec4(glm::vec2(m[3]) * box.x + glm::vec2(box.y, box.z), m[3].z, m[3].w);
+      for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row)
+          EXPECT_NEAR(m[col][row], c.light.viewProj[col][row], 1e-5f * (1.0f + std::abs(c.light.viewProj[col][row])))
+              << "column " << col << " row " << row;
+      EXPECT_EQ(box.w, c.light.orthoHalfExtent);
+    }
+  }
+}
+
 TEST(Cascades, ViewFitIsTighterThanTheScene) {
   const Bounds b = floorAndCubes();
   const LightFrame base = sceneFit(b);
