@@ -235,9 +235,16 @@ glm::vec4 cascadeBox(const LightFrame& first, const LightFrame& cascade) {
 }
 
 std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
-                                   const Bounds& bounds, const std::vector<Bounds>& someParts) {
+                                   const Bounds& bounds, const std::vector<Bounds>& someParts,
+                                   std::optional<glm::vec2> drawn) {
   const std::vector<Bounds> parts = someParts.empty() ? std::vector<Bounds>{bounds} : someParts;
-  const glm::vec2 range = visibleDepthRange(view, parts);
+  glm::vec2 range = visibleDepthRange(view, parts);
+  // What was drawn lies inside what could be seen, but for rounding: a hair around it, kept inside.
+  if (drawn && drawn->y >= drawn->x && range.y > range.x) {
+    const float pad = 1e-3f * (drawn->y - drawn->x) + 1e-6f * drawn->y;
+    const glm::vec2 both(std::max(range.x, drawn->x - pad), std::min(range.y, drawn->y + pad));
+    if (both.y > both.x) range = both;
+  }
   // What a map holds, in light depth: for the depth view, which stretches it over black..white.
   auto contentDepth = [&](const LightFrame& L, const std::vector<glm::vec3>& pts) {
     glm::vec2 r(INFINITY, -INFINITY);

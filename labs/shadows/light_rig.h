@@ -1,6 +1,7 @@
 // Where a shadow-casting light is and what its shadow map sees: pure CPU math, unit-tested.
 // Every length the student sets is in scene radii, so a scene at scale 1e-3 or 1e4 behaves alike.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -113,9 +114,12 @@ struct Cascade {
 
 // Directional cascades for what the camera sees of `parts` (each instance's world box; empty:
 // the scene's box); depth always spans `bounds`, so every caster is drawn. Falls back to
-// `sceneFit` (one cascade) when the camera sees none of the scene.
+// `sceneFit` (one cascade) when the camera sees none of the scene. `drawn`: the view depths the
+// camera really drew (its depth buffer's nearest and farthest, DepthRange): the splits run over
+// the part of the frustum's range inside it.
 std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetup& setup, const ViewVolume& view,
-                                   const Bounds& bounds, const std::vector<Bounds>& parts = {});
+                                   const Bounds& bounds, const std::vector<Bounds>& parts = {},
+                                   std::optional<glm::vec2> drawn = std::nullopt);
 
 // Deterministic Poisson-disk samples in the unit disk, made for exactly `count` points (never a
 // prefix of a larger set, whose first points are badly spread): dart throwing from a large

@@ -84,7 +84,7 @@ inline constexpr NamedDefine<ShadowView> kShadowViews[] = {
 };
 static_assert(coversEnum<ShadowView>(kShadowViews));
 
-inline constexpr std::string_view kFits[] = {"scene", "view", "cascades"};
+inline constexpr std::string_view kFits[] = {"scene", "view", "cascades", "depth-range"};
 inline constexpr std::string_view kCascadeIndices[] = {"1", "2", "3", "4"};
 // The depth formats: the name --set takes and the texture format the map is made with.
 struct DepthFormatRow {
@@ -109,7 +109,8 @@ inline ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
 // The directional key light is split (or fitted to the view) only when auto-fit is on.
 inline int cascadeCountOf(const ShadowsParams& p) {
   if (p.key.type != LightType::Directional || !p.map.autoFit) return 0;  // 0: the scene-fitted map
-  return p.map.fit == MapFit::Cascades ? std::clamp(p.map.cascadeCount, 2, 4) : p.map.fit == MapFit::View ? 1 : 0;
+  const bool split = p.map.fit == MapFit::Cascades || p.map.fit == MapFit::DepthRange;
+  return split ? std::clamp(p.map.cascadeCount, 2, 4) : p.map.fit == MapFit::View ? 1 : 0;
 }
 
 }  // namespace shadelab

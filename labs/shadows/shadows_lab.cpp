@@ -26,7 +26,17 @@ enum Unit {
   kKeyMoments,
   kFillMoments
 };
-enum Slot { kLitSlot = 0, kKeyDepthSlot, kFillDepthSlot, kDepthViewSlot, kLinesSlot, kBlurSlot, kSlotCount };
+enum Slot {
+  kLitSlot = 0,
+  kKeyDepthSlot,
+  kFillDepthSlot,
+  kDepthViewSlot,
+  kLinesSlot,
+  kBlurSlot,
+  kRangeFirstSlot,
+  kRangeSlot,
+  kSlotCount
+};
 
 // The moments a filtered map holds where nothing was drawn (depth t = 1): warpDepth(1) in
 // shadow_filters.glsl.
@@ -312,10 +322,15 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
     return;
   const std::string size =
       std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
+  char drawn[160] = " depth-range (the frustum's range: no depth of this view yet) cascade ";
+  if (drawnRange_)
+    std::snprintf(drawn, sizeof drawn, " depth-range (%.3g to %.3g drawn last frame, of %.3g to %.3g in view) cascade ",
+                  drawnRange_->x, drawnRange_->y, visibleRange_.x, visibleRange_.y);
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
-                           (cascades_.size() >= 2                                  ? " cascade "
-                            : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted"
-                                                                                   : "");
+                           (cascades_.size() >= 2 && params.map.fit == MapFit::DepthRange ? std::string(drawn)
+                            : cascades_.size() >= 2                                       ? " cascade "
+                            : params.map.fit == MapFit::View && !cascades_.empty()        ? " view-fitted"
+                                                                                          : "");
   Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, sixCubePasses(), filter));
   if (isMomentFilter(filter)) {
     depth.use();
@@ -351,10 +366,17 @@ void ShadowsLab::render(Frame& frame) {
 
   // The key light's maps: the scene-fitted one, or fitted to the view, or one per cascade.
   cascades_.clear();
+  const bool fitToDepth = params.map.fit == MapFit::DepthRange && cascadeCountOf(params) > 0;
+  drawnRange_ = fitToDepth ? depthRange_.rangeFor(frame.viewProj()) : std::nullopt;
+  if (drawnRange_)
+    visibleRange_ =
+        visibleDepthRange(viewVolume(frame), frame.scene.instanceBounds.empty() ? std::vector<Bounds>{bounds}
+                                                                                : frame.scene.instanceBounds);
+  if (!fitToDepth) depthRange_.release();
   if (const int count = cascadeCountOf(params); count > 0)
     cascades_ = buildCascades(
         key, {count, params.map.splitLambda, params.map.cascadeBlend, params.map.snapTexels, params.map.size()},
-        viewVolume(frame), bounds, frame.scene.instanceBounds);
+        viewVolume(frame), bounds, frame.scene.instanceBounds, drawnRange_);
 
   // 1. Depth passes, only for lights that cast and only when the view reads their maps.
   if (params.key.casts && !gbuffer) {
@@ -402,6 +424,12 @@ void ShadowsLab::render(Frame& frame) {
   {
     auto pass = frame.pass(gbuffer ? "reference g-buffer" : "lighting");
     drawLit(frame, fetch(kLitSlot, litSpec(params, internalView_)), key, params.fill.on && !gbuffer ? &fill : nullptr);
+  }
+  if (fitToDepth && params.key.casts && !gbuffer) {
+    auto pass = frame.pass("depth range: this frame's nearest and farthest depth, for the next frame's cascades");
+    depthRange_.reduce(frame.target, frame.viewProj(), {frame.camera.nearPlane, frame.camera.farPlane},
+                       fetch(kRangeFirstSlot, DepthRange::programSpec(true)),
+                       fetch(kRangeSlot, DepthRange::programSpec(false)), emptyVao_.get());
   }
   if (params.view.showFrustum && !gbuffer) drawFrustum(frame, key);
 }

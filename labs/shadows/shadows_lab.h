@@ -14,6 +14,7 @@
 #include <span>
 
 #include "app/lab/lab.h"
+#include "labs/shadows/depth_range.h"
 #include "labs/shadows/gpu_tracer.h"
 #include "labs/shadows/light_rig.h"
 #include "labs/shadows/shadow_map.h"
@@ -37,8 +38,8 @@ enum class ShadowView {
   Count
 };
 enum class DepthFormat { D16, D24, D32F, Count };
-enum class MapFit { Scene, View, Cascades };   // directional maps: what the map covers
-enum class TruthTracer { Auto, Embree, Gpu };  // who traces the ray-traced truth
+enum class MapFit { Scene, View, Cascades, DepthRange };  // directional maps: what the map covers
+enum class TruthTracer { Auto, Embree, Gpu };             // who traces the ray-traced truth
 
 // One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).
 struct ShadowsParams {
@@ -53,8 +54,8 @@ struct ShadowsParams {
   struct Map : LightFrustum {  // the frustum when auto-fit is off (light_rig.h), and:
     int sizeIndex = 3;         // 256 << index: 256 .. 8192
     DepthFormat format = DepthFormat::D24;
-    MapFit fit = MapFit::Scene;  // directional, auto-fit: the whole scene, the view, or cascades
-    int cascadeCount = 4;        // fit = cascades: 2..4 maps of map_size^2 each
+    MapFit fit = MapFit::Scene;  // directional, auto-fit: the scene, the view, cascades over its frustum or its depth
+    int cascadeCount = 4;        // fit = cascades or depth-range: 2..4 maps of map_size^2 each
     float splitLambda = 0.75f;   // 0: uniform splits, 1: logarithmic
     float cascadeBlend = 0.1f;   // fraction of a cascade's range blended into the next
     bool snapTexels = true;      // fitted maps move by whole texels: no shimmer as the camera moves
@@ -153,6 +154,9 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   ShadowFilter effectiveFilter() const;
   // The key light's maps in the last frame: one, or one per cascade (tests, the Cascades panel).
   const std::vector<Cascade>& cascades() const { return cascades_; }
+  // fit = depth-range: the view depths the last frame's cascades were split over, as the frame
+  // before drew them; none when there was no such frame from the same camera.
+  std::optional<glm::vec2> drawnRange() const { return drawnRange_; }
   const ShadowMap& keyMap() const { return keyMap_; }
   const ShadowMap& fillMap() const { return fillMap_; }
   // Every program the current settings can draw with (a subset of allPrograms()'s, as tests check).
@@ -183,6 +187,9 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   ShaderLibrary* shaders_ = nullptr;
   std::vector<ProgramSlot> programs_;  // one per role: lit, key depth, fill depth, depth view, lines
   ShadowMap keyMap_, fillMap_;
+  DepthRange depthRange_;                // fit = depth-range: what the camera drew, for the next frame's cascades
+  std::optional<glm::vec2> drawnRange_;  // ... and the range this frame's cascades were split over, if any
+  glm::vec2 visibleRange_{0.0f};         // ... of what the frustum could see (visibleDepthRange)
   DummyDepthTextures dummies_;
   gl::VertexArray emptyVao_, frustumVao_;
   gl::Buffer frustumVbo_;

@@ -64,10 +64,14 @@ void visitMap(ParamVisitor& v, ShadowsParams::Map& map, LightType keyType) {
     v.enumParam({"fit", "Directional map covers", "",
                  "scene: the whole scene's bounds (texels wasted on what the camera "
                  "never sees); view: what the camera sees (its frustum clipped to the scene); cascades: the view split "
-                 "by depth into cascade_count maps of map_size^2 each, near slices getting the finest texels."},
+                 "by depth into cascade_count maps of map_size^2 each, near slices getting the finest texels; "
+                 "depth-range: the same cascades split over the depth range the camera drew last frame (its depth "
+                 "buffer's nearest and farthest, reduced on the GPU: sample distribution shadow maps), not the range "
+                 "its frustum could see."},
                 map.fit, kFits);
     {
-      const ParamVisitor::UnavailableGroup cascaded(v, map.fit != MapFit::Cascades ? "fit is not 'cascades'" : "");
+      const bool split = map.fit == MapFit::Cascades || map.fit == MapFit::DepthRange;
+      const ParamVisitor::UnavailableGroup cascaded(v, split ? "" : "fit is neither 'cascades' nor 'depth-range'");
       v.intParam({"cascade_count", "Cascades", "maps",
                   "Cascaded shadow maps: 2..4 maps, each map_size^2 (memory "
                   "grows with the count)."},

@@ -97,7 +97,9 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
                                   blurSpec(),
                                   GpuShadowTracer::programSpec(false),
                                   GpuShadowTracer::programSpec(true),
-                                  GpuShadowTracer::resolveSpec()};
+                                  GpuShadowTracer::resolveSpec(),
+                                  DepthRange::programSpec(true),
+                                  DepthRange::programSpec(false)};
   for (const ShadowFilterRow& row : kShadowFilters)
     if (isMomentFilter(row.value)) all.push_back(depthSpec(false, false, row.value));
   ShadowsParams p;
@@ -218,6 +220,8 @@ std::vector<ProgramSpec> ShadowsLab::currentPrograms() const {
                                   depthSpec(params.key.type == LightType::Point, sixCubePasses(), filter),
                                   depthSpec(false, false, filter), depthViewSpec(params)};
   if (isMomentFilter(filter)) out.push_back(blurSpec());
+  if (params.map.fit == MapFit::DepthRange)
+    out.insert(out.end(), {DepthRange::programSpec(true), DepthRange::programSpec(false)});
   return out;
 }
 

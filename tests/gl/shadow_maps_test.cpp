@@ -61,27 +61,66 @@ TEST(ShadowMaps, CascadesAtLeastHalveTheErrorOnLearnOpenGlsSceneAtEqualMemory) {
 }
 
 TEST(ShadowMaps, EveryVisiblePixelLandsInACascade) {
-  auto host = test::labHost("shadows", "learnopengl", {"shadows.fit=cascades", "shadows.view=cascades"});
-  for (const char* cam :
-       {"", "yaw=35,pitch=8,distance=4,near=0.1,far=100", "yaw=-120,pitch=60,distance=20,near=0.1,far=100",
-        "yaw=10,pitch=2,distance=1.5,near=0.1,far=100"}) {
-    if (*cam) ASSERT_EQ(host->camera().parse(cam), "");
-    for (int count : {2, 3, 4}) {
-      host->set("shadows.cascade_count=" + std::to_string(count));
-      const ImageF img = drawn(*host, {320, 240});
-      int gaps = 0, covered = 0;
-      for (int y = 0; y < img.size.y; ++y)
-        for (int x = 0; x < img.size.x; ++x) {
-          const float* p = img.at(x, y);
-          if (p[3] < 0.5f) continue;  // background
-          ++covered;
-          gaps += p[0] > 0.9f && p[1] < 0.1f && p[2] > 0.9f;  // magenta: outside its cascade's map
+  auto host = test::labHost("shadows", "learnopengl", {"shadows.view=cascades"});
+  for (const char* fit : {"cascades", "depth-range"})
+    for (const char* cam :
+         {"", "yaw=35,pitch=8,distance=4,near=0.1,far=100", "yaw=-120,pitch=60,distance=20,near=0.1,far=100",
+          "yaw=10,pitch=2,distance=1.5,near=0.1,far=100"}) {
+      host->set(std::string("shadows.fit=") + fit);
+      if (*cam) ASSERT_EQ(host->camera().parse(cam), "");
+      for (int count : {2, 3, 4}) {
+        host->set("shadows.cascade_count=" + std::to_string(count));
+        ImageF img = drawn(*host, {320, 240});
+        if (std::string(fit) == "depth-range") {  // the second frame splits the range the first one drew
+          img = drawn(*host, {320, 240});
+          EXPECT_TRUE(shadowsOf(*host).drawnRange()) << cam;
         }
-      EXPECT_GT(covered, 1000) << cam;
-      EXPECT_EQ(gaps, 0) << cam << " with " << count << " cascades";
-      EXPECT_EQ(int(shadowsOf(*host).cascades().size()), count);
+        int gaps = 0, covered = 0;
+        for (int y = 0; y < img.size.y; ++y)
+          for (int x = 0; x < img.size.x; ++x) {
+            const float* p = img.at(x, y);
+            if (p[3] < 0.5f) continue;  // background
+            ++covered;
+            gaps += p[0] > 0.9f && p[1] < 0.1f && p[2] > 0.9f;  // magenta: outside its cascade's map
+          }
+        EXPECT_GT(covered, 1000) << cam;
+        EXPECT_EQ(gaps, 0) << cam << " with " << count << " cascades, fit " << fit;
+        EXPECT_EQ(int(shadowsOf(*host).cascades().size()), count);
+      }
     }
-  }
+}
+
+// fit = depth-range splits the cascades over the nearest and farthest view depth the camera drew
+// the frame before: the GPU's reduction agrees with the depth buffer read back and reduced here,
+// and a frame from another camera does not use it.
+TEST(ShadowMaps, TheDepthRangeFitSplitsWhatTheCameraDrew) {
+  auto host = test::labHost("shadows", "learnopengl", {"shadows.fit=depth-range", "shadows.map_size=512"});
+  ASSERT_EQ(host->camera().parse("yaw=20,pitch=8,distance=2.2,target=2;0;1,fov=45,near=0.1,far=100"), "");
+  const glm::ivec2 size(320, 240);
+  const gl::RenderTarget target = gl::RenderTarget::create(size);
+  host->drawInto(target, host->camera(), 0.0f);
+  EXPECT_FALSE(shadowsOf(*host).drawnRange()) << "nothing was drawn before the first frame";
+  std::vector<float> depth(size_t(size.x * size.y));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
+  glReadPixels(0, 0, size.x, size.y, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  const float n = host->camera().nearPlane, f = host->camera().farPlane;
+  glm::vec2 expected(INFINITY, -INFINITY);
+  for (float z : depth)
+    if (z < 1.0f) {
+      const float d = n * f / (f - z * (f - n));
+      expected = {std::min(expected.x, d), std::max(expected.y, d)};
+    }
+  ASSERT_LT(expected.x, expected.y);
+  host->drawInto(target, host->camera(), 0.0f);
+  const auto range = shadowsOf(*host).drawnRange();
+  ASSERT_TRUE(range);
+  EXPECT_NEAR(range->x, expected.x, 1e-4f * expected.x);
+  EXPECT_NEAR(range->y, expected.y, 1e-4f * expected.y);
+  // The frustum's own range holds it; this camera sees the far floor past the cube only in part.
+  EXPECT_LT(range->y, 35.0f);
+  host->camera().target.x += 0.5f;
+  host->drawInto(target, host->camera(), 0.0f);
+  EXPECT_FALSE(shadowsOf(*host).drawnRange()) << "a range drawn from another camera was used";
 }
 
 TEST(ShadowMaps, SnappedMapsStayStillUnderASubTexelCameraMove) {
