@@ -507,7 +507,7 @@ void DenoiseLab::render(Frame& frame) {
     // The first result is on its way (the jobs bar shows it): the input meanwhile, or what the
     // GPU smoothed, straight from its texture, while the job measures it.
     auto pass =
-        frame.pass(fromGpu ? "draw: smoothed, from the GPU's texture" : "draw: noisy input (smoothing in progress)");
+        frame.pass(fromGpu ? "draw: smoothed (from the GPU's texture)" : "draw: noisy input (smoothing in progress)");
     drawPanel(frame, fromGpu ? Path::SmoothedOnGpu : Path::Plain, plainMesh_, {0, 0, frame.size().x, frame.size().y});
     return;
   }
@@ -536,7 +536,7 @@ void DenoiseLab::render(Frame& frame) {
   static const char* names[] = {"draw: smoothed", "draw: noisy", "draw: clean", "draw: map path",
                                 "draw: attribute path"};
   const bool collapsed = show == DenoiseShow::Smoothed && result_->collapsed;
-  auto pass = frame.pass(collapsed ? "draw: noisy input (ghost), the point it collapsed to" : names[int(show)]);
+  auto pass = frame.pass(collapsed ? "draw: noisy input (ghost) and the point it collapsed to" : names[int(show)]);
   if (show == DenoiseShow::Map) {
     drawPanel(frame, Path::Map, mapMesh_, {0, 0, size.x, size.y});
   } else if (show == DenoiseShow::Attribute) {

@@ -324,7 +324,7 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
       std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
   char drawn[160] = " depth-range (the frustum's range: no depth of this view yet) cascade ";
   if (drawnRange_)
-    std::snprintf(drawn, sizeof drawn, " depth-range (%.3g to %.3g drawn last frame, of %.3g to %.3g in view) cascade ",
+    std::snprintf(drawn, sizeof drawn, " depth-range (%.3g to %.3g drawn last frame; %.3g to %.3g in view) cascade ",
                   drawnRange_->x, drawnRange_->y, visibleRange_.x, visibleRange_.y);
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
                            (cascades_.size() >= 2 && params.map.fit == MapFit::DepthRange ? std::string(drawn)
@@ -426,7 +426,7 @@ void ShadowsLab::render(Frame& frame) {
     drawLit(frame, fetch(kLitSlot, litSpec(params, internalView_)), key, params.fill.on && !gbuffer ? &fill : nullptr);
   }
   if (fitToDepth && params.key.casts && !gbuffer) {
-    auto pass = frame.pass("depth range: this frame's nearest and farthest depth, for the next frame's cascades");
+    auto pass = frame.pass("depth range: nearest and farthest depth drawn (for the next frame's cascades)");
     depthRange_.reduce(frame.target, frame.viewProj(), {frame.camera.nearPlane, frame.camera.farPlane},
                        fetch(kRangeFirstSlot, DepthRange::programSpec(true)),
                        fetch(kRangeSlot, DepthRange::programSpec(false)), emptyVao_.get());
