@@ -1,12 +1,12 @@
-// The viewport's pixel readout without a stall: the pixel under the cursor is copied into a pixel
-// buffer and fenced, and read back a frame or two later, once the GPU has got there. A plain
-// glReadPixels waits for the whole frame to be drawn (in a browser, a round trip to its GPU
-// process): a frame lost per frame while the cursor is over the viewport.
+// The viewport's pixel readout without a stall: the pixel under the cursor is read back a frame or
+// two later, once the GPU has got there (gl::TexelRead). A plain glReadPixels waits for the whole
+// frame to be drawn (in a browser, a round trip to its GPU process): a frame lost per frame while
+// the cursor is over the viewport.
 #pragma once
 #include <array>
 #include <optional>
 
-#include "app/gl/handle.h"
+#include "app/gl/texel_read.h"
 #include "app/gl/texture.h"
 
 namespace shadelab {
@@ -17,10 +17,6 @@ class PixelProbe {
     int x = 0, y = 0;  // from the top-left, as images are
     std::array<float, 4> rgba{};
   };
-  PixelProbe() = default;
-  PixelProbe(const PixelProbe&) = delete;
-  PixelProbe& operator=(const PixelProbe&) = delete;
-  ~PixelProbe();
 
   // Asks for pixel (x, y) of `target`'s colour; ignored while an earlier request is in flight or
   // outside the target.
@@ -29,8 +25,7 @@ class PixelProbe {
   const std::optional<Value>& latest();
 
  private:
-  gl::Buffer buffer_;
-  GLsync fence_ = nullptr;
+  gl::TexelRead read_;
   Value pending_;
   std::optional<Value> latest_;
 };

@@ -37,16 +37,11 @@ void DepthRange::allocate(glm::ivec2 size) {
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  readback_ = gl::Buffer::make();
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, readback_.get());
-  glBufferData(GL_PIXEL_PACK_BUFFER, 2 * sizeof(float), nullptr, GL_STREAM_READ);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  pending_ = false;
 }
 
 void DepthRange::reduce(const gl::RenderTarget& target, const glm::mat4& viewProj, glm::vec2 planes, Program& first,
                         Program& rest, GLuint emptyVao) {
-  rangeFor(viewProj);  // a read still pending is taken first: its buffer is about to be written again
+  rangeFor(viewProj);  // a read that has arrived is taken first
   if (target.size() != size_ || !depth_) allocate(target.size());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target.fbo());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, depthFbo_.get());
@@ -76,30 +71,28 @@ void DepthRange::reduce(const gl::RenderTarget& target, const glm::mat4& viewPro
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   glEnable(GL_DEPTH_TEST);
-  // The 1x1 result into the pixel buffer: the next frame takes it, by then long written.
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, readback_.get());
-  glReadPixels(0, 0, 1, 1, GL_RG, GL_FLOAT, nullptr);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  // The 1x1 result on its way back: the next frame takes it. One still in flight (the GPU is
+  // behind) keeps its place, and this frame's is not read.
+  if (read_.start(levels_.back().fbo.get(), 0, 0)) pendingViewProj_ = viewProj;
   target.bind();
-  pending_ = true;
-  pendingViewProj_ = viewProj;
 }
 
 std::optional<glm::vec2> DepthRange::rangeFor(const glm::mat4& viewProj) {
-  if (pending_) {
-    float r[2] = {0.0f, 0.0f};
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, readback_.get());
-    glGetBufferSubData(GL_PIXEL_PACK_BUFFER, 0, sizeof r, r);
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-    pending_ = false;
+  if (const auto r = read_.take()) {
     viewProj_ = pendingViewProj_;
     // (1e30, -1e30): the camera drew nothing; a NaN (a broken depth buffer) is no range either.
-    range_ = r[0] <= r[1] ? std::optional<glm::vec2>(glm::vec2(r[0], r[1])) : std::nullopt;
+    range_ = (*r)[0] <= (*r)[1] ? std::optional<glm::vec2>(glm::vec2((*r)[0], (*r)[1])) : std::nullopt;
   }
   if (!range_ || viewProj_ != viewProj) return std::nullopt;
   return range_;
 }
 
-void DepthRange::release() { *this = DepthRange(); }
+void DepthRange::release() {
+  depth_ = gl::TextureName();
+  depthFbo_ = gl::FramebufferName();
+  levels_.clear();
+  size_ = glm::ivec2(0);
+  range_.reset();  // (a read still in flight is taken and dropped by the camera check)
+}
 
 }  // namespace shadelab

@@ -4,8 +4,8 @@
 // the scene's boxes) bounds what it does see; behind a wall, or with the far floor out of the
 // picture, the drawn range is much shorter, and the cascades' texels go where the pixels are.
 //
-// The reduction is read back a frame late through a pixel buffer: the frame that fits its maps
-// never waits for its own depth. A range is used only by a frame from the same camera as the one
+// The reduction is read back a frame late (gl::TexelRead): the frame that fits its maps never
+// waits for its own depth. A range is used only by a frame from the same camera as the one
 // that drew it (a moving camera's frames fall back to the frustum's range until it stops).
 #pragma once
 #include <optional>
@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "app/gl/handle.h"
+#include "app/gl/texel_read.h"
 #include "app/gl/texture.h"
 #include "app/shader/shader_library.h"
 
@@ -32,7 +33,7 @@ class DepthRange {
               Program& rest, GLuint emptyVao);
   // The range the last reduce() found, if it was drawn from `viewProj` and held any surface.
   std::optional<glm::vec2> rangeFor(const glm::mat4& viewProj);
-  // The textures and buffer go; the next reduce() makes them again.
+  // The textures go; the next reduce() makes them again.
   void release();
 
  private:
@@ -45,8 +46,7 @@ class DepthRange {
   gl::TextureName depth_;
   gl::FramebufferName depthFbo_;
   std::vector<Level> levels_;  // down to 1x1
-  gl::Buffer readback_;
-  bool pending_ = false;  // a read into readback_ waits to be taken
+  gl::TexelRead read_;         // the 1x1 level's texel, on its way back
   glm::mat4 pendingViewProj_{0.0f}, viewProj_{0.0f};
   std::optional<glm::vec2> range_;
   void allocate(glm::ivec2 size);

@@ -322,15 +322,17 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
     return;
   const std::string size =
       std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
-  char drawn[160] = " depth-range (the frustum's range: no depth of this view yet) cascade ";
+  // The depth-range fit says once, on its first cascade, which range the cascades split.
+  char split[128] = " (split over the frustum's range: no depth of this view yet)";
   if (drawnRange_)
-    std::snprintf(drawn, sizeof drawn, " depth-range (%.3g to %.3g drawn last frame; %.3g to %.3g in view) cascade ",
+    std::snprintf(split, sizeof split, " (split over %.3g to %.3g drawn last frame; %.3g to %.3g in view)",
                   drawnRange_->x, drawnRange_->y, visibleRange_.x, visibleRange_.y);
+  const bool depthRangeFit = cascades_.size() >= 2 && params.map.fit == MapFit::DepthRange;
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
-                           (cascades_.size() >= 2 && params.map.fit == MapFit::DepthRange ? std::string(drawn)
-                            : cascades_.size() >= 2                                       ? " cascade "
-                            : params.map.fit == MapFit::View && !cascades_.empty()        ? " view-fitted"
-                                                                                          : "");
+                           (depthRangeFit                                          ? " depth-range cascade "
+                            : cascades_.size() >= 2                                ? " cascade "
+                            : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted"
+                                                                                   : "");
   Program& depth = fetch(kKeyDepthSlot, depthSpec(cube, sixCubePasses(), filter));
   if (isMomentFilter(filter)) {
     depth.use();
@@ -339,7 +341,8 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
   for (int layer = 0; layer < layers; ++layer) {
     auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
                            size + (cube ? (sixCubePasses() ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
-                           (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : ""));
+                           (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : "") +
+                           (depthRangeFit && layer == 0 ? split : ""));
     keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer,
                    state);
   }

@@ -41,6 +41,8 @@ open_lab denoise "lab=denoise"
 open_lab filtering "lab=filtering"
 open_lab shadows "lab=shadows"
 open_lab shadows-point-pcss "lab=shadows&shadows.light_type=point&shadows.filter=pcss"  # six cube passes
+# The depth-range fit: the camera's depth reduced on the GPU and read back (gl::TexelRead reads at once here).
+open_lab shadows-depth-range "lab=shadows&scene=learnopengl&shadows.fit=depth-range"
 echo "every lab draws in the page"
 
 drive() {  # drive NAME LINK ARGS...: the page at LINK (of the site on $drive_port), driven by tools/web_driver.py ARGS
@@ -49,6 +51,12 @@ drive() {  # drive NAME LINK ARGS...: the page at LINK (of the site on $drive_po
   python3 "$repo/tools/web_driver.py" "http://127.0.0.1:${drive_port:-$port}/index.html#$link" --frames 5 --timeout 180 \
     --screenshot "$out/$name.png" "$@" >"$out/$name.log" 2>&1 || { cat "$out/$name.log"; echo "$name: failed"; exit 1; }
 }
+
+# The pixel readout under the cursor (a one-texel read back): the page keeps drawing while it is shown.
+hover="(() => { for (const [x, y] of [[600, 400], [620, 410], [640, 420]])
+  Module.canvas.dispatchEvent(new MouseEvent('mousemove', {clientX: x, clientY: y, bubbles: true})); return 'hovered'; })()"
+drive probe "lab=shading" --frames 10 --eval "$hover"
+echo "the pixel readout works in the page"
 
 # Measure from the link: the shading lab's error against its truth (an image) is a number.
 drive measure "lab=shading&measure" --wait-console "measured shading"
