@@ -122,19 +122,25 @@ grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
 # One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
 # each starter checked in the page, told it is the starter, not passed.
-for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
-  name=check-${exercise//\//-}
-  file=$(cd "$repo/exercises/$exercise/starter" && find . -type f | sed 's|^\./||' | head -1)
-  starter=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$repo/exercises/$exercise/starter/$file")
-  save="(async () => { Module.FS.mkdirTree('/student/$(dirname "$file")'); Module.FS.writeFile('/student/$file', $starter);
+# check_starter NAME LINK EXERCISE FILE SOURCE: SOURCE saved as the student's FILE, the page reloaded
+# on LINK (which presses Check): Check's lines say it is the starter, and that it has not passed.
+check_starter() {
+  local name=$1 link=$2 exercise=$3 file=$4 source=$5 text save checked
+  text=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$source")
+  save="(async () => { Module.FS.mkdirTree('/student/$(dirname "$file")'); Module.FS.writeFile('/student/$file', $text);
     await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
-  drive "$name" "lab=${exercise%%/*}&exercise=$exercise&check" --frames 10 --eval "$save" \
-    --wait-console "$exercise: " --reload --wait-console-after-reload "$exercise: "
+  drive "$name" "$link" --frames 10 --eval "$save" --wait-console "$exercise: " --reload \
+    --wait-console-after-reload "$exercise: "
   checked=$(sed -n '/--- reloaded ---/,$p' "$out/$name.log")
   grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
     grep -qE "$exercise: [0-9.]+ / [0-9.]+ points .*NOT PASSED" <<<"$checked" ||
     { cat "$out/$name.log"; echo "Check in the page did not grade the $exercise starter"; exit 1; }
   grep -m1 -E "$exercise: [0-9.]+ / " <<<"$checked"
+}
+for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
+  file=$(cd "$repo/exercises/$exercise/starter" && find . -type f | sed 's|^\./||' | head -1)
+  check_starter "check-${exercise//\//-}" "lab=${exercise%%/*}&exercise=$exercise&check" "$exercise" "$file" \
+    "$repo/exercises/$exercise/starter/$file"
 done
 # A course zip of the site, as a teacher puts one beside the page: opened by the link, its part-file
 # exercise listed and graded by Check; a zip that is not one, and one whose names leave its folder, are
@@ -162,17 +168,8 @@ course_server=$!
 trap 'kill $server $course_server 2>/dev/null || true' EXIT
 for _ in $(seq 50); do grep -q "http://" "$out/course-serve.log" 2>/dev/null && break; sleep 0.1; done
 drive_port=$course_port
-part=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' \
-  "$repo/tests/data/course/shading/point-lights/starter/common/lighting.glsl.part")
-save="(async () => { Module.FS.mkdirTree('/student/common'); Module.FS.writeFile('/student/common/lighting.glsl.part', $part);
-  await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
-drive course-link "lab=shading&course=week3.zip&exercise=shading/point-lights&check" --frames 10 --eval "$save" \
-  --wait-console "shading/point-lights: " --reload --wait-console-after-reload "shading/point-lights: "
-checked=$(sed -n '/--- reloaded ---/,$p' "$out/course-link.log")
-grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
-  grep -qE "shading/point-lights: [0-9.]+ / [0-9.]+ points .*NOT PASSED" <<<"$checked" ||
-  { cat "$out/course-link.log"; echo "Check in the page did not grade the linked course's exercise"; exit 1; }
-grep -m1 -E "shading/point-lights: [0-9.]+ / " <<<"$checked"
+check_starter course-link "lab=shading&course=week3.zip&exercise=shading/point-lights&check" shading/point-lights \
+  common/lighting.glsl.part "$repo/tests/data/course/shading/point-lights/starter/common/lighting.glsl.part"
 drive course-broken "lab=shading&course=broken.zip" --wait-console "broken.zip: not a zip archive"
 drop_zip="(async () => { for (const name of ['evil.zip', 'week3.zip']) {
     const bytes = await (await fetch(name)).arrayBuffer();
