@@ -125,10 +125,9 @@ bool isGuard(const Check& c) {
   return (c.metric == "non_finite_pct" || c.metric == "out_of_range_pct") && c.full.base == Threshold::Base::Absolute;
 }
 
-// Every problem of one exercise, one line each; none when it is ready to go out. `warnings`: what
-// a teacher should know but need not fix (a hint whose evidence no listed mistake brings about).
+// Every problem of one exercise, one line each; none when it is ready to go out.
 std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std::string>& courseArgs,
-                                       std::string& summary, std::vector<std::string>& warnings) {
+                                       std::string& summary) {
   std::vector<std::string> problems;
   for (auto& file : ex.files)
     if (auto e = starterMatchesLabFile(ex, file); !e.empty()) problems.push_back(e);
@@ -203,8 +202,9 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
     if (!state.first && !guards[key])
       problems.push_back("check '" + key + "' passes for the starter and every mistake: it cannot fail");
     else if (state.first && !hints[key].empty() && !state.second)
-      warnings.push_back("the hint of check '" + key +
-                         "' is shown to none of the listed mistakes: its hint_when evidence never comes together");
+      problems.push_back("the hint of check '" + key +
+                         "' is shown to nobody: its hint_when evidence never comes together for the starter or a "
+                         "listed mistake (list the mistake it is for)");
   }
   summary = "solution " + formatNumber(percent(solution)) + " %, starter " + formatNumber(percent(starter)) + " %, " +
             std::to_string(named) + " of " + std::to_string(ex.mistakes.size() - 1) + " mistakes named, " +
@@ -245,12 +245,10 @@ int runExerciseCheck(const Options& o) {
       continue;
     }
     std::string summary;
-    std::vector<std::string> warnings;
-    const std::vector<std::string> problems = checkExercise(ex, courseArgs, summary, warnings);
+    const std::vector<std::string> problems = checkExercise(ex, courseArgs, summary);
     std::printf("%s %s%s\n", problems.empty() ? "ok  " : "FAIL", id.c_str(),
                 summary.empty() ? "" : (" (" + summary + ")").c_str());
     for (auto& p : problems) std::printf("       %s\n", p.c_str());
-    for (auto& w : warnings) std::printf("  warn %s\n", w.c_str());
     std::fflush(stdout);
     failed += !problems.empty();
   }
