@@ -42,7 +42,7 @@ open_lab filtering "lab=filtering"
 open_lab shadows "lab=shadows"
 open_lab shadows-point-pcss "lab=shadows&shadows.light_type=point&shadows.filter=pcss"  # six cube passes
 # The depth-range fit: the camera's depth reduced on the GPU and read back (gl::TexelRead reads at once here).
-open_lab shadows-depth-range "lab=shadows&scene=learnopengl&shadows.fit=depth-range"
+open_lab shadows-depth-range "lab=shadows&shadows.fit=depth-range"
 echo "every lab draws in the page"
 
 drive() {  # drive NAME LINK ARGS...: the page at LINK (of the site on $drive_port), driven by tools/web_driver.py ARGS
