@@ -83,6 +83,12 @@ const ShadeLabCourse = (() => {
     return [...roots][0];
   }
 
+  // What went wrong, naming the zip: the lines thrown here name it already; a file-system or network
+  // error does not.
+  function named(zipName, problem) {
+    return typeof problem === 'string' ? problem : `${zipName}: ${problem && problem.message ? problem.message : problem}`;
+  }
+
   function removeTree(FS, path) {
     if (!FS.analyzePath(path).exists) return;
     for (const name of FS.readdir(path)) {
@@ -120,18 +126,25 @@ const ShadeLabCourse = (() => {
     return folder;
   }
 
-  // The link's course=NAME.zip: a zip beside the page on the same site, fetched and unpacked before
-  // the app starts. Resolves to { folder } or { problem } (the app shows it in its Messages panel).
-  async function openFromLink(FS, value) {
-    const url = new URL(value, location.href);
-    if (url.origin !== location.origin || !/\.zip$/i.test(url.pathname))
+  // The link's course=NAME.zip (as the link has it, percent-encoded): a zip beside the page on the
+  // same site, fetched and unpacked before the app starts. Resolves to { folder } or { problem } (the
+  // app shows it in its Messages panel); never rejects, so the page never waits on it for ever.
+  async function openFromLink(FS, encoded) {
+    let value = encoded, url = null;
+    try {
+      value = decodeURIComponent(encoded);
+      url = new URL(value, location.href);
+    } catch (e) {
+      // a malformed escape or address: refused below
+    }
+    if (!url || url.origin !== location.origin || !/\.zip$/i.test(url.pathname))
       return { problem: `the link's course=${value}: a .zip file of this site (valid: course=week3.zip)` };
     try {
       const response = await fetch(url);
       if (!response.ok) return { problem: `the link's course=${value}: the site answered ${response.status} ${response.statusText}` };
       return { folder: await unpack(FS, await response.arrayBuffer(), value) };
     } catch (e) {
-      return { problem: String(e) };  // it names the zip
+      return { problem: named(value, e) };
     }
   }
 
@@ -145,7 +158,7 @@ const ShadeLabCourse = (() => {
       event.stopPropagation();  // the app's drop would write the zip into its file system as a mesh
       for (const file of zips)
         file.arrayBuffer().then((buffer) => unpack(FS, buffer, file.name))
-          .then((folder) => opened(folder, ''), (problem) => opened('', String(problem)));
+          .then((folder) => opened(folder, ''), (problem) => opened('', named(file.name, problem)));
     }, true);
   }
 
