@@ -268,7 +268,7 @@ std::vector<Cascade> buildCascades(const LightFrame& sceneFit, const CascadeSetu
     const float band = i + 1 < count ? setup.blend * (to - splits[size_t(i)]) : 0.0f;
     const auto pts = clipToParts(frustumSlice(view, from, to), parts);
     const LightFrame fitted = fitDirectional(sceneFit, pts, bounds, setup.mapSize, setup.snap);
-    cascades.push_back({fitted, to, to - band, contentDepth(fitted, pts)});
+    cascades.push_back({fitted, to, to - band, contentDepth(fitted, pts), range});
     from = to - band;
   }
   cascades.back().splitFar = cascades.back().blendFrom = view.farPlane;  // the last one takes the rest

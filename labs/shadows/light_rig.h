@@ -110,6 +110,7 @@ struct Cascade {
   float splitFar = 0.0f;         // view depth where this cascade hands over to the next
   float blendFrom = 0.0f;        // view depth where blending into the next begins (= splitFar: none)
   glm::vec2 contentDepth{0.0f};  // light depth of what the cascade covers: (nearest, farthest)
+  glm::vec2 splitRange{0.0f};    // the view depths the whole set was split over (the same in each)
 };
 
 // Directional cascades for what the camera sees of `parts` (each instance's world box; empty:

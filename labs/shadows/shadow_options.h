@@ -106,6 +106,9 @@ inline ShadowFilter effectiveFilterOf(const ShadowsParams& p) {
   return isMomentFilter(p.filter.type) && p.key.type == LightType::Point ? ShadowFilter::Pcf : p.filter.type;
 }
 
+// The views that show a light's depth map itself instead of the lit scene.
+inline bool viewIsDepthMap(ShadowView v) { return v == ShadowView::DepthRaw || v == ShadowView::DepthLinear; }
+
 // The directional key light is split (or fitted to the view) only when auto-fit is on.
 inline int cascadeCountOf(const ShadowsParams& p) {
   if (p.key.type != LightType::Directional || !p.map.autoFit) return 0;  // 0: the scene-fitted map

@@ -49,8 +49,6 @@ glm::vec4 farMoments(const ShadowsParams& p, ShadowFilter f) {
   return glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);
 }
 
-bool viewIsDepthMap(ShadowView v) { return v == ShadowView::DepthRaw || v == ShadowView::DepthLinear; }
-
 }  // namespace
 
 ShadowsLab::ShadowsLab() = default;
@@ -322,12 +320,16 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
     return;
   const std::string size =
       std::to_string(keyMap_.size()) + "^2 D" + std::string(rowOf(kDepthFormats, params.map.format).name);
-  // The depth-range fit says once, on its first cascade, which range the cascades split.
-  char split[128] = " (split over the frustum's range: no depth of this view yet)";
-  if (drawnRange_)
-    std::snprintf(split, sizeof split, " (split over %.3g to %.3g drawn last frame; %.3g to %.3g in view)",
-                  drawnRange_->x, drawnRange_->y, visibleRange_.x, visibleRange_.y);
+  // The first cascade says which view depths the set was split over, and for the depth-range fit
+  // whether they are the depths drawn last frame or (none from this camera yet) the frustum's.
   const bool depthRangeFit = cascades_.size() >= 2 && params.map.fit == MapFit::DepthRange;
+  char split[96] = "";
+  if (cascades_.size() >= 2)
+    std::snprintf(split, sizeof split, " (split over %.3g to %.3g%s)", cascades_[0].splitRange.x,
+                  cascades_[0].splitRange.y,
+                  !depthRangeFit ? ""
+                  : drawnRange_  ? " drawn last frame"
+                                 : ": the frustum's, no depth drawn yet");
   const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
                            (depthRangeFit                                          ? " depth-range cascade "
                             : cascades_.size() >= 2                                ? " cascade "
@@ -339,10 +341,10 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
     setFilterUniforms(depth);  // the moment pass warps depth with the same exponents the lookups use
   }
   for (int layer = 0; layer < layers; ++layer) {
-    auto pass = frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " +
-                           size + (cube ? (sixCubePasses() ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
-                           (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : "") +
-                           (depthRangeFit && layer == 0 ? split : ""));
+    auto pass =
+        frame.pass("shadow map: key " + kind + (cascades_.size() >= 2 ? std::to_string(layer + 1) : "") + " " + size +
+                   (cube ? (sixCubePasses() ? " x6 (6 passes)" : " x6 (1 pass)") : "") +
+                   (keyMap_.hasMoments() ? " + " + filterName(filter) + " moments" : "") + (layer == 0 ? split : ""));
     keyMap_.render(frame.scene, frame.gpu, depth, cascades_.empty() ? key : cascades_[size_t(layer)].light, layer,
                    state);
   }
@@ -371,10 +373,6 @@ void ShadowsLab::render(Frame& frame) {
   cascades_.clear();
   const bool fitToDepth = params.map.fit == MapFit::DepthRange && cascadeCountOf(params) > 0;
   drawnRange_ = fitToDepth ? depthRange_.rangeFor(frame.viewProj()) : std::nullopt;
-  if (drawnRange_)
-    visibleRange_ =
-        visibleDepthRange(viewVolume(frame), frame.scene.instanceBounds.empty() ? std::vector<Bounds>{bounds}
-                                                                                : frame.scene.instanceBounds);
   if (!fitToDepth) depthRange_.release();
   if (const int count = cascadeCountOf(params); count > 0)
     cascades_ = buildCascades(
@@ -546,68 +544,6 @@ void ShadowsLab::drawDepthView(Frame& frame, const LightFrame& key, const LightF
   glBindVertexArray(emptyVao_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   for (int unit = 0; unit <= kKeyCmpCube; ++unit) glBindSampler(unit, 0);
-}
-
-std::vector<std::string> ShadowsLab::warnings() const {
-  std::vector<std::string> w = lightWarnings_;
-  w.insert(w.end(), mapWarnings_.begin(), mapWarnings_.end());
-  if (tracer_ && tracer_->gaveUp() > 0)
-    w.push_back("the GPU tracer stopped the rays of " + std::to_string(tracer_->gaveUp()) +
-                " pixels after visiting "
-                "more nodes than its tree has (a broken tree or driver): they count as lit in the truth; "
-                "truth_tracer = embree is the check");
-  const auto& p = params;
-  if (p.key.type != LightType::Point && p.key.elevationDeg < 10.0f)
-    w.push_back("grazing light (" + formatNumber(p.key.elevationDeg) +
-                " deg above the horizon): texels stretch along the "
-                "ground; expect acne unless the slope bias grows");
-  if (p.key.casts && p.bias.constant == 0 && p.bias.slope == 0 && p.bias.normalOffset == 0 &&
-      p.bias.offsetFactor == 0 && p.bias.offsetUnits == 0)
-    w.push_back("no bias at all: lit surfaces shadow themselves (acne)");
-  if (p.bias.constant + p.bias.slope > 12.0f || p.bias.normalOffset > 6.0f)
-    w.push_back("large bias: shadows detach from their casters (peter-panning)");
-  if (!p.map.borderClamp)
-    w.push_back(p.filter.type == ShadowFilter::Hard && p.map.farFix
-                    ? "border clamp off: the hard test checks the map's bounds itself (shadow_lookup.glsl); the other "
-                      "filters' taps repeat the edge texels"
-                    : "border clamp off: outside the map the edge texels repeat and stretch shadows");
-  if (!p.map.farFix) w.push_back("far-plane fix off: receivers beyond the light's far plane come out shadowed");
-  if (p.filter.type == ShadowFilter::Pcss && p.key.radius == 0.0f)
-    w.push_back("light radius 0: PCSS reduces to a hard shadow");
-  if (p.filter.type == ShadowFilter::Pcss && p.key.radius > 1.0f)
-    w.push_back("light radius " + formatNumber(p.key.radius) +
-                " scene radii: larger than the scene, penumbrae wash out");
-  if (p.key.type == LightType::Point && p.key.distance < 0.5f)
-    w.push_back("point light near the scene centre: it may sit inside geometry, which then hides everything");
-  if (!p.key.casts && !(p.fill.on && p.fill.casts)) w.push_back("no light casts shadows: no depth pass runs");
-  if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 1 && !(p.fill.on && p.fill.casts))
-    w.push_back("the depth view shows the fill light's map: turn on fill_light and fill_casts");
-  if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 0 && !p.key.casts)
-    w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
-  if ((p.view.mode == ShadowView::PcssBlocker || p.view.mode == ShadowView::PcssPenumbra) &&
-      p.filter.type != ShadowFilter::Pcss)
-    w.push_back("the PCSS views show data only with filter = pcss");
-  if (p.view.mode == ShadowView::BiasHeat && isMomentFilter(effectiveFilterOf(p)))
-    w.push_back("the bias-heat view shows a depth test's margin, and " + filterName(p.filter.type) +
-                " tests moments of depth instead: there is no margin to show (uniform green); pick hard or pcf");
-  else if (p.view.mode == ShadowView::BiasHeat && p.bias.constant == 0 && p.bias.slope == 0)
-    w.push_back(
-        "bias-heat measures the gap in units of the bias, which is 0: every lit texel is red (acne) or blue "
-        "(stored depth behind the surface), with nothing between; raise bias to see the margin");
-  if (isMomentFilter(p.filter.type) && p.key.type == LightType::Point)
-    w.push_back(filterName(p.filter.type) +
-                " needs a 2D map: the point light's cube map is filtered with "
-                "pcf (" +
-                std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");
-  if (p.map.fit != MapFit::Scene && (p.key.type != LightType::Directional || !p.map.autoFit))
-    w.push_back("fit = " + std::string(kFits[int(p.map.fit)]) + " applies to an auto-fitted directional light only");
-  if (p.view.mode == ShadowView::Cascades && cascadeCountOf(p) < 2)
-    w.push_back("one map, one colour: the cascades view needs fit = cascades");
-  if (p.filter.type == ShadowFilter::Esm && p.filter.esmExponent > 80.0f)
-    w.push_back("ESM exponent " + formatNumber(p.filter.esmExponent) + ": exp(c) is within a factor " +
-                formatNumber(std::exp(88.7f - p.filter.esmExponent)) +
-                " of float's limit; a blur of overflowing texels would be inf");
-  return w;
 }
 
 }  // namespace shadelab

@@ -189,7 +189,6 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   ShadowMap keyMap_, fillMap_;
   DepthRange depthRange_;                // fit = depth-range: what the camera drew, for the next frame's cascades
   std::optional<glm::vec2> drawnRange_;  // ... and the range this frame's cascades were split over, if any
-  glm::vec2 visibleRange_{0.0f};         // ... of what the frustum could see (visibleDepthRange)
   DummyDepthTextures dummies_;
   gl::VertexArray emptyVao_, frustumVao_;
   gl::Buffer frustumVbo_;

@@ -1,8 +1,11 @@
 // The shadows lab's parameters: one visit function per section of the panel, each given its own
 // part of ShadowsParams (and what of the others decides whether its parameters apply).
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "app/shader/preprocessor.h"
+#include "app/util/format.h"
 #include "labs/shadows/shadow_options.h"
 #include "labs/shadows/shadows_lab.h"
 
@@ -268,6 +271,69 @@ void ShadowsLab::visitParams(ParamVisitor& v) {
   visitScene(v, p.scene);
   v.section("Truth");
   visitTruth(v, p.truth);
+}
+
+// What the settings (and the last frame's light and maps) warn the student of, one line each.
+std::vector<std::string> ShadowsLab::warnings() const {
+  std::vector<std::string> w = lightWarnings_;
+  w.insert(w.end(), mapWarnings_.begin(), mapWarnings_.end());
+  if (tracer_ && tracer_->gaveUp() > 0)
+    w.push_back("the GPU tracer stopped the rays of " + std::to_string(tracer_->gaveUp()) +
+                " pixels after visiting "
+                "more nodes than its tree has (a broken tree or driver): they count as lit in the truth; "
+                "truth_tracer = embree is the check");
+  const auto& p = params;
+  if (p.key.type != LightType::Point && p.key.elevationDeg < 10.0f)
+    w.push_back("grazing light (" + formatNumber(p.key.elevationDeg) +
+                " deg above the horizon): texels stretch along the "
+                "ground; expect acne unless the slope bias grows");
+  if (p.key.casts && p.bias.constant == 0 && p.bias.slope == 0 && p.bias.normalOffset == 0 &&
+      p.bias.offsetFactor == 0 && p.bias.offsetUnits == 0)
+    w.push_back("no bias at all: lit surfaces shadow themselves (acne)");
+  if (p.bias.constant + p.bias.slope > 12.0f || p.bias.normalOffset > 6.0f)
+    w.push_back("large bias: shadows detach from their casters (peter-panning)");
+  if (!p.map.borderClamp)
+    w.push_back(p.filter.type == ShadowFilter::Hard && p.map.farFix
+                    ? "border clamp off: the hard test checks the map's bounds itself (shadow_lookup.glsl); the other "
+                      "filters' taps repeat the edge texels"
+                    : "border clamp off: outside the map the edge texels repeat and stretch shadows");
+  if (!p.map.farFix) w.push_back("far-plane fix off: receivers beyond the light's far plane come out shadowed");
+  if (p.filter.type == ShadowFilter::Pcss && p.key.radius == 0.0f)
+    w.push_back("light radius 0: PCSS reduces to a hard shadow");
+  if (p.filter.type == ShadowFilter::Pcss && p.key.radius > 1.0f)
+    w.push_back("light radius " + formatNumber(p.key.radius) +
+                " scene radii: larger than the scene, penumbrae wash out");
+  if (p.key.type == LightType::Point && p.key.distance < 0.5f)
+    w.push_back("point light near the scene centre: it may sit inside geometry, which then hides everything");
+  if (!p.key.casts && !(p.fill.on && p.fill.casts)) w.push_back("no light casts shadows: no depth pass runs");
+  if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 1 && !(p.fill.on && p.fill.casts))
+    w.push_back("the depth view shows the fill light's map: turn on fill_light and fill_casts");
+  if (viewIsDepthMap(p.view.mode) && p.view.depthLight == 0 && !p.key.casts)
+    w.push_back("the depth view shows the key light's map, but the key light casts no shadow");
+  if ((p.view.mode == ShadowView::PcssBlocker || p.view.mode == ShadowView::PcssPenumbra) &&
+      p.filter.type != ShadowFilter::Pcss)
+    w.push_back("the PCSS views show data only with filter = pcss");
+  if (p.view.mode == ShadowView::BiasHeat && isMomentFilter(effectiveFilterOf(p)))
+    w.push_back("the bias-heat view shows a depth test's margin, and " + filterName(p.filter.type) +
+                " tests moments of depth instead: there is no margin to show (uniform green); pick hard or pcf");
+  else if (p.view.mode == ShadowView::BiasHeat && p.bias.constant == 0 && p.bias.slope == 0)
+    w.push_back(
+        "bias-heat measures the gap in units of the bias, which is 0: every lit texel is red (acne) or blue "
+        "(stored depth behind the surface), with nothing between; raise bias to see the margin");
+  if (isMomentFilter(p.filter.type) && p.key.type == LightType::Point)
+    w.push_back(filterName(p.filter.type) +
+                " needs a 2D map: the point light's cube map is filtered with "
+                "pcf (" +
+                std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");
+  if (p.map.fit != MapFit::Scene && (p.key.type != LightType::Directional || !p.map.autoFit))
+    w.push_back("fit = " + std::string(kFits[int(p.map.fit)]) + " applies to an auto-fitted directional light only");
+  if (p.view.mode == ShadowView::Cascades && cascadeCountOf(p) < 2)
+    w.push_back("one map, one colour: the cascades view needs fit = cascades or depth-range");
+  if (p.filter.type == ShadowFilter::Esm && p.filter.esmExponent > 80.0f)
+    w.push_back("ESM exponent " + formatNumber(p.filter.esmExponent) + ": exp(c) is within a factor " +
+                formatNumber(std::exp(88.7f - p.filter.esmExponent)) +
+                " of float's limit; a blur of overflowing texels would be inf");
+  return w;
 }
 
 }  // namespace shadelab

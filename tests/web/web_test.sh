@@ -107,21 +107,6 @@ echo "the student's folder survives a reload"
 
 # An exercise checked in the page: the starter saved into the student's folder, the page reloaded on
 # the exercise's link with "check", and Check's lines are the grader's (the diagnosis, a number per check).
-starter=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' \
-  "$repo/exercises/shading/blinn-phong/starter/common/specular.glsl")
-save="(async () => { Module.FS.mkdirTree('/student/common'); Module.FS.writeFile('/student/common/specular.glsl', $starter);
-  await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
-drive check "lab=shading&exercise=shading/blinn-phong&check" --frames 10 --eval "$save" \
-  --wait-console "shading/blinn-phong: " --reload --wait-console-after-reload "shading/blinn-phong: "
-checked=$(sed -n '/--- reloaded ---/,$p' "$out/check.log")
-grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" &&
-  grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
-  grep -qE "shading/blinn-phong: 3 / 12 points .*NOT PASSED" <<<"$checked" ||
-  { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
-grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
-echo "Check grades an exercise in the page"
-# One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
-# each starter checked in the page, told it is the starter, not passed.
 # check_starter NAME LINK EXERCISE FILE SOURCE: SOURCE saved as the student's FILE, the page reloaded
 # on LINK (which presses Check): Check's lines say it is the starter, and that it has not passed.
 check_starter() {
@@ -137,6 +122,16 @@ check_starter() {
     { cat "$out/$name.log"; echo "Check in the page did not grade the $exercise starter"; exit 1; }
   grep -m1 -E "$exercise: [0-9.]+ / " <<<"$checked"
 }
+check_starter check "lab=shading&exercise=shading/blinn-phong&check" shading/blinn-phong common/specular.glsl \
+  "$repo/exercises/shading/blinn-phong/starter/common/specular.glsl"
+checked=$(sed -n '/--- reloaded ---/,$p' "$out/check.log")
+grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" &&
+  grep -qE "shading/blinn-phong: 3 / 12 points .*NOT PASSED" <<<"$checked" ||
+  { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
+grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
+echo "Check grades an exercise in the page"
+# One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
+# each starter checked in the page, told it is the starter, not passed.
 for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
   file=$(cd "$repo/exercises/$exercise/starter" && find . -type f | sed 's|^\./||' | head -1)
   check_starter "check-${exercise//\//-}" "lab=${exercise%%/*}&exercise=$exercise&check" "$exercise" "$file" \
