@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cstring>
+#include <limits>
 #include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -223,6 +224,35 @@ bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigne
   return false;
 }
 
+// The binary container (glTF 2.0, section 4.4: a 12-byte header, then chunks of an 8-byte header
+// and a payload) checked before libtinygltf reads it: Debian's 2.7.0 checks the BIN chunk's length
+// against the file without its 8-byte header, so a BIN chunk that claims the file's last bytes
+// made it copy up to 8 bytes past the end. "" or what is wrong.
+std::string checkGlbChunks(const std::vector<unsigned char>& bytes) {
+  const auto u32 = [&](size_t at) {
+    uint32_t v;
+    std::memcpy(&v, bytes.data() + at, 4);
+    return v;
+  };
+  constexpr uint32_t kJson = 0x4E4F534A, kBin = 0x004E4942;
+  if (bytes.size() < 20 || std::memcmp(bytes.data(), "glTF", 4) != 0) return "not a binary glTF (no glTF header)";
+  const uint64_t length = u32(8);
+  if (length > bytes.size())
+    return "its header gives " + std::to_string(length) + " bytes, the file has " + std::to_string(bytes.size());
+  // Every chunk, known or not (unknown chunk types are allowed and skipped), fits in the file.
+  for (uint64_t at = 12, index = 0; at < length; ++index) {
+    if (length - at < 8) return "chunk " + std::to_string(index) + " is cut off in its header";
+    const uint64_t payload = u32(size_t(at)), type = u32(size_t(at) + 4);
+    if (payload > length - at - 8)
+      return "chunk " + std::to_string(index) + " claims " + std::to_string(payload) + " bytes, the file has " +
+             std::to_string(length - at - 8) + " after its header";
+    if (index == 0 && type != kJson) return "its first chunk is not JSON";
+    if (index == 1 && type != kBin && type != kJson) break;  // not a BIN chunk: the library ignores the rest
+    at += 8 + payload;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string loadGltf(const fs::path& file, Scene& scene) {
@@ -233,8 +263,17 @@ std::string loadGltf(const fs::path& file, Scene& scene) {
   loader.SetFsCallbacks({modelFileExists, keepPath, readModelFile, refuseWrite, &folder});
   tinygltf::Model model;
   std::string err, warn;
-  const bool ok = file.extension() == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, file.string())
-                                             : loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
+  bool ok;
+  if (file.extension() == ".glb") {
+    std::vector<unsigned char> bytes;
+    if (!tinygltf::ReadWholeFile(&bytes, &err, file.string(), nullptr)) return file.string() + ": cannot be read";
+    if (bytes.size() > std::numeric_limits<uint32_t>::max())
+      return file.string() + ": over 4 GiB (glTF's binary limit)";
+    if (auto why = checkGlbChunks(bytes); !why.empty()) return file.string() + ": " + why;
+    ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), folder.folder.string());
+  } else {
+    ok = loader.LoadASCIIFromFile(&model, &err, &warn, file.string());
+  }
   if (!ok) {
     while (!err.empty() && (err.back() == '\n')) err.pop_back();
     return file.string() + ": " + (err.empty() ? "not a valid glTF 2.0 file" : err.substr(0, err.find('\n')));

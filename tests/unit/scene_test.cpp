@@ -50,6 +50,40 @@ TEST(Loaders, MalformedFilesNameTheFileAndProblem) {
   EXPECT_EQ(loadSceneFile(emptyObj, s), emptyObj.string() + ": no valid triangle (no faces)");
 }
 
+// A binary glTF: the header, a JSON chunk and, if `bin` is given, a BIN chunk whose header claims
+// `binClaim` bytes (its true size unless a test lies).
+static std::string glb(std::string json, const std::string& bin, size_t binClaim) {
+  const auto u32 = [](size_t v) {
+    const auto x = uint32_t(v);
+    return std::string(reinterpret_cast<const char*>(&x), 4);
+  };
+  while (json.size() % 4) json += ' ';
+  std::string body = u32(json.size()) + "JSON" + json;
+  if (!bin.empty()) body += u32(binClaim) + std::string("BIN\0", 4) + bin;
+  return "glTF" + u32(2) + u32(12 + body.size()) + body;
+}
+
+TEST(Loaders, BinaryGltfChunksMustFitTheFile) {
+  // One triangle, its positions in the BIN chunk.
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]})";
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::string positions(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  Scene s;
+  const auto good = tempFile("shadelab_triangle.glb", glb(json, positions, positions.size()));
+  ASSERT_EQ(loadSceneFile(good, s), "");
+  EXPECT_EQ(s.meshes.back().triangleCount(), 1u);
+  // A BIN chunk claiming 8 bytes more than the file holds (the size of its own header): the
+  // library would copy past the end of the file's bytes.
+  const auto lying = tempFile("shadelab_lying.glb", glb(json, positions.substr(0, 28), 36));
+  EXPECT_EQ(loadSceneFile(lying, s), lying.string() + ": chunk 1 claims 36 bytes, the file has 28 after its header");
+  const auto cut = tempFile("shadelab_cut.glb", glb(json, positions, positions.size()).substr(0, 60));
+  EXPECT_EQ(loadSceneFile(cut, s).rfind(cut.string() + ": its header gives ", 0), 0u);
+}
+
 TEST(Loaders, GltfWithNodeTransformsAndMaterial) {
   Scene s;
   ASSERT_EQ(loadSceneFile(kData / "triangle.gltf", s), "");
