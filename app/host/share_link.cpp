@@ -114,4 +114,25 @@ ShareLink shareLink(LabHost& host) {
   return link;
 }
 
+void addExercise(ShareLink& link, const std::string& id, const std::filesystem::path& root,
+                 const std::vector<std::filesystem::path>& siteRoots, const LinkCourse& course) {
+  if (id.empty() || root.empty()) return;
+  const auto same = [&](const std::filesystem::path& a) {
+    std::error_code ec;
+    return !a.empty() && std::filesystem::equivalent(a, root, ec);
+  };
+  const bool fromLinkCourse = !course.zip.empty() && same(course.folder);
+  if (!fromLinkCourse && std::none_of(siteRoots.begin(), siteRoots.end(), same)) {
+    const std::string name =
+        root.filename().empty() ? root.parent_path().filename().string() : root.filename().string();
+    const std::string why = "exercise " + id + " is from course " + name + ", which a link cannot reach: put " + name +
+                            ".zip on the site and add course=" + name + ".zip (or build the site with ./web.sh " +
+                            "--exercises " + name + ")";
+    link.note = link.note.empty() ? why : link.note + "; " + why;
+    return;
+  }
+  link.fragment += "&exercise=" + percentEncode(id);
+  if (fromLinkCourse) link.fragment += "&course=" + percentEncode(course.zip);
+}
+
 }  // namespace shadelab

@@ -3,6 +3,7 @@
 // teacher copies it and the class opens the same frame. Only settings that differ from the lab's
 // defaults are written, so the link stays short and says what was changed.
 #pragma once
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,21 @@ struct ShareLink {
 };
 
 ShareLink shareLink(LabHost& host);
+
+// The course zip of the site a page was opened with ("course=week3.zip"), and the folder
+// web/course.js unpacked it into; empty on the desktop and in a page opened without one.
+struct LinkCourse {
+  std::string zip;
+  std::filesystem::path folder;
+};
+
+// The exercise on screen, added to a link: "exercise=ID", with "course=ZIP" when it comes from
+// the course zip the page was opened with. `root` is the folder it was found in (exerciseRootOf);
+// `siteRoots` the folders every page of the site lists (the built-in exercises, and the course the
+// site was built with). An exercise from anywhere else (a course folder on this disk, a zip
+// dropped on the page) is one the link cannot reach: it is left out, and the note says so.
+void addExercise(ShareLink& link, const std::string& id, const std::filesystem::path& root,
+                 const std::vector<std::filesystem::path>& siteRoots, const LinkCourse& course);
 
 // A link's fragment read back: percent-decoding each "key=value" ('+' is a space), as the page
 // does when it opens.

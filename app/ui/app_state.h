@@ -1,11 +1,13 @@
 // What the window's panels, its frame and its modes share.
 #pragma once
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "app/gl/pixel_probe.h"
+#include "app/host/share_link.h"
 #include "app/ui/exercise_panel.h"
 #include "app/ui/frame_records.h"
 #include "app/ui/panels.h"
@@ -31,6 +33,10 @@ struct AppState {
   MeasureUi measure;
   ShaderEditor editor;
   ExercisePanel exercises;
+  // Where a link can find an exercise: the page's link course, and the folders every page of the
+  // site lists (the built-in exercises; in the page, the course the site was built with).
+  LinkCourse linkCourse;
+  std::vector<std::filesystem::path> siteExerciseRoots;
   PixelProbe probe;  // the viewport's readout under the cursor
   Responsiveness responsiveness;
   bool screenshotRequested = false;

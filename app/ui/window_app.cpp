@@ -26,6 +26,7 @@
 
 #include "app/cli/session.h"
 #include "app/gl/pixel_probe.h"
+#include "app/grade/rubric.h"
 #include "app/scene/scene_catalog.h"
 #include "app/ui/exercise_panel.h"
 #include "app/ui/frame_records.h"
@@ -240,7 +241,9 @@ void leftPanel(AppState& app) {
   if (ImGui::Button("Save preset")) app.message = savePreset(host);
   ImGui::SameLine();
   if (ImGui::Button("Copy link")) {
-    const ShareLink link = shareLink(host);
+    ShareLink link = shareLink(host);
+    addExercise(link, app.exercises.selected, exerciseRootOf(app.exercises.selected), app.siteExerciseRoots,
+                app.linkCourse);
     app.message = "copied " + copyLink(link.fragment) + (link.note.empty() ? "" : " (" + link.note + ")");
   }
   if (ImGui::BeginCombo("Load preset", "choose...")) {
@@ -350,6 +353,9 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   if (!options.shaderDirs.empty())
     app.editor.folder = options.shaderDirs.front();  // edits go to the student's first folder
   if (!wopt.editFolder.empty()) app.editor.folder = wopt.editFolder;
+  app.linkCourse = wopt.linkCourse;
+  app.siteExerciseRoots = {builtinExercisesRoot()};
+  if (!wopt.siteCourse.empty()) app.siteExerciseRoots.push_back(wopt.siteCourse);
   if (wopt.uiScale > 0) {
     app.uiScale = wopt.uiScale;
   } else {  // a high-DPI monitor's content scale, so text is as large as on any other screen

@@ -30,16 +30,20 @@ int main() {
   // A course folder built into the site (./web.sh --exercises DIR): listed before the built-in exercises;
   // the link's course zip, unpacked by the page before main (web/course.js), before that.
   std::string problems;
+  WindowOptions window;
   if (!link.course.empty()) {
     const std::string folder = emscripten_run_script_string("(Module.shadelabLinkCourse || {}).folder || ''");
-    if (!folder.empty())
+    if (!folder.empty()) {
       args.insert(args.end(), {"--exercises", folder});
-    else
+      window.linkCourse = {link.course, folder};
+    } else
       problems = emscripten_run_script_string("(Module.shadelabLinkCourse || {}).problem || 'the course did not open'");
   }
   std::error_code ec;
-  if (std::filesystem::is_directory("/shadelab/course", ec))
+  if (std::filesystem::is_directory("/shadelab/course", ec)) {
     args.insert(args.end(), {"--exercises", "/shadelab/course"});
+    window.siteCourse = "/shadelab/course";
+  }
   for (auto [key, value] : {std::pair{"--lab", &link.lab},
                             {"--scene", &link.scene},
                             {"--camera", &link.camera},
@@ -54,7 +58,6 @@ int main() {
   if (auto err = parseOptions(int(argv.size()), argv.data(), options); !err.empty())
     problems += (problems.empty() ? "" : "\n") + ("the link: " + err);
   setCourseFolders({options.exerciseDirs.begin(), options.exerciseDirs.end()});
-  WindowOptions window;
   window.message = problems;
   window.check = link.check;
   window.present = link.present;
