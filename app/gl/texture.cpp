@@ -138,6 +138,12 @@ RenderTarget RenderTarget::create(glm::ivec2 size, GLenum colorFormat) {
   RenderTarget rt;
   rt.size_ = size;
   rt.color_ = Texture2D::allocate(size, colorFormat, 1);
+  // A frame is shown and read pixel for pixel: a nearest lookup is the same picture for less work
+  // (the window draws it every frame; llvmpipe's bilinear fetch of a half-float texture is not free).
+  SamplerState nearest;
+  nearest.minFilter = nearest.magFilter = GL_NEAREST;
+  nearest.wrapS = nearest.wrapT = GL_CLAMP_TO_EDGE;
+  rt.color_.setSampler(nearest);
   rt.depth_ = Renderbuffer::make();
   glBindRenderbuffer(GL_RENDERBUFFER, rt.depth_.get());
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.x, size.y);

@@ -175,8 +175,20 @@ drive course-drop "lab=shading" --frames 10 --eval "$drop_zip" --wait-console "c
 grep -q "evil.zip: 'week3/../../student/common/lighting.glsl.part' leaves the course's folder" "$out/course-drop.log" &&
   grep -q "course week3 opened (Exercises): shading/point-lights, shading/specular-lobe" "$out/course-drop.log" ||
   { cat "$out/course-drop.log"; echo "a dropped course zip was not opened (or a hostile one not refused)"; exit 1; }
+# Copy link on a page the course link opened, its exercise selected: the address (the page puts it
+# in the address bar too) carries the exercise and the course zip on. The button sits where the
+# Lab panel puts it for the shading lab at 1280x800 (the screenshot shows it).
+copy_link="(async () => { const at = (type, x, y) => Module.canvas.dispatchEvent(new MouseEvent(type,
+    {clientX: x, clientY: y, button: 0, bubbles: true}));
+  const frames = (n) => new Promise((ok) => { const end = Module.shadelabFrames + n;
+    const wait = () => Module.shadelabFrames >= end ? ok() : setTimeout(wait, 20); wait(); });
+  at('mousemove', 265, 651); await frames(3); at('mousedown', 265, 651); await frames(3);
+  at('mouseup', 265, 651); await frames(3); return 'hash: ' + location.hash; })()"
+drive course-copy-link "lab=shading&course=week3.zip&exercise=shading/point-lights" --frames 5 --eval "$copy_link"
+grep -q "hash: #lab=shading&.*&exercise=shading%2Fpoint-lights&course=week3.zip" "$out/course-copy-link.log" ||
+  { cat "$out/course-copy-link.log"; echo "Copy link did not carry the course's exercise on"; exit 1; }
 unset drive_port
-echo "a course zip opens in the page by link and by drop, and is graded there"
+echo "a course zip opens in the page by link and by drop, is graded there, and Copy link carries it on"
 
 # A shader that runs too long makes the browser take the WebGL context away (here: asked for with
 # WEBGL_lose_context): the page stops drawing, says why and offers a reload without the student's folder.
