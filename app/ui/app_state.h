@@ -21,7 +21,7 @@ class Measurer;
 struct AppState {
   LabHost* host = nullptr;
   Measurer* measurer = nullptr;
-  std::string message;  // last error or confirmation, shown in the UI
+  StatusLine message;  // what the last action did, or why it could not (the Messages panel)
   std::vector<std::string> dropped;
   std::string fileParamUnderMouse;  // a file parameter's key, as of the last frame: drops go there
   // Data scenes not downloaded ("?": not looked up yet): looked up at start and while the scene

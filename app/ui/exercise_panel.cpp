@@ -28,13 +28,13 @@ std::vector<fs::path> studentFolders(LabHost& host) {
 
 // The starter's files into the student's folder, never over a file already there (their work);
 // the lab switched to the exercise's and its first file opened in the editor.
-std::string openStarter(const std::string& id, LabHost& host, ShaderEditor& editor) {
+StatusLine openStarter(const std::string& id, LabHost& host, ShaderEditor& editor) {
   Exercise ex;
-  if (auto e = loadExercise(id, ex); !e.empty()) return e;
+  if (auto e = loadExercise(id, ex); !e.empty()) return StatusLine::failed(e);
   if (host.lab().id() != ex.lab)
-    if (auto e = host.selectLab(ex.lab); !e.empty()) return e;
+    if (auto e = host.selectLab(ex.lab); !e.empty()) return StatusLine::failed(e);
   std::vector<std::string> copied, kept;
-  if (auto e = copyStarter(ex, editor.folder, copied, kept); !e.empty()) return e;
+  if (auto e = copyStarter(ex, editor.folder, copied, kept); !e.empty()) return StatusLine::failed(e);
   persistStudentFiles();
   host.pollChanges();  // the new files shadow the lab's own from this frame on
   editor.open(host, ex.files.front());
@@ -46,7 +46,7 @@ std::string openStarter(const std::string& id, LabHost& host, ShaderEditor& edit
   std::string status = "opened " + ex.files.front();
   if (!copied.empty()) status += "; the starter's " + join(copied) + " copied into " + editor.folder.string();
   if (!kept.empty()) status += "; your " + join(kept) + " kept as it is";
-  return status;
+  return StatusLine::done(status);
 }
 
 const ImVec4 kPass{0.45f, 0.85f, 0.45f, 1.0f}, kPartial{0.95f, 0.8f, 0.3f, 1.0f}, kFail{1.0f, 0.45f, 0.4f, 1.0f};
@@ -58,10 +58,11 @@ void ExercisePanel::select(const std::string& id) {
   statement = readWholeFile(exerciseRootOf(id) / id / "statement.md");
 }
 
-std::string openCourseFolder(ExercisePanel& panel, const fs::path& folder) {
+StatusLine openCourseFolder(ExercisePanel& panel, const fs::path& folder) {
   const std::vector<std::string> ids = listExercises(folder);
   if (ids.empty())
-    return folder.string() + " holds no exercise (a course folder holds LAB/NAME/rubric.json, as exercises/ does)";
+    return StatusLine::failed(folder.string() +
+                              " holds no exercise (a course folder holds LAB/NAME/rubric.json, as exercises/ does)");
   std::string problems;
   for (const std::string& id : ids)
     if (Exercise ex; !loadExercise(folder, id, ex).empty()) problems += (problems.empty() ? "" : ", ") + id;
@@ -70,11 +71,12 @@ std::string openCourseFolder(ExercisePanel& panel, const fs::path& folder) {
   panel.select(ids.front());
   std::string list;
   for (const std::string& id : ids) list += (list.empty() ? "" : ", ") + id;
-  return "course " + folder.filename().string() + " opened (Exercises): " + list +
-         (problems.empty() ? "" : "; these do not load, `shadelab exercise check` says why: " + problems);
+  const std::string opened = "course " + folder.filename().string() + " opened (Exercises): " + list;
+  if (problems.empty()) return StatusLine::done(opened);
+  return StatusLine::failed(opened + "; these do not load, `shadelab exercise check` says why: " + problems);
 }
 
-void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status) {
+void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, StatusLine& status) {
   if (!panel.listed) {  // once: the exercises ship with the program
     // A course's exercises first, under its folder's name; then as exercises/README.md lists
     // them: per lab, the guided exercises before those written from scratch.
@@ -206,13 +208,13 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   ImGui::PopTextWrapPos();
 }
 
-bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, std::string& status) {
+bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) {
   if (panel.checkRequested) {
     panel.checkRequested = false;
     if (panel.selected.empty()) {
-      status = "Check: pick an exercise first";
+      status = StatusLine::failed("Check: pick an exercise first");
     } else if (auto e = panel.check.start(panel.selected, studentFolders(host)); !e.empty()) {
-      status = "Check: " + e;
+      status = StatusLine::failed("Check: " + e);
     } else {
       std::printf("checking %s\n", panel.selected.c_str());
       panel.reveal = true;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/grade/exercise_check.h"
+#include "app/ui/status_line.h"
 
 namespace shadelab {
 
@@ -30,13 +31,13 @@ struct ExercisePanel {
 
 // A course folder dropped on the window (or a zip on the page, unpacked): its exercises listed
 // first, its first one selected. Returns the line for the Messages panel: what opened, or why not.
-std::string openCourseFolder(ExercisePanel& panel, const std::filesystem::path& folder);
+StatusLine openCourseFolder(ExercisePanel& panel, const std::filesystem::path& folder);
 
 // The section's contents; `status` receives what happened (the starter copied, why not).
-void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, std::string& status);
+void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, StatusLine& status);
 
 // Between the window's frames: starts a requested Check, or draws the next configuration of a
 // running one. Returns whether a Check is running (the window keeps drawing while it does).
-bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, std::string& status);
+bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status);
 
 }  // namespace shadelab

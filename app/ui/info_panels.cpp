@@ -63,7 +63,7 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
   }
 }
 
-void drawShaderPanel(LabHost& host, std::string& status) {
+void drawShaderPanel(LabHost& host, StatusLine& status) {
   auto& lib = host.shaders();
   ImGui::TextUnformatted("Search path (first match wins):");
   for (auto& root : lib.searchPath().roots()) ImGui::BulletText("%s", root.string().c_str());
@@ -72,7 +72,8 @@ void drawShaderPanel(LabHost& host, std::string& status) {
   if (ImGui::Button("Rebuild all")) {
     int failed = 0;
     for (auto& p : host.lab().activePrograms()) failed += !lib.rebuild(*p, true);
-    status = failed ? std::to_string(failed) + " program(s) failed to build" : "rebuilt";
+    status = failed ? StatusLine::failed(std::to_string(failed) + " program(s) failed to build")
+                    : StatusLine::done("rebuilt");
   }
   ImGui::SameLine();
   ImGui::TextDisabled("Edit a file and save: it reloads. Drop a .vert/.frag/.geom/.glsl on the window to override it.");
@@ -120,11 +121,13 @@ void drawShaderPanel(LabHost& host, std::string& status) {
   }
 }
 
-void drawWarnings(const LabHost& host, const std::string& lastError) {
-  if (!lastError.empty()) {
+void drawWarnings(const LabHost& host, const StatusLine& last) {
+  if (last.problem) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.45f, 1));
-    ImGui::TextWrapped("%s", lastError.c_str());
+    ImGui::TextWrapped("%s", last.text.c_str());
     ImGui::PopStyleColor();
+  } else if (!last.empty()) {
+    ImGui::TextWrapped("%s", last.text.c_str());
   }
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.8f, 0.3f, 1));
   for (auto& w : host.warnings()) ImGui::TextWrapped("! %s", w.c_str());

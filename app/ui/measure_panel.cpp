@@ -13,7 +13,7 @@
 namespace shadelab {
 
 void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now,
-                      std::string& message) {
+                      StatusLine& message) {
   const ReferenceSpec spec = referenceOf(host.lab());
   if (spec.kind == TruthKind::None) {
     ImGui::TextDisabled("This configuration has no ground truth to measure against.");
@@ -37,7 +37,7 @@ void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const Me
   // Start a measurement: asked for, or automatic once the configuration has been still a moment.
   const bool wantAuto = ui.autoMeasure && spec.cheap && now.signature != ui.measuredSignature && now.stillSeconds > 0.3;
   if ((ui.requested || wantAuto) && now.costs.size() > 0) {
-    if (auto err = measurer.start(now.size, now.time, now.costs); !err.empty()) message = err;
+    if (auto err = measurer.start(now.size, now.time, now.costs); !err.empty()) message = StatusLine::failed(err);
     ui.measuredSignature = now.signature;
     ui.requested = false;
   }

@@ -6,6 +6,7 @@
 
 #include "app/host/lab_host.h"
 #include "app/host/measurer.h"
+#include "app/ui/status_line.h"
 
 namespace shadelab {
 
@@ -23,9 +24,9 @@ void drawStatsPanel(const LabHost& host, const FrameHistory& history, double uiM
 
 // Active programs with their status; a failed build shows file:line:col, the source line and a
 // caret under the column. `status` receives messages such as "reloaded 2 programs".
-void drawShaderPanel(LabHost& host, std::string& status);
+void drawShaderPanel(LabHost& host, StatusLine& status);
 
-void drawWarnings(const LabHost& host, const std::string& lastError);
+void drawWarnings(const LabHost& host, const StatusLine& last);
 
 // The lab's own panels (app/lab/lab_panel.h).
 void drawLabPanels(const Lab& lab);
@@ -46,7 +47,6 @@ struct MeasureUi {
   std::string measuredSignature;  // what the last measurement was started for
   int plot = 0;                   // which of the lab's plots is shown
 };
-void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now,
-                      std::string& message);
+void drawMeasurePanel(LabHost& host, Measurer& measurer, MeasureUi& ui, const MeasureRequest& now, StatusLine& message);
 
 }  // namespace shadelab

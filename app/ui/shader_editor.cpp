@@ -38,32 +38,32 @@ fs::path copyOf(const ShaderEditor& e) {
   return name.empty() ? fs::path() : e.folder / name;
 }
 
-std::string save(ShaderEditor& e) {
+StatusLine save(ShaderEditor& e) {
   const fs::path file = copyOf(e);
-  if (file.empty()) return "'" + e.rel + "' is not a name inside your folder";
+  if (file.empty()) return StatusLine::failed("'" + e.rel + "' is not a name inside your folder");
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
   out << e.text;
-  if (!out.flush()) return "could not save " + file.string();
+  if (!out.flush()) return StatusLine::failed("could not save " + file.string());
   e.saved = e.text;
   e.lastEdit = -1.0;
   persistStudentFiles();
-  return "saved " + file.string();
+  return StatusLine::done("saved " + file.string());
 }
 
-std::string downloadZip(const fs::path& folder) {
+StatusLine downloadZip(const fs::path& folder) {
   std::vector<ZipEntry> entries;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
     if (it->is_regular_file(ec))
       entries.push_back({it->path().lexically_relative(folder).generic_string(), readWholeFile(it->path())});
   std::sort(entries.begin(), entries.end(), [](auto& a, auto& b) { return a.name < b.name; });
-  if (entries.empty()) return "nothing to download: you have not edited a file yet";
+  if (entries.empty()) return StatusLine::failed("nothing to download: you have not edited a file yet");
   const fs::path zip = freshName("shaders", "my-shaders", ".zip");
-  if (auto err = writeTextFile(zip.string(), storedZip(entries)); !err.empty()) return err;
+  if (auto err = writeTextFile(zip.string(), storedZip(entries)); !err.empty()) return StatusLine::failed(err);
   offerDownload(zip.string());
-  return "saved " + zip.string() + " (" + std::to_string(entries.size()) + " files)";
+  return StatusLine::done("saved " + zip.string() + " (" + std::to_string(entries.size()) + " files)");
 }
 
 }  // namespace
@@ -100,7 +100,7 @@ void drawEditableFiles(ShaderEditor& editor, LabHost& host) {
   }
 }
 
-void drawShaderEditor(ShaderEditor& editor, LabHost& host, std::string& status) {
+void drawShaderEditor(ShaderEditor& editor, LabHost& host, StatusLine& status) {
   if (editor.rel.empty() || editor.folder.empty()) return;
   const double now = ImGui::GetTime();
   if (editor.lastEdit >= 0.0 && now - editor.lastEdit >= kSaveAfterSeconds && editor.text != editor.saved)
@@ -120,8 +120,8 @@ void drawShaderEditor(ShaderEditor& editor, LabHost& host, std::string& status) 
       fs::remove(mine, ec);
       persistStudentFiles();
       editor.open(host, editor.rel);
-      status =
-          ec ? "could not remove " + mine.string() : "removed " + mine.string() + ": the lab's file serves it again";
+      status = ec ? StatusLine::failed("could not remove " + mine.string())
+                  : StatusLine::done("removed " + mine.string() + ": the lab's file serves it again");
     }
   }
   ImGui::SameLine();

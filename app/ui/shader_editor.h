@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include "app/ui/status_line.h"
+
 namespace shadelab {
 
 class LabHost;
@@ -26,6 +28,6 @@ struct ShaderEditor {
 // The list of the active programs' files with an Edit button each, for the Shaders panel.
 void drawEditableFiles(ShaderEditor& editor, LabHost& host);
 // The editor's window, when a file is open; `status` receives what happened (saved, removed, ...).
-void drawShaderEditor(ShaderEditor& editor, LabHost& host, std::string& status);
+void drawShaderEditor(ShaderEditor& editor, LabHost& host, StatusLine& status);
 
 }  // namespace shadelab

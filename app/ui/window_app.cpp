@@ -103,8 +103,8 @@ void handleDrops(AppState& app) {
     if (course.problem.empty())
       app.dropped.push_back(course.folder);
     else
-      app.message = course.problem;
-    std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
+      app.message = StatusLine::failed(course.problem);
+    std::fprintf(stderr, "shadelab: %s\n", app.message.text.c_str());
   }
   for (auto& path : app.dropped) {
     const std::filesystem::path p(path);
@@ -112,25 +112,25 @@ void handleDrops(AppState& app) {
     std::error_code ec;
     if (std::filesystem::is_directory(p, ec)) {
       app.message = openCourseFolder(app.exercises, p);
-      std::printf("shadelab: %s\n", app.message.c_str());  // the page's console, a terminal
+      std::printf("shadelab: %s\n", app.message.text.c_str());  // the page's console, a terminal
       std::fflush(stdout);
     } else if (ext == ".vert" || ext == ".frag" || ext == ".geom" || ext == ".glsl" || ext == ".tesc" ||
                ext == ".tese") {
       const auto result = app.host->shaders().overrideByName(p);
-      app.message =
-          !result.error.empty() ? path + ": " + result.error : "now using " + path + " for " + result.replaced;
+      app.message = result.error.empty() ? StatusLine::done("now using " + path + " for " + result.replaced)
+                                         : StatusLine::failed(path + ": " + result.error);
     } else if (ext == ".json") {
       app.message = loadPreset(*app.host, path);
     } else if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".tga" || ext == ".bmp") {
       const std::string err = app.host->setHeightMap(path);
-      app.message = err.empty() ? "height map of the scene's materials: " + path : err;
+      app.message = StatusLine::of(err, "height map of the scene's materials: " + path);
     } else if (!app.fileParamUnderMouse.empty()) {
       const std::string key = std::string(app.host->lab().id()) + "." + app.fileParamUnderMouse;
       const std::string err = app.host->set(key + "=" + path);
-      app.message = err.empty() ? key + " = " + path : err;
+      app.message = StatusLine::of(err, key + " = " + path);
     } else {
       const std::string err = app.host->selectScene(path);
-      app.message = err.empty() ? "loaded scene " + path : err;
+      app.message = StatusLine::of(err, "loaded scene " + path);
     }
   }
   app.dropped.clear();
@@ -202,7 +202,7 @@ void leftPanel(AppState& app) {
   if (ImGui::ArrowButton("##next", ImGuiDir_Right)) next = (current + 1) % int(ids.size());
   if (next != current) {
     const std::string err = host.selectLab(ids[size_t(next)]);
-    app.message = err;
+    app.message = StatusLine::failed(err);
   }
   ImGui::TextWrapped("%s", std::string(host.lab().summary()).c_str());
 
@@ -216,7 +216,7 @@ void leftPanel(AppState& app) {
     for (auto& s : listScenes(host.lab().scenes()))
       if (ImGui::Selectable(s.id.c_str(), s.id == host.sceneId())) {
         const std::string err = host.selectScene(s.id);
-        app.message = err;
+        app.message = StatusLine::failed(err);
       }
     ImGui::EndCombo();
   }
@@ -226,7 +226,7 @@ void leftPanel(AppState& app) {
   ImGui::PopTextWrapPos();
   ImGui::Separator();
   drawParamWidgets(host.lab(), &app.fileParamUnderMouse);
-  for (auto& e : host.jobs().takeErrors()) app.message = e;
+  for (auto& e : host.jobs().takeErrors()) app.message = StatusLine::failed(e);
   if (ImGui::Button("Reset parameters")) host.resetParams();
   ImGui::SameLine();
   if (ImGui::Button("Reset view")) host.resetCamera();
@@ -244,7 +244,8 @@ void leftPanel(AppState& app) {
     ShareLink link = shareLink(host);
     addExercise(link, app.exercises.selected, exerciseRootOf(app.exercises.selected), app.siteExerciseRoots,
                 app.linkCourse);
-    app.message = "copied " + copyLink(link.fragment) + (link.note.empty() ? "" : " (" + link.note + ")");
+    app.message =
+        StatusLine::done("copied " + copyLink(link.fragment) + (link.note.empty() ? "" : " (" + link.note + ")"));
   }
   if (ImGui::BeginCombo("Load preset", "choose...")) {
     for (auto& file : listPresets())
@@ -366,7 +367,7 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
   // What the command line (or the page's link) got wrong, every line of it: a later setting that
   // went well does not wipe out an earlier one that did not.
   const auto note = [&](const std::string& e) {
-    if (!e.empty()) app.message += (app.message.empty() ? "" : "\n") + e;
+    if (!e.empty()) app.message = StatusLine::failed(app.message.text + (app.message.empty() ? "" : "\n") + e);
   };
   note(wopt.message);
   if (!options.preset.empty()) app.message = loadPreset(host, options.preset);  // "loaded ...", or why not
@@ -382,7 +383,7 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
     else
       app.exercises.select(ex.id);
   }
-  if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.c_str());
+  if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.text.c_str());
 }
 
 // The windows of one frame: the side panels and the viewport, or presentation mode's viewport and

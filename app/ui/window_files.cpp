@@ -15,33 +15,34 @@ namespace fs = std::filesystem;
 
 namespace shadelab {
 
-std::string saveScreenshot(LabHost& host, glm::ivec2 size) {
+StatusLine saveScreenshot(LabHost& host, glm::ivec2 size) {
   const fs::path png = freshName("screenshots", std::string(host.lab().id()), ".png");
-  if (auto err = writePng(png.string(), host.readImage()); !err.empty()) return err;
+  if (auto err = writePng(png.string(), host.readImage()); !err.empty()) return StatusLine::failed(err);
   nlohmann::json state = host.stateJson();
   state["size"] = {size.x, size.y};
   const std::string cmd = "shadelab render --preset " + fs::path(png).replace_extension(".json").string() +
                           " --out again.png";  // the preset carries the size
   state["reproduce"] = cmd;
   if (auto err = writeTextFile(fs::path(png).replace_extension(".json").string(), state.dump(2) + "\n"); !err.empty())
-    return err;
+    return StatusLine::failed(err);
   offerDownload(png.string());
   offerDownload(fs::path(png).replace_extension(".json").string());
-  return "saved " + png.string() + " (+ .json; reproduce with: " + cmd + ")";
+  return StatusLine::done("saved " + png.string() + " (+ .json; reproduce with: " + cmd + ")");
 }
 
-std::string savePreset(LabHost& host) {
+StatusLine savePreset(LabHost& host) {
   const fs::path p = freshName("presets", std::string(host.lab().id()), ".json");
-  if (auto err = writeTextFile(p.string(), host.stateJson().dump(2) + "\n"); !err.empty()) return err;
+  if (auto err = writeTextFile(p.string(), host.stateJson().dump(2) + "\n"); !err.empty())
+    return StatusLine::failed(err);
   offerDownload(p.string());
-  return "saved preset " + p.string();
+  return StatusLine::done("saved preset " + p.string());
 }
 
-std::string loadPreset(LabHost& host, const std::string& path) {
+StatusLine loadPreset(LabHost& host, const std::string& path) {
   Preset preset;
-  if (auto err = readPreset(path, preset); !err.empty()) return err;
-  if (auto err = host.applyPreset(preset); !err.empty()) return path + ": " + err;
-  return "loaded " + path;
+  if (auto err = readPreset(path, preset); !err.empty()) return StatusLine::failed(err);
+  if (auto err = host.applyPreset(preset); !err.empty()) return StatusLine::failed(path + ": " + err);
+  return StatusLine::done("loaded " + path);
 }
 
 std::vector<std::string> listPresets() {

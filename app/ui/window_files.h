@@ -6,12 +6,14 @@
 #include <vector>
 
 #include "app/host/lab_host.h"
+#include "app/ui/status_line.h"
 
 namespace shadelab {
 
-std::string saveScreenshot(LabHost& host, glm::ivec2 size);  // returns the message for the UI
-std::string savePreset(LabHost& host);
-std::string loadPreset(LabHost& host, const std::string& path);  // "" on success... or a message
+// Each returns the Messages panel's line: what it wrote or loaded, or why it could not.
+StatusLine saveScreenshot(LabHost& host, glm::ivec2 size);
+StatusLine savePreset(LabHost& host);
+StatusLine loadPreset(LabHost& host, const std::string& path);
 std::vector<std::string> listPresets();
 // The window's default framebuffer, UI included. Returns "" or an error.
 std::string saveWindowImage(const std::string& path, glm::ivec2 size);

@@ -15,7 +15,7 @@ class ScreenshotKey final : public WindowMode {
   void afterLabFrame(FrameEvent& e) override {
     if (!e.app.screenshotRequested) return;
     e.app.message = saveScreenshot(e.host, e.app.viewport);
-    std::printf("%s\n", e.app.message.c_str());
+    std::printf("%s\n", e.app.message.text.c_str());
     std::fflush(stdout);
     e.app.screenshotRequested = false;
   }
@@ -40,7 +40,8 @@ class CycleLabs final : public WindowMode {
  public:
   explicit CycleLabs(std::vector<std::string> labs) : labs_(std::move(labs)) {}
   void beforeLabFrame(FrameEvent& e) override {
-    if (e.frame % 3 == 0) e.app.message = e.host.selectLab(labs_[size_t(e.frame / 3) % labs_.size()]);
+    if (e.frame % 3 == 0)
+      e.app.message = StatusLine::failed(e.host.selectLab(labs_[size_t(e.frame / 3) % labs_.size()]));
   }
 
  private:
