@@ -234,12 +234,12 @@ std::string checkGlbChunks(const std::vector<unsigned char>& bytes) {
     std::memcpy(&v, bytes.data() + at, 4);
     return v;
   };
-  constexpr uint32_t kJson = 0x4E4F534A, kBin = 0x004E4942;
+  constexpr uint32_t kJson = 0x4E4F534A;
   if (bytes.size() < 20 || std::memcmp(bytes.data(), "glTF", 4) != 0) return "not a binary glTF (no glTF header)";
   const uint64_t length = u32(8);
   if (length > bytes.size())
     return "its header gives " + std::to_string(length) + " bytes, the file has " + std::to_string(bytes.size());
-  // Every chunk, known or not (unknown chunk types are allowed and skipped), fits in the file.
+  // Every chunk, BIN or of a type the format lets readers skip, lies inside the file.
   for (uint64_t at = 12, index = 0; at < length; ++index) {
     if (length - at < 8) return "chunk " + std::to_string(index) + " is cut off in its header";
     const uint64_t payload = u32(size_t(at)), type = u32(size_t(at) + 4);
@@ -247,7 +247,6 @@ std::string checkGlbChunks(const std::vector<unsigned char>& bytes) {
       return "chunk " + std::to_string(index) + " claims " + std::to_string(payload) + " bytes, the file has " +
              std::to_string(length - at - 8) + " after its header";
     if (index == 0 && type != kJson) return "its first chunk is not JSON";
-    if (index == 1 && type != kBin && type != kJson) break;  // not a BIN chunk: the library ignores the rest
     at += 8 + payload;
   }
   return {};
