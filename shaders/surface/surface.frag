@@ -98,6 +98,7 @@ void main() {
   float shadow = 1.0;
 
 #if defined(PARALLAX) || defined(STEEP) || defined(POM)
+  readNearestLevel(true);  // the marches (height.glsl says why)
   vec3 viewTs = normalize(transpose(tbn) * V);
   float depth = 0.0;
 #ifdef PARALLAX
@@ -110,6 +111,7 @@ void main() {
 #ifdef SELF_SHADOW
   shadow = parallaxShadow(uv, depth, normalize(transpose(tbn) * u_lightDir), fin.uvScale, max(u_layers, 8));
 #endif
+  readNearestLevel(false);  // the normal at the pixel's own level
 #endif
 #ifdef TRUE_SHADOW
   shadow = heightFieldVisibility(uv, 1.0 - heightAt(uv), normalize(transpose(tbn) * u_lightDir), fin.uvScale);
