@@ -93,7 +93,8 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
               p.decoding, kDecoding);
   v.enumParam({"filter", "Texture filter", "",
                "nearest, bilinear, trilinear (mipmapped) or 16x anisotropic, for the "
-               "colour and normal maps (the height field, being geometry, is always trilinear)."},
+               "colour and normal maps (the height field, being geometry, is read trilinearly; "
+               "the parallax marches read its nearest mip level)."},
               p.filter, namesOf<kTextureFilters>());
   v.section("Bump");
   v.enumParam({"bump_form", "Bump form", "",

@@ -144,8 +144,9 @@ class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
   ProgramSlot program_, overlay_;
   SurfaceGeometry geometry_;
   gl::Texture2D whiteMap_, flatNormalMap_, topHeightMap_;  // stand-ins where a material has none
-  // The height field is geometry, not a picture: always trilinear, never anisotropic (16 taps per
-  // lookup of a 64-step parallax march is what turned one llvmpipe frame into 18 seconds).
+  // The height field is geometry, not a picture: trilinear (the parallax marches ask for whole
+  // levels, surface/height.glsl), never anisotropic (16 taps per lookup of a 64-step parallax
+  // march is what turned one llvmpipe frame into 18 seconds).
   gl::Sampler heightSampler_;
   // From the last frame: what was drawn and what the student should know about it.
   std::vector<std::string> frameNotes_;
