@@ -24,18 +24,19 @@ float g_readLod;
 #ifdef SHADELAB_ES
 // GLSL ES 3.00 has no textureQueryLod: the level from the footprint's longer side, as the
 // hardware's isotropic selection does (OpenGL 4.6, 8.14.1), clamped to the full mip chain.
-void initHeightGradients(vec2 uv) {
+float footprintLevel(vec2 uv) {
   vec2 size = vec2(textureSize(u_heightMap, 0)), texels = uv * size;
   float rho = max(length(dFdx(texels)), length(dFdy(texels)));
-  g_heightLod = clamp(log2(max(rho, 1e-8)), 0.0, floor(log2(max(size.x, size.y))));  // a full chain
-  g_readLod = g_heightLod;
+  return clamp(log2(max(rho, 1e-8)), 0.0, floor(log2(max(size.x, size.y))));  // a full chain
 }
 #else
+float footprintLevel(vec2 uv) { return textureQueryLod(u_heightMap, uv).y; }
+#endif
+
 void initHeightGradients(vec2 uv) {
-  g_heightLod = textureQueryLod(u_heightMap, uv).y;
+  g_heightLod = footprintLevel(uv);
   g_readLod = g_heightLod;
 }
-#endif
 
 void readNearestLevel(bool nearest) { g_readLod = nearest ? floor(g_heightLod + 0.5) : g_heightLod; }
 
