@@ -6,6 +6,11 @@
 // score 100 % with no diagnosis, the starter compiles, draws and scores under 30 %, each mistake
 // loses points and is diagnosed as itself, every check fails for the starter or some mistake,
 // and every hint is shown to one of them.
+//
+// With --unlisted DIR, the exercise's set of mistakes no rubric lists (DIR/LAB/NAME.json, each
+// after a mistake seen in students' homework) is graded in the same class: how many the grader
+// names with their cause, without being told them, is the measure of its diagnoses; one that
+// passes or is named wrongly (a cause the submission did not commit) is a problem.
 #include <unistd.h>
 
 #include <algorithm>
@@ -74,9 +79,64 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
   return {};
 }
 
+// How the grader did on an unlisted mistake, worst first.
+enum class Verdict { Passes, Wrong, Unnamed, Named };
+constexpr const char* kVerdicts[] = {"passes", "wrong", "unnamed", "named"};
+
+// A mistake no rubric lists, the explanations (ExerciseResult::explanation) that name its cause,
+// and how the grader did on it when the set was last measured: doing worse is a problem, so the
+// measure only moves forward (a better verdict is written into the file by whoever improves it).
+struct UnlistedMistake {
+  Mistake change;                    // body, or find and replace, as a rubric's mistake
+  std::vector<std::string> namedBy;  // "relation:complement", "where:light_type=spot", ...
+  Verdict recorded = Verdict::Named;
+};
+
+// DIR/LAB/NAME.json: {"mistakes": [{"name", "after", "body" | "find" + "replace", "named_by": [...],
+// "today": "named" | "unnamed" | "wrong" | "passes"}]}.
+// Nothing when the exercise has no set; "" or one line naming the file and the key.
+std::string loadUnlisted(const Exercise& ex, const fs::path& dir, std::vector<UnlistedMistake>& out) {
+  const fs::path file = dir / (ex.id + ".json");
+  std::error_code ec;
+  if (dir.empty() || !fs::is_regular_file(file, ec)) return {};
+  const nlohmann::json j = nlohmann::json::parse(readWholeFile(file), nullptr, false);
+  const std::string at = file.string();
+  if (!j.is_object() || !j.contains("mistakes") || !j["mistakes"].is_array())
+    return at + ": must be an object with \"mistakes\": [...]";
+  for (auto& m : j["mistakes"]) {
+    UnlistedMistake u;
+    if (!m.is_object() || !m.contains("name") || !m["name"].is_string() || !m.contains("named_by") ||
+        !m["named_by"].is_array())
+      return at + ": every mistake needs \"name\" and \"named_by\" (the explanations that name its cause)";
+    u.change.name = m["name"].get<std::string>();
+    u.change.file = m.value("file", ex.files.front());
+    u.change.body = m.value("body", "");
+    u.change.find = m.value("find", "");
+    u.change.replace = m.value("replace", "");
+    for (auto& n : m["named_by"])
+      if (n.is_string()) u.namedBy.push_back(n.get<std::string>());
+    const std::string today = m.value("today", "");
+    const auto it = std::find(std::begin(kVerdicts), std::end(kVerdicts), today);
+    if (it == std::end(kVerdicts))
+      return at + ": " + u.change.name + ": \"today\" is '" + today + "' (valid: named, unnamed, wrong, passes)";
+    u.recorded = Verdict(it - std::begin(kVerdicts));
+    std::string source;
+    if (auto e = mistakeSource(ex, u.change, source); !e.empty()) return at + ": " + u.change.name + ": " + e;
+    out.push_back(std::move(u));
+  }
+  return {};
+}
+
+// A diagnosis that states only what the frames show (where they differ, how much), no cause: it
+// cannot be wrong, though it may not name the cause either.
+bool evidenceOnly(const std::string& explanation) {
+  return explanation == "evidence" || explanation.rfind("where:", 0) == 0 || explanation.rfind("only:", 0) == 0;
+}
+
 // The grading of the class the check writes: each submission's exercise entry of report.json.
 std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs::path& work,
-                                                   const std::vector<std::string>& courseArgs, std::string& error) {
+                                                   const std::vector<std::string>& courseArgs,
+                                                   const std::vector<UnlistedMistake>& unlisted, std::string& error) {
   const fs::path cls = work / "class", out = work / "out";
   // The solution: the lab's own files (a part file: its functions as the lab defines them).
   for (auto& file : ex.files)
@@ -91,6 +151,11 @@ std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs:
     }
   for (auto& c : ex.correct)
     if (auto e = writeMistakeFolder(ex, c, cls / ("correct-" + c.name)); !e.empty()) {
+      error = e;
+      return {};
+    }
+  for (auto& u : unlisted)
+    if (auto e = writeMistakeFolder(ex, u.change, cls / ("unlisted-" + u.change.name)); !e.empty()) {
       error = e;
       return {};
     }
@@ -127,15 +192,17 @@ bool isGuard(const Check& c) {
 
 // Every problem of one exercise, one line each; none when it is ready to go out.
 std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std::string>& courseArgs,
-                                       std::string& summary) {
+                                       const fs::path& unlistedDir, std::string& summary) {
   std::vector<std::string> problems;
   for (auto& file : ex.files)
     if (auto e = starterMatchesLabFile(ex, file); !e.empty()) problems.push_back(e);
+  std::vector<UnlistedMistake> unlisted;
+  if (auto e = loadUnlisted(ex, unlistedDir, unlisted); !e.empty()) return {e};
   const fs::path work = fs::temp_directory_path() / ("shadelab-exercise-check-" + std::to_string(getpid()));
   std::error_code ec;
   fs::remove_all(work, ec);
   std::string error;
-  const auto rows = gradeAsClass(ex, work, courseArgs, error);
+  const auto rows = gradeAsClass(ex, work, courseArgs, unlisted, error);
   fs::remove_all(work, ec);
   if (!error.empty()) return {error};
   const auto row = [&](const std::string& name) -> const nlohmann::json& {
@@ -183,7 +250,8 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   std::map<std::string, std::pair<bool, bool>> checks;  // "configuration: check" -> (failed, hint shown)
   std::map<std::string, std::string> hints;
   for (const auto& [name, e] : rows) {
-    if (name == "solution" || name.rfind("correct-", 0) == 0) continue;
+    // The unlisted set measures the diagnoses; it never stands in for the rubric's own mistakes.
+    if (name == "solution" || name.rfind("correct-", 0) == 0 || name.rfind("unlisted-", 0) == 0) continue;
     for (auto& c : e.value("checks", nlohmann::json::array())) {
       const std::string key = c["configuration"].get<std::string>() + ": " + c["check"].get<std::string>();
       auto& [failed, shown] = checks[key];
@@ -209,6 +277,26 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   summary = "solution " + formatNumber(percent(solution)) + " %, starter " + formatNumber(percent(starter)) + " %, " +
             std::to_string(named) + " of " + std::to_string(ex.mistakes.size() - 1) + " mistakes named, " +
             std::to_string(ex.correct.size()) + " correct variants, " + std::to_string(checks.size()) + " checks";
+  if (unlisted.empty()) return problems;
+  size_t unlistedNamed = 0, wrong = 0, passing = 0;
+  for (auto& u : unlisted) {
+    const nlohmann::json& e = row("unlisted-" + u.change.name);
+    const std::string said = e.value("explanation", "");
+    const Verdict v = e.value("passed", false) || !(percent(e) < 100.0) ? Verdict::Passes
+                      : std::find(u.namedBy.begin(), u.namedBy.end(), said) != u.namedBy.end() ? Verdict::Named
+                      : evidenceOnly(said)                                                     ? Verdict::Unnamed
+                                                                                               : Verdict::Wrong;
+    unlistedNamed += v == Verdict::Named;
+    wrong += v == Verdict::Wrong;
+    passing += v == Verdict::Passes;
+    std::printf("       unlisted %-34s %-7s %s\n", u.change.name.c_str(), kVerdicts[int(v)], said.c_str());
+    if (v < u.recorded)
+      problems.push_back("unlisted mistake '" + u.change.name + "' " + kVerdicts[int(v)] + " (it was " +
+                         kVerdicts[int(u.recorded)] + "; " + formatNumber(percent(e)) +
+                         " %): " + e.value("diagnosis", std::string()));
+  }
+  summary += "; unlisted: " + std::to_string(unlistedNamed) + " of " + std::to_string(unlisted.size()) +
+             " named, " + std::to_string(wrong) + " wrongly, " + std::to_string(passing) + " passing";
   return problems;
 }
 
@@ -245,7 +333,7 @@ int runExerciseCheck(const Options& o) {
       continue;
     }
     std::string summary;
-    const std::vector<std::string> problems = checkExercise(ex, courseArgs, summary);
+    const std::vector<std::string> problems = checkExercise(ex, courseArgs, o.unlisted, summary);
     std::printf("%s %s%s\n", problems.empty() ? "ok  " : "FAIL", id.c_str(),
                 summary.empty() ? "" : (" (" + summary + ")").c_str());
     for (auto& p : problems) std::printf("       %s\n", p.c_str());

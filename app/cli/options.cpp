@@ -40,7 +40,9 @@ commands:
                   an exercise (an id, an exercise's folder, or a course folder: all of it; none: every
                   exercise) checked before it goes out: its rubric, its starter against the lab's file,
                   and the solution, starter, listed mistakes and correct variants graded as a class;
-                  one line per problem, exit 1 if any
+                  one line per problem, exit 1 if any. --unlisted DIR: also grade DIR/LAB/NAME.json,
+                  mistakes no rubric lists, each with the explanations that name its cause: how many
+                  are named, and a problem for each that passes or is named wrongly
 
 options:
   --lab ID            lab to run (see `shadelab list`)
@@ -177,7 +179,12 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.exerciseDirs.push_back(v);
     } else if (arg == "--class")
       o.classDir = v;
-    else if (arg == "--function")
+    else if (arg == "--unlisted") {
+      std::error_code ec;
+      if (!std::filesystem::is_directory(v, ec))
+        return "--unlisted: '" + v + "' is not a folder (it holds LAB/NAME.json, an exercise's unlisted mistakes)";
+      o.unlisted = v;
+    } else if (arg == "--function")
       o.function = v;
     else if (arg == "--format") {
       if (v != "gradescope" && v != "classroom" && v != "moodle" && v != "canvas")

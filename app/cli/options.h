@@ -31,6 +31,7 @@ struct Options {
   bool measure = false;                   // render: measure against the lab's truth too
   std::string exercise;                   // grade: --exercise lab/name
   std::vector<std::string> exerciseDirs;  // --exercises DIR (repeatable): course folders, before exercises/
+  std::string unlisted;       // exercise check: --unlisted DIR, sets of mistakes no rubric lists (DIR/LAB/NAME.json)
   std::string function;       // exercise new: --function FILE:NAME, the built-in function the exercise asks for
   std::string format;         // grade: gradescope (one student), moodle or canvas (a class); "": ShadeLab's own only
   bool allExercises = false;  // grade: --all

@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "app/grade/frame_properties.h"
+#include "app/grade/frame_relations.h"
 #include "app/host/configure.h"
 #include "app/host/measurer.h"
 #include "app/measure/report.h"
@@ -57,16 +60,73 @@ std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolut
   return {};
 }
 
+// The values a setting is tried at when a student's frame may ignore or misuse it: the lab's
+// default (the key left out), 0, 1, half, twice and the reciprocal of a number (a divide for a
+// multiply).
+std::vector<std::string> otherValues(const std::string& value) {
+  std::vector<std::string> out{""};  // "": left at the lab's default
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (end == value.c_str() || *end != '\0' || !std::isfinite(v)) return out;
+  for (double o : {0.0, 1.0, 0.5 * v, 2.0 * v, v != 0.0 ? 1.0 / v : 0.0})
+    if (std::abs(o - v) > 1e-9 * std::max(1.0, std::abs(v))) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%g", o);
+      if (std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+    }
+  return out;
+}
+
+// Which setting the student's frame behaves as if it had: the solution drawn with one of the
+// configuration's settings at another value (otherValues), each setting's best value kept when it
+// lies far closer to the student's frame than the solution's does. Drawn only for a frame that
+// differs and that no listed mistake explains, so a class that makes the listed mistakes pays nothing.
+nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const ImageF& image, double distance) {
+  constexpr double kFits = 0.35;  // as relateFrames: the residual at most this share of the distance
+  constexpr int kMostFrames = 16;
+  nlohmann::json out = nlohmann::json::array();
+  int frames = 0;
+  for (size_t i = 0; i < c.settings.size(); ++i) {
+    double best = kFits * distance;
+    std::string bestValue;
+    bool found = false;
+    for (const std::string& value : otherValues(c.settings[i].second)) {
+      if (++frames > kMostFrames) return out;
+      Configuration other = c;
+      if (value.empty())
+        other.settings.erase(other.settings.begin() + std::ptrdiff_t(i));
+      else
+        other.settings[i].second = value;
+      std::string error;
+      const auto host = configuredHost({builtinShaderDir()}, ex, other, error);
+      if (!error.empty()) continue;  // a value the parameter does not take
+      host->settle();
+      host->renderFrame(ex.size);
+      const double d = frameDistance(image, host->readImage());
+      if (d < best && buildErrors(*host).empty()) {
+        best = d;
+        bestValue = value;
+        found = true;
+      }
+    }
+    if (found) out.push_back({{"key", c.settings[i].first}, {"value", bestValue}, {"distance", best}});
+  }
+  return out;
+}
+
 }  // namespace
 
 void lookUpSubmission(const Exercise& ex, const std::vector<fs::path>& studentDirs, ExerciseResult& out) {
   const ShaderSearchPath submitted(studentDirs);
+  out.starterUnchanged = true;
   for (auto& file : ex.files) {
     const ShaderSearchPath::Lookup found = submitted.find(file);
     if (found.file.empty() && found.refused.empty())
       out.missingFiles.push_back(file);
     else if (!found.file.empty() && readWholeFile(found.file) == readWholeFile(builtinShaderDir() / file))
       out.notes.push_back(found.file.string() + " is the lab's own file, unchanged");
+    if (found.file.empty() || readWholeFile(found.file) != readWholeFile(ex.dir / "starter" / file))
+      out.starterUnchanged = false;
   }
 }
 
@@ -149,6 +209,33 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   student["mistakes"] = nlohmann::json::array();
   for (size_t i = 0; i < solution.mistakes.size(); ++i)
     student["mistakes"].push_back(frameDistance(image, solution.mistakes[i]));
+  // Two mistakes made together, where both show: the solution with both mistakes' changes to it
+  // added (exact where their changes touch different pixels, as a far-plane test and a texture
+  // coordinate do), against the student's frame.
+  student["pairs"] = nlohmann::json::array();
+  std::vector<bool> shows(solution.mistakes.size());
+  for (size_t i = 1; i < solution.mistakes.size() && i < solution.numbers["mistakes"].size(); ++i)
+    shows[i] = solution.numbers["mistakes"][i].value("distance", 0.0) > 0.004;  // the diagnosis's kDiffers
+  for (size_t i = 1; i < solution.mistakes.size(); ++i)
+    for (size_t j = i + 1; j < solution.mistakes.size(); ++j)
+      if (shows[i] && shows[j])
+        student["pairs"].push_back(
+            {i, j, frameDistance(image, composeChanges(solution.frame, solution.mistakes[i], solution.mistakes[j],
+                                                       {c.bounded, c.low, c.high}))});
+  student["relations"] = nlohmann::json::array();
+  for (auto& r : relateFrames(image, solution.frame, {c.bounded, c.low, c.high}))
+    student["relations"].push_back({{"kind", r.kind}, {"a", r.a}, {"b", r.b}, {"residual", r.residual}});
+  const double distance = student["distance"].get<double>();
+  // Nothing else explains the frame: no listed mistake draws it (within one 8-bit step) and no
+  // relation to the solution's fits closely.
+  const bool explained =
+      distance <= 0.004 ||
+      std::any_of(student["relations"].begin(), student["relations"].end(),
+                  [&](const nlohmann::json& r) { return r["residual"].get<double>() <= 0.1 * distance; }) ||
+      std::any_of(student["mistakes"].begin(), student["mistakes"].end(),
+                  [&](const nlohmann::json& d) { return d.get<double>() <= 0.004; });
+  if (!explained && student["errors"].empty() && properties.nonFinitePixels() == 0)
+    student["settings"] = settingMatches(ex, c, image, distance);
   student["properties"] = {{"nan_pixels", properties.nanPixels},
                            {"inf_pixels", properties.infPixels},
                            {"non_finite", properties.nonFiniteText()},

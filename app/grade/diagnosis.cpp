@@ -1,19 +1,28 @@
 #include "app/grade/diagnosis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <set>
 #include <string>
 
 namespace shadelab {
 
 namespace {
 
-// A mistake's frame differs from the solution's in a configuration when they lie this far apart
-// (frameDistance: RMS over covered pixels; one 8-bit step is 0.004).
+// A frame differs from another in a configuration when they lie this far apart (frameDistance:
+// RMS over covered pixels; one 8-bit step is 0.004).
 constexpr double kDiffers = 0.004;
-// It explains the student's frames when they lie at most this fraction of their distance to the
-// solution from the mistake's, summed over the configurations where the mistake differs.
+// A mistake's frame explains the student's in a configuration when the student's lies at most
+// this fraction of its distance to the solution from the mistake's.
 constexpr double kExplains = 0.5;
+// Two explanations fit about as well when the second's misfit is within this factor of the
+// first's (plus kSlack, for misfits near 0): the evidence cannot tell them apart.
+constexpr double kClose = 1.5, kSlack = 0.02;
+// A relation to the solution's frames (grade/frame_relations.h) wins over a listed mistake when
+// its residual is at most this fraction of the student's distance to the mistake's frames.
+constexpr double kRelationWins = 0.5;
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
@@ -21,6 +30,13 @@ std::string fixed(double v, const char* format) {
   char b[64];
   std::snprintf(b, sizeof b, format, v);
   return b;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string s;
+  for (size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quoted(names[i]);
+  return s;
 }
 
 bool lostPoints(const ConfigurationResult& c) {
@@ -64,52 +80,333 @@ std::string nonFiniteCause(const ConfigurationResult& c) {
   return s + "An Inf comes from dividing a non-zero value by 0 or from log(0): guard the divisor.";
 }
 
-// What a configuration's frame properties say, or "".
-std::string propertyCause(const ConfigurationResult& c) {
+struct Cause {
+  std::string tag, text;  // ExerciseResult::explanation and diagnosis
+};
+
+// What a configuration's frame properties say, or nothing.
+Cause propertyCause(const ConfigurationResult& c) {
   const std::string in = " in " + quoted(c.name);
   if (c.outOfRangePct > 0.5)
-    return "Your values leave the view's range" + in + " (" + fixed(c.outOfRangePct, "%.1f") +
-           " % of the pixels): a sum where an average was meant, or weights that do not add up to 1.";
+    return {"property:out-of-range", "Your values leave the view's range" + in + " (" +
+                                         fixed(c.outOfRangePct, "%.1f") +
+                                         " % of the pixels): a sum where an average was meant, or weights that do "
+                                         "not add up to 1."};
   if (c.umbraLevel > 0.1)
-    return "Where the truth and the solution are in full shadow, yours is not" + in + " (it averages " +
-           fixed(c.umbraLevel, "%.2f") +
-           " of the way to lit): an occluder closer than the receiver must count as in shadow.";
+    return {"property:umbra", "Where the truth and the solution are in full shadow, yours is not" + in +
+                                  " (it averages " + fixed(c.umbraLevel, "%.2f") +
+                                  " of the way to lit): an occluder closer than the receiver must count as in "
+                                  "shadow."};
   if (c.litLevel > 0.1)
-    return "Where the truth and the solution are fully lit, yours is not" + in + " (" + fixed(c.litLevel, "%.2f") +
-           " of the way to shadow): surfaces shadow themselves (the bias) or the taps are scaled wrong.";
-  if (c.edgeShiftX || c.edgeShiftY)
-    return "Your edges" + in + " sit (" + std::to_string(c.edgeShiftX) + ", " + std::to_string(c.edgeShiftY) +
-           ") pixels from the solution's: everything is offset, as by a sample grid that is not centred or a "
-           "coordinate "
-           "off by half a step.";
+    return {"property:lit", "Where the truth and the solution are fully lit, yours is not" + in + " (" +
+                                fixed(c.litLevel, "%.2f") +
+                                " of the way to shadow): surfaces shadow themselves (the bias) or the taps are "
+                                "scaled wrong."};
   if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
-    return "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
-           " times as wide as the solution's: the filter's footprint is " +
-           (c.edgeWidthRatio > 1.0 ? "too large" : "too small") + " (its size, or the scale of its offsets).";
+    return {"property:edge-width", "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
+                                       " times as wide as the solution's: the filter's footprint is " +
+                                       (c.edgeWidthRatio > 1.0 ? "too large" : "too small") +
+                                       " (its size, or the scale of its offsets)."};
   return {};
+}
+
+// What a configuration's frame properties measure, without a cause: "In 'a', where the truth and
+// the solution are fully lit, yours is 0.63 of the way to shadow." ("" when nothing stands out).
+std::string propertyObservation(const ConfigurationResult& c) {
+  const std::string in = "In " + quoted(c.name) + ", ";
+  if (c.outOfRangePct > 0.5) return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range.";
+  if (c.umbraLevel > 0.1)
+    return in + "where the truth and the solution are in full shadow, yours averages " +
+           fixed(c.umbraLevel, "%.2f") + " of the way to lit.";
+  if (c.litLevel > 0.1)
+    return in + "where the truth and the solution are fully lit, yours is " + fixed(c.litLevel, "%.2f") +
+           " of the way to shadow.";
+  if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
+    return in + "your soft edges are " + fixed(c.edgeWidthRatio, "%.2f") + " times as wide as the solution's.";
+  return {};
+}
+
+// The configurations a diagnosis reasons over: those drawn, split by whether they lost points.
+struct Evidence {
+  const Exercise& ex;
+  const ExerciseResult& e;
+  std::vector<const ConfigurationResult*> losing, matching;
+
+  Evidence(const Exercise& x, const ExerciseResult& r) : ex(x), e(r) {
+    for (auto& c : e.configurations)
+      if (c.drawn) (lostPoints(c) ? losing : matching).push_back(&c);
+  }
+  const Configuration* rubricOf(const ConfigurationResult& c) const {
+    for (auto& rc : ex.configurations)
+      if (rc.name == c.name) return &rc;
+    return nullptr;
+  }
+  ViewRange range(const ConfigurationResult& c) const {
+    const Configuration* rc = rubricOf(c);
+    return rc ? ViewRange{rc->bounded, rc->low, rc->high} : ViewRange{};
+  }
+  std::string channels(const ConfigurationResult& c) const {
+    const Configuration* rc = rubricOf(c);
+    return rc ? rc->channels : "red, green, blue";
+  }
+};
+
+bool differs(const ConfigurationResult& c, size_t k) {
+  return k < c.mistakeSeparations.size() && k < c.mistakeDistances.size() && c.mistakeSeparations[k] > kDiffers;
+}
+
+// Whether mistake k's frames are the student's where it shows, and nowhere else is the student
+// wrong: the student loses points only where the mistake differs from the solution, and in every
+// configuration where it differs, the student's frame lies close to the mistake's. The misfit
+// (summed distance to the mistake's frames over the summed distance to the solution's) in `misfit`.
+bool agrees(const Evidence& ev, size_t k, double& misfit) {
+  double toMistake = 0.0, toSolution = 0.0;
+  bool shows = false;
+  for (auto* c : ev.losing)
+    if (!differs(*c, k)) return false;
+  for (auto& c : ev.e.configurations) {
+    if (!c.drawn || !differs(c, k)) continue;
+    if (c.mistakeDistances[k] > kExplains * c.distance) return false;
+    shows = true;
+    toMistake += c.mistakeDistances[k];
+    toSolution += c.distance;
+  }
+  if (!shows || toSolution <= 0.0) return false;
+  misfit = toMistake / toSolution;
+  return true;
+}
+
+// The student's frame to mistakes k and j made together, in configuration c (NaN when not drawn).
+double pairDistance(const ConfigurationResult& c, size_t k, size_t j) {
+  for (auto& p : c.pairDistances)
+    if ((p.a == k && p.b == j) || (p.a == j && p.b == k)) return p.distance;
+  return std::nan("");
+}
+
+// Two mistakes made together: every losing configuration is one where either differs; where one
+// shows alone the student's frame is that mistake's, where both show it is the two together
+// (grade/frame_relations.h: composeChanges), and each shows somewhere.
+bool agreeTogether(const Evidence& ev, size_t k, size_t j, double& misfit) {
+  double toMistakes = 0.0, toSolution = 0.0;
+  for (auto* c : ev.losing)
+    if (!differs(*c, k) && !differs(*c, j)) return false;
+  for (auto& c : ev.e.configurations) {
+    if (!c.drawn || (!differs(c, k) && !differs(c, j))) continue;
+    const double d = differs(c, k) && differs(c, j) ? pairDistance(c, k, j)
+                     : differs(c, k)                ? c.mistakeDistances[k]
+                                                    : c.mistakeDistances[j];
+    if (!(d <= kExplains * c.distance)) return false;
+    toMistakes += d;
+    toSolution += c.distance;
+  }
+  if (toSolution <= 0.0) return false;
+  misfit = toMistakes / toSolution;
+  return true;
+}
+
+// The relation that holds in every losing configuration (the same kind, and the same numbers),
+// or none; `misfit` its summed residual over the summed distance.
+bool commonRelation(const Evidence& ev, FrameRelation& out, double& misfit) {
+  if (ev.losing.empty()) return false;
+  for (auto& candidate : ev.losing.front()->relations) {
+    double residual = 0.0, distance = 0.0;
+    bool everywhere = true;
+    for (auto* c : ev.losing) {
+      const auto it = std::find_if(c->relations.begin(), c->relations.end(),
+                                   [&](const FrameRelation& r) { return sameRelation(r, candidate); });
+      if (it == c->relations.end()) {
+        everywhere = false;
+        break;
+      }
+      residual += it->residual;
+      distance += c->distance;
+    }
+    if (everywhere && distance > 0.0) {
+      out = candidate;
+      misfit = residual / distance;
+      return true;  // relations are listed best first
+    }
+  }
+  return false;
+}
+
+// The setting that draws the student's frames in every losing configuration when the solution is
+// drawn with it at another value (grade/configuration_frames.h); `misfit` as for a relation.
+bool commonSetting(const Evidence& ev, std::string& key, std::vector<std::string>& values, double& misfit) {
+  if (ev.losing.empty()) return false;
+  for (auto& candidate : ev.losing.front()->settingMatches) {
+    double residual = 0.0, distance = 0.0;
+    std::vector<std::string> seen;
+    for (auto* c : ev.losing) {
+      const auto it = std::find_if(c->settingMatches.begin(), c->settingMatches.end(),
+                                   [&](const ConfigurationResult::SettingMatch& m) { return m.key == candidate.key; });
+      if (it == c->settingMatches.end()) break;
+      residual += it->distance;
+      distance += c->distance;
+      seen.push_back(it->value);
+    }
+    if (seen.size() == ev.losing.size() && distance > 0.0) {
+      key = candidate.key;
+      values = seen;
+      misfit = residual / distance;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string settingSentence(const Evidence& ev, const std::string& key, const std::vector<std::string>& values) {
+  std::vector<std::string> where, asIf, given;
+  bool unused = true;
+  for (size_t i = 0; i < ev.losing.size(); ++i) {
+    const ConfigurationResult& c = *ev.losing[i];
+    where.push_back(c.name);
+    const std::string& v = values[i];
+    const std::string shown = v.empty() ? "the lab's default" : v;
+    if (std::find(asIf.begin(), asIf.end(), shown) == asIf.end()) asIf.push_back(shown);
+    unused = unused && (v.empty() || v == "0" || v == "1");
+    if (const Configuration* rc = ev.rubricOf(c))
+      for (auto& [k, value] : rc->settings)
+        if (k == key && std::find(given.begin(), given.end(), value) == given.end()) given.push_back(value);
+  }
+  std::string as, set;
+  for (auto& v : asIf) as += (as.empty() ? "" : " or ") + v;
+  for (auto& v : given) set += (set.empty() ? "" : " and ") + v;
+  std::string s = "Your frames in " + listed(where) + " are the solution's drawn with " + key + " at " + as +
+                  " (the configuration sets " + set + "): ";
+  return s + (unused ? "your result does not use " + key + ", or uses it where it has no effect."
+                     : "your result uses " + key + " at another strength than it has (applied twice, or halved).");
+}
+
+// The student's summed distance to mistake k's frames over the configurations where they lose
+// points: what a relation's residual is compared with.
+double distanceToMistake(const Evidence& ev, size_t k) {
+  double d = 0.0;
+  for (auto* c : ev.losing) d += k < c->mistakeDistances.size() ? c->mistakeDistances[k] : c->distance;
+  return d;
+}
+
+double residualOf(const Evidence& ev, const FrameRelation& r) {
+  double d = 0.0;
+  for (auto* c : ev.losing)
+    for (auto& o : c->relations)
+      if (sameRelation(o, r)) {
+        d += o.residual;
+        break;
+      }
+  return d;
+}
+
+// Where the frames differ, as a setting of the rubric's configurations: the keys whose values in
+// the losing configurations are one value no matching configuration has. `tag` receives
+// "where:KEY=VALUE", or "only:NAME" when one configuration loses and no setting sets it apart.
+std::string wherePredicate(const Evidence& ev, std::string& tag) {
+  if (ev.losing.empty() || ev.matching.empty()) return {};
+  std::vector<std::string> losingNames, matchingNames;
+  for (auto* c : ev.losing) losingNames.push_back(c->name);
+  for (auto* c : ev.matching) matchingNames.push_back(c->name);
+  // Every configuration's settings as key -> value, with its scene and camera.
+  const auto settingsOf = [&](const ConfigurationResult& c) {
+    std::map<std::string, std::string> s;
+    if (const Configuration* rc = ev.rubricOf(c)) {
+      s["scene"] = rc->scene.empty() ? "(the lab's default)" : rc->scene;
+      if (!rc->camera.empty()) s["camera"] = rc->camera;
+      for (auto& [key, value] : rc->settings) s[key] = value;
+    }
+    return s;
+  };
+  std::vector<std::string> keys;  // in the order the rubric sets them
+  for (auto& rc : ev.ex.configurations)
+    for (auto& [key, value] : rc.settings)
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  for (const char* key : {"scene", "camera"}) keys.push_back(key);
+  std::string separating;  // "green is directx and normal_strength is 2.5 or 1.5"
+  for (auto& key : keys) {
+    std::vector<std::string> inLosing;  // in the order the configurations come
+    std::set<std::string> inMatching;
+    const auto value = [&](const ConfigurationResult& c) {
+      auto s = settingsOf(c);
+      return s.count(key) ? s[key] : std::string("left at the lab's default");
+    };
+    for (auto* c : ev.losing)
+      if (std::find(inLosing.begin(), inLosing.end(), value(*c)) == inLosing.end()) inLosing.push_back(value(*c));
+    for (auto* c : ev.matching) inMatching.insert(value(*c));
+    if (std::any_of(inLosing.begin(), inLosing.end(), [&](const std::string& v) { return inMatching.count(v) > 0; }))
+      continue;
+    if (tag.empty()) tag = "where:" + key + (inLosing.size() == 1 ? "=" + inLosing.front() : "");
+    std::string values;
+    for (auto& v : inLosing) values += (values.empty() ? "" : " or ") + v;
+    separating += (separating.empty() ? "" : " and ") + key + " is " + values;
+  }
+  if (!separating.empty())
+    return "Your frames match the solution's in " + listed(matchingNames) + " and differ only where " + separating +
+           " (" + listed(losingNames) + "): the cause lies in what " +
+           (separating.find(" and ") == std::string::npos ? "that setting changes." : "those settings change.");
+  if (ev.losing.size() == 1) {
+    tag = "only:" + ev.losing.front()->name;
+    return "Only " + quoted(ev.losing.front()->name) +
+           " loses points; in the other configurations your frames match the solution's. The cause lies in what "
+           "this one alone uses: " +
+           ev.losing.front()->description + ".";
+  }
+  return {};
+}
+
+std::string mistakeSentence(const Exercise& ex, const Mistake& m) {
+  return m.diagnosis + (ex.reveal == "cause-and-fix" && !m.fix.empty() ? " " + m.fix : "");
+}
+
+// Whether the student's frames are mistake k's wherever it shows (within one 8-bit step), not
+// merely close to them.
+bool exactly(const ExerciseResult& e, size_t k) {
+  for (auto& c : e.configurations)
+    if (c.drawn && differs(c, k) && c.mistakeDistances[k] > kDiffers) return false;
+  return true;
+}
+
+// "(Evidence: where this mistake shows, in 'a' and 'b', your frames are its frames.)"
+std::string mistakeEvidence(const ExerciseResult& e, size_t k) {
+  std::vector<std::string> where;
+  for (auto& c : e.configurations)
+    if (c.drawn && differs(c, k)) where.push_back(c.name);
+  return " (Evidence: where this mistake shows, in " + listed(where) + ", your frames " +
+         (exactly(e, k) ? "are its frames" : "lie far closer to its frames than to the solution's") + ".)";
+}
+
+std::string relationSentence(const Evidence& ev, const FrameRelation& r) {
+  const ConfigurationResult& first = *ev.losing.front();
+  std::vector<std::string> where;
+  for (auto* c : ev.losing) where.push_back(c->name);
+  std::string s = "Your frames are " + describeRelation(r, ev.range(first), ev.channels(first));
+  s += ev.matching.empty() ? " in every configuration" : " in " + listed(where) + " (the others match)";
+  return s + ": " + relationCause(r) + ".";
+}
+
+// What the frames show when no explanation stands: how many configurations differ, where most.
+std::string evidenceSentence(const Evidence& ev) {
+  const ConfigurationResult* most = nullptr;
+  for (auto* c : ev.losing)
+    if (!most || c->distance > most->distance) most = c;
+  std::string s = "No known mistake and no simple relation to the solution's frames (turned over, scaled, offset, "
+                  "mirrored, shifted, components exchanged) explains yours.";
+  if (most)
+    s += " They differ in " + std::to_string(ev.losing.size()) + " of " +
+         std::to_string(ev.losing.size() + ev.matching.size()) + " configurations, most in " + quoted(most->name) +
+         " (RMS difference " + fixed(most->distance, "%.3f") + ").";
+  return s;
 }
 
 }  // namespace
 
 int explainingMistake(const Exercise& ex, const ExerciseResult& e) {
+  const Evidence ev(ex, e);
   int best = -1;
-  double bestRatio = kExplains;
-  for (size_t k = 0; k < ex.mistakes.size(); ++k) {
-    double toMistake = 0.0, toSolution = 0.0;
-    bool differs = false;
-    for (auto& c : e.configurations) {
-      if (!c.drawn || k >= c.mistakeDistances.size() || k >= c.mistakeSeparations.size()) continue;
-      if (c.mistakeSeparations[k] <= kDiffers) continue;
-      differs = true;
-      toMistake += c.mistakeDistances[k];
-      toSolution += c.distance;
-    }
-    if (!differs || toSolution <= 0.0) continue;
-    if (const double ratio = toMistake / toSolution; ratio <= bestRatio) {
+  double bestMisfit = 0.0;
+  for (size_t k = 0; k < ex.mistakes.size(); ++k)
+    if (double misfit; agrees(ev, k, misfit) && (best < 0 || misfit < bestMisfit)) {
       best = int(k);
-      bestRatio = ratio;
+      bestMisfit = misfit;
     }
-  }
   return best;
 }
 
@@ -117,10 +414,12 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
   silenceUnsupportedHints(e);
   e.diagnosis.clear();
   e.mistake.clear();
+  e.explanation.clear();
   if (e.total > 0.0 && e.earned >= e.total - 1e-9) return;
 
   switch (e.outcome()) {
     case Outcome::NotSubmitted:
+      e.explanation = "not-submitted";
       e.diagnosis = "Not submitted: " + (e.missingFiles.empty() ? std::string("no file") : e.missingFiles.front()) +
                     " is in none of the folders graded.";
       return;
@@ -130,6 +429,7 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
           // The message without its file and line, which the error itself shows below.
           std::string first = c.errors.front().substr(0, c.errors.front().find('\n'));
           if (const size_t at = first.find("error: "); at != std::string::npos) first = first.substr(at + 7);
+          e.explanation = "did-not-build";
           e.diagnosis = "Your shader does not build (" + first +
                         "; the error is shown at its file and line). Nothing "
                         "it draws can be scored.";
@@ -137,59 +437,130 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
         }
       break;
     case Outcome::TimedOut:
+      e.explanation = "timed-out";
       e.diagnosis =
           "Your shader ran too long and was stopped: a loop whose bound is never reached (a condition that "
           "stays true, a counter that does not move).";
       return;
     case Outcome::Crashed:
+      e.explanation = "crashed";
       e.diagnosis = "The renderer crashed drawing your shader; nothing it drew could be scored.";
       return;
     case Outcome::Graded:
       break;
   }
 
-  if (const int k = explainingMistake(ex, e); k >= 0) {
-    e.mistake = ex.mistakes[size_t(k)].name;
-    e.diagnosis = ex.mistakes[size_t(k)].diagnosis;
-    return;
+  const Evidence ev(ex, e);
+  // The listed mistakes whose frames agree with the student's, best first.
+  std::vector<std::pair<double, size_t>> agreeing;
+  for (size_t k = 0; k < ex.mistakes.size(); ++k)
+    if (double misfit; agrees(ev, k, misfit)) agreeing.push_back({misfit, k});
+  std::sort(agreeing.begin(), agreeing.end());
+  FrameRelation relation;
+  double relationMisfit = 0.0;  // its residual over the distance, summed where points were lost
+  const bool related = commonRelation(ev, relation, relationMisfit);
+
+  if (!agreeing.empty()) {
+    const size_t k = agreeing.front().second;
+    const Mistake& m = ex.mistakes[k];
+    const bool relationFitsBetter =
+        related && residualOf(ev, relation) <= kRelationWins * distanceToMistake(ev, k) && !m.starter;
+    const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack;
+    if (m.starter && !relationFitsBetter) {
+      e.mistake = m.name;
+      e.explanation = e.starterUnchanged ? "starter" : "starter-result";
+      e.diagnosis = e.starterUnchanged ? m.diagnosis
+                                       : "Your frames are the starter's, though your file is not: what you wrote "
+                                         "draws what the placeholder draws, so none of it reaches the result yet.";
+      return;
+    }
+    if (!relationFitsBetter && !split) {
+      // Frames that are the mistake's name it; frames only close to them say so: the effect is the
+      // mistake's, the code that makes it may differ (a bias far too small acts as none).
+      const bool exact = exactly(e, k);
+      e.mistake = m.name;
+      e.explanation = (exact ? "mistake:" : "like:") + m.name;
+      e.diagnosis = (exact ? "" : "Your frames come close to what a known mistake draws, so its effect is yours: ") +
+                    mistakeSentence(ex, m) + mistakeEvidence(e, k);
+      return;
+    }
+    if (!relationFitsBetter) {  // two listed mistakes fit about as well: say what the frames show
+      std::string tag, where = wherePredicate(ev, tag);
+      e.explanation = "evidence";
+      e.diagnosis = (where.empty() ? "" : where + " ") + "Your frames lie about as close to the frames of two "
+                    "known mistakes, so the evidence cannot tell which you made; compare your frame with the "
+                    "solution's where they differ.";
+      return;
+    }
   }
+  if (agreeing.empty())
+    for (size_t k = 1; k < ex.mistakes.size(); ++k)
+      for (size_t j = k + 1; j < ex.mistakes.size(); ++j)
+        if (double misfit; agreeTogether(ev, k, j, misfit)) {
+          e.explanation = "mistakes:" + ex.mistakes[k].name + "+" + ex.mistakes[j].name;
+          e.diagnosis = "Two causes together. " + mistakeSentence(ex, ex.mistakes[k]) + mistakeEvidence(e, k) +
+                        " And: " + mistakeSentence(ex, ex.mistakes[j]) + mistakeEvidence(e, j);
+          return;
+        }
   for (auto& c : e.configurations)
     if (c.nanPixels + c.infPixels > 0) {
+      e.explanation = "non-finite";
       e.diagnosis = nonFiniteCause(c);
       return;
     }
-  for (auto& c : e.configurations)
-    if (lostPoints(c))
-      if (std::string cause = propertyCause(c); !cause.empty()) {
-        e.diagnosis = cause;
-        return;
+  std::string settingKey;
+  std::vector<std::string> settingValues;
+  double settingMisfit = 0.0;
+  if (commonSetting(ev, settingKey, settingValues, settingMisfit) && !(related && relationMisfit < settingMisfit)) {
+    e.explanation = "setting:" + settingKey;
+    e.diagnosis = settingSentence(ev, settingKey, settingValues);
+    return;
+  }
+  if (related) {
+    e.explanation = "relation:" + relation.kind;
+    std::string tag, where = wherePredicate(ev, tag);
+    e.diagnosis = relationSentence(ev, relation) + (where.empty() ? "" : " " + where);
+    return;
+  }
+  // A setting that sets the losing configurations apart is evidence; a property's usual cause is a
+  // guess, so where the setting is known only what the property measures is added.
+  std::string whereTag, where = wherePredicate(ev, whereTag);
+  if (whereTag.rfind("where:", 0) == 0) {
+    e.explanation = whereTag;
+    e.diagnosis = where;
+    for (auto* c : ev.losing)
+      if (std::string seen = propertyObservation(*c); !seen.empty()) {
+        e.diagnosis += " " + seen;
+        break;
       }
-  const ConfigurationResult* only = nullptr;
-  int losing = 0;
-  for (auto& c : e.configurations)
-    if (lostPoints(c)) {
-      ++losing;
-      only = &c;
+    return;
+  }
+  for (auto* c : ev.losing)
+    if (Cause cause = propertyCause(*c); !cause.text.empty()) {
+      e.explanation = cause.tag;
+      e.diagnosis = cause.text;
+      return;
     }
-  if (losing == 1 && e.configurations.size() > 1) {
-    e.diagnosis = "Only " + quoted(only->name) +
-                  " loses points; in the other configurations your frames match the "
-                  "solution's. The cause lies in what this one alone uses: " +
-                  only->description + ".";
+  if (!where.empty()) {
+    e.explanation = whereTag;
+    e.diagnosis = where;
     return;
   }
   const CheckResult* worst = nullptr;
-  const ConfigurationResult* where = nullptr;
+  const ConfigurationResult* at = nullptr;
   for (auto& c : e.configurations)
     for (auto& r : c.checks)
       if (!worst || r.check.points - r.earned > worst->check.points - worst->earned) {
         worst = &r;
-        where = &c;
+        at = &c;
       }
-  e.diagnosis = "No known mistake matches your frames; the check that lost most is " +
-                quoted(where->name + ": " + worst->check.name) + " (" + worst->check.metric + " " +
-                (std::isfinite(worst->value) ? fixed(worst->value, "%.4g") : std::string("n/a")) +
-                ", full marks at <= " + fixed(worst->fullBound, "%.4g") + ").";
+  e.explanation = "evidence";
+  e.diagnosis = evidenceSentence(ev);
+  if (worst)
+    e.diagnosis += " The check that lost most is " + quoted(at->name + ": " + worst->check.name) + " (" +
+                   worst->check.metric + " " +
+                   (std::isfinite(worst->value) ? fixed(worst->value, "%.4g") : std::string("n/a")) +
+                   ", full marks at <= " + fixed(worst->fullBound, "%.4g") + ").";
 }
 
 }  // namespace shadelab

@@ -1,17 +1,27 @@
 // One cause per exercise: what a student reads first under a failed exercise, in the terminal, the
 // reports, the window's and the page's Check and the class page.
 //
-// The evidence, strongest first:
-//   1. a known mistake of the rubric explains the frames: on the configurations where the mistake's
-//      frame differs from the solution's, the student's frames lie clearly closer to the mistake's
-//      (at most half as far) than to the solution's; the closest such mistake is named with the
-//      rubric's own sentence;
-//   2. the frame holds NaN or Inf (how many, where, and the usual causes of each);
-//   3. a property of the frame says what is wrong: values outside the view's range, an umbra that
-//      does not reach its low end or a lit region its high end, edges shifted against the
-//      solution's, or edges wider or narrower than the solution's;
-//   4. the points were lost in one configuration alone: what it uses and the others do not;
-//   5. otherwise the check that lost most, and that no known mistake matches.
+// A diagnosis states its evidence and never names a cause the frames do not back: a wrong cause is
+// worse than none. The evidence, strongest first:
+//   1. a known mistake of the rubric whose frames agree with the student's: the student loses
+//      points only where the mistake's frame differs from the solution's, and wherever it differs
+//      the student's frame lies at most half as far from it as from the solution's. It is named
+//      with the rubric's sentence (and its fix, where the rubric reveals fixes) and where it
+//      shows; the untouched starter as the starter, a changed file that draws what the starter
+//      draws as such. When a second mistake fits about as well, or a relation to the solution's
+//      frames (3) fits clearly better, no mistake is named;
+//   2. two known mistakes made together: each shows alone somewhere and agrees there;
+//   3. the frame holds NaN or Inf (how many, where, and the usual causes of each);
+//   4. a relation holds in every configuration that lost points (grade/frame_relations.h: turned
+//      over, scaled, offset, squared, mirrored, shifted, components exchanged or turned over): the
+//      relation, where it holds, and what it usually comes from;
+//      Or, when it fits better, a setting at whose other value the solution draws the student's
+//      frames in every losing configuration ("your frames are the solution's at strength 1").
+//   5. a property of the frame: values outside the view's range, an umbra that does not reach
+//      its low end or a lit region its high end, edges wider or narrower than the solution's;
+//   6. where the frames differ, as a setting: "differ only where light_type is spot";
+//   7. otherwise what the frames show: how many configurations differ, where most, and the check
+//      that lost most.
 //
 // Hints obey the same rule: a check's hint is shown only when the checks its cause needs passed or
 // failed as the rubric says ("hint_when"); otherwise it stays silent rather than guessing.
@@ -21,8 +31,9 @@
 
 namespace shadelab {
 
-// Clears the hints whose evidence is missing, then sets e.diagnosis (and e.mistake when a mistake
-// of the rubric explains the frames). Leaves both empty when every point was earned.
+// Clears the hints whose evidence is missing, then sets e.diagnosis, e.explanation (what it rests
+// on) and e.mistake when a mistake of the rubric explains the frames. Leaves them empty when every
+// point was earned.
 void diagnose(const Exercise& ex, ExerciseResult& e);
 
 // Which of the rubric's mistakes explains the frames of `e`: its index, or -1.

@@ -131,6 +131,17 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
     out.outOfRangePct = number(student["vs_solution"], "out_of_range_pct");
     out.umbraLevel = number(student["vs_solution"], "umbra_level");
     out.litLevel = number(student["vs_solution"], "lit_level");
+    if (student.contains("pairs") && student["pairs"].is_array())
+      for (auto& q : student["pairs"])
+        if (q.is_array() && q.size() == 3)
+          out.pairDistances.push_back({q[0].get<size_t>(), q[1].get<size_t>(), q[2].get<double>()});
+    if (student.contains("settings") && student["settings"].is_array())
+      for (auto& m : student["settings"])
+        out.settingMatches.push_back({m.value("key", ""), m.value("value", ""), m.value("distance", 0.0)});
+    if (student.contains("relations") && student["relations"].is_array())
+      for (auto& r : student["relations"])
+        out.relations.push_back(
+            {r.value("kind", ""), r.value("a", 1.0), r.value("b", 0.0), r.value("residual", 0.0)});
   }
   for (auto& check : c.checks) {
     const bool truth = check.against == Against::Truth;
@@ -356,6 +367,7 @@ std::string gradeJson(const GradeReport& report) {
                       {"checks", nlohmann::json::array()}};
     if (!e.diagnosis.empty()) je["diagnosis"] = e.diagnosis;
     if (!e.mistake.empty()) je["mistake"] = e.mistake;
+    if (!e.explanation.empty()) je["explanation"] = e.explanation;
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
         je["checks"].push_back(

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "app/grade/frame_relations.h"
 #include "app/grade/rubric.h"
 
 namespace shadelab {
@@ -47,11 +48,26 @@ struct ConfigurationResult {
   double distance = 0.0;                   // frameDistance of the student's frame to the solution's
   std::vector<double> mistakeDistances;    // ... to each of the rubric's mistakes' frames, in order
   std::vector<double> mistakeSeparations;  // each mistake's frame to the solution's
+  // For two mistakes that both show here, the student's frame to both made together
+  // (composeChanges): {i, j, distance}, mistakes numbered as above.
+  struct PairDistance {
+    size_t a = 0, b = 0;
+    double distance = 0.0;
+  };
+  std::vector<PairDistance> pairDistances;
   std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52" ("" when none)
   size_t nanPixels = 0, infPixels = 0;     // pixels of the student's frame holding NaN, or Inf
   int edgeShiftX = 0, edgeShiftY = 0;      // the best-matching shift of the frame, in pixels
   double edgeWidthRatio = 1.0;             // its edges' width over the solution's
   double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
+  std::vector<FrameRelation> relations;  // how the student's frame relates to the solution's, best first
+  // Settings of the configuration at whose other value the solution draws the student's frame:
+  // {key, value ("" = the lab's default), distance}, drawn only when nothing else explains it.
+  struct SettingMatch {
+    std::string key, value;
+    double distance = 0.0;
+  };
+  std::vector<SettingMatch> settingMatches;
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;
   std::vector<CheckResult> checks;
@@ -77,10 +93,16 @@ struct ExerciseResult {
   std::string id, title, lab;
   std::vector<std::string> missingFiles;  // the submission lacks them: not graded, 0 points
   std::vector<std::string> notes;         // e.g. a file identical to the lab's own
+  // Every submitted file is the starter's, as handed out: the TODO region still holds its placeholder.
+  bool starterUnchanged = false;
   std::vector<ConfigurationResult> configurations;
   // One cause in a sentence or two (grade/diagnosis.h); empty when every point was earned.
   std::string diagnosis;
   std::string mistake;  // the rubric's mistake that explains the frames, when one does
+  // What the diagnosis rests on, for the reports and for measuring the grader: "mistake:NAME",
+  // "mistakes:A+B", "relation:KIND", "where:KEY=VALUE", "starter", "starter-result",
+  // "non-finite", "property:NAME", "only:CONFIGURATION", "evidence" ("" with no diagnosis).
+  std::string explanation;
   double earned = 0.0, total = 0.0, passMark = 0.0;
   double percent() const { return total > 0 ? 100.0 * earned / total : 0.0; }
   bool passed() const { return percent() + 1e-9 >= passMark; }

@@ -210,6 +210,8 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   const std::string at = where + " (" + c.name + ")";
   text(j, "scene", c.scene);
   text(j, "camera", c.camera);
+  if (j.contains("channels") && (!text(j, "channels", c.channels) || c.channels.empty()))
+    return at + ": \"channels\" must name the view's three channels (\"the normal's x, y, z\")";
   if (j.contains("range")) {
     const auto& r = j["range"];
     if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number() ||
@@ -259,7 +261,8 @@ std::string loadMistake(const nlohmann::json& j, const std::string& where, const
   if (!text(j, "name", m.name) || m.name.empty()) return where + ": \"name\" is missing";
   const std::string at = where + " (" + m.name + ")";
   if (!correct && (!text(j, "diagnosis", m.diagnosis) || m.diagnosis.empty()))
-    return at + ": \"diagnosis\" is missing: one sentence naming the cause and the fix";
+    return at + ": \"diagnosis\" is missing: one sentence naming the cause (and the fix, or that in \"fix\")";
+  if (!correct) text(j, "fix", m.fix);
   m.file = files.front();
   if (text(j, "file", m.file) && std::find(files.begin(), files.end(), m.file) == files.end())
     return at + ": \"file\" '" + m.file + "' is not one of the exercise's \"files\"";
@@ -333,6 +336,10 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
   text(j, "level", out.level);
   if (out.level != "guided" && out.level != "from-scratch")
     return where + ": \"level\" is '" + out.level + "' (valid: guided, from-scratch)";
+  out.reveal = out.level == "from-scratch" ? "cause" : "cause-and-fix";
+  text(j, "reveal", out.reveal);
+  if (out.reveal != "cause" && out.reveal != "cause-and-fix")
+    return where + ": \"reveal\" is '" + out.reveal + "' (valid: cause, cause-and-fix)";
   if (!j.contains("files") || !j["files"].is_array() || j["files"].empty())
     return where + ": \"files\" must list the shader files the student submits";
   for (auto& f : j["files"]) {

@@ -63,6 +63,9 @@ struct Configuration {
   // reach its high end are then measured. Unbounded (shaded colour, say) when absent.
   bool bounded = false;
   float low = 0.0f, high = 1.0f;
+  // What the view's three channels hold, as a diagnosis names them ("the normal's x, y, z");
+  // "red, green, blue" when the rubric does not say.
+  std::string channels = "red, green, blue";
   bool needsTruth() const;
 };
 
@@ -73,7 +76,8 @@ struct Configuration {
 struct Mistake {
   bool starter = false;   // the starter's files as they are
   std::string name;       // "bias-sign"
-  std::string diagnosis;  // "The bias has the wrong sign: ..."
+  std::string diagnosis;  // the cause: "The bias has the wrong sign: ..."
+  std::string fix;        // how to put it right, shown only where the exercise reveals the fix
   std::string file;       // which of the exercise's files it changes (the first by default)
   std::string body;       // the TODO region's replacement, or
   std::string find, replace;
@@ -86,6 +90,9 @@ struct Exercise {
   // "guided": helpers do the coordinate spaces; "from-scratch": the inputs a real shader has and
   // no helper that does the hard part.
   std::string level = "guided";
+  // How much a diagnosis reveals: "cause" (what is wrong, never the formula: the from-scratch
+  // default, where the formula is the exercise) or "cause-and-fix" (the guided default).
+  std::string reveal = "cause-and-fix";
   std::filesystem::path dir;
   std::vector<std::string> files;  // shader files the student submits, relative to a shader root
   double passMark = 60.0;          // percent

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "app/grade/frame_properties.h"
+#include "app/grade/frame_relations.h"
 
 using namespace shadelab;
 
@@ -145,7 +146,12 @@ TEST(Diagnosis, TheMistakeClearlyCloserThanTheSolutionWhereItDiffersExplainsTheF
                       drawn("b", 0.12, {0.2, 0.002, 0.12}, {0.2, 0.12, 0.0})};
   diagnose(ex, e);
   EXPECT_EQ(e.mistake, "sign");
-  EXPECT_EQ(e.diagnosis, "because sign");
+  EXPECT_EQ(e.explanation, "mistake:sign");
+  EXPECT_EQ(e.diagnosis.rfind("because sign (Evidence: where this mistake shows, in 'a' and 'b', your frames are its "
+                              "frames.)",
+                              0),
+            0u)
+      << e.diagnosis;
   // "scale" differs only in "a", where the student is not much nearer to it than to the solution.
   EXPECT_EQ(explainingMistake(ex, e), 1);
 }
@@ -190,4 +196,184 @@ TEST(Diagnosis, AHintIsShownOnlyWhenTheChecksItNeedsWentAsTheRubricSays) {
   e.configurations[1].checks[0].message = "the cube map";
   diagnose(ex, e);
   EXPECT_EQ(e.configurations[1].checks[0].message, "the cube map");
+}
+
+namespace {
+
+// A frame with structure in x, y and every channel, so that no relation holds by accident.
+ImageF pattern(glm::ivec2 size = {64, 48}) {
+  ImageF img;
+  img.size = size;
+  img.rgba.resize(size_t(size.x) * size.y * 4);
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      float* p = img.at(x, y);
+      p[0] = 0.1f + 0.8f * float(x) / float(size.x);
+      p[1] = 0.2f + 0.6f * float(y) / float(size.y);
+      p[2] = 0.5f + 0.4f * std::sin(0.3f * float(x) + 0.2f * float(y));
+      p[3] = 1.0f;
+    }
+  return img;
+}
+
+template <class F>
+ImageF mapped(const ImageF& in, F f) {
+  ImageF out = in;
+  for (size_t i = 0; i < out.rgba.size(); i += 4) f(&out.rgba[i]);
+  return out;
+}
+
+std::string bestRelation(const ImageF& student, const ImageF& solution, const ViewRange& range = kVisibility) {
+  const auto r = relateFrames(student, solution, range);
+  return r.empty() ? "" : r.front().kind;
+}
+
+}  // namespace
+
+TEST(FrameRelations, EachTransformOfTheSolutionIsFoundAsItself) {
+  const ImageF solution = pattern();
+  EXPECT_EQ(bestRelation(solution, solution), "") << "equal frames relate trivially";
+  EXPECT_EQ(bestRelation(mapped(solution, [](float* p) { for (int c = 0; c < 3; ++c) p[c] = 1.0f - p[c]; }), solution),
+            "complement");
+  const auto scaled = relateFrames(mapped(solution, [](float* p) { for (int c = 0; c < 3; ++c) p[c] *= 0.5f; }),
+                                   solution, kVisibility);
+  ASSERT_FALSE(scaled.empty());
+  EXPECT_EQ(scaled.front().kind, "affine");
+  EXPECT_NEAR(scaled.front().a, 0.5, 1e-3);
+  EXPECT_NEAR(scaled.front().b, 0.0, 1e-3);
+  EXPECT_EQ(describeRelation(scaled.front(), kVisibility, "red, green, blue"), "the solution's scaled by 0.5");
+  EXPECT_EQ(bestRelation(mapped(solution, [](float* p) { for (int c = 0; c < 3; ++c) p[c] *= p[c]; }), solution),
+            "squared");
+  EXPECT_EQ(bestRelation(mapped(solution, [](float* p) { std::swap(p[0], p[1]); }), solution), "swapped-rg");
+  const ImageF flipped = mapped(solution, [](float* p) { p[1] = 1.0f - p[1]; });
+  const auto f = relateFrames(flipped, solution, kVisibility);
+  ASSERT_FALSE(f.empty());
+  EXPECT_EQ(f.front().kind, "flipped-g");
+  EXPECT_EQ(describeRelation(f.front(), kVisibility, "the normal's x, y, z"),
+            "the solution's with its y turned over (x becomes 1 - x)")
+      << "the channels are named in the exercise's terms";
+  ImageF mirrored = solution;
+  for (int y = 0; y < solution.size.y; ++y)
+    for (int x = 0; x < solution.size.x; ++x)
+      std::copy(solution.at(solution.size.x - 1 - x, y), solution.at(solution.size.x - 1 - x, y) + 4, mirrored.at(x, y));
+  EXPECT_EQ(bestRelation(mirrored, solution), "mirrored-x");
+  const auto shifted = relateFrames(edgeImage(35, 6), edgeImage(32, 6), kVisibility);
+  ASSERT_FALSE(shifted.empty());
+  EXPECT_EQ(shifted.front().kind, "shifted");
+  EXPECT_EQ(shifted.front().a, 3.0);
+  // Noise is no relation: a frame unrelated to the solution's matches none.
+  const ImageF other = mapped(solution, [](float* p) { p[0] = std::fmod(p[0] * 7.3f, 1.0f); p[2] = 0.3f; });
+  EXPECT_EQ(bestRelation(other, solution), "");
+}
+
+namespace {
+
+// Two configurations drawn with relations: "sign" differs in both, the student is the solution
+// turned over (returns the shadow where the visibility is asked).
+void withRelation(ConfigurationResult& c, const std::string& kind, double residual) {
+  FrameRelation r;
+  r.kind = kind;
+  r.residual = residual;
+  c.relations.push_back(r);
+}
+
+}  // namespace
+
+TEST(Diagnosis, ARelationThatFitsFarBetterThanAnyMistakeIsNamedInstead) {
+  const Exercise ex = twoMistakes();
+  ExerciseResult e;
+  e.total = 2.0;
+  // The student's frames lie nearer "sign" than the solution (0.3 of the way), but the solution turned
+  // over is theirs exactly: the mistake is not named.
+  e.configurations = {drawn("a", 0.5, {0.6, 0.15, 0.5}, {0.6, 0.5, 0.0}), drawn("b", 0.4, {0.6, 0.12, 0.4}, {0.6, 0.4, 0.0})};
+  withRelation(e.configurations[0], "complement", 0.0);
+  withRelation(e.configurations[1], "complement", 0.001);
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "relation:complement") << e.diagnosis;
+  EXPECT_TRUE(e.mistake.empty());
+  EXPECT_NE(e.diagnosis.find("turned over"), std::string::npos) << e.diagnosis;
+  EXPECT_NE(e.diagnosis.find("in every configuration"), std::string::npos) << e.diagnosis;
+  // A relation must hold in every configuration that lost points; without it the mistake, which
+  // agrees where it shows, is named.
+  e.configurations[1].relations.clear();
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "like:sign") << "close to the mistake's frames, not on them: " << e.diagnosis;
+  EXPECT_EQ(e.diagnosis.find("Your frames come close to what a known mistake draws"), 0u) << e.diagnosis;
+}
+
+TEST(Diagnosis, AMistakeIsNotNamedWhereTheStudentLosesPointsItCannotExplain) {
+  const Exercise ex = twoMistakes();
+  ExerciseResult e;
+  e.total = 2.0;
+  // "scale" differs only in "a"; the student sits on it there but loses points in "b" too.
+  e.configurations = {drawn("a", 0.1, {0.3, 0.1, 0.001}, {0.3, 0.0, 0.1}), drawn("b", 0.2, {0.3, 0.2, 0.2}, {0.3, 0.0, 0.0})};
+  diagnose(ex, e);
+  EXPECT_TRUE(e.mistake.empty()) << e.diagnosis;
+  EXPECT_EQ(e.explanation, "evidence") << e.diagnosis;
+  EXPECT_EQ(e.diagnosis.find("No known mistake"), 0u) << e.diagnosis;
+}
+
+TEST(Diagnosis, TwoMistakesMadeTogetherAreBothNamed) {
+  Exercise ex = twoMistakes();
+  ExerciseResult e;
+  e.total = 3.0;
+  // "sign" shows alone in "a", "scale" alone in "b", both in "c".
+  e.configurations = {drawn("a", 0.1, {0.3, 0.0, 0.1}, {0.3, 0.1, 0.0}), drawn("b", 0.2, {0.3, 0.2, 0.001}, {0.3, 0.0, 0.2}),
+                      drawn("c", 0.3, {0.3, 0.2, 0.1}, {0.3, 0.1, 0.2})};
+  // Where both show, the student's frame must be the two changes together.
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "evidence") << e.diagnosis;
+  e.configurations[2].pairDistances = {{1, 2, 0.01}};
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "mistakes:sign+scale") << e.diagnosis;
+  EXPECT_NE(e.diagnosis.find("because sign"), std::string::npos);
+  EXPECT_NE(e.diagnosis.find("because scale"), std::string::npos);
+}
+
+TEST(Diagnosis, TheStarterIsNamedOnlyWhenTheFileIsTheStarters) {
+  const Exercise ex = twoMistakes();
+  ExerciseResult e;
+  e.total = 2.0;
+  e.configurations = {drawn("a", 0.3, {0.0, 0.3, 0.3}, {0.3, 0.1, 0.1}), drawn("b", 0.3, {0.0, 0.3, 0.3}, {0.3, 0.1, 0.1})};
+  e.starterUnchanged = true;
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "starter");
+  EXPECT_EQ(e.diagnosis, "because starter");
+  e.starterUnchanged = false;
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "starter-result");
+  EXPECT_EQ(e.diagnosis.find("Your frames are the starter's, though your file is not"), 0u) << e.diagnosis;
+}
+
+TEST(Diagnosis, WhereTheFramesDifferIsSaidAsTheSettingThatSetsThoseConfigurationsApart) {
+  Exercise ex = twoMistakes();
+  for (const char* light : {"directional", "spot", "spot"}) {
+    Configuration c;
+    c.name = std::string(light) + std::to_string(ex.configurations.size());
+    c.settings = {{"filter", "hard"}, {"light_type", light}};
+    ex.configurations.push_back(c);
+  }
+  ExerciseResult e;
+  e.total = 3.0;
+  e.configurations = {drawn(ex.configurations[0].name, 0.0, {}, {}, 1.0), drawn(ex.configurations[1].name, 0.2, {}, {}),
+                      drawn(ex.configurations[2].name, 0.2, {}, {})};
+  e.earned = 1.0;
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "where:light_type=spot") << e.diagnosis;
+  EXPECT_NE(e.diagnosis.find("differ only where light_type is spot ('spot1' and 'spot2')"), std::string::npos)
+      << e.diagnosis;
+}
+
+TEST(Diagnosis, AFromScratchExerciseIsToldTheCauseAndNotTheFix) {
+  Exercise ex = twoMistakes();
+  ex.mistakes[1].fix = "Write it so.";
+  ExerciseResult e;
+  e.total = 1.0;
+  e.configurations = {drawn("a", 0.1, {0.3, 0.0, 0.1}, {0.3, 0.1, 0.0})};
+  ex.reveal = "cause";
+  diagnose(ex, e);
+  EXPECT_EQ(e.diagnosis.find("Write it so."), std::string::npos) << e.diagnosis;
+  ex.reveal = "cause-and-fix";
+  diagnose(ex, e);
+  EXPECT_EQ(e.diagnosis.find("because sign Write it so."), 0u) << e.diagnosis;
 }
