@@ -61,10 +61,14 @@ std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolut
 }
 
 // The values a setting is tried at when a student's frame may ignore or misuse it: the lab's
-// default (the key left out), 0, 1, half, twice and the reciprocal of a number (a divide for a
-// multiply).
-std::vector<std::string> otherValues(const std::string& value) {
+// default (the key left out), the values the rubric's other configurations give it (a kernel
+// size written in as a literal), and for a number 0, 1, half, twice and the reciprocal (a divide
+// for a multiply).
+std::vector<std::string> otherValues(const Exercise& ex, const std::string& key, const std::string& value) {
   std::vector<std::string> out{""};  // "": left at the lab's default
+  for (auto& c : ex.configurations)
+    for (auto& [k, v] : c.settings)
+      if (k == key && v != value && std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
   if (end == value.c_str() || *end != '\0' || !std::isfinite(v)) return out;
@@ -83,14 +87,14 @@ std::vector<std::string> otherValues(const std::string& value) {
 // differs and that no listed mistake explains, so a class that makes the listed mistakes pays nothing.
 nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const ImageF& image, double distance) {
   constexpr double kFits = 0.35;  // as relateFrames: the residual at most this share of the distance
-  constexpr int kMostFrames = 16;
+  constexpr int kMostFrames = 24;
   nlohmann::json out = nlohmann::json::array();
   int frames = 0;
   for (size_t i = 0; i < c.settings.size(); ++i) {
     double best = kFits * distance;
     std::string bestValue;
     bool found = false;
-    for (const std::string& value : otherValues(c.settings[i].second)) {
+    for (const std::string& value : otherValues(ex, c.settings[i].first, c.settings[i].second)) {
       if (++frames > kMostFrames) return out;
       Configuration other = c;
       if (value.empty())

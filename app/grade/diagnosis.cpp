@@ -162,8 +162,8 @@ bool differs(const ConfigurationResult& c, size_t k) {
 bool agrees(const Evidence& ev, size_t k, double& misfit) {
   double toMistake = 0.0, toSolution = 0.0;
   bool shows = false;
-  for (auto* c : ev.losing)
-    if (!differs(*c, k)) return false;
+  for (auto* c : ev.losing)  // a configuration whose frame is the solution's lost points on a truth's number
+    if (c->distance > kDiffers && !differs(*c, k)) return false;
   for (auto& c : ev.e.configurations) {
     if (!c.drawn || !differs(c, k)) continue;
     if (c.mistakeDistances[k] > kExplains * c.distance) return false;
@@ -189,7 +189,7 @@ double pairDistance(const ConfigurationResult& c, size_t k, size_t j) {
 bool agreeTogether(const Evidence& ev, size_t k, size_t j, double& misfit) {
   double toMistakes = 0.0, toSolution = 0.0;
   for (auto* c : ev.losing)
-    if (!differs(*c, k) && !differs(*c, j)) return false;
+    if (c->distance > kDiffers && !differs(*c, k) && !differs(*c, j)) return false;
   for (auto& c : ev.e.configurations) {
     if (!c.drawn || (!differs(c, k) && !differs(c, j))) continue;
     const double d = differs(c, k) && differs(c, j) ? pairDistance(c, k, j)
@@ -472,6 +472,15 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
       e.diagnosis = e.starterUnchanged ? m.diagnosis
                                        : "Your frames are the starter's, though your file is not: what you wrote "
                                          "draws what the placeholder draws, so none of it reaches the result yet.";
+      return;
+    }
+    if (related && !m.starter && exactly(e, k) && residualOf(ev, relation) <= kDiffers * double(ev.losing.size())) {
+      // The mistake is itself a relation of the solution (a comparison inverted turns every frame
+      // over): say the relation, which is what the frames show, and the mistake as one way to it.
+      e.mistake = m.name;
+      e.explanation = "relation:" + relation.kind;
+      e.diagnosis = relationSentence(ev, relation) + " A known mistake draws exactly these frames: " +
+                    mistakeSentence(ex, m);
       return;
     }
     if (!relationFitsBetter && !split) {
