@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,15 +61,19 @@ std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolut
   return {};
 }
 
-// The values a setting is tried at when a student's frame may ignore or misuse it: the lab's
-// default (the key left out), the values the rubric's other configurations give it (a kernel
-// size written in as a literal), and for a number 0, 1, half, twice and the reciprocal (a divide
-// for a multiply).
-std::vector<std::string> otherValues(const Exercise& ex, const std::string& key, const std::string& value) {
-  std::vector<std::string> out{""};  // "": left at the lab's default
-  for (auto& c : ex.configurations)
-    for (auto& [k, v] : c.settings)
-      if (k == key && v != value && std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+// The values a setting is tried at when a student's frame may ignore or misuse it, likeliest
+// first: the lab's default (the key left out) and the values the rubric's other configurations
+// give it (a kernel size written in as a literal); then for a number 0, 1, half, twice and the
+// reciprocal (a divide for a multiply).
+std::vector<std::string> otherValues(const Exercise& ex, const std::string& key, const std::string& value, bool likeliest) {
+  std::vector<std::string> out;
+  if (likeliest) {
+    out.push_back("");  // "": left at the lab's default
+    for (auto& c : ex.configurations)
+      for (auto& [k, v] : c.settings)
+        if (k == key && v != value && std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+    return out;
+  }
   char* end = nullptr;
   const double v = std::strtod(value.c_str(), &end);
   if (end == value.c_str() || *end != '\0' || !std::isfinite(v)) return out;
@@ -84,37 +89,42 @@ std::vector<std::string> otherValues(const Exercise& ex, const std::string& key,
 // Which setting the student's frame behaves as if it had: the solution drawn with one of the
 // configuration's settings at another value (otherValues), each setting's best value kept when it
 // lies far closer to the student's frame than the solution's does. Drawn only for a frame that
-// differs and that no listed mistake explains, so a class that makes the listed mistakes pays nothing.
+// differs and that nothing else explains, so a class that makes the listed mistakes pays nothing.
 nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const ImageF& image, double distance) {
   constexpr double kFits = 0.35;  // as relateFrames: the residual at most this share of the distance
-  constexpr int kMostFrames = 24;
-  nlohmann::json out = nlohmann::json::array();
+  // A budget in frames keeps the result the same on a slow machine; the time is a safety net that
+  // keeps the phase well inside the watchdog's (grade --watchdog, 20 s by default).
+  constexpr int kMostFrames = 40;
+  constexpr auto kMostTime = std::chrono::seconds(10);
+  const auto start = std::chrono::steady_clock::now();
   int frames = 0;
-  for (size_t i = 0; i < c.settings.size(); ++i) {
-    double best = kFits * distance;
-    std::string bestValue;
-    bool found = false;
-    for (const std::string& value : otherValues(ex, c.settings[i].first, c.settings[i].second)) {
-      if (++frames > kMostFrames) return out;
-      Configuration other = c;
-      if (value.empty())
-        other.settings.erase(other.settings.begin() + std::ptrdiff_t(i));
-      else
-        other.settings[i].second = value;
-      std::string error;
-      const auto host = configuredHost({builtinShaderDir()}, ex, other, error);
-      if (!error.empty()) continue;  // a value the parameter does not take
-      host->settle();
-      host->renderFrame(ex.size);
-      const double d = frameDistance(image, host->readImage());
-      if (d < best && buildErrors(*host).empty()) {
-        best = d;
-        bestValue = value;
-        found = true;
+  std::vector<double> best(c.settings.size(), kFits * distance);
+  std::vector<std::string> bestValue(c.settings.size());
+  std::vector<bool> found(c.settings.size(), false);
+  for (const bool likeliest : {true, false})
+    for (size_t i = 0; i < c.settings.size(); ++i)
+      for (const std::string& value : otherValues(ex, c.settings[i].first, c.settings[i].second, likeliest)) {
+        if (++frames > kMostFrames || std::chrono::steady_clock::now() - start > kMostTime) break;
+        Configuration other = c;
+        if (value.empty())
+          other.settings.erase(other.settings.begin() + std::ptrdiff_t(i));
+        else
+          other.settings[i].second = value;
+        std::string error;
+        const auto host = configuredHost({builtinShaderDir()}, ex, other, error);
+        if (!error.empty()) continue;  // a value the parameter does not take
+        host->settle();
+        host->renderFrame(ex.size);
+        const double d = frameDistance(image, host->readImage());
+        if (d < best[i] && buildErrors(*host).empty()) {
+          best[i] = d;
+          bestValue[i] = value;
+          found[i] = true;
+        }
       }
-    }
-    if (found) out.push_back({{"key", c.settings[i].first}, {"value", bestValue}, {"distance", best}});
-  }
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t i = 0; i < c.settings.size(); ++i)
+    if (found[i]) out.push_back({{"key", c.settings[i].first}, {"value", bestValue[i]}, {"distance", best[i]}});
   return out;
 }
 

@@ -132,10 +132,18 @@ struct Evidence {
   const ExerciseResult& e;
   std::vector<const ConfigurationResult*> losing, matching;
 
+  std::vector<const ConfigurationResult*> losingProbes;  // the losing configurations whose view is a probe
+
   Evidence(const Exercise& x, const ExerciseResult& r) : ex(x), e(r) {
     for (auto& c : e.configurations)
       if (c.drawn) (lostPoints(c) ? losing : matching).push_back(&c);
+    for (auto* c : losing)
+      if (const Configuration* rc = rubricOf(*c); rc && rc->probe) losingProbes.push_back(c);
   }
+  // Where a relation must hold: the losing configurations whose view draws the function's result,
+  // when there are any (a relation of the function need not survive the shading around it), else
+  // every losing configuration.
+  const std::vector<const ConfigurationResult*>& related() const { return losingProbes.empty() ? losing : losingProbes; }
   const Configuration* rubricOf(const ConfigurationResult& c) const {
     for (auto& rc : ex.configurations)
       if (rc.name == c.name) return &rc;
@@ -207,11 +215,12 @@ bool agreeTogether(const Evidence& ev, size_t k, size_t j, double& misfit) {
 // The relation that holds in every losing configuration (the same kind, and the same numbers),
 // or none; `misfit` its summed residual over the summed distance.
 bool commonRelation(const Evidence& ev, FrameRelation& out, double& misfit) {
-  if (ev.losing.empty()) return false;
-  for (auto& candidate : ev.losing.front()->relations) {
+  const std::vector<const ConfigurationResult*>& where = ev.related();
+  if (where.empty()) return false;
+  for (auto& candidate : where.front()->relations) {
     double residual = 0.0, distance = 0.0;
     bool everywhere = true;
-    for (auto* c : ev.losing) {
+    for (auto* c : where) {
       const auto it = std::find_if(c->relations.begin(), c->relations.end(),
                                    [&](const FrameRelation& r) { return sameRelation(r, candidate); });
       if (it == c->relations.end()) {
@@ -282,13 +291,13 @@ std::string settingSentence(const Evidence& ev, const std::string& key, const st
 // points: what a relation's residual is compared with.
 double distanceToMistake(const Evidence& ev, size_t k) {
   double d = 0.0;
-  for (auto* c : ev.losing) d += k < c->mistakeDistances.size() ? c->mistakeDistances[k] : c->distance;
+  for (auto* c : ev.related()) d += k < c->mistakeDistances.size() ? c->mistakeDistances[k] : c->distance;
   return d;
 }
 
 double residualOf(const Evidence& ev, const FrameRelation& r) {
   double d = 0.0;
-  for (auto* c : ev.losing)
+  for (auto* c : ev.related())
     for (auto& o : c->relations)
       if (sameRelation(o, r)) {
         d += o.residual;
@@ -333,6 +342,9 @@ std::string wherePredicate(const Evidence& ev, std::string& tag) {
     for (auto* c : ev.matching) inMatching.insert(value(*c));
     if (std::any_of(inLosing.begin(), inLosing.end(), [&](const std::string& v) { return inMatching.count(v) > 0; }))
       continue;
+    // Several values set apart only from one matching configuration say little: everything differs
+    // from a single configuration in something.
+    if (inLosing.size() > 1 && ev.matching.size() < 2) continue;
     if (tag.empty()) tag = "where:" + key + (inLosing.size() == 1 ? "=" + inLosing.front() : "");
     std::string values;
     for (auto& v : inLosing) values += (values.empty() ? "" : " or ") + v;
@@ -374,11 +386,14 @@ std::string mistakeEvidence(const ExerciseResult& e, size_t k) {
 }
 
 std::string relationSentence(const Evidence& ev, const FrameRelation& r) {
-  const ConfigurationResult& first = *ev.losing.front();
+  const ConfigurationResult& first = *ev.related().front();
   std::vector<std::string> where;
-  for (auto* c : ev.losing) where.push_back(c->name);
+  for (auto* c : ev.related()) where.push_back(c->name);
   std::string s = "Your frames are " + describeRelation(r, ev.range(first), ev.channels(first));
-  s += ev.matching.empty() ? " in every configuration" : " in " + listed(where) + " (the others match)";
+  if (!ev.losingProbes.empty())
+    s += " in " + listed(where) + ", where the view draws your function's result itself";
+  else
+    s += ev.matching.empty() ? " in every configuration" : " in " + listed(where) + " (the others match)";
   return s + ": " + relationCause(r) + ".";
 }
 

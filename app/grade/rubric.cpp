@@ -210,6 +210,10 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   const std::string at = where + " (" + c.name + ")";
   text(j, "scene", c.scene);
   text(j, "camera", c.camera);
+  if (j.contains("probe")) {
+    if (!j["probe"].is_boolean()) return at + ": \"probe\" must be true or false (the view draws the function's result)";
+    c.probe = j["probe"].get<bool>();
+  }
   if (j.contains("channels") && (!text(j, "channels", c.channels) || c.channels.empty()))
     return at + ": \"channels\" must name the view's three channels (\"the normal's x, y, z\")";
   if (j.contains("range")) {

@@ -66,6 +66,10 @@ struct Configuration {
   // What the view's three channels hold, as a diagnosis names them ("the normal's x, y, z");
   // "red, green, blue" when the rubric does not say.
   std::string channels = "red, green, blue";
+  // The view draws the exercised function's result itself, one evaluation per pixel ("probe":
+  // true): the visibility a shadow test returns, the normal a normal map gives. A relation found
+  // here speaks of the function, not only of a picture made from it.
+  bool probe = false;
   bool needsTruth() const;
 };
 
