@@ -283,7 +283,7 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   for (auto& u : unlisted) {
     const nlohmann::json& e = row("unlisted-" + u.change.name);
     const std::string said = e.value("explanation", "");
-    const Verdict v = e.value("passed", false) || !(percent(e) < 100.0) ? Verdict::Passes
+    const Verdict v = e.value("passed", false) || !(percent(e) < 100.0)                        ? Verdict::Passes
                       : std::find(u.namedBy.begin(), u.namedBy.end(), said) != u.namedBy.end() ? Verdict::Named
                       : evidenceOnly(said)                                                     ? Verdict::Unnamed
                                                                                                : Verdict::Wrong;
@@ -296,8 +296,8 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
                          kVerdicts[int(u.recorded)] + "; " + formatNumber(percent(e)) +
                          " %): " + e.value("diagnosis", std::string()));
   }
-  summary += "; unlisted: " + std::to_string(unlistedNamed) + " of " + std::to_string(unlisted.size()) +
-             " named, " + std::to_string(wrong) + " wrongly, " + std::to_string(passing) + " passing";
+  summary += "; unlisted: " + std::to_string(unlistedNamed) + " of " + std::to_string(unlisted.size()) + " named, " +
+             std::to_string(wrong) + " wrongly, " + std::to_string(passing) + " passing";
   return problems;
 }
 

@@ -65,7 +65,8 @@ std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolut
 // first: the lab's default (the key left out) and the values the rubric's other configurations
 // give it (a kernel size written in as a literal); then for a number 0, 1, half, twice and the
 // reciprocal (a divide for a multiply).
-std::vector<std::string> otherValues(const Exercise& ex, const std::string& key, const std::string& value, bool likeliest) {
+std::vector<std::string> otherValues(const Exercise& ex, const std::string& key, const std::string& value,
+                                     bool likeliest) {
   std::vector<std::string> out;
   if (likeliest) {
     out.push_back("");  // "": left at the lab's default
@@ -234,8 +235,9 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
     for (size_t j = i + 1; j < solution.mistakes.size(); ++j)
       if (shows[i] && shows[j])
         student["pairs"].push_back(
-            {i, j, frameDistance(image, composeChanges(solution.frame, solution.mistakes[i], solution.mistakes[j],
-                                                       {c.bounded, c.low, c.high}))});
+            {i, j,
+             frameDistance(image, composeChanges(solution.frame, solution.mistakes[i], solution.mistakes[j],
+                                                 {c.bounded, c.low, c.high}))});
   student["relations"] = nlohmann::json::array();
   for (auto& r : relateFrames(image, solution.frame, {c.bounded, c.low, c.high}))
     student["relations"].push_back({{"kind", r.kind}, {"a", r.a}, {"b", r.b}, {"residual", r.residual}});

@@ -19,7 +19,7 @@ constexpr double kDiffers = 0.004;
 constexpr double kExplains = 0.5;
 // Two explanations fit about as well when the second's misfit is within this factor of the
 // first's (plus kSlack, for misfits near 0): the evidence cannot tell them apart.
-constexpr double kClose = 1.5, kSlack = 0.02;
+constexpr double kClose = 1.5, kSlack = 0.005;
 // A relation to the solution's frames (grade/frame_relations.h) wins over a listed mistake when
 // its residual is at most this fraction of the student's distance to the mistake's frames.
 constexpr double kRelationWins = 0.5;
@@ -88,8 +88,7 @@ struct Cause {
 Cause propertyCause(const ConfigurationResult& c) {
   const std::string in = " in " + quoted(c.name);
   if (c.outOfRangePct > 0.5)
-    return {"property:out-of-range", "Your values leave the view's range" + in + " (" +
-                                         fixed(c.outOfRangePct, "%.1f") +
+    return {"property:out-of-range", "Your values leave the view's range" + in + " (" + fixed(c.outOfRangePct, "%.1f") +
                                          " % of the pixels): a sum where an average was meant, or weights that do "
                                          "not add up to 1."};
   if (c.umbraLevel > 0.1)
@@ -116,8 +115,8 @@ std::string propertyObservation(const ConfigurationResult& c) {
   const std::string in = "In " + quoted(c.name) + ", ";
   if (c.outOfRangePct > 0.5) return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range.";
   if (c.umbraLevel > 0.1)
-    return in + "where the truth and the solution are in full shadow, yours averages " +
-           fixed(c.umbraLevel, "%.2f") + " of the way to lit.";
+    return in + "where the truth and the solution are in full shadow, yours averages " + fixed(c.umbraLevel, "%.2f") +
+           " of the way to lit.";
   if (c.litLevel > 0.1)
     return in + "where the truth and the solution are fully lit, yours is " + fixed(c.litLevel, "%.2f") +
            " of the way to shadow.";
@@ -143,7 +142,9 @@ struct Evidence {
   // Where a relation must hold: the losing configurations whose view draws the function's result,
   // when there are any (a relation of the function need not survive the shading around it), else
   // every losing configuration.
-  const std::vector<const ConfigurationResult*>& related() const { return losingProbes.empty() ? losing : losingProbes; }
+  const std::vector<const ConfigurationResult*>& related() const {
+    return losingProbes.empty() ? losing : losingProbes;
+  }
   const Configuration* rubricOf(const ConfigurationResult& c) const {
     for (auto& rc : ex.configurations)
       if (rc.name == c.name) return &rc;
@@ -402,8 +403,9 @@ std::string evidenceSentence(const Evidence& ev) {
   const ConfigurationResult* most = nullptr;
   for (auto* c : ev.losing)
     if (!most || c->distance > most->distance) most = c;
-  std::string s = "No known mistake and no simple relation to the solution's frames (turned over, scaled, offset, "
-                  "mirrored, shifted, components exchanged) explains yours.";
+  std::string s =
+      "No known mistake and no simple relation to the solution's frames (turned over, scaled, offset, "
+      "mirrored, shifted, components exchanged) explains yours.";
   if (most)
     s += " They differ in " + std::to_string(ev.losing.size()) + " of " +
          std::to_string(ev.losing.size() + ev.matching.size()) + " configurations, most in " + quoted(most->name) +
@@ -471,6 +473,14 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
   for (size_t k = 0; k < ex.mistakes.size(); ++k)
     if (double misfit; agrees(ev, k, misfit)) agreeing.push_back({misfit, k});
   std::sort(agreeing.begin(), agreeing.end());
+  // A changed file whose frames are exactly the starter's and a listed mistake's: the mistake says
+  // how (a slope scaled to nothing draws the starter's flat normals).
+  if (!e.starterUnchanged && std::any_of(agreeing.begin(), agreeing.end(), [&](const auto& a) {
+        return !ex.mistakes[a.second].starter && exactly(e, a.second);
+      }))
+    agreeing.erase(
+        std::remove_if(agreeing.begin(), agreeing.end(), [&](const auto& a) { return ex.mistakes[a.second].starter; }),
+        agreeing.end());
   FrameRelation relation;
   double relationMisfit = 0.0;  // its residual over the distance, summed where points were lost
   const bool related = commonRelation(ev, relation, relationMisfit);
@@ -480,7 +490,10 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
     const Mistake& m = ex.mistakes[k];
     const bool relationFitsBetter =
         related && residualOf(ev, relation) <= kRelationWins * distanceToMistake(ev, k) && !m.starter;
-    const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack;
+    // A second mistake fits about as well, and the first is not the only one whose frames the
+    // student's are exactly.
+    const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack &&
+                       (!exactly(e, k) || exactly(e, agreeing[1].second));
     if (m.starter && !relationFitsBetter) {
       e.mistake = m.name;
       e.explanation = e.starterUnchanged ? "starter" : "starter-result";
@@ -494,8 +507,8 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
       // over): say the relation, which is what the frames show, and the mistake as one way to it.
       e.mistake = m.name;
       e.explanation = "relation:" + relation.kind;
-      e.diagnosis = relationSentence(ev, relation) + " A known mistake draws exactly these frames: " +
-                    mistakeSentence(ex, m);
+      e.diagnosis =
+          relationSentence(ev, relation) + " A known mistake draws exactly these frames: " + mistakeSentence(ex, m);
       return;
     }
     if (!relationFitsBetter && !split) {
@@ -511,7 +524,8 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
     if (!relationFitsBetter) {  // two listed mistakes fit about as well: say what the frames show
       std::string tag, where = wherePredicate(ev, tag);
       e.explanation = "evidence";
-      e.diagnosis = (where.empty() ? "" : where + " ") + "Your frames lie about as close to the frames of two "
+      e.diagnosis = (where.empty() ? "" : where + " ") +
+                    "Your frames lie about as close to the frames of two "
                     "known mistakes, so the evidence cannot tell which you made; compare your frame with the "
                     "solution's where they differ.";
       return;

@@ -115,16 +115,22 @@ std::vector<FrameRelation> relateFrames(const ImageF& student, const ImageF& sol
   consider({"complement"}, inPlace, [&](const float* p, double* t) {
     for (int c = 0; c < 3; ++c) t[c] = sum - p[c];
   });
-  consider({"mirrored-x"}, [&](int x, int y, int& sx, int& sy) {
-    sx = size.x - 1 - x;
-    sy = y;
-    return true;
-  }, [](const float* p, double* t) { std::copy(p, p + 3, t); });
-  consider({"mirrored-y"}, [&](int x, int y, int& sx, int& sy) {
-    sx = x;
-    sy = size.y - 1 - y;
-    return true;
-  }, [](const float* p, double* t) { std::copy(p, p + 3, t); });
+  consider(
+      {"mirrored-x"},
+      [&](int x, int y, int& sx, int& sy) {
+        sx = size.x - 1 - x;
+        sy = y;
+        return true;
+      },
+      [](const float* p, double* t) { std::copy(p, p + 3, t); });
+  consider(
+      {"mirrored-y"},
+      [&](int x, int y, int& sx, int& sy) {
+        sx = x;
+        sy = size.y - 1 - y;
+        return true;
+      },
+      [](const float* p, double* t) { std::copy(p, p + 3, t); });
   for (const char* pair : {"rg", "rb", "gb"}) {
     const int i = channelIndex(pair[0]), j = channelIndex(pair[1]);
     consider({std::string("swapped-") + pair}, inPlace, [&](const float* p, double* t) {
@@ -198,23 +204,25 @@ ImageF composeChanges(const ImageF& solution, const ImageF& a, const ImageF& b, 
 bool sameRelation(const FrameRelation& x, const FrameRelation& y) {
   if (x.kind != y.kind) return false;
   if (x.kind == "shifted") return std::abs(x.a - y.a) <= 1.0 && std::abs(x.b - y.b) <= 1.0;
-  if (x.kind == "affine") return std::abs(x.a - y.a) <= 0.15 * std::max(std::abs(x.a), 0.1) && std::abs(x.b - y.b) <= 0.08;
+  if (x.kind == "affine")
+    return std::abs(x.a - y.a) <= 0.15 * std::max(std::abs(x.a), 0.1) && std::abs(x.b - y.b) <= 0.08;
   return true;
 }
 
 std::string describeRelation(const FrameRelation& r, const ViewRange& range, const std::string& channels) {
   const std::vector<std::string> names = channelNames(channels);
   const double sum = range.bounded ? double(range.low) + range.high : 1.0;
-  if (r.kind == "complement") return "the solution's turned over (where it holds x, yours holds " + number(sum) + " - x)";
+  if (r.kind == "complement")
+    return "the solution's turned over (where it holds x, yours holds " + number(sum) + " - x)";
   if (r.kind == "mirrored-x") return "the solution's mirrored left to right";
   if (r.kind == "mirrored-y") return "the solution's turned upside down";
   if (r.kind == "squared") return "the solution's squared";
   if (r.kind == "square-root") return "the square root of the solution's";
-  if (r.kind == "shifted")
-    return "the solution's moved by (" + number(r.a) + ", " + number(r.b) + ") pixels";
+  if (r.kind == "shifted") return "the solution's moved by (" + number(r.a) + ", " + number(r.b) + ") pixels";
   if (r.kind == "affine") {
     if (std::abs(r.b) <= 0.02) return "the solution's scaled by " + number(r.a);
-    if (std::abs(r.a - 1.0) <= 0.05) return "the solution's " + std::string(r.b > 0 ? "plus " : "minus ") + number(std::abs(r.b));
+    if (std::abs(r.a - 1.0) <= 0.05)
+      return "the solution's " + std::string(r.b > 0 ? "plus " : "minus ") + number(std::abs(r.b));
     return number(r.a) + " times the solution's " + (r.b > 0 ? "plus " : "minus ") + number(std::abs(r.b));
   }
   if (r.kind.rfind("swapped-", 0) == 0)

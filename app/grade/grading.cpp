@@ -140,8 +140,7 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
         out.settingMatches.push_back({m.value("key", ""), m.value("value", ""), m.value("distance", 0.0)});
     if (student.contains("relations") && student["relations"].is_array())
       for (auto& r : student["relations"])
-        out.relations.push_back(
-            {r.value("kind", ""), r.value("a", 1.0), r.value("b", 0.0), r.value("residual", 0.0)});
+        out.relations.push_back({r.value("kind", ""), r.value("a", 1.0), r.value("b", 0.0), r.value("residual", 0.0)});
   }
   for (auto& check : c.checks) {
     const bool truth = check.against == Against::Truth;

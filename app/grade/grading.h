@@ -55,10 +55,10 @@ struct ConfigurationResult {
     double distance = 0.0;
   };
   std::vector<PairDistance> pairDistances;
-  std::string nonFiniteText;               // "37 NaN pixels in x 12-40, y 30-52" ("" when none)
-  size_t nanPixels = 0, infPixels = 0;     // pixels of the student's frame holding NaN, or Inf
-  int edgeShiftX = 0, edgeShiftY = 0;      // the best-matching shift of the frame, in pixels
-  double edgeWidthRatio = 1.0;             // its edges' width over the solution's
+  std::string nonFiniteText;                                     // "37 NaN pixels in x 12-40, y 30-52" ("" when none)
+  size_t nanPixels = 0, infPixels = 0;                           // pixels of the student's frame holding NaN, or Inf
+  int edgeShiftX = 0, edgeShiftY = 0;                            // the best-matching shift of the frame, in pixels
+  double edgeWidthRatio = 1.0;                                   // its edges' width over the solution's
   double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
   std::vector<FrameRelation> relations;  // how the student's frame relates to the solution's, best first
   // Settings of the configuration at whose other value the solution draws the student's frame:

@@ -211,7 +211,8 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   text(j, "scene", c.scene);
   text(j, "camera", c.camera);
   if (j.contains("probe")) {
-    if (!j["probe"].is_boolean()) return at + ": \"probe\" must be true or false (the view draws the function's result)";
+    if (!j["probe"].is_boolean())
+      return at + ": \"probe\" must be true or false (the view draws the function's result)";
     c.probe = j["probe"].get<bool>();
   }
   if (j.contains("channels") && (!text(j, "channels", c.channels) || c.channels.empty()))

@@ -233,16 +233,27 @@ std::string bestRelation(const ImageF& student, const ImageF& solution, const Vi
 TEST(FrameRelations, EachTransformOfTheSolutionIsFoundAsItself) {
   const ImageF solution = pattern();
   EXPECT_EQ(bestRelation(solution, solution), "") << "equal frames relate trivially";
-  EXPECT_EQ(bestRelation(mapped(solution, [](float* p) { for (int c = 0; c < 3; ++c) p[c] = 1.0f - p[c]; }), solution),
+  EXPECT_EQ(bestRelation(mapped(solution,
+                                [](float* p) {
+                                  for (int c = 0; c < 3; ++c) p[c] = 1.0f - p[c];
+                                }),
+                         solution),
             "complement");
-  const auto scaled = relateFrames(mapped(solution, [](float* p) { for (int c = 0; c < 3; ++c) p[c] *= 0.5f; }),
+  const auto scaled = relateFrames(mapped(solution,
+                                          [](float* p) {
+                                            for (int c = 0; c < 3; ++c) p[c] *= 0.5f;
+                                          }),
                                    solution, kVisibility);
   ASSERT_FALSE(scaled.empty());
   EXPECT_EQ(scaled.front().kind, "affine");
   EXPECT_NEAR(scaled.front().a, 0.5, 1e-3);
   EXPECT_NEAR(scaled.front().b, 0.0, 1e-3);
   EXPECT_EQ(describeRelation(scaled.front(), kVisibility, "red, green, blue"), "the solution's scaled by 0.5");
-  EXPECT_EQ(bestRelation(mapped(solution, [](float* p) { for (int c = 0; c < 3; ++c) p[c] *= p[c]; }), solution),
+  EXPECT_EQ(bestRelation(mapped(solution,
+                                [](float* p) {
+                                  for (int c = 0; c < 3; ++c) p[c] *= p[c];
+                                }),
+                         solution),
             "squared");
   EXPECT_EQ(bestRelation(mapped(solution, [](float* p) { std::swap(p[0], p[1]); }), solution), "swapped-rg");
   const ImageF flipped = mapped(solution, [](float* p) { p[1] = 1.0f - p[1]; });
@@ -255,14 +266,18 @@ TEST(FrameRelations, EachTransformOfTheSolutionIsFoundAsItself) {
   ImageF mirrored = solution;
   for (int y = 0; y < solution.size.y; ++y)
     for (int x = 0; x < solution.size.x; ++x)
-      std::copy(solution.at(solution.size.x - 1 - x, y), solution.at(solution.size.x - 1 - x, y) + 4, mirrored.at(x, y));
+      std::copy(solution.at(solution.size.x - 1 - x, y), solution.at(solution.size.x - 1 - x, y) + 4,
+                mirrored.at(x, y));
   EXPECT_EQ(bestRelation(mirrored, solution), "mirrored-x");
   const auto shifted = relateFrames(edgeImage(35, 6), edgeImage(32, 6), kVisibility);
   ASSERT_FALSE(shifted.empty());
   EXPECT_EQ(shifted.front().kind, "shifted");
   EXPECT_EQ(shifted.front().a, 3.0);
   // Noise is no relation: a frame unrelated to the solution's matches none.
-  const ImageF other = mapped(solution, [](float* p) { p[0] = std::fmod(p[0] * 7.3f, 1.0f); p[2] = 0.3f; });
+  const ImageF other = mapped(solution, [](float* p) {
+    p[0] = std::fmod(p[0] * 7.3f, 1.0f);
+    p[2] = 0.3f;
+  });
   EXPECT_EQ(bestRelation(other, solution), "");
 }
 
@@ -285,7 +300,8 @@ TEST(Diagnosis, ARelationThatFitsFarBetterThanAnyMistakeIsNamedInstead) {
   e.total = 2.0;
   // The student's frames lie nearer "sign" than the solution (0.3 of the way), but the solution turned
   // over is theirs exactly: the mistake is not named.
-  e.configurations = {drawn("a", 0.5, {0.6, 0.15, 0.5}, {0.6, 0.5, 0.0}), drawn("b", 0.4, {0.6, 0.12, 0.4}, {0.6, 0.4, 0.0})};
+  e.configurations = {drawn("a", 0.5, {0.6, 0.15, 0.5}, {0.6, 0.5, 0.0}),
+                      drawn("b", 0.4, {0.6, 0.12, 0.4}, {0.6, 0.4, 0.0})};
   withRelation(e.configurations[0], "complement", 0.0);
   withRelation(e.configurations[1], "complement", 0.001);
   diagnose(ex, e);
@@ -306,7 +322,8 @@ TEST(Diagnosis, AMistakeIsNotNamedWhereTheStudentLosesPointsItCannotExplain) {
   ExerciseResult e;
   e.total = 2.0;
   // "scale" differs only in "a"; the student sits on it there but loses points in "b" too.
-  e.configurations = {drawn("a", 0.1, {0.3, 0.1, 0.001}, {0.3, 0.0, 0.1}), drawn("b", 0.2, {0.3, 0.2, 0.2}, {0.3, 0.0, 0.0})};
+  e.configurations = {drawn("a", 0.1, {0.3, 0.1, 0.001}, {0.3, 0.0, 0.1}),
+                      drawn("b", 0.2, {0.3, 0.2, 0.2}, {0.3, 0.0, 0.0})};
   diagnose(ex, e);
   EXPECT_TRUE(e.mistake.empty()) << e.diagnosis;
   EXPECT_EQ(e.explanation, "evidence") << e.diagnosis;
@@ -318,7 +335,8 @@ TEST(Diagnosis, TwoMistakesMadeTogetherAreBothNamed) {
   ExerciseResult e;
   e.total = 3.0;
   // "sign" shows alone in "a", "scale" alone in "b", both in "c".
-  e.configurations = {drawn("a", 0.1, {0.3, 0.0, 0.1}, {0.3, 0.1, 0.0}), drawn("b", 0.2, {0.3, 0.2, 0.001}, {0.3, 0.0, 0.2}),
+  e.configurations = {drawn("a", 0.1, {0.3, 0.0, 0.1}, {0.3, 0.1, 0.0}),
+                      drawn("b", 0.2, {0.3, 0.2, 0.001}, {0.3, 0.0, 0.2}),
                       drawn("c", 0.3, {0.3, 0.2, 0.1}, {0.3, 0.1, 0.2})};
   // Where both show, the student's frame must be the two changes together.
   diagnose(ex, e);
@@ -334,7 +352,8 @@ TEST(Diagnosis, TheStarterIsNamedOnlyWhenTheFileIsTheStarters) {
   const Exercise ex = twoMistakes();
   ExerciseResult e;
   e.total = 2.0;
-  e.configurations = {drawn("a", 0.3, {0.0, 0.3, 0.3}, {0.3, 0.1, 0.1}), drawn("b", 0.3, {0.0, 0.3, 0.3}, {0.3, 0.1, 0.1})};
+  e.configurations = {drawn("a", 0.3, {0.0, 0.3, 0.3}, {0.3, 0.1, 0.1}),
+                      drawn("b", 0.3, {0.0, 0.3, 0.3}, {0.3, 0.1, 0.1})};
   e.starterUnchanged = true;
   diagnose(ex, e);
   EXPECT_EQ(e.explanation, "starter");

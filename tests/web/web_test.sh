@@ -130,6 +130,34 @@ grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" 
   { cat "$out/check.log"; echo "Check in the page did not grade the starter"; exit 1; }
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
+# The same diagnosis in the page as on the terminal, for a mistake no rubric lists (from
+# tests/grade/unlisted: the highlight squared, which the grader names as the shininess it behaves
+# as, drawing the solution again at other settings).
+squared=$out/squared/common/specular.glsl
+mkdir -p "$(dirname "$squared")"
+python3 - "$repo/exercises/shading/blinn-phong/starter/common/specular.glsl" "$repo/tests/grade/unlisted/shading/blinn-phong.json" \
+  "$squared" <<'STUDENT'
+import json, sys
+starter, unlisted, out = sys.argv[1:]
+body = next(m["body"] for m in json.load(open(unlisted))["mistakes"] if m["name"] == "n-dot-h-squared")
+text = open(starter).read()
+begin = text.index("  // TODO(exercise shading/blinn-phong): begin")
+end = text.index("\n", text.index("// TODO(exercise shading/blinn-phong): end")) + 1
+open(out, "w").write(text[:begin] + body + "\n" + text[end:])
+STUDENT
+text=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$squared")
+drive check-squared "lab=shading&exercise=shading/blinn-phong&check" --frames 10 --eval "(async () => {
+    Module.FS.mkdirTree('/student/common'); Module.FS.writeFile('/student/common/specular.glsl', $text);
+    await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()" \
+  --wait-console "shading/blinn-phong: " --reload --wait-console-after-reload "shading/blinn-phong: "
+page_diagnosis=$(sed -n '/--- reloaded ---/,$p' "$out/check-squared.log" | grep -m1 -o "diagnosis: .*" || true)
+rm -rf "$out/squared-grade"
+LIBGL_ALWAYS_SOFTWARE=1 "$shadelab" grade --exercise shading/blinn-phong --shaders "$out/squared" \
+  --out "$out/squared-grade" >"$out/squared-grade.log" 2>&1 || true
+terminal_diagnosis=$(grep -m1 -o "diagnosis: .*" "$out/squared-grade.log" || true)
+grep -q "drawn with shininess" <<<"$terminal_diagnosis" && [ "$page_diagnosis" = "$terminal_diagnosis" ] ||
+  { echo "page:     $page_diagnosis"; echo "terminal: $terminal_diagnosis"; echo "the page's diagnosis is not the grader's"; exit 1; }
+echo "the page's Check says the grader's diagnosis: ${page_diagnosis:0:100}..."
 # One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
 # each starter checked in the page, told it is the starter, not passed.
 for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
