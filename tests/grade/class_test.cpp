@@ -404,8 +404,9 @@ TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) 
   };
   for (auto& m : mistakes) writeText(cls / "mistakes" / m.file, labFileWith(m.file, m.find, m.replace));
 
-  const Ran r = runShadelab("grade --class '" + cls.string() + "' --all --jobs 2 --out '" + out.string() +
-                            "' --cache '" + (root / "cache").string() + "'");
+  // The suite's shared solution cache ($SHADELAB_CACHE): each exercise's solution and mistakes are
+  // drawn once in the suite, here or by its `exercise check`.
+  const Ran r = runShadelab("grade --class '" + cls.string() + "' --all --jobs 2 --out '" + out.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::map<std::pair<std::string, std::string>, nlohmann::json> rows;  // (student, exercise) -> its report entry
   for (const char* student : {"solution", "starters", "mistakes"}) {
