@@ -283,8 +283,7 @@ TEST(FrameRelations, EachTransformOfTheSolutionIsFoundAsItself) {
 
 namespace {
 
-// Two configurations drawn with relations: "sign" differs in both, the student is the solution
-// turned over (returns the shadow where the visibility is asked).
+// A relation to the solution's frame found in configuration c, with its residual.
 void withRelation(ConfigurationResult& c, const std::string& kind, double residual) {
   FrameRelation r;
   r.kind = kind;
