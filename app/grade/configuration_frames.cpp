@@ -117,7 +117,10 @@ nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const 
         host->settle();
         host->renderFrame(ex.size);
         const double d = frameDistance(image, host->readImage());
-        if (d < best[i] && buildErrors(*host).empty()) {
+        // Of values that draw the student's frame equally, a number the student can read beats
+        // "the lab's default".
+        const bool better = d < best[i] || (d <= best[i] && found[i] && bestValue[i].empty() && !value.empty());
+        if (better && buildErrors(*host).empty()) {
           best[i] = d;
           bestValue[i] = value;
           found[i] = true;
