@@ -274,7 +274,12 @@ std::string settingSentence(const Evidence& ev, const std::string& key, const st
     const std::string& v = values[i];
     const std::string shown = v.empty() ? "the lab's default" : v;
     if (std::find(asIf.begin(), asIf.end(), shown) == asIf.end()) asIf.push_back(shown);
-    unused = unused && (v.empty() || v == "0" || v == "1");
+    // The lab's default, 0, 1 or a value another configuration sets: the setting is not used (a
+    // literal stands in its place); half, twice or the reciprocal: it is used at another strength.
+    bool elsewhere = false;
+    for (auto& rc : ev.ex.configurations)
+      for (auto& [k, value] : rc.settings) elsewhere = elsewhere || (k == key && value == v);
+    unused = unused && (v.empty() || v == "0" || v == "1" || elsewhere);
     if (const Configuration* rc = ev.rubricOf(c))
       for (auto& [k, value] : rc->settings)
         if (k == key && std::find(given.begin(), given.end(), value) == given.end()) given.push_back(value);
@@ -284,7 +289,9 @@ std::string settingSentence(const Evidence& ev, const std::string& key, const st
   for (auto& v : given) set += (set.empty() ? "" : " and ") + v;
   std::string s = "Your frames in " + listed(where) + " are the solution's drawn with " + key + " at " + as +
                   " (the configuration sets " + set + "): ";
-  return s + (unused ? "your result does not use " + key + ", or uses it where it has no effect."
+  return s + (unused ? "your result does not use " + key +
+                           " (a fixed value stands in its place), or uses it where it "
+                           "has no effect."
                      : "your result uses " + key + " at another strength than it has (applied twice, or halved).");
 }
 
