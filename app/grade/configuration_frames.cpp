@@ -233,7 +233,7 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   student["pairs"] = nlohmann::json::array();
   std::vector<bool> shows(solution.mistakes.size());
   for (size_t i = 1; i < solution.mistakes.size() && i < solution.numbers["mistakes"].size(); ++i)
-    shows[i] = solution.numbers["mistakes"][i].value("distance", 0.0) > 0.004;  // the diagnosis's kDiffers
+    shows[i] = solution.numbers["mistakes"][i].value("distance", 0.0) > kFramesDiffer;
   for (size_t i = 1; i < solution.mistakes.size(); ++i)
     for (size_t j = i + 1; j < solution.mistakes.size(); ++j)
       if (shows[i] && shows[j])
@@ -245,14 +245,14 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   for (auto& r : relateFrames(image, solution.frame, {c.bounded, c.low, c.high}))
     student["relations"].push_back({{"kind", r.kind}, {"a", r.a}, {"b", r.b}, {"residual", r.residual}});
   const double distance = student["distance"].get<double>();
-  // Nothing else explains the frame: no listed mistake draws it (within one 8-bit step) and no
+  // Nothing else explains the frame: no listed mistake draws it (within kFramesDiffer) and no
   // relation to the solution's fits closely.
   const bool explained =
-      distance <= 0.004 ||
+      distance <= kFramesDiffer ||
       std::any_of(student["relations"].begin(), student["relations"].end(),
                   [&](const nlohmann::json& r) { return r["residual"].get<double>() <= 0.1 * distance; }) ||
       std::any_of(student["mistakes"].begin(), student["mistakes"].end(),
-                  [&](const nlohmann::json& d) { return d.get<double>() <= 0.004; });
+                  [&](const nlohmann::json& d) { return d.get<double>() <= kFramesDiffer; });
   if (!explained && student["errors"].empty() && properties.nonFinitePixels() == 0)
     student["settings"] = settingMatches(ex, c, image, distance);
   student["properties"] = {{"nan_pixels", properties.nanPixels},

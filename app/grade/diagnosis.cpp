@@ -11,9 +11,7 @@ namespace shadelab {
 
 namespace {
 
-// A frame differs from another in a configuration when they lie this far apart (frameDistance:
-// RMS over covered pixels; one 8-bit step is 0.004).
-constexpr double kDiffers = 0.004;
+constexpr double kDiffers = kFramesDiffer;
 // A mistake's frame explains the student's in a configuration when the student's lies at most
 // this fraction of its distance to the solution from the mistake's.
 constexpr double kExplains = 0.5;
@@ -215,7 +213,7 @@ bool agreeTogether(const Evidence& ev, size_t k, size_t j, double& misfit) {
 
 // The relation that holds in every losing configuration (the same kind, and the same numbers),
 // or none; `misfit` its summed residual over the summed distance.
-bool commonRelation(const Evidence& ev, FrameRelation& out, double& misfit) {
+bool commonRelation(const Evidence& ev, FrameRelation& out, double& residualSum, double& misfit) {
   const std::vector<const ConfigurationResult*>& where = ev.related();
   if (where.empty()) return false;
   for (auto& candidate : where.front()->relations) {
@@ -233,6 +231,7 @@ bool commonRelation(const Evidence& ev, FrameRelation& out, double& misfit) {
     }
     if (everywhere && distance > 0.0) {
       out = candidate;
+      residualSum = residual;
       misfit = residual / distance;
       return true;  // relations are listed best first
     }
@@ -300,17 +299,6 @@ std::string settingSentence(const Evidence& ev, const std::string& key, const st
 double distanceToMistake(const Evidence& ev, size_t k) {
   double d = 0.0;
   for (auto* c : ev.related()) d += k < c->mistakeDistances.size() ? c->mistakeDistances[k] : c->distance;
-  return d;
-}
-
-double residualOf(const Evidence& ev, const FrameRelation& r) {
-  double d = 0.0;
-  for (auto* c : ev.related())
-    for (auto& o : c->relations)
-      if (sameRelation(o, r)) {
-        d += o.residual;
-        break;
-      }
   return d;
 }
 
@@ -489,14 +477,14 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
         std::remove_if(agreeing.begin(), agreeing.end(), [&](const auto& a) { return ex.mistakes[a.second].starter; }),
         agreeing.end());
   FrameRelation relation;
-  double relationMisfit = 0.0;  // its residual over the distance, summed where points were lost
-  const bool related = commonRelation(ev, relation, relationMisfit);
+  double relationResidual = 0.0, relationMisfit = 0.0;  // summed where it must hold; over the distance
+  const bool related = commonRelation(ev, relation, relationResidual, relationMisfit);
 
   if (!agreeing.empty()) {
     const size_t k = agreeing.front().second;
     const Mistake& m = ex.mistakes[k];
     const bool relationFitsBetter =
-        related && residualOf(ev, relation) <= kRelationWins * distanceToMistake(ev, k) && !m.starter;
+        related && relationResidual <= kRelationWins * distanceToMistake(ev, k) && !m.starter;
     // A second mistake fits about as well, and the first is not the only one whose frames the
     // student's are exactly.
     const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack &&
@@ -509,7 +497,7 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
                                          "draws what the placeholder draws, so none of it reaches the result yet.";
       return;
     }
-    if (related && !m.starter && exactly(e, k) && residualOf(ev, relation) <= kDiffers * double(ev.losing.size())) {
+    if (related && !m.starter && exactly(e, k) && relationResidual <= kDiffers * double(ev.losing.size())) {
       // The mistake is itself a relation of the solution (a comparison inverted turns every frame
       // over): say the relation, which is what the frames show, and the mistake as one way to it.
       e.mistake = m.name;

@@ -58,5 +58,7 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
 // the RMS difference of RGB over the pixels both cover, where a pixel non-finite in one frame and
 // not the other counts as the largest difference (1) and one non-finite in both as none.
 double frameDistance(const ImageF& a, const ImageF& b);
+// Two frames differ when frameDistance puts them further apart than one 8-bit step.
+constexpr double kFramesDiffer = 0.004;
 
 }  // namespace shadelab

@@ -9,8 +9,7 @@ namespace shadelab {
 
 namespace {
 
-constexpr double kAgree = 0.004;  // frames closer than one 8-bit step relate trivially
-constexpr int kMostShift = 4;     // whole pixels searched each way
+constexpr int kMostShift = 4;  // whole pixels searched each way
 
 bool usable(const float* p) {
   return !(p[3] <= 0.5f) && std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -104,7 +103,7 @@ std::vector<FrameRelation> relateFrames(const ImageF& student, const ImageF& sol
     }
   if (pixels == 0) return out;
   const double distance = std::sqrt(dd / double(3 * pixels));
-  if (distance <= kAgree) return out;
+  if (distance <= kFramesDiffer) return out;  // frames that agree relate trivially
 
   const auto consider = [&](FrameRelation r, const std::function<bool(int, int, int&, int&)>& source,
                             const std::function<void(const float*, double*)>& transform) {
