@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/context/gl_context.h"
-#include "app/context/load_gl.h"
+#include "app/gl/load_gl.h"
 
 namespace shadelab {
 namespace {

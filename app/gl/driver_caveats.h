@@ -2,7 +2,7 @@
 // versions it was seen on, the symptom, the workaround, and when the workaround can go. Each
 // workaround runs only where its driver is detected; on any other driver the code path is not
 // taken at all. The measurements behind each entry, and how each was found, are in the commit
-// history (git log -S with the entry's name); the README's notes sum them up.
+// history (git log -S with the entry's name); docs/sandbox.md ("Soak") sums them up.
 #pragma once
 #include <string>
 #include <string_view>

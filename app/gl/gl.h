@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "app/context/load_gl.h"
+#include "app/gl/load_gl.h"
 #include "gl_loader.h"
 
 #ifndef GL_TEXTURE_MAX_ANISOTROPY

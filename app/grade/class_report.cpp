@@ -11,6 +11,7 @@
 
 #include "app/measure/image.h"
 #include "app/measure/report.h"
+#include "app/util/csv.h"
 
 namespace shadelab {
 
@@ -91,15 +92,6 @@ std::string histogram(const std::vector<double>& percents, double passMark) {
 }
 
 }  // namespace
-
-std::string csvField(const std::string& text) {
-  std::string s = text;
-  if (!s.empty() && (s[0] == '=' || s[0] == '+' || s[0] == '-' || s[0] == '@')) s = "'" + s;
-  if (s.find_first_of(",\"\r\n'") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 
 std::string readStudentRows(const fs::path& reportJson, const std::string& student, std::vector<ClassRow>& rows) {
   std::ifstream in(reportJson);

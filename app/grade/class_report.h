@@ -44,8 +44,4 @@ std::string classHtml(const std::vector<ClassRow>& rows, const std::filesystem::
 // Points or a percentage as reports print them: to two decimals, no trailing zeros ("2.5", "77.78").
 std::string formatPoints(double v);
 
-// One CSV field: quoted where it must be, and a leading = + - @ defused so that a spreadsheet
-// never runs a student's folder name as a formula.
-std::string csvField(const std::string& text);
-
 }  // namespace shadelab

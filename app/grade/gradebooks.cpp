@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/util/csv.h"
 #include "app/util/format.h"
 
 namespace shadelab {

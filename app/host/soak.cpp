@@ -1,7 +1,5 @@
 #include "app/host/soak.h"
 
-#include "app/grade/class_report.h"  // csvField
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "app/host/random_settings.h"
 #include "app/measure/report.h"
 #include "app/scene/scene_catalog.h"
+#include "app/util/csv.h"
 #include "app/util/format.h"
 #include "app/util/output_files.h"
 #include "app/util/process_memory.h"

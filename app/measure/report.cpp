@@ -9,6 +9,7 @@
 
 #include <stb_image_write.h>
 
+#include "app/util/csv.h"
 #include "app/util/format.h"
 #include "app/util/output_files.h"
 
@@ -30,13 +31,6 @@ std::string writeTextFile(const std::string& path, const std::string& text) {
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   return ec ? path + ": " + ec.message() : std::string();
-}
-
-static std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 std::vector<std::string> truthsOf(const SweepReport& r) {

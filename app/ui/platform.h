@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/context/load_gl.h"
+#include "app/gl/load_gl.h"
 
 struct GLFWwindow;
 

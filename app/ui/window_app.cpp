@@ -17,7 +17,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include "app/context/load_gl.h"
+#include "app/gl/load_gl.h"
 
 #include <algorithm>
 #include <chrono>

@@ -22,7 +22,7 @@ void returnFreePages();  // the allocator gives its free pages back (before a re
 // Called once at start: blocks of 1 MiB and more are mapped on their own and given back when
 // freed. glibc otherwise raises that threshold to the largest block freed (up to 32 MiB), and a
 // frame's transient images are then carved from the heap among small long-lived blocks, whose
-// pages cannot be returned (the README's notes have the soak's figures).
+// pages cannot be returned (docs/sandbox.md has the soak's figures).
 void keepLargeBlocksApart();
 
 // Asks the kernel to back [data, data + bytes) with huge pages where it offers them on request

@@ -6,7 +6,7 @@ namespace shadelab {
 
 bool DenoiseLab::smoothsOnGpu(const DenoiseConfig& c) const {
   return c.device == SmoothingDevice::Gpu && gpuUnavailable_.empty() &&
-         (c.method == DenoiseMethod::Explicit || c.method == DenoiseMethod::Taubin);
+         (c.smoothing.method == SmoothingMethod::Explicit || c.smoothing.method == SmoothingMethod::Taubin);
 }
 
 SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {
@@ -25,9 +25,7 @@ SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {
     gpu_.setStart(in.start);
     gpuInput_ = input;
   }
-  SmoothingSettings s = c.smoothing;
-  s.method = c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin : SmoothingMethod::Explicit;
-  const GpuSmoothing run = gpu_.run(*shaders_, s);
+  const GpuSmoothing run = gpu_.run(*shaders_, c.smoothing);
   gpuDrawn_ = true;  // drawn from the smoother's texture until the job's result arrives
   return {gpu_.readPositions(), run.energy, run.grewAt, run.stoppedAt, run.ms};
 }

@@ -104,28 +104,28 @@ void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
                "explicit: p' = p - lambda <delta,n> n, stable only for small steps; taubin: a "
                "lambda step then a shrink-undoing mu step; implicit: (D + lambda L) x' = D x, stable for any lambda; "
                "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."},
-              smoothing.method, kMethods);
+              smoothing.settings.method, kMethods);
   v.enumParam({"weights", "Laplacian weights", "",
                "uniform: every neighbour alike; cotangent: by the angles opposite "
                "each edge, following the geometry rather than the triangulation."},
-              smoothing.laplacian.weights, kWeights);
+              smoothing.settings.weights, kWeights);
   v.floatParam({"lambda", "Lambda", "",
                 "Step size. Explicit and Taubin: stable up to 2 / mu_max (the panel shows it, "
                 "about 1); implicit: any value, larger = smoother."},
-               smoothing.laplacian.lambda, 1e-3f, 1e5f, true);
+               smoothing.settings.lambda, 1e-3f, 1e5f, true);
   v.intParam({"iterations", "Iterations", "", "Smoothing steps (bilateral: vertex updates)."},
-             smoothing.laplacian.iterations, 1, 200);
+             smoothing.settings.iterations, 1, 200);
   v.boolParam({"along_normal", "Along the normal", "",
                "Explicit and Taubin move each vertex along its normal only "
                "(the homework); off: the full umbrella vector, which also slides vertices along the surface."},
-              smoothing.laplacian.alongNormal);
+              smoothing.settings.alongNormal);
   v.boolParam({"clamp_cotangent", "Clamp negative weights", "",
                "Obtuse triangles make cotangent weights negative; "
                "clamped to 0, every update stays a convex combination."},
-              smoothing.laplacian.clampNegative);
+              smoothing.settings.clampNegative);
   v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."},
-               smoothing.laplacian.passBand, 0.01f, 0.3f);
-  if (smoothing.method == DenoiseMethod::Implicit || smoothing.method == DenoiseMethod::Bilateral)
+               smoothing.settings.passBand, 0.01f, 0.3f);
+  if (smoothing.settings.method == SmoothingMethod::Implicit || smoothing.settings.method == SmoothingMethod::Bilateral)
     v.unavailable("implicit and bilateral smoothing run on the CPU");
   v.enumParam({"device", "Device", "",
                "Where explicit and Taubin steps run. gpu: one fragment per vertex, "
@@ -227,10 +227,9 @@ DenoiseConfig DenoiseLab::config() const {
   DenoiseConfig c;
   c.publishedInput = p.input.source == NoiseSource::Published;
   c.noise = p.input.noise;
-  c.method = p.smoothing.method;
-  c.smoothing = p.smoothing.laplacian;
+  c.smoothing = p.smoothing.settings;
   c.bilateral = p.smoothing.bilateral;
-  c.bilateral.vertexIterations = p.smoothing.laplacian.iterations;  // one iterations slider serves both
+  c.bilateral.vertexIterations = p.smoothing.settings.iterations;  // one iterations slider serves both
   c.weld = p.smoothing.weld;
   c.preserveVolume = p.smoothing.preserveVolume;
   c.device = p.smoothing.device;
@@ -241,7 +240,7 @@ DenoiseConfig DenoiseLab::config() const {
   return c;
 }
 
-ProgramSpec DenoiseLab::programSpec(Path path) const {
+ProgramSpec DenoiseLab::programSpec(DenoiseView view, Path path) {
   ProgramSpec spec;
   spec.stages = {{GL_VERTEX_SHADER, "denoise/mesh.vert"}, {GL_FRAGMENT_SHADER, "denoise/mesh.frag"}};
   static const char* pathNames[] = {"plain", "map", "attribute", "smoothed-on-gpu"};
@@ -249,21 +248,18 @@ ProgramSpec DenoiseLab::programSpec(Path path) const {
   if (path == Path::Map) spec.defines.emplace_back("DISPLACE_MAP", "1");
   if (path == Path::SmoothedOnGpu) spec.defines.emplace_back("SMOOTHED_ON_GPU", "1");
   if (path == Path::Attribute) spec.defines.emplace_back("DISPLACE_ATTRIBUTE", "1");
-  if (params.view.mode == DenoiseView::Offset)
+  if (view == DenoiseView::Offset)
     spec.defines.emplace_back("VIEW_SIGNED", "1");
-  else if (params.view.mode != DenoiseView::Shaded)
+  else if (view != DenoiseView::Shaded)
     spec.defines.emplace_back("VIEW_HEAT", "1");
   return spec;
 }
 
 std::vector<ProgramSpec> DenoiseLab::allPrograms() const {
   std::vector<ProgramSpec> all;
-  DenoiseLab probe;
   for (int view = 0; view < 4; ++view)
-    for (Path path : {Path::Plain, Path::Map, Path::Attribute, Path::SmoothedOnGpu}) {
-      probe.params.view.mode = DenoiseView(view);
-      all.push_back(probe.programSpec(path));
-    }
+    for (Path path : {Path::Plain, Path::Map, Path::Attribute, Path::SmoothedOnGpu})
+      all.push_back(programSpec(DenoiseView(view), path));
   for (ProgramSpec& spec : GpuSmoother::programSpecs()) all.push_back(std::move(spec));
   return all;
 }
@@ -354,7 +350,7 @@ void DenoiseLab::update(const Scene& scene, float) {
 }
 
 void DenoiseLab::submit(const DenoiseConfig& want, std::shared_ptr<const SmoothedElsewhere> smoothed) {
-  const std::string label = std::string(kMethods[int(want.method)]) + " on " + modelScene_ + " (" +
+  const std::string label = std::string(kMethods[int(want.smoothing.method)]) + " on " + modelScene_ + " (" +
                             std::to_string(model_->statistics.logicalVertices) + " vertices)" +
                             (smoothed ? ", smoothed on the GPU" : "");
   // The job owns what it reads: the model (shared, const), the settings (a copy), the GPU's result.
@@ -456,7 +452,7 @@ void DenoiseLab::uploadViewData() {
 
 void DenoiseLab::drawPanel(Frame& frame, Path path, const GpuMesh& mesh, glm::ivec4 vp, Style style) {
   glViewport(vp.x, vp.y, vp.z, vp.w);
-  Program& prog = programs_[int(path)].get(*shaders_, programSpec(path));
+  Program& prog = programs_[int(path)].get(*shaders_, programSpec(params.view.mode, path));
   prog.use();
   const float aspect = float(vp.z) / float(std::max(vp.w, 1));
   const glm::vec2 shift = -2.0f * frame.jitter / glm::vec2(vp.z, vp.w);

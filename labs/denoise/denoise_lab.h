@@ -21,8 +21,9 @@ enum class DenoiseShow { Smoothed, Noisy, Clean, Map, Attribute, Compare };
 enum class DenoiseView { Shaded, Error, Offset, SeamGap };
 
 // One nested struct per section of the panel, each visited by its own function (denoise_lab.cpp).
-// Where the pipeline has a settings struct of its own, the section holds it: nothing is copied
-// field by field into the pipeline's configuration.
+// The pipeline's own settings structs (noise, smoothing, bilateral, bake) live in the sections and
+// reach the pipeline whole: config() gathers them, and the few switches beside them, into one
+// DenoiseConfig, the only copy the CPU and GPU smoothers read.
 struct DenoiseParams {
   struct Input {                                  // the noisy input
     NoiseSource source = NoiseSource::Published;  // the data set's noisy twin, where there is one
@@ -30,9 +31,8 @@ struct DenoiseParams {
     NoiseSettings noise;                          // generated noise (mesh_noise.h)
   } input;
   struct Smoothing {
-    DenoiseMethod method = DenoiseMethod::Explicit;
-    SmoothingSettings laplacian;  // explicit, Taubin, implicit (laplacian.h; its method follows `method`)
-    BilateralSettings bilateral;  // sigma_r and the normal passes (its vertex passes are laplacian.iterations)
+    SmoothingSettings settings;   // the method, and the Laplacian steps' lambda, weights, iterations (laplacian.h)
+    BilateralSettings bilateral;  // sigma_r and the normal passes (its vertex passes are settings.iterations)
     bool weld = true;             // smoothing on the welded surface (off: the seam bug)
     bool preserveVolume = false;  // rescale the result to the input's volume (closed meshes)
     SmoothingDevice device = SmoothingDevice::Cpu;  // explicit and Taubin steps on the GPU, or here
@@ -85,7 +85,7 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
  private:
   enum class Path { Plain, Map, Attribute, SmoothedOnGpu };
   DenoiseConfig config() const;
-  ProgramSpec programSpec(Path path) const;
+  static ProgramSpec programSpec(DenoiseView view, Path path);
   void rebuildModel(const Scene& scene);
   void upload(DenoiseResult result);
   void uploadViewData();                        // the positions and heat scalars the current show and view draw

@@ -40,8 +40,8 @@ Metrics DenoiseLab::meshMetrics() const {
                {"noisy_angle_deg", r.noisyError.angleDeg},
                {"attribute_angle_deg", r.attributeError.angleDeg},
                {"solve_ms", r.solveMs}};
-  if (r.config.method == DenoiseMethod::Implicit) m.push_back({"factor_ms", r.factorMs});
-  if (r.config.method != DenoiseMethod::Bilateral) {
+  if (r.config.smoothing.method == SmoothingMethod::Implicit) m.push_back({"factor_ms", r.factorMs});
+  if (r.config.smoothing.method != SmoothingMethod::Bilateral) {
     m.push_back({"grew_at", double(r.grewAt)});
     m.push_back({"stability_limit", r.stabilityLimit});
   }
@@ -96,13 +96,13 @@ std::vector<std::string> DenoiseLab::warnings() const {
     w.push_back("the paired vertices lie " + formatFixed(pairMoveEdges_, 1) +
                 " mean edges apart on average (noise "
                 "is usually well under one): check that the clean file is this mesh's reference");
-  const bool laplacian =
-      p.smoothing.method != DenoiseMethod::Bilateral && p.smoothing.method != DenoiseMethod::Implicit;
+  const bool laplacian = p.smoothing.settings.method != SmoothingMethod::Bilateral &&
+                         p.smoothing.settings.method != SmoothingMethod::Implicit;
   if (laplacian && p.smoothing.device == SmoothingDevice::Gpu && !gpuUnavailable_.empty())
     w.push_back("smoothing on the CPU: " + gpuUnavailable_);
   if (result_) {
     for (auto& n : result_->notes) w.push_back(n);
-    if (laplacian && result_->stabilityLimit > 0 && p.smoothing.laplacian.lambda > result_->stabilityLimit &&
+    if (laplacian && result_->stabilityLimit > 0 && p.smoothing.settings.lambda > result_->stabilityLimit &&
         result_->grewAt == 0)
       w.push_back("lambda is above the stable explicit step (about " + formatFixed(result_->stabilityLimit, 2) +
                   "): expect the energy to grow with more iterations");
@@ -111,9 +111,9 @@ std::vector<std::string> DenoiseLab::warnings() const {
     w.push_back(
         "this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
         "attribute path) instead");
-  if (p.smoothing.method == DenoiseMethod::Implicit && !p.smoothing.laplacian.alongNormal)
+  if (p.smoothing.settings.method == SmoothingMethod::Implicit && !p.smoothing.settings.alongNormal)
     w.push_back("implicit smoothing moves all three coordinates; along_normal applies to explicit and Taubin only");
-  if (p.smoothing.laplacian.weights == LaplacianWeights::Cotangent && !p.smoothing.laplacian.clampNegative)
+  if (p.smoothing.settings.weights == LaplacianWeights::Cotangent && !p.smoothing.settings.clampNegative)
     w.push_back(
         "negative cotangent weights are not clamped: updates are no longer convex combinations and may diverge");
   if (!lastAction_.empty()) w.push_back(lastAction_);
@@ -154,17 +154,17 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   errors.rows.push_back(errorRow("attribute path", r.attributeError));
   if (r.map) errors.rows.push_back(errorRow("map path", r.mappedError));
   result.items.push_back(std::move(errors));
-  const bool gpu = r.config.device == SmoothingDevice::Gpu &&
-                   (r.config.method == DenoiseMethod::Explicit || r.config.method == DenoiseMethod::Taubin);
+  const bool gpu = r.config.device == SmoothingDevice::Gpu && (r.config.smoothing.method == SmoothingMethod::Explicit ||
+                                                               r.config.smoothing.method == SmoothingMethod::Taubin);
   PanelTable cost{{"", "value"}, {{gpu ? "smoothing ms (GPU)" : "smoothing ms", formatFixed(r.solveMs, 1)}}};
   if (r.referenceDistance) {
     cost.rows.push_back({"GPU vs CPU, RMS (edges)", formatNumber(*r.referenceDistance)});
     cost.rows.push_back({"GPU vs CPU, verdict steps apart", std::to_string(r.verdictStepsOff)});
     cost.rows.push_back({"GPU vs CPU, energy (largest relative difference)", formatNumber(r.energyDifference)});
   }
-  if (r.config.method == DenoiseMethod::Implicit)
+  if (r.config.smoothing.method == SmoothingMethod::Implicit)
     cost.rows.push_back({"  of which factorisation ms", formatFixed(r.factorMs, 1)});
-  if (r.config.method != DenoiseMethod::Bilateral)
+  if (r.config.smoothing.method != SmoothingMethod::Bilateral)
     cost.rows.push_back({"stable explicit lambda (about)", formatFixed(r.stabilityLimit, 3)});
   if (r.map) {
     cost.rows.push_back({"bake ms", formatFixed(r.bakeMs, 1)});
@@ -228,69 +228,69 @@ std::vector<StressCase> DenoiseLab::stressCases() const {
   const auto edit = [](auto change) { return fromDefaults<DenoiseLab>(change); };
   std::vector<StressCase> cases = {
       {"explicit-lambda-2", edit([](DenoiseParams& p) {
-         p.smoothing.laplacian.lambda = 2.0f, p.smoothing.laplacian.iterations = 30,
-         p.smoothing.laplacian.alongNormal = false;
+         p.smoothing.settings.lambda = 2.0f, p.smoothing.settings.iterations = 30,
+         p.smoothing.settings.alongNormal = false;
        }),
        "", "", "diverging"},
       {"explicit-lambda-2-along-normal",
-       edit([](DenoiseParams& p) { p.smoothing.laplacian.lambda = 2.0f, p.smoothing.laplacian.iterations = 30; }), "",
-       "", "diverging"},
+       edit([](DenoiseParams& p) { p.smoothing.settings.lambda = 2.0f, p.smoothing.settings.iterations = 30; }), "", "",
+       "diverging"},
       {"cotangent-beyond-its-limit", edit([](DenoiseParams& p) {
-         p.smoothing.laplacian.weights = LaplacianWeights::Cotangent, p.smoothing.laplacian.lambda = 1.25f,
-         p.smoothing.laplacian.iterations = 60, p.smoothing.laplacian.alongNormal = false;
+         p.smoothing.settings.weights = LaplacianWeights::Cotangent, p.smoothing.settings.lambda = 1.25f,
+         p.smoothing.settings.iterations = 60, p.smoothing.settings.alongNormal = false;
        }),
        "", "", "diverging"},
       {"explicit-lambda-huge",
-       edit([](DenoiseParams& p) { p.smoothing.laplacian.lambda = 100000.0f, p.smoothing.laplacian.iterations = 50; }),
+       edit([](DenoiseParams& p) { p.smoothing.settings.lambda = 100000.0f, p.smoothing.settings.iterations = 50; }),
        "", "", "stopped at iteration"},
       {"explicit-lambda-1.5-runs-away", edit([](DenoiseParams& p) {
-         p.smoothing.laplacian.lambda = 1.5f, p.smoothing.laplacian.iterations = 200,
-         p.smoothing.laplacian.alongNormal = false;
+         p.smoothing.settings.lambda = 1.5f, p.smoothing.settings.iterations = 200,
+         p.smoothing.settings.alongNormal = false;
        }),
        "", "", "stopped at iteration"},
       // Implicit steps never diverge, but a large lambda pulls a closed mesh to a point: the lab says
       // so (not "diverging"), and preserve_volume scales it back.
       {"implicit-1000x-limit", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 1000.0f,
-         p.smoothing.laplacian.iterations = 20;
+         p.smoothing.settings.method = SmoothingMethod::Implicit, p.smoothing.settings.lambda = 1000.0f,
+         p.smoothing.settings.iterations = 20;
        }),
        "denoise-cube", "", "stable but shrinks"},
       {"implicit-lambda-1e5-cotangent", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
-         p.smoothing.laplacian.lambda = 100000.0f;
+         p.smoothing.settings.method = SmoothingMethod::Implicit,
+         p.smoothing.settings.weights = LaplacianWeights::Cotangent, p.smoothing.settings.lambda = 100000.0f;
        }),
        "denoise-cube", "", "stable but shrinks"},
       {"implicit-lambda-10-volume-preserved", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 10.0f,
+         p.smoothing.settings.method = SmoothingMethod::Implicit, p.smoothing.settings.lambda = 10.0f,
          p.smoothing.preserveVolume = true;
        }),
        "denoise-cube", "", "to restore it"},
       {"implicit-lambda-1e5-collapses-volume-preserved", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.lambda = 100000.0f,
+         p.smoothing.settings.method = SmoothingMethod::Implicit, p.smoothing.settings.lambda = 100000.0f,
          p.smoothing.preserveVolume = true;
        }),
        "denoise-cube", "", "collapsed to a point"},
       {"taubin-unclamped-cotangent", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Taubin, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
-         p.smoothing.laplacian.clampNegative = false;
+         p.smoothing.settings.method = SmoothingMethod::Taubin,
+         p.smoothing.settings.weights = LaplacianWeights::Cotangent, p.smoothing.settings.clampNegative = false;
        }),
        "", "", "not clamped"},
       {"slivers-cotangent", edit([](DenoiseParams& p) {
-         p.smoothing.laplacian.weights = LaplacianWeights::Cotangent, p.input.source = NoiseSource::Generated;
+         p.smoothing.settings.weights = LaplacianWeights::Cotangent, p.input.source = NoiseSource::Generated;
        }),
        "denoise-degenerate", "", "were negative"},
       {"slivers-unclamped", edit([](DenoiseParams& p) {
-         p.smoothing.laplacian.weights = LaplacianWeights::Cotangent, p.smoothing.laplacian.clampNegative = false,
+         p.smoothing.settings.weights = LaplacianWeights::Cotangent, p.smoothing.settings.clampNegative = false,
          p.input.source = NoiseSource::Generated;
        }),
        "denoise-degenerate", "", "not clamped"},
       {"slivers-implicit", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Implicit, p.smoothing.laplacian.weights = LaplacianWeights::Cotangent,
-         p.input.source = NoiseSource::Generated;
+         p.smoothing.settings.method = SmoothingMethod::Implicit,
+         p.smoothing.settings.weights = LaplacianWeights::Cotangent, p.input.source = NoiseSource::Generated;
        }),
        "denoise-degenerate", "", ""},
       {"slivers-bilateral", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Bilateral, p.input.source = NoiseSource::Generated;
+         p.smoothing.settings.method = SmoothingMethod::Bilateral, p.input.source = NoiseSource::Generated;
        }),
        "denoise-degenerate", "", ""},
       {"noise-level-2",
@@ -303,7 +303,7 @@ std::vector<StressCase> DenoiseLab::stressCases() const {
       {"no-noise", edit([](DenoiseParams& p) { p.input.source = NoiseSource::Generated, p.input.noise.level = 0.0f; }),
        "", "", ""},
       {"bilateral-sigma-tiny", edit([](DenoiseParams& p) {
-         p.smoothing.method = DenoiseMethod::Bilateral, p.smoothing.bilateral.sigmaR = 0.02f;
+         p.smoothing.settings.method = SmoothingMethod::Bilateral, p.smoothing.bilateral.sigmaR = 0.02f;
        }),
        "", "", "changed almost nothing"},
       {"weld-off-cracks", edit([](DenoiseParams& p) {

@@ -105,16 +105,12 @@ void measureVolume(const DenoiseModel& m, const DenoiseConfig& c, std::span<cons
 std::vector<glm::dvec3> smoothPositions(const DenoiseConfig& c, std::span<const glm::dvec3> start,
                                         std::span<const uint32_t> indices, const Adjacency& adjacency, DenoiseResult& r,
                                         JobContext* job) {
-  if (c.method == DenoiseMethod::Bilateral) {
+  if (c.smoothing.method == SmoothingMethod::Bilateral) {
     BilateralResult b = bilateralNormalFilter(start, indices, c.bilateral, job);
     r.normalChangeDeg = std::move(b.normalChangeDeg);
     return std::move(b.positions);
   }
-  SmoothingSettings s = c.smoothing;
-  s.method = c.method == DenoiseMethod::Explicit ? SmoothingMethod::Explicit
-             : c.method == DenoiseMethod::Taubin ? SmoothingMethod::Taubin
-                                                 : SmoothingMethod::Implicit;
-  SmoothingResult sr = smooth(start, indices, adjacency, s, job);
+  SmoothingResult sr = smooth(start, indices, adjacency, c.smoothing, job);
   if (!sr.error.empty()) r.notes.push_back(sr.error);
   r.energy = std::move(sr.energy);
   r.grewAt = sr.grewAt;
@@ -225,17 +221,18 @@ void noteWhatHappened(const DenoiseModel& m, const DenoiseConfig& c, DenoiseResu
                       number(r.volumeScale) + " about its centroid to restore it (preserve_volume)");
   else if (r.collapsed)
     r.notes.push_back(
-        std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: " : "") +
+        std::string(c.smoothing.method == SmoothingMethod::Implicit ? "implicit smoothing is stable but shrinks: "
+                                                                    : "") +
         "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
         "rescale; drawn: the noisy input as a ghost and, in orange, the point it collapsed to. Lower lambda or "
         "the iterations");
   else if (shrinkPct >= 10.0)
-    r.notes.push_back(std::string(c.method == DenoiseMethod::Implicit ? "implicit smoothing is stable but shrinks: "
-                                                                      : "the smoothing shrank the mesh: ") +
-                      "it lost " + number(shrinkPct) + "% of its volume, pulled towards its centroid (" +
-                      (c.preserveVolume ? "an open mesh has no volume to restore" : "preserve_volume rescales it") +
-                      ")");
-  if (r.grewAt > 0 && c.method != DenoiseMethod::Implicit)  // implicit steps are stable for any lambda
+    r.notes.push_back(
+        std::string(c.smoothing.method == SmoothingMethod::Implicit ? "implicit smoothing is stable but shrinks: "
+                                                                    : "the smoothing shrank the mesh: ") +
+        "it lost " + number(shrinkPct) + "% of its volume, pulled towards its centroid (" +
+        (c.preserveVolume ? "an open mesh has no volume to restore" : "preserve_volume rescales it") + ")");
+  if (r.grewAt > 0 && c.smoothing.method != SmoothingMethod::Implicit)  // implicit steps are stable for any lambda
     r.notes.push_back("diverging: the smoothing energy grew at iteration " + std::to_string(r.grewAt) + " (lambda " +
                       number(c.smoothing.lambda) + " is beyond the stable explicit step, about " +
                       number(r.stabilityLimit) + " for these weights)");
@@ -259,7 +256,7 @@ void noteWhatHappened(const DenoiseModel& m, const DenoiseConfig& c, DenoiseResu
                       number(100.0 * double(r.overlappingTexels) / double(std::max<size_t>(r.map->covered, 1))) +
                       "% of the covered ones) lie in two triangles, and one map cannot hold both offsets there");
   // A filter whose parameters make it a no-op costs time and changes nothing: say so.
-  if (c.method == DenoiseMethod::Bilateral && r.noisyError.rmsDistance > 0.0 &&
+  if (c.smoothing.method == SmoothingMethod::Bilateral && r.noisyError.rmsDistance > 0.0 &&
       r.smoothedError.rmsDistance > 0.98 * r.noisyError.rmsDistance)
     r.notes.push_back("bilateral filtering changed almost nothing (distance to the clean mesh " +
                       number(r.smoothedError.rmsDistance) + " against " + number(r.noisyError.rmsDistance) +
@@ -323,7 +320,7 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   measureVolume(m, c, start, indices, result, r);
   r.solveMs = smoothed ? smoothed->ms : msSince(t0);
   if (job && job->cancelled()) return r;
-  if (c.method != DenoiseMethod::Bilateral)
+  if (c.smoothing.method != SmoothingMethod::Bilateral)
     r.stabilityLimit =
         stabilityLimit(adjacency, r.weights, 200);  // the weights of the start, as the smoothing had them
 

@@ -39,15 +39,12 @@ struct DenoiseModel {
 std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, const MeshData* published,
                                                       std::string& error);
 
-enum class DenoiseMethod { Explicit, Taubin, Implicit, Bilateral };
-
 enum class SmoothingDevice { Cpu, Gpu };
 
 struct DenoiseConfig {
   bool publishedInput = false;  // the published noisy twin instead of generated noise
   NoiseSettings noise;
-  DenoiseMethod method = DenoiseMethod::Explicit;
-  SmoothingSettings smoothing;  // Laplacian methods (method mirrored into it)
+  SmoothingSettings smoothing;  // the method (bilateral: `bilateral` below) and the Laplacian steps' settings
   // Explicit and Taubin steps on the GPU (gpu_smoother.h), where the lab can run them; the rest of
   // the pipeline takes the smoothed positions from there.
   SmoothingDevice device = SmoothingDevice::Cpu;

@@ -236,7 +236,7 @@ GpuSmoothing GpuSmoother::run(ShaderLibrary& shaders, const SmoothingSettings& s
   }
   const auto t0 = std::chrono::steady_clock::now();  // a program's build is not the steps' cost
   const bool taubin = s.method == SmoothingMethod::Taubin;
-  const float lambda = s.lambda, mu = taubin ? float(1.0 / (s.passBand - 1.0 / s.lambda)) : 0.0f;
+  const float lambda = s.lambda, mu = float(taubinMu(s));
   const int iterations = std::clamp(s.iterations, 0, kMaxIterations);
   // One iteration: the step (and Taubin's mu step), each with the normals of its input.
   const auto iterate = [&](int slot) {

@@ -157,7 +157,7 @@ void runExplicit(SmoothingResult& r, std::span<const uint32_t> idx, const Adjace
                  JobContext* job) {
   std::vector<glm::dvec3>& p = r.positions;
   const bool cot = s.weights == LaplacianWeights::Cotangent;
-  const double mu = s.method == SmoothingMethod::Taubin ? 1.0 / (s.passBand - 1.0 / s.lambda) : 0.0;
+  const double mu = taubinMu(s);
   // Cotangent weights follow the geometry, so they are recomputed every step; uniform ones are
   // the ones smooth() made, used in place.
   EdgeWeights cotWeights;
@@ -252,11 +252,19 @@ void runImplicit(SmoothingResult& r, const Adjacency& a, const SmoothingSettings
 
 }  // namespace
 
+double taubinMu(const SmoothingSettings& s) {
+  return s.method == SmoothingMethod::Taubin ? 1.0 / (double(s.passBand) - 1.0 / double(s.lambda)) : 0.0;
+}
+
 SmoothingResult smooth(std::span<const glm::dvec3> start, std::span<const uint32_t> indices, const Adjacency& adjacency,
                        const SmoothingSettings& settings, JobContext* job) {
   SmoothingResult r;
   r.positions.assign(start.begin(), start.end());
   r.weightsUsed = edgeWeights(start, indices, adjacency, settings.weights, settings.clampNegative);
+  if (settings.method == SmoothingMethod::Bilateral) {
+    r.error = "bilateral filtering is not a Laplacian step: bilateralNormalFilter runs it";
+    return r;
+  }
   if (settings.method == SmoothingMethod::Implicit)
     runImplicit(r, adjacency, settings, job);
   else

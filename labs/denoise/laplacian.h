@@ -51,7 +51,10 @@ EdgeWeights edgeWeights(std::span<const glm::dvec3> positions, std::span<const u
 std::vector<glm::dvec3> umbrella(std::span<const glm::dvec3> positions, const Adjacency& adjacency,
                                  const EdgeWeights& weights);
 
-enum class SmoothingMethod { Explicit, Taubin, Implicit };
+// The lab's smoothing methods, one list for the panel, the CPU and the GPU. smooth() steps the
+// first three; bilateral filters the face normals instead (bilateral_normal.h) and only shares
+// the iteration count.
+enum class SmoothingMethod { Explicit, Taubin, Implicit, Bilateral };
 
 struct SmoothingSettings {
   SmoothingMethod method = SmoothingMethod::Explicit;
@@ -63,6 +66,10 @@ struct SmoothingSettings {
   float passBand = 0.1f;  // Taubin's k_pb
   bool operator==(const SmoothingSettings&) const = default;
 };
+
+// Taubin's second, shrink-undoing step: mu = 1 / (k_pb - 1 / lambda), negative for the panel's
+// ranges. 0 for every other method (one step per iteration).
+double taubinMu(const SmoothingSettings& s);
 
 struct SmoothingResult {
   std::vector<glm::dvec3> positions;

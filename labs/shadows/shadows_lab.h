@@ -161,6 +161,10 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   const ShadowMap& fillMap() const { return fillMap_; }
   // Every program the current settings can draw with (a subset of allPrograms()'s, as tests check).
   std::vector<ProgramSpec> currentPrograms() const;
+  // ... the same from the settings alone (`sixPasses`: the point light's map drawn in six passes).
+  static std::vector<ProgramSpec> programsOf(const ShadowsParams& p, bool sixPasses);
+  // The parameters of `p`, as visitParams lists them (`sceneLit`: the scene has a light of its own).
+  static void visitParamsOf(ParamVisitor& v, ShadowsParams& p, bool sceneLit);
   // The unit-disk samples the shaders get for `count` taps (8, 16, 32, 64).
   static const std::vector<glm::vec2>& disk(int count);
   // How the GPU tracer cuts its work (BM_GpuTruthShape tries each on the machine at hand); the
@@ -172,10 +176,10 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   enum class InternalView { None, Position, Normal };  // G-buffer for the ray-traced reference
   LightSetup keySetup() const;
   LightSetup fillSetup() const;
-  ProgramSpec litSpec(const ShadowsParams& p, InternalView internal) const;
+  static ProgramSpec litSpec(const ShadowsParams& p, InternalView internal);
   static ProgramSpec depthSpec(bool cube, bool sixPasses, ShadowFilter filter);
   static ProgramSpec blurSpec();
-  ProgramSpec depthViewSpec(const ShadowsParams& p) const;
+  static ProgramSpec depthViewSpec(const ShadowsParams& p);
   void setFilterUniforms(Program& prog) const;
   void renderKeyMaps(Frame& frame, const LightFrame& key, const DepthPassState& state, GLenum format);
   void drawDepthView(Frame& frame, const LightFrame& key, const LightFrame& fill);

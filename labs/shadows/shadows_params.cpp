@@ -254,9 +254,12 @@ void visitScene(ParamVisitor& v, ShadowsParams::SceneSettings& scene) {
 }  // namespace
 
 void ShadowsLab::visitParams(ParamVisitor& v) {
-  auto& p = params;
+  visitParamsOf(v, params, params.key.sceneLight && glm::dot(sceneLight_, sceneLight_) > 0.0f);
+}
+
+void ShadowsLab::visitParamsOf(ParamVisitor& v, ShadowsParams& p, bool sceneLit) {
   v.section("Key light");
-  visitKeyLight(v, p.key, p.key.sceneLight && glm::dot(sceneLight_, sceneLight_) > 0.0f);
+  visitKeyLight(v, p.key, sceneLit);
   v.section("Fill light");
   visitFillLight(v, p.fill);
   v.section("Shadow map");

@@ -9,7 +9,7 @@
 
 namespace shadelab {
 
-ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) const {
+ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) {
   ProgramSpec spec;
   spec.stages = {{GL_VERTEX_SHADER, "shadows/lit.vert"}, {GL_FRAGMENT_SHADER, "shadows/lit.frag"}};
   spec.defines.emplace_back("KEY_TYPE", std::to_string(int(p.key.type)));
@@ -79,7 +79,7 @@ ProgramSpec ShadowsLab::linesSpec() {
   return spec;
 }
 
-ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) const {
+ProgramSpec ShadowsLab::depthViewSpec(const ShadowsParams& p) {
   ProgramSpec spec;
   spec.name = "shadows/depth view";
   spec.stages = {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "shadows/depth_view.frag"}};
@@ -199,14 +199,14 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
       counts.push_back(int(names.size()));
     }
   };
-  ShadowsLab probe;
+  ShadowsParams knobbed;
   Knobs knobs;
-  probe.visitParams(knobs);
+  visitParamsOf(knobs, knobbed, false);
   for (size_t k = 0; k < knobs.set.size(); ++k)
     for (int value = 0; value < knobs.counts[k]; ++value) {
-      probe.resetParams();
+      knobbed = ShadowsParams{};
       knobs.set[k](value);
-      for (auto& spec : probe.currentPrograms()) all.push_back(std::move(spec));
+      for (auto& spec : programsOf(knobbed, knobbed.map.sixCubePasses)) all.push_back(std::move(spec));
     }
   // One of each: the library compiles a key once, but a shorter list is a faster check.
   std::set<std::string> seen;
@@ -214,13 +214,15 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   return all;
 }
 
-std::vector<ProgramSpec> ShadowsLab::currentPrograms() const {
-  const ShadowFilter filter = effectiveFilterOf(params);
-  std::vector<ProgramSpec> out = {litSpec(params, InternalView::None), litSpec(params, InternalView::Position),
-                                  depthSpec(params.key.type == LightType::Point, sixCubePasses(), filter),
-                                  depthSpec(false, false, filter), depthViewSpec(params)};
+std::vector<ProgramSpec> ShadowsLab::currentPrograms() const { return programsOf(params, sixCubePasses()); }
+
+std::vector<ProgramSpec> ShadowsLab::programsOf(const ShadowsParams& p, bool sixPasses) {
+  const ShadowFilter filter = effectiveFilterOf(p);
+  std::vector<ProgramSpec> out = {litSpec(p, InternalView::None), litSpec(p, InternalView::Position),
+                                  depthSpec(p.key.type == LightType::Point, sixPasses, filter),
+                                  depthSpec(false, false, filter), depthViewSpec(p)};
   if (isMomentFilter(filter)) out.push_back(blurSpec());
-  if (params.map.fit == MapFit::DepthRange)
+  if (p.map.fit == MapFit::DepthRange)
     out.insert(out.end(), {DepthRange::programSpec(true), DepthRange::programSpec(false)});
   return out;
 }
