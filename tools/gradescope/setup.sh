@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Gradescope's setup.sh for a ShadeLab assignment (its Ubuntu image, run once when the
 # autograder is built). The autograder zip holds this file, run_autograder, config.env, the
-# ShadeLab source as shadelab/ and the course folder as course/ (see README.md, "Running a course").
+# ShadeLab source as shadelab/ and the course folder as course/ (see docs/courses.md).
 set -euo pipefail
 cd /autograder/source
 apt-get update -qq
