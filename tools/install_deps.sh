@@ -5,8 +5,9 @@ set -euo pipefail
 build_pkgs=(cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev
   libtinyobjloader-dev libstb-dev nlohmann-json3-dev libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libbenchmark-dev libembree-dev libeigen3-dev libflann-dev liblz4-dev libopenmesh-dev libzip-dev)
-test_pkgs=(xvfb xauth xdotool glslang-tools clang-format-14)  # glslang-tools: check-shaders --dialect es;
-# clang-format-14: the style check (tools/check_format.sh)
+test_pkgs=(xvfb xauth xdotool glslang-tools clang-format-14 python3-jsonschema git)  # glslang-tools:
+# check-shaders --dialect es; clang-format-14: the style check (tools/check_format.sh);
+# python3-jsonschema and git: the gradebooks' test (schemas, a Classroom 50 checkout)
 fuzz_pkgs=(clang-14 libclang-rt-14-dev)  # libFuzzer and the sanitizer runtimes for clang
 data_pkgs=(curl ca-certificates)          # tools/get_data.sh
 # ./web.sh: emscripten, dpkg-dev for Dear ImGui's source package, and what the page's tests drive it with

@@ -76,6 +76,7 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
     ConfigurationResult result;
     result.name = c.name;
     result.description = describeConfiguration(c);
+    result.visibility = c.visibility;
     if (!out.missingFiles.empty()) {
       notSubmitted(c, out.missingFiles.front() + " is in none of the --shaders folders", result);
     } else {
@@ -190,7 +191,11 @@ int runGrade(const Options& o) {
   if (o.jobs != 1 || o.shards != 1) return cannotGrade("--jobs and --shard are for a class (--class DIR)");
   if (o.format == "moodle" || o.format == "canvas")
     return cannotGrade("--format " + o.format +
-                       " is a class's gradebook (--class DIR); one student: gradescope, classroom");
+                       " is a class's gradebook (--class DIR); one student: gradescope, classroom50, prairielearn");
+  Classroom50Identity identity;
+  if (o.format == "classroom50")
+    if (auto e = classroom50IdentityFromEnvironment(identity); !e.empty())
+      return cannotGrade(e + " (--format classroom50 runs in Classroom 50's runner: tools/classroom50/autograder.py)");
   std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
   if (ids.empty()) return cannotGrade("no exercises in " + builtinExercisesRoot().string() + " or a course folder");
 
@@ -220,12 +225,15 @@ int runGrade(const Options& o) {
   for (auto& d : o.shaderDirs) report.command += " --shaders " + d.string();
   CacheCount cache;
   if (auto e = gradeStudent(ids, g, report, cache); !e.empty()) return cannotGrade(e);
-  if (o.format == "gradescope" || o.format == "classroom") {
+  if (!o.format.empty()) {
     const nlohmann::json j = nlohmann::json::parse(gradeJson(report));
-    const bool gradescope = o.format == "gradescope";
-    const std::string text = (gradescope ? gradescopeResults(j) : classroomResults(j)).dump(2) + "\n";
-    if (auto e = writeTextFile((dir / (gradescope ? "results.json" : "classroom.json")).string(), text); !e.empty())
-      return cannotGrade(e);
+    const nlohmann::json results = o.format == "gradescope"    ? gradescopeResults(j)
+                                   : o.format == "classroom50" ? classroom50Result(j, identity)
+                                                               : prairieLearnResults(j, dir);
+    const char* file = o.format == "classroom50" ? "result.json" : "results.json";
+    if (auto e = writeTextFile((dir / file).string(), results.dump(2) + "\n"); !e.empty()) return cannotGrade(e);
+    if (o.format == "classroom50" && wholePointScale(j) != 1)
+      std::printf("classroom50: every check's points x%d, so that each is whole\n", wholePointScale(j));
   }
 
   double earned = 0, total = 0;
@@ -243,9 +251,10 @@ int runGrade(const Options& o) {
     std::printf("solutions: %d of %d configurations from the cache (%s)\n", cache.fromCache,
                 cache.fromCache + cache.rendered, g.cache.dir().c_str());
   std::printf("report: %s (also report.md, report.json%s)\n", (dir / "report.html").c_str(),
-              o.format == "gradescope"  ? ", results.json for Gradescope"
-              : o.format == "classroom" ? ", classroom.json for GitHub Classroom"
-                                        : "");
+              o.format == "gradescope"     ? ", results.json for Gradescope"
+              : o.format == "classroom50"  ? ", result.json for Classroom 50"
+              : o.format == "prairielearn" ? ", results.json for PrairieLearn"
+                                           : "");
   return passed ? 0 : 1;
 }
 

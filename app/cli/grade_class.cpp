@@ -148,7 +148,7 @@ int runGradeClass(const Options& o) {
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
   if (!o.shaderDirs.empty())
     return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
-  if (o.format == "gradescope" || o.format == "classroom")
+  if (o.format == "gradescope" || o.format == "classroom50" || o.format == "prairielearn")
     return cannotGrade("--format " + o.format + " is one student's results (no --class); a class: moodle or canvas");
   const std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
   for (auto& id : ids) {

@@ -68,10 +68,11 @@ options:
   --all               grade: every exercise
   --watchdog SECONDS  grade: how long the student's shader may take per configuration (default 20)
   --class DIR         grade: every submission in DIR (a folder or a .zip per student)
-  --format F          grade: also write the grades where a course keeps them: gradescope (one student:
-                      results.json, Gradescope's autograder results), classroom (one student:
-                      classroom.json, for GitHub Classroom's grading reporter), moodle or canvas (a
-                      class: moodle.csv or canvas.csv, the CSV their gradebooks import)
+  --format F          grade: also write the grades where a course keeps them. One student: gradescope
+                      (results.json, Gradescope's autograder results), classroom50 (result.json, Classroom
+                      50's classroom50/result/v1, identity from the runner's environment) or prairielearn
+                      (results.json, PrairieLearn's external grader results, pictures inline). A class:
+                      moodle or canvas (moodle.csv or canvas.csv, the CSV their gradebooks import)
   --jobs N            grade --class: submissions graded at a time (default 1)
   --shard i/n         grade --class: grade the i-th of n deterministic slices (1 <= i <= n), for array jobs
   --cache DIR         grade: keep the solution's frames and truths here (default $SHADELAB_CACHE/solutions
@@ -187,8 +188,11 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     } else if (arg == "--function")
       o.function = v;
     else if (arg == "--format") {
-      if (v != "gradescope" && v != "classroom" && v != "moodle" && v != "canvas")
-        return "--format: invalid value '" + v + "' (valid: gradescope, classroom, moodle, canvas)";
+      if (v == "classroom")
+        return "--format: 'classroom' is gone with GitHub Classroom (retired in August 2026); Classroom 50, which "
+               "replaces it: --format classroom50";
+      if (v != "gradescope" && v != "classroom50" && v != "prairielearn" && v != "moodle" && v != "canvas")
+        return "--format: invalid value '" + v + "' (valid: gradescope, classroom50, prairielearn, moodle, canvas)";
       o.format = v;
     } else if (arg == "--cache")
       o.cacheDir = v;

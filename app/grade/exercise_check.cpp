@@ -67,6 +67,7 @@ void ExerciseCheck::step() {
   ConfigurationResult out;
   out.name = c.name;
   out.description = describeConfiguration(c);
+  out.visibility = c.visibility;
   const auto stop = [&](const std::string& why) {
     error_ = why;
     running_ = false;

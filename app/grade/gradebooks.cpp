@@ -1,7 +1,13 @@
 #include "app/grade/gradebooks.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <set>
 
+#include "app/measure/image.h"
+#include "app/measure/report.h"
 #include "app/util/csv.h"
 #include "app/util/format.h"
 
@@ -47,6 +53,35 @@ std::string feedbackOf(const ClassRow& r) {
   return text;
 }
 
+// "Title: configuration: check", the name every gradebook gives a check.
+std::string checkName(const nlohmann::json& exercise, const nlohmann::json& check) {
+  const std::string title = exercise.value("title", exercise.value("id", ""));
+  return title + ": " + check.value("configuration", "") + ": " + check.value("check", "");
+}
+
+// "FAIL: covered_rmse 0.0261, full marks at <= 0.004, partial at <= 0.015".
+std::string checkOutcome(const nlohmann::json& c) {
+  std::string text = c.value("result", "") + ": " + c.value("metric", "") + " " +
+                     (c["value"].is_number() ? formatNumber(c["value"].get<double>()) : std::string("n/a"));
+  if (c["full_at"].is_number()) text += ", full marks at <= " + formatNumber(c["full_at"].get<double>());
+  if (c["partial_at"].is_number()) text += ", partial at <= " + formatNumber(c["partial_at"].get<double>());
+  return text;
+}
+
+// An exercise's score, status, diagnosis, missing files and notes, in Markdown.
+std::string exerciseSummary(const nlohmann::json& e) {
+  const std::string id = e.value("id", ""), title = e.value("title", id);
+  std::string text = "**" + title + "** (" + id + "): " + formatPoints(e.value("score", 0.0)) + " / " +
+                     formatPoints(e.value("total", 0.0)) + " points, " + formatPoints(e.value("percent", 0.0)) +
+                     " % (pass mark " + formatPoints(e.value("pass_mark", 0.0)) + " %), " + e.value("status", "") +
+                     "\n\n";
+  if (e.contains("diagnosis")) text += e["diagnosis"].get<std::string>() + "\n\n";
+  for (auto& f : e.value("missing_files", nlohmann::json::array()))
+    text += "- not submitted: `" + f.get<std::string>() + "`\n";
+  for (auto& n : e.value("notes", nlohmann::json::array())) text += "- note: " + n.get<std::string>() + "\n";
+  return text;
+}
+
 }  // namespace
 
 bool validGradescopeVisibility(const std::string& v) {
@@ -60,61 +95,233 @@ nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string
   for (auto& e : report.value("exercises", nlohmann::json::array())) {
     const std::string id = e.value("id", ""), title = e.value("title", id);
     score += e.value("score", 0.0);
-    output += title + " (" + id + "): " + formatPoints(e.value("score", 0.0)) + " / " +
-              formatPoints(e.value("total", 0.0)) + " points, " + formatPoints(e.value("percent", 0.0)) +
-              " % (pass mark " + formatPoints(e.value("pass_mark", 0.0)) + " %), " + e.value("status", "") + "\n";
-    if (e.contains("diagnosis")) output += "  diagnosis: " + e["diagnosis"].get<std::string>() + "\n";
-    for (auto& f : e.value("missing_files", nlohmann::json::array()))
-      output += "  not submitted: " + f.get<std::string>() + "\n";
-    for (auto& n : e.value("notes", nlohmann::json::array())) output += "  note: " + n.get<std::string>() + "\n";
+    output += exerciseSummary(e);
     for (auto& c : e.value("checks", nlohmann::json::array())) {
-      std::string text = c.value("result", "") + ": " + c.value("metric", "") + " " +
-                         (c["value"].is_number() ? formatNumber(c["value"].get<double>()) : std::string("n/a"));
-      if (c["full_at"].is_number()) text += ", full marks at <= " + formatNumber(c["full_at"].get<double>());
-      if (c["partial_at"].is_number()) text += ", partial at <= " + formatNumber(c["partial_at"].get<double>());
-      if (!c.value("message", "").empty()) text += "\n" + c["message"].get<std::string>();
-      for (auto& err : c.value("errors", nlohmann::json::array())) text += "\n" + err.get<std::string>();
-      tests.push_back({{"name", title + ": " + c.value("configuration", "") + ": " + c.value("check", "")},
+      std::string text = checkOutcome(c);
+      if (!c.value("message", "").empty()) text += "\n\n" + c["message"].get<std::string>();
+      for (auto& err : c.value("errors", nlohmann::json::array()))
+        text += "\n\n```\n" + err.get<std::string>() + "\n```";
+      const std::string own = c.value("visibility", "visible");
+      tests.push_back({{"name", checkName(e, c)},
                        {"score", c.value("points", 0.0)},
                        {"max_score", c.value("max_points", 0.0)},
                        {"status", c.value("result", "") == "PASS" ? "passed" : "failed"},
                        {"output", text},
+                       {"output_format", "md"},
                        {"tags", {id}},
-                       {"visibility", visibility}});
+                       {"visibility", own != "visible" && validGradescopeVisibility(own) ? own : visibility}});
     }
   }
   return {{"score", score},
           {"output", output},
-          {"output_format", "text"},
+          {"output_format", "md"},
+          {"test_output_format", "md"},
           {"visibility", visibility},
           {"stdout_visibility", "hidden"},
           {"tests", tests}};
 }
 
-nlohmann::json classroomResults(const nlohmann::json& report) {
-  nlohmann::json tests = nlohmann::json::array();
-  double total = 0.0;
-  bool passed = true;
-  for (auto& e : report.value("exercises", nlohmann::json::array())) {
-    total += e.value("total", 0.0);
-    passed &= e.value("passed", false);
-    const std::string title = e.value("title", e.value("id", ""));
-    const std::string diagnosis = e.value("diagnosis", "");
+namespace {
+
+bool isUtcSecond(const std::string& t) {  // "YYYY-MM-DDTHH:MM:SSZ"
+  static const char* shape = "dddd-dd-ddTdd:dd:ddZ";
+  if (t.size() != 20) return false;
+  for (size_t i = 0; i < t.size(); ++i)
+    if (shape[i] == 'd' ? !std::isdigit(static_cast<unsigned char>(t[i])) : t[i] != shape[i]) return false;
+  return true;
+}
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return text;
+}
+
+}  // namespace
+
+std::string classroom50IdentityFromEnvironment(Classroom50Identity& id) {
+  std::vector<std::string> missing;
+  auto read = [&](const char* name, std::string& into, const char* fallback = nullptr) {
+    const char* v = std::getenv(name);
+    if ((!v || !*v) && fallback) v = std::getenv(fallback);
+    if (v && *v)
+      into = v;
+    else
+      missing.push_back(name);
+  };
+  read("CLASSROOM", id.classroom);
+  read("ASSIGNMENT", id.assignment);
+  read("ASSIGNMENT_TYPE", id.assignmentType);
+  read("OWNER", id.owner, "USERNAME");
+  read("SUBMISSION_TAG", id.submission);
+  read("COMMIT_URL", id.commit);
+  read("RELEASE_URL", id.release);
+  read("REVIEW_URL", id.review, "COMMIT_URL");
+  read("COMMIT_DATE", id.datetime);
+  if (const char* actor = std::getenv("GITHUB_ACTOR")) id.submittedBy = actor;
+  id.gradedAt = utcNow();
+  std::string problems;
+  if (!missing.empty()) {
+    problems = "not set: ";
+    for (size_t i = 0; i < missing.size(); ++i) problems += (i ? ", " : "") + missing[i];
+  }
+  auto malformed = [&](const std::string& what) { problems += (problems.empty() ? "" : "; ") + what; };
+  if (!id.assignmentType.empty() && id.assignmentType != "individual" && id.assignmentType != "group")
+    malformed("ASSIGNMENT_TYPE is '" + id.assignmentType + "' (valid: individual, group)");
+  if (!id.submission.empty() && id.submission.rfind("submit/", 0) != 0)
+    malformed("SUBMISSION_TAG is '" + id.submission + "' (a submit/... tag)");
+  if (!id.datetime.empty() && !isUtcSecond(id.datetime))
+    malformed("COMMIT_DATE is '" + id.datetime + "' (the commit's date in UTC, YYYY-MM-DDTHH:MM:SSZ)");
+  return problems.empty() ? "" : "Classroom 50's environment: " + problems;
+}
+
+int wholePointScale(const nlohmann::json& report) {
+  std::vector<double> points;
+  for (auto& e : report.value("exercises", nlohmann::json::array()))
     for (auto& c : e.value("checks", nlohmann::json::array())) {
+      points.push_back(c.value("points", 0.0));
+      points.push_back(c.value("max_points", 0.0));
+    }
+  for (int k = 1; k <= 100; ++k)
+    if (std::all_of(points.begin(), points.end(), [k](double p) { return std::abs(p * k - std::round(p * k)) < 1e-6; }))
+      return k;
+  return 100;
+}
+
+nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50Identity& id) {
+  const int k = wholePointScale(report);
+  nlohmann::json tests = nlohmann::json::array();
+  long score = 0, maxScore = 0;
+  for (auto& e : report.value("exercises", nlohmann::json::array()))
+    for (auto& c : e.value("checks", nlohmann::json::array())) {
+      const long earned = std::lround(c.value("points", 0.0) * k), most = std::lround(c.value("max_points", 0.0) * k);
+      score += earned;
+      maxScore += most;
       std::string message = c.value("message", "");
-      for (auto& err : c.value("errors", nlohmann::json::array())) message += "\n" + err.get<std::string>();
-      if (c.value("result", "") != "PASS" && !diagnosis.empty()) message = diagnosis + "\n" + message;
-      tests.push_back({{"name", title + ": " + c.value("configuration", "") + ": " + c.value("check", "")},
-                       {"status", c.value("result", "") == "PASS" ? "pass" : "fail"},
-                       {"score", c.value("points", 0.0)},
-                       {"message", message},
-                       {"test_code", c.value("metric", "") + " against the " + c.value("against", "solution")},
-                       {"filename", ""},
-                       {"line_no", 0},
-                       {"execution_time", ""}});
+      for (auto& err : c.value("errors", nlohmann::json::array())) message.append("\n").append(err.get<std::string>());
+      tests.push_back({{"test-name", checkName(e, c)},
+                       {"passed", c.value("result", "") == "PASS"},
+                       {"score", earned},
+                       {"max-score", most},
+                       {"output", checkOutcome(c)},
+                       {"message", message}});
+    }
+  nlohmann::json result = {{"schema", "classroom50/result/v1"},
+                           {"classroom", id.classroom},
+                           {"assignment", id.assignment},
+                           {"assignment_type", id.assignmentType},
+                           {"owner", id.owner},
+                           {"submission", id.submission},
+                           {"commit", id.commit},
+                           {"release", id.release},
+                           {"review", id.review},
+                           {"datetime", id.datetime},
+                           {"graded_at", id.gradedAt},
+                           {"score", score},
+                           {"max-score", maxScore},
+                           {"tests", tests}};
+  if (!id.submittedBy.empty()) result["submitted_by"] = {{"username", id.submittedBy}};
+  return result;
+}
+
+nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::filesystem::path& reportDir,
+                                   size_t byteLimit) {
+  double earned = 0.0, total = 0.0;
+  std::string message, output;
+  std::vector<std::string> formatErrors;
+  nlohmann::json tests = nlohmann::json::array();
+  // The pictures of each configuration that lost points, in the order the checks come: a
+  // configuration's three images go to its first check not passed in full.
+  struct Pictures {
+    size_t test;
+    std::string configuration;
+    std::vector<std::pair<std::string, std::string>> files;  // label, file in reportDir
+  };
+  std::vector<Pictures> pictures;
+  for (auto& e : report.value("exercises", nlohmann::json::array())) {
+    earned += e.value("score", 0.0);
+    total += e.value("total", 0.0);
+    output += exerciseSummary(e);
+    if (e.contains("diagnosis")) message += (message.empty() ? "" : "\n") + e["diagnosis"].get<std::string>();
+    const std::string status = e.value("status", "");
+    for (auto& f : e.value("missing_files", nlohmann::json::array()))
+      formatErrors.push_back(f.get<std::string>() + " is not in the submission");
+    std::set<std::string> seen;
+    for (auto& c : e.value("checks", nlohmann::json::array())) {
+      if (status == "did not build")
+        for (auto& err : c.value("errors", nlohmann::json::array()))
+          if (std::find(formatErrors.begin(), formatErrors.end(), err.get<std::string>()) == formatErrors.end())
+            formatErrors.push_back(err.get<std::string>());
+      tests.push_back({{"name", checkName(e, c)},
+                       {"description", c.value("metric", "") + " against the " + c.value("against", "solution")},
+                       {"points", c.value("points", 0.0)},
+                       {"max_points", c.value("max_points", 0.0)},
+                       {"message", c.value("message", "")},
+                       {"output", checkOutcome(c)}});
+      const std::string configuration = c.value("configuration", "");
+      const auto images = c.value("images", nlohmann::json::object());
+      if (c.value("result", "") == "PASS" || !seen.insert(configuration).second) continue;
+      Pictures p{tests.size() - 1, configuration, {}};
+      for (auto [key, label] : {std::pair<const char*, const char*>{"student", "your frame"},
+                                {"solution", "the solution's"},
+                                {"diff", "the difference, amplified"}})
+        if (images.value(key, "") != "") p.files.emplace_back(configuration + ": " + label, images.value(key, ""));
+      if (!p.files.empty()) pictures.push_back(std::move(p));
     }
   }
-  return {{"version", 1}, {"status", passed ? "pass" : "fail"}, {"max_score", total}, {"tests", tests}};
+  nlohmann::json results = {{"message", message}, {"output", output}};
+  if (!formatErrors.empty()) {
+    results["gradable"] = false;
+    results["format_errors"] = formatErrors;
+    return results;
+  }
+  results["gradable"] = true;
+  results["score"] = total > 0.0 ? std::clamp(earned / total, 0.0, 1.0) : 0.0;
+  results["tests"] = tests;
+
+  // The pictures at full size, then halved until they fit beside the text; a configuration whose
+  // pictures still do not fit at 32 pixels is left out (from the last), and the message says so.
+  std::vector<std::vector<std::pair<std::string, ImageF>>> loaded;  // label, image
+  for (auto& p : pictures) {
+    loaded.emplace_back();
+    for (auto& [label, file] : p.files) {
+      ImageF image;
+      if (readImage((reportDir / file).string(), image).empty()) loaded.back().emplace_back(label, std::move(image));
+    }
+  }
+  const size_t text = results.dump().size() + 256;  // + the note's own bytes
+  const size_t budget = byteLimit > text ? byteLimit - text : 0;
+  size_t kept = pictures.size();
+  for (int factor = 1;;) {
+    std::vector<nlohmann::json> lists(kept, nlohmann::json::array());
+    size_t bytes = 0;
+    int smallest = 1 << 30;
+    for (size_t i = 0; i < kept; ++i)
+      for (const auto& [label, image] : loaded[i]) {
+        const ImageF small = factor == 1 ? image : downsample(image, factor);
+        smallest = std::min({smallest, small.size.x, small.size.y});
+        lists[i].push_back({{"label", label}, {"url", pngDataUri(small)}});
+        bytes += lists[i].back().dump().size() + 1;
+      }
+    if (bytes <= budget) {
+      for (size_t i = 0; i < kept; ++i) results["tests"][pictures[i].test]["images"] = lists[i];
+      if (kept < pictures.size())
+        results["message"] =
+            results["message"].get<std::string>() + "\n(The pictures of " + std::to_string(pictures.size() - kept) +
+            " configurations are left out to keep the results within their size limit: the full report has them.)";
+      break;
+    }
+    if (smallest > 32) {
+      factor *= 2;
+    } else {  // one configuration fewer, from full size again
+      --kept;
+      factor = 1;
+    }
+  }
+  return results;
 }
 
 std::string moodleCsv(const std::vector<ClassRow>& rows) {
@@ -127,7 +334,7 @@ std::string moodleCsv(const std::vector<ClassRow>& rows) {
     csv += csvField(student);
     for (auto& c : columns) {
       const ClassRow* r = rowOf(rows, student, c.id);
-      csv += "," + (r ? formatPoints(r->score) : std::string("-")) + "," + (r ? csvField(feedbackOf(*r)) : "");
+      csv.append(",").append(r ? formatPoints(r->score) : "").append(",").append(r ? csvField(feedbackOf(*r)) : "");
     }
     csv += "\n";
   }
@@ -146,7 +353,7 @@ std::string canvasCsv(const std::vector<ClassRow>& rows) {
     csv += csvField(student) + ",,," + csvField(student) + ",";
     for (auto& c : columns) {
       const ClassRow* r = rowOf(rows, student, c.id);
-      csv += "," + (r ? formatPoints(r->score) : std::string());
+      csv.append(",").append(r ? formatPoints(r->score) : "");
     }
     csv += "\n";
   }

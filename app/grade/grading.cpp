@@ -384,6 +384,7 @@ std::string gradeJson(const GradeReport& report) {
              {"message", r.message},
              {"hint", r.check.hint},
              {"errors", c.errors},
+             {"visibility", c.visibility},
              {"images", {{"student", c.studentImage}, {"solution", c.solutionImage}, {"diff", c.diffImage}}}});
     j["exercises"].push_back(std::move(je));
   }

@@ -41,8 +41,9 @@ const char* outcomeName(Outcome o);
 struct ConfigurationResult {
   std::string name;
   Outcome outcome = Outcome::Graded;
-  std::string description;          // "scene shadow-test, filter=pcf pcf_size=5"
-  std::vector<std::string> errors;  // compile errors (file:line:col with the caret), watchdog, crash
+  std::string description;             // "scene shadow-test, filter=pcf pcf_size=5"
+  std::string visibility = "visible";  // the rubric's, for gradebooks that hide checks
+  std::vector<std::string> errors;     // compile errors (file:line:col with the caret), watchdog, crash
   // The evidence a diagnosis rests on (grade/diagnosis.h), when the student's frame was drawn:
   bool drawn = false;
   double distance = 0.0;                   // frameDistance of the student's frame to the solution's

@@ -215,6 +215,10 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
       return at + ": \"probe\" must be true or false (the view draws the function's result)";
     c.probe = j["probe"].get<bool>();
   }
+  if (j.contains("visibility") &&
+      (!text(j, "visibility", c.visibility) || (c.visibility != "visible" && c.visibility != "hidden" &&
+                                                c.visibility != "after_due_date" && c.visibility != "after_published")))
+    return at + ": \"visibility\" must be visible, hidden, after_due_date or after_published";
   if (j.contains("channels") && (!text(j, "channels", c.channels) || c.channels.empty()))
     return at + ": \"channels\" must name the view's three channels (\"the normal's x, y, z\")";
   if (j.contains("range")) {

@@ -70,6 +70,9 @@ struct Configuration {
   // true): the visibility a shadow test returns, the normal a normal map gives. A relation found
   // here speaks of the function, not only of a picture made from it.
   bool probe = false;
+  // Who sees the configuration's checks in a gradebook that can hide them (Gradescope): visible,
+  // hidden, after_due_date or after_published ("visibility"). Every check is graded and counted.
+  std::string visibility = "visible";
   bool needsTruth() const;
 };
 

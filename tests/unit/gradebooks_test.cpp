@@ -1,11 +1,14 @@
 // The grades in the formats courses import, checked against those formats' published rules:
-// Gradescope's autograder results.json, Moodle's CSV grade import and Canvas's gradebook import.
+// Gradescope's autograder results.json, Classroom 50's result.json, PrairieLearn's external grader
+// results, Moodle's CSV grade import and Canvas's gradebook import. (tests/grade/gradebooks_test.sh
+// validates the files of real grading runs against JSON schemas.)
 #include <gtest/gtest.h>
 
 #include <regex>
 #include <sstream>
 
 #include "app/grade/gradebooks.h"
+#include "app/measure/image.h"
 
 using namespace shadelab;
 
@@ -82,7 +85,8 @@ TEST(Gradebooks, GradescopeResultsFollowTheAutograderSpecification) {
   ASSERT_TRUE(r["score"].is_number());
   EXPECT_DOUBLE_EQ(r["score"].get<double>(), 2.0);
   EXPECT_TRUE(r["output"].is_string());
-  EXPECT_NE(r["output"].get<std::string>().find("diagnosis: The offsets"), std::string::npos);
+  EXPECT_NE(r["output"].get<std::string>().find("The offsets are scaled"), std::string::npos);
+  EXPECT_EQ(r["output_format"], "md");
   EXPECT_EQ(r["visibility"], "after_due_date");
   ASSERT_TRUE(r["tests"].is_array());
   ASSERT_EQ(r["tests"].size(), 2u);
@@ -102,8 +106,107 @@ TEST(Gradebooks, GradescopeResultsFollowTheAutograderSpecification) {
   EXPECT_FALSE(validGradescopeVisibility("public"));
 }
 
-// Moodle: a header row, a user column to map (Username), a numeric grade or '-' per item, and a
-// feedback column per item; every row as long as the header.
+// A configuration the rubric hides keeps its visibility, whatever the command's default.
+TEST(Gradebooks, GradescopeTestsTakeTheRubricsVisibility) {
+  nlohmann::json r = report();
+  r["exercises"][0]["checks"][1]["visibility"] = "hidden";
+  const nlohmann::json out = gradescopeResults(r, "visible");
+  EXPECT_EQ(out["tests"][0]["visibility"], "visible");
+  EXPECT_EQ(out["tests"][1]["visibility"], "hidden");
+}
+
+// Classroom 50's points are whole: 2.5 of 3 becomes 5 of 6, and the sums follow.
+TEST(Gradebooks, Classroom50ScalesHalfPointsToWholeOnes) {
+  nlohmann::json r = report();
+  r["exercises"][0]["checks"][1]["points"] = 1.5;
+  EXPECT_EQ(wholePointScale(r), 2);
+  EXPECT_EQ(wholePointScale(report()), 1);
+  Classroom50Identity id{"cg",
+                         "pcf",
+                         "individual",
+                         "ada",
+                         "submit/2026-11-28T10-00-00Z-abc1234",
+                         "https://x/commit/1",
+                         "https://x/releases/1",
+                         "https://x/compare/0...1",
+                         "2026-11-28T10:00:00Z",
+                         "2026-11-28T10:01:00Z",
+                         "ada"};
+  const nlohmann::json c = classroom50Result(r, id);
+  EXPECT_EQ(c["schema"], "classroom50/result/v1");
+  EXPECT_EQ(c["score"], 7);  // (2 + 1.5) x 2
+  EXPECT_EQ(c["max-score"], 10);
+  ASSERT_EQ(c["tests"].size(), 2u);
+  EXPECT_EQ(c["tests"][1]["score"], 3);
+  EXPECT_EQ(c["tests"][1]["max-score"], 6);
+  EXPECT_TRUE(c["tests"][1]["score"].is_number_integer());
+  EXPECT_EQ(c["tests"][1]["passed"], false);
+  EXPECT_EQ(c["submitted_by"]["username"], "ada");
+}
+
+// Outside Classroom 50's runner, every identity variable missing is named in one line.
+TEST(Gradebooks, Classroom50NamesTheEnvironmentItLacks) {
+  for (const char* name : {"CLASSROOM", "ASSIGNMENT", "ASSIGNMENT_TYPE", "OWNER", "USERNAME", "SUBMISSION_TAG",
+                           "COMMIT_URL", "RELEASE_URL", "REVIEW_URL", "COMMIT_DATE"})
+    unsetenv(name);
+  setenv("CLASSROOM", "cg", 1);
+  setenv("COMMIT_DATE", "2026-11-28 10:00", 1);
+  Classroom50Identity id;
+  const std::string e = classroom50IdentityFromEnvironment(id);
+  EXPECT_NE(e.find("not set: ASSIGNMENT, ASSIGNMENT_TYPE, OWNER, SUBMISSION_TAG, COMMIT_URL, RELEASE_URL, REVIEW_URL"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("COMMIT_DATE is '2026-11-28 10:00'"), std::string::npos) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos);
+  unsetenv("CLASSROOM");
+  unsetenv("COMMIT_DATE");
+}
+
+// PrairieLearn: a score in [0, 1], the failing configuration's three pictures inline, halved until
+// the file fits its limit; a submission that does not build is not gradable, with the reason.
+TEST(Gradebooks, PrairieLearnResultsFitTheirLimitAndSayWhatCannotBeGraded) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "shadelab_prairielearn_test";
+  std::filesystem::create_directories(dir);
+  ImageF noise;
+  noise.size = {256, 256};
+  noise.rgba.resize(size_t(256) * 256 * 4);
+  unsigned seed = 1;
+  for (float& v : noise.rgba) v = float((seed = seed * 1664525u + 1013904223u) >> 24) / 255.0f;  // incompressible
+  for (const char* name : {"s.png", "o.png", "d.png"}) ASSERT_EQ(writePng((dir / name).string(), noise), "");
+  nlohmann::json r = report();
+  r["exercises"][0]["checks"][1]["images"] = {{"student", "s.png"}, {"solution", "o.png"}, {"diff", "d.png"}};
+
+  const nlohmann::json full = prairieLearnResults(r, dir);
+  EXPECT_EQ(full["gradable"], true);
+  EXPECT_DOUBLE_EQ(full["score"].get<double>(), 0.4);
+  ASSERT_EQ(full["tests"].size(), 2u);
+  EXPECT_FALSE(full["tests"][0].contains("images"));  // passed: no pictures
+  ASSERT_EQ(full["tests"][1]["images"].size(), 3u);
+  EXPECT_EQ(full["tests"][1]["images"][0]["url"].get<std::string>().rfind("data:image/png;base64,", 0), 0u);
+  const size_t fullSize = full.dump().size();
+  EXPECT_LT(fullSize, 1000000u);
+
+  const nlohmann::json small = prairieLearnResults(r, dir, fullSize / 2);  // half the room: smaller pictures
+  EXPECT_LE(small.dump().size(), fullSize / 2);
+  ASSERT_EQ(small["tests"][1]["images"].size(), 3u);
+  const nlohmann::json none = prairieLearnResults(r, dir, 4000);  // no room at all: left out, and said
+  EXPECT_LE(none.dump().size(), 4000u);
+  EXPECT_FALSE(none["tests"][1].contains("images"));
+  EXPECT_NE(none["message"].get<std::string>().find("left out"), std::string::npos);
+
+  r["exercises"][0]["status"] = "did not build";
+  r["exercises"][0]["checks"][1]["errors"] = {"shadows/pcf.glsl:12:5: error: syntax error"};
+  const nlohmann::json broken = prairieLearnResults(r, dir);
+  EXPECT_EQ(broken["gradable"], false);
+  EXPECT_FALSE(broken.contains("score"));
+  ASSERT_EQ(broken["format_errors"].size(), 1u);
+  EXPECT_EQ(broken["format_errors"][0], "shadows/pcf.glsl:12:5: error: syntax error");
+  std::filesystem::remove_all(dir);
+}
+
+// Moodle: a header row, a user column to map (Username), a numeric grade per item and its
+// feedback column right after it; every row as long as the header; an exercise a student has no
+// result for leaves both its cells empty (a feedback without its grade would overwrite the grade).
 TEST(Gradebooks, MoodleCsvIsOneUserPerRowWithAGradeAndFeedbackPerExercise) {
   const auto rows = parseCsv(moodleCsv(classRows()));
   ASSERT_EQ(rows.size(), 3u);
@@ -114,6 +217,19 @@ TEST(Gradebooks, MoodleCsvIsOneUserPerRowWithAGradeAndFeedbackPerExercise) {
   EXPECT_EQ(rows[2][0], "grace, the second");  // a comma inside a name stays in its field
   EXPECT_TRUE(std::regex_match(rows[1][1], std::regex("[0-9]+(\\.[0-9]+)?"))) << rows[1][1];
   EXPECT_NE(rows[2][2].find("\"negative\""), std::string::npos) << rows[2][2];
+
+  std::vector<ClassRow> more = classRows();
+  ClassRow other = more[0];
+  other.exercise = "shadows/pcss-blocker";
+  other.title = "The blocker search";
+  more.push_back(other);  // ada has it, grace does not
+  const auto wider = parseCsv(moodleCsv(more));
+  ASSERT_EQ(wider[0].size(), 5u);
+  for (size_t c = 1; c < wider[0].size(); c += 2)
+    EXPECT_EQ(wider[0][c + 1], "Feedback: " + wider[0][c]) << "each feedback column beside its grade column";
+  EXPECT_EQ(wider[2][3], "");
+  EXPECT_EQ(wider[2][4], "");
+  EXPECT_NE(wider[1][4], "");
 }
 
 // Canvas: Student, ID, SIS User ID, SIS Login ID, Section first; "Points Possible" as the second
