@@ -141,6 +141,29 @@ TEST(Grade, ARubricsFilesStayInsideAShaderFolder) {
   fs::remove_all(root);
 }
 
+TEST(Grade, ARubricsVisibilityIsOneGradebooksKnow) {
+  const fs::path root = fs::temp_directory_path() / ("shadelab-rubric-visibility-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "shading" / "seen");
+  for (const char* visibility : {"hidden", "secret"}) {
+    std::ofstream(root / "shading" / "seen" / "rubric.json")
+        << R"({"title": "t", "lab": "shading", "files": ["common/specular.glsl"], "configurations": [
+               {"name": "a", "visibility": ")"
+        << visibility << R"(", "checks": [{"name": "x", "metric": "rmse", "against": "solution", "full": 1}]}]})";
+    Exercise ex;
+    const std::string err = loadExercise(root, "shading/seen", ex);
+    if (std::string(visibility) == "hidden") {
+      ASSERT_EQ(err, "");
+      EXPECT_EQ(ex.configurations.at(0).visibility, "hidden");
+    } else {
+      EXPECT_NE(err.find("\"visibility\" must be visible, hidden, after_due_date or after_published"),
+                std::string::npos)
+          << err;
+    }
+  }
+  fs::remove_all(root);
+}
+
 }  // namespace
 
 namespace {
