@@ -1,9 +1,12 @@
 #include "app/grade/exercise_check.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "app/grade/configuration_frames.h"
 #include "app/grade/diagnosis.h"
+#include "app/measure/image.h"
 #include "app/shader/preprocessor.h"
 #include "app/util/contained_path.h"
 #include "app/util/output_files.h"
@@ -38,8 +41,13 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   running_ = false;
   error_.clear();
   result_ = ExerciseResult{};
+  pictures_.clear();
+  ++generation_;
   Exercise ex;
   if (auto e = loadExercise(id, ex); !e.empty()) return error_ = e;
+  const size_t all = ex.configurations.size();
+  std::erase_if(ex.configurations, [](const Configuration& c) { return c.visibility != "visible"; });
+  hidden_ = all - ex.configurations.size();
   exercise_ = std::move(ex);
   studentDirs_ = std::move(studentDirs);
   // The kept solutions (and mistakes) hold only while the built-in shaders and the exercises (rubrics,
@@ -56,6 +64,10 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   result_.total = exercise_.totalPoints();
   result_.passMark = exercise_.passMark;
   lookUpSubmission(exercise_, studentDirs_, result_);
+  if (hidden_ > 0)
+    result_.notes.push_back(std::to_string(hidden_) + (hidden_ == 1 ? " configuration" : " configurations") +
+                            " of this exercise " + (hidden_ == 1 ? "is" : "are") +
+                            " hidden by your teacher: graded by the course's grader, not shown here");
   running_ = !exercise_.configurations.empty();
   return {};
 }
@@ -65,6 +77,7 @@ void ExerciseCheck::step() {
   const size_t i = result_.configurations.size();
   const Configuration& c = exercise_.configurations[i];
   ConfigurationResult out;
+  Pictures picturesOf;
   out.name = c.name;
   out.description = describeConfiguration(c);
   out.visibility = c.visibility;
@@ -87,7 +100,12 @@ void ExerciseCheck::step() {
     const nlohmann::json student = drawStudent(exercise_, c, studentDirs_, kept->second, image, configError);
     if (!configError.empty()) return stop(configError);
     if (auto e = scoreChecks(exercise_, c, kept->second.numbers, student, {}, out); !e.empty()) return stop(e);
+    if (std::any_of(out.checks.begin(), out.checks.end(),
+                    [](const CheckResult& r) { return r.grade != Grade::Full; }) &&
+        !image.rgba.empty() && image.size == kept->second.frame.size)
+      picturesOf = {image, kept->second.frame, diffImage(image, kept->second.frame)};
   }
+  pictures_.push_back(std::move(picturesOf));
   for (auto& r : out.checks) result_.earned += r.earned;
   result_.configurations.push_back(std::move(out));
   running_ = result_.configurations.size() < exercise_.configurations.size();

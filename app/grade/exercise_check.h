@@ -5,6 +5,9 @@
 // solution's side (its frame, truth and the mistakes' frames) is kept for the next Check: after the
 // first one only the student's frames are drawn.
 //
+// A configuration the rubric hides ("visibility" other than visible) is neither drawn nor named
+// here: the grader counts it, and the result's notes say that such checks exist.
+//
 // There is no watchdog here: a shader that never returns stalls the window (in the page the
 // browser stops it and the context is lost, which the page reports). The desktop `shadelab grade`,
 // with its child processes, stays the course's official grader.
@@ -42,6 +45,18 @@ class ExerciseCheck {
   size_t configurationsDone() const { return result_.configurations.size(); }
   size_t configurations() const { return exercise_.configurations.size(); }
   const ExerciseResult& result() const { return result_; }
+  // The exercise as checked here: its hidden configurations left out.
+  const Exercise& exercise() const { return exercise_; }
+  size_t hiddenConfigurations() const { return hidden_; }
+  // For each configuration checked so far that lost points, what the student compares: their
+  // frame, the solution's and the difference amplified (diffImage); empty frames where it lost none
+  // or was not drawn. Indexed as result().configurations.
+  struct Pictures {
+    ImageF student, solution, difference;
+  };
+  const std::vector<Pictures>& pictures() const { return pictures_; }
+  // Bumped by every start(): a panel that made textures of the pictures knows when to make new ones.
+  int generation() const { return generation_; }
   // Why the check stopped without a score: the rubric's or the lab's fault, never the student's.
   const std::string& error() const { return error_; }
   // The grader's lines for what is done so far: errors once each, one line per check with its
@@ -52,6 +67,9 @@ class ExerciseCheck {
   Exercise exercise_;
   std::vector<std::filesystem::path> studentDirs_;
   ExerciseResult result_;
+  std::vector<Pictures> pictures_;
+  size_t hidden_ = 0;
+  int generation_ = 0;
   std::string error_;
   bool running_ = false;
   std::string shadersHash_;                          // the built-in shaders and exercises they were drawn from

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <tuple>
 
+#include "app/host/configure.h"
 #include "app/host/lab_host.h"
 #include "app/ui/platform.h"
 #include "app/ui/shader_editor.h"
@@ -51,11 +52,121 @@ StatusLine openStarter(const std::string& id, LabHost& host, ShaderEditor& edito
 
 const ImVec4 kPass{0.45f, 0.85f, 0.45f, 1.0f}, kPartial{0.95f, 0.8f, 0.3f, 1.0f}, kFail{1.0f, 0.45f, 0.4f, 1.0f};
 
+gl::Texture2D textureOf(const ImageF& image) {
+  if (image.rgba.empty()) return {};
+  const int w = image.size.x, h = image.size.y;
+  std::vector<uint8_t> bytes(size_t(w) * size_t(h) * 4);
+  for (int y = 0; y < h; ++y)  // rows bottom-up, as GL numbers them; opaque, as the viewport draws them
+    for (size_t i = 0; i < size_t(w) * 4; ++i) {
+      const float v = i % 4 == 3 ? 1.0f : image.rgba[size_t(h - 1 - y) * size_t(w) * 4 + i];
+      bytes[size_t(y) * size_t(w) * 4 + i] =
+          uint8_t(std::lround(std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) * 255.0f : 255.0f));
+    }
+  gl::SamplerState sampler;
+  sampler.minFilter = GL_LINEAR;
+  sampler.wrapS = sampler.wrapT = GL_CLAMP_TO_EDGE;
+  return gl::Texture2D::fromRgba8(image.size, bytes.data(), sampler, false);
+}
+
+ImTextureID imguiTexture(const gl::Texture2D& t) { return reinterpret_cast<ImTextureID>(intptr_t(t.id())); }
+
+// The last Check's pictures as textures, made once per Check.
+void makePictures(ExercisePanel& panel) {
+  const ExerciseCheck& check = panel.check;
+  if (panel.picturesOf == check.generation() && panel.pictures.size() == check.pictures().size()) return;
+  panel.pictures.clear();
+  for (auto& p : check.pictures())
+    panel.pictures.push_back({textureOf(p.student), textureOf(p.solution), textureOf(p.difference)});
+  panel.wipes.assign(panel.pictures.size(), -1.0f);  // < 0: the wipe folded away
+  panel.picturesOf = check.generation();
+}
+
+// Configuration `i` lost points: the student's frame, the solution's and their difference side by
+// side (a click puts the configuration in the viewport), and on demand one picture that wipes from
+// the student's frame (left of the line) to the solution's (right of it) as its slider moves.
+void drawPictures(ExercisePanel& panel, LabHost& host, StatusLine& status, size_t i) {
+  if (i >= panel.pictures.size()) return;
+  auto& [student, solution, difference] = panel.pictures[i];
+  if (!student || !solution) return;
+  ImGui::PushID(int(i));
+  const float width = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+  const float aspect = float(student.size().y) / float(std::max(student.size().x, 1));
+  const char* captions[] = {"yours", "solution", "difference x4"};
+  const gl::Texture2D* textures[] = {&student, &solution, &difference};
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) ImGui::SameLine();
+    ImGui::BeginGroup();
+    ImGui::PushID(k);
+    if (ImGui::ImageButton(imguiTexture(*textures[k]), {width, width * aspect}, {0, 1}, {1, 0}, 0))
+      status = showConfiguration(panel, host, int(i));
+    ImGui::PopID();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Put this configuration in the viewport");
+    ImGui::TextDisabled("%s", captions[k]);
+    ImGui::EndGroup();
+  }
+  float& wipe = panel.wipes[i];
+  bool comparing = wipe >= 0.0f;
+  if (ImGui::Checkbox("Compare yours and the solution's", &comparing)) wipe = comparing ? 0.5f : -1.0f;
+  if (comparing) {
+    const float full = ImGui::GetContentRegionAvail().x, height = full * aspect, s = std::clamp(wipe, 0.0f, 1.0f);
+    const ImVec2 o = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddImage(imguiTexture(student), o, {o.x + full * s, o.y + height}, {0, 1}, {s, 0});
+    draw->AddImage(imguiTexture(solution), {o.x + full * s, o.y}, {o.x + full, o.y + height}, {s, 1}, {1, 0});
+    draw->AddLine({o.x + full * s, o.y}, {o.x + full * s, o.y + height}, IM_COL32(255, 220, 0, 255), 2.0f);
+    ImGui::Dummy({full, height});
+    ImGui::SetNextItemWidth(-1);
+    ImGui::SliderFloat("##wipe", &wipe, 0.0f, 1.0f, "yours  <  >  solution");
+  }
+  ImGui::PopID();
+}
+
 }  // namespace
 
 void ExercisePanel::select(const std::string& id) {
   selected = id;
   statement = readWholeFile(exerciseRootOf(id) / id / "statement.md");
+  configurations.clear();
+  files.clear();
+  shown = -1;
+  Exercise ex;
+  if (loadExercise(id, ex).empty()) {
+    files = ex.files;
+    for (auto& c : ex.configurations)
+      if (c.visibility == "visible") configurations.push_back(c.name);
+  }
+}
+
+StatusLine openExercise(ExercisePanel& panel, LabHost& host, const std::string& id) {
+  panel.select(id);
+  if (panel.configurations.empty()) {
+    Exercise ex;
+    if (auto e = loadExercise(id, ex); !e.empty()) return StatusLine::failed(e);
+    if (host.lab().id() != ex.lab)
+      if (auto e = host.selectLab(ex.lab); !e.empty()) return StatusLine::failed(e);
+    return StatusLine::done("opened " + id);
+  }
+  return showConfiguration(panel, host, 0);
+}
+
+StatusLine showConfiguration(ExercisePanel& panel, LabHost& host, int index) {
+  Exercise ex;
+  if (auto e = loadExercise(panel.selected, ex); !e.empty()) return StatusLine::failed(e);
+  std::erase_if(ex.configurations, [](const Configuration& c) { return c.visibility != "visible"; });
+  if (index < 0 || index >= int(ex.configurations.size())) return StatusLine::failed("no such configuration");
+  const Configuration& c = ex.configurations[size_t(index)];
+  if (host.lab().id() != ex.lab)
+    if (auto e = host.selectLab(ex.lab); !e.empty()) return StatusLine::failed(e);
+  const std::string scene = c.scene.empty() ? std::string(host.lab().defaultScene()) : c.scene;
+  if (host.sceneId() != scene)
+    if (auto e = host.selectScene(scene); !e.empty()) return StatusLine::failed(e);
+  host.resetParams();
+  host.resetCamera();
+  std::vector<std::string> sets;
+  for (auto& [key, value] : c.settings) sets.push_back(key + "=" + value);
+  if (auto e = configureHost(host, {}, {}, sets, {}, c.camera); !e.empty()) return StatusLine::failed(e);
+  panel.shown = index;
+  return StatusLine::done(panel.selected + ": '" + c.name + "' in the viewport, drawn with your files");
 }
 
 StatusLine openCourseFolder(ExercisePanel& panel, const fs::path& folder) {
@@ -116,6 +227,7 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     ImGui::SetScrollHereY(0.0f);
     panel.reveal = panel.check.running() || panel.checkRequested;
   }
+  editor.exerciseFiles = panel.files;
   const std::string lab(host.lab().id());
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##exercise", panel.selected.empty() ? "Pick an exercise" : panel.selected.c_str())) {
@@ -127,7 +239,7 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
         ImGui::TextDisabled("%s", panel.headers[i].c_str());
       }
       if (!thisLab) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-      if (ImGui::Selectable(("  " + id).c_str(), id == panel.selected)) panel.select(id);
+      if (ImGui::Selectable(("  " + id).c_str(), id == panel.selected)) status = openExercise(panel, host, id);
       if (!thisLab) ImGui::PopStyleColor();
     }
     ImGui::EndCombo();
@@ -155,6 +267,18 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
         "Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
         "solution's and the truth, here in the window.",
         panel.selected.c_str());
+  if (!panel.configurations.empty()) {  // the rubric's configurations, each drawn live with the student's files
+    ImGui::SetNextItemWidth(-1);
+    const std::string label = panel.shown >= 0 && panel.shown < int(panel.configurations.size())
+                                  ? "Configuration: " + panel.configurations[size_t(panel.shown)]
+                                  : std::string("Show a configuration...");
+    if (ImGui::BeginCombo("##configuration", label.c_str())) {
+      for (size_t i = 0; i < panel.configurations.size(); ++i)
+        if (ImGui::Selectable(panel.configurations[i].c_str(), int(i) == panel.shown))
+          status = showConfiguration(panel, host, int(i));
+      ImGui::EndCombo();
+    }
+  }
   if (panel.showStatement) {
     ImGui::BeginChild("statement", {0, 220 * ImGui::GetIO().FontGlobalScale}, true);
     ImGui::PushTextWrapPos(0);
@@ -186,8 +310,13 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
                        r.total, r.percent(), r.passMark, r.passed() ? "passed" : "not passed");
   if (check.finished() && !r.diagnosis.empty()) ImGui::TextColored(kFail, "diagnosis: %s", r.diagnosis.c_str());
   for (auto& f : r.missingFiles) ImGui::TextColored(kFail, "%s is not in your folder: open the starter.", f.c_str());
+  makePictures(panel);
   std::vector<std::string> said;  // each build error once: every configuration compiles the same file
-  for (auto& c : r.configurations) {
+  for (size_t i = 0; i < r.configurations.size(); ++i) {
+    const ConfigurationResult& c = r.configurations[i];
+    ImGui::Separator();
+    ImGui::TextUnformatted(c.name.c_str());
+    drawPictures(panel, host, status, i);
     for (auto& e : c.errors)
       if (std::find(said.begin(), said.end(), errorWithoutProgram(e)) == said.end()) {
         said.push_back(errorWithoutProgram(e));
@@ -195,8 +324,8 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
       }
     for (auto& k : c.checks) {
       const ImVec4 colour = k.grade == Grade::Full ? kPass : k.grade == Grade::Partial ? kPartial : kFail;
-      ImGui::TextColored(colour, "%-7s %s: %s  %.3g/%.3g", gradeName(k.grade), c.name.c_str(), k.check.name.c_str(),
-                         k.earned, k.check.points);
+      ImGui::TextColored(colour, "%-7s %s  %.3g/%.3g", gradeName(k.grade), k.check.name.c_str(), k.earned,
+                         k.check.points);
       ImGui::Indent();
       if (std::isfinite(k.value))
         ImGui::TextDisabled("%s %.4g, full marks at <= %.4g", k.check.metric.c_str(), k.value, k.fullBound);
@@ -225,6 +354,12 @@ bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) 
   panel.check.step();
   if (!panel.check.running()) {  // finished: the grader's lines on the terminal (the page's console) too
     for (auto& line : panel.check.lines()) std::printf("%s\n", line.c_str());
+    const auto& pictures = panel.check.pictures();
+    for (size_t i = 0; i < pictures.size(); ++i)  // what the section shows beside the lines
+      if (!pictures[i].student.rgba.empty())
+        std::printf("pictures of '%s': yours, the solution's, the difference (%dx%d)\n",
+                    panel.check.result().configurations[i].name.c_str(), pictures[i].student.size.x,
+                    pictures[i].student.size.y);
     if (!panel.check.error().empty()) std::printf("check: %s\n", panel.check.error().c_str());
     std::fflush(stdout);
   }

@@ -3,10 +3,12 @@
 // which runs the exercise's rubric in place (grade/exercise_check.h) and shows the grader's lines:
 // one per check, PASS / PARTIAL / FAIL, the hint under each that lost points, and the total.
 #pragma once
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "app/gl/texture.h"
 #include "app/grade/exercise_check.h"
 #include "app/ui/status_line.h"
 
@@ -19,15 +21,30 @@ struct ExercisePanel {
   std::vector<std::string> ids;      // every exercise, read once, grouped by lab, then level
   std::vector<std::string> headers;  // "shadows: from scratch" above the first of each group, else ""
   bool listed = false;
-  std::string selected;   // the exercise shown ("" = none)
-  std::string statement;  // its statement.md
+  std::string selected;                     // the exercise shown ("" = none)
+  std::string statement;                    // its statement.md
+  std::vector<std::string> configurations;  // its rubric's configurations a student sees (hidden ones left out)
+  std::vector<std::string> files;           // the files the student writes
+  int shown = -1;                           // the one in the viewport, or -1
   bool showStatement = false;
   bool checkRequested = false;  // --check / the link's "check": press Check on the next frame
   bool reveal = false;          // a Check started: the panel scrolls to its results until it ends
   ExerciseCheck check;
+  // The last Check's pictures as textures, per configuration that lost points: the student's frame,
+  // the solution's, the difference; and where each one's wipe between the first two stands.
+  std::vector<std::array<gl::Texture2D, 3>> pictures;
+  std::vector<float> wipes;
+  int picturesOf = -1;  // the check's generation they were made from
 
   void select(const std::string& id);
 };
+
+// Opens exercise `id` where it is done: selected in the section, its lab on screen with the first
+// configuration's scene, settings and camera. Returns the Messages panel's line.
+StatusLine openExercise(ExercisePanel& panel, LabHost& host, const std::string& id);
+// Puts configuration `index` of the selected exercise in the viewport, as the grader draws it (the
+// lab's defaults, then the configuration's scene, settings and camera); the student's files draw it.
+StatusLine showConfiguration(ExercisePanel& panel, LabHost& host, int index);
 
 // A course folder dropped on the window (or a zip on the page, unpacked): its exercises listed
 // first, its first one selected. Returns the line for the Messages panel: what opened, or why not.

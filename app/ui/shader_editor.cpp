@@ -88,14 +88,19 @@ void drawEditableFiles(ShaderEditor& editor, LabHost& host) {
   for (auto& p : host.lab().activePrograms())
     for (auto& rel : p->relPaths()) files.insert(rel);
   ImGui::TextUnformatted("Edit (saved into your folder, the lab's files stay as they are):");
-  for (auto& rel : files) {
+  std::vector<std::string> order = editor.exerciseFiles;
+  for (auto& rel : files)
+    if (std::find(order.begin(), order.end(), rel) == order.end()) order.push_back(rel);
+  for (size_t i = 0; i < order.size(); ++i) {
+    const std::string& rel = order[i];
     std::error_code ec;
     const fs::path name = containedName(rel);
     const bool mine = !name.empty() && fs::exists(editor.folder / name, ec);
+    const bool exercise = i < editor.exerciseFiles.size();
     ImGui::PushID(rel.c_str());
     if (ImGui::SmallButton("Edit")) editor.open(host, rel);
     ImGui::SameLine();
-    ImGui::Text("%s%s", rel.c_str(), mine ? "  (yours)" : "");
+    ImGui::Text("%s%s%s", rel.c_str(), mine ? "  (yours)" : "", exercise ? "  (the exercise)" : "");
     ImGui::PopID();
   }
 }

@@ -7,6 +7,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "app/ui/status_line.h"
 
@@ -15,17 +16,19 @@ namespace shadelab {
 class LabHost;
 
 struct ShaderEditor {
-  std::filesystem::path folder;  // where edits are saved; empty: editing is off (no --shaders folder)
-  std::string rel;               // the file open in the editor ("shading/shade.frag"); "" = closed
-  std::string text;              // as edited
-  std::string saved;             // as last saved (or as opened)
-  double lastEdit = -1.0;        // seconds (ImGui's clock) of the last unsaved keystroke
+  std::filesystem::path folder;            // where edits are saved; empty: editing is off (no --shaders folder)
+  std::string rel;                         // the file open in the editor ("shading/shade.frag"); "" = closed
+  std::string text;                        // as edited
+  std::string saved;                       // as last saved (or as opened)
+  double lastEdit = -1.0;                  // seconds (ImGui's clock) of the last unsaved keystroke
+  std::vector<std::string> exerciseFiles;  // the open exercise's files: listed first, whatever the lab draws
 
   // Opens `relPath` with the text that serves it now (the student's copy, or the lab's own file).
   void open(LabHost& host, const std::string& relPath);
 };
 
-// The list of the active programs' files with an Edit button each, for the Shaders panel.
+// The list of the active programs' files with an Edit button each, for the Shaders panel: the open
+// exercise's files first.
 void drawEditableFiles(ShaderEditor& editor, LabHost& host);
 // The editor's window, when a file is open; `status` receives what happened (saved, removed, ...).
 void drawShaderEditor(ShaderEditor& editor, LabHost& host, StatusLine& status);

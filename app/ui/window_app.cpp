@@ -183,6 +183,13 @@ void viewportImage(AppState& app) {
 
 void leftPanel(AppState& app) {
   LabHost& host = *app.host;
+  // An exercise open: its section first, where a student finds it without scrolling.
+  const bool exerciseFirst = !app.exercises.selected.empty();
+  if (exerciseFirst) {
+    if (ImGui::CollapsingHeader("Exercises", ImGuiTreeNodeFlags_DefaultOpen))
+      drawExercisePanel(app.exercises, host, app.editor, app.message);
+    ImGui::Separator();
+  }
   std::vector<std::string> ids = menuLabIds();
   if (std::find(ids.begin(), ids.end(), host.lab().id()) == ids.end())
     ids.emplace_back(host.lab().id());  // --lab minimal
@@ -253,7 +260,7 @@ void leftPanel(AppState& app) {
     ImGui::EndCombo();
   }
   ImGui::Separator();
-  if (ImGui::CollapsingHeader("Exercises", app.exercises.selected.empty() ? 0 : ImGuiTreeNodeFlags_DefaultOpen))
+  if (!exerciseFirst && ImGui::CollapsingHeader("Exercises"))
     drawExercisePanel(app.exercises, host, app.editor, app.message);
 }
 
@@ -370,19 +377,21 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
     if (!e.empty()) app.message = StatusLine::failed(app.message.text + (app.message.empty() ? "" : "\n") + e);
   };
   note(wopt.message);
+  // --exercise (the page's link): the exercise's lab on screen with its first configuration, the
+  // Exercises section open on it; a --lab, --scene, --set or preset given beside it goes over that.
+  if (!options.exercise.empty()) {
+    Exercise ex;
+    if (auto e = loadExercise(options.exercise, ex); !e.empty())
+      note(e);
+    else if (const StatusLine opened = openExercise(app.exercises, host, ex.id); opened.problem)
+      note(opened.text);
+  }
   if (!options.preset.empty()) app.message = loadPreset(host, options.preset);  // "loaded ...", or why not
-  if (!options.lab.empty()) note(host.selectLab(options.lab));
+  if (!options.lab.empty() && options.lab != host.lab().id()) note(host.selectLab(options.lab));
   if (!options.scene.empty()) note(host.selectScene(options.scene));
   for (auto& s : options.sets) note(host.set(s));
   for (auto& a : options.actions) note(host.runAction(a));
   note(applyCamera(host, options.camera));
-  if (!options.exercise.empty()) {  // --exercise (the page's link): the Exercises section opens on it
-    Exercise ex;
-    if (auto e = loadExercise(options.exercise, ex); !e.empty())
-      note(e);
-    else
-      app.exercises.select(ex.id);
-  }
   if (!app.message.empty()) std::fprintf(stderr, "shadelab: %s\n", app.message.text.c_str());
 }
 

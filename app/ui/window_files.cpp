@@ -15,14 +15,31 @@ namespace fs = std::filesystem;
 
 namespace shadelab {
 
+namespace {
+
+// The state that reproduces the lab's frame at `size`, and the command that does.
+nlohmann::json framePreset(LabHost& host, glm::ivec2 size, const fs::path& json) {
+  nlohmann::json state = host.stateJson();
+  state["size"] = {size.x, size.y};
+  state["reproduce"] = "shadelab render --preset " + json.string() + " --out again.png";  // the preset carries the size
+  return state;
+}
+
+}  // namespace
+
+std::string saveScreenshotPreset(LabHost& host, const std::string& png) {
+  const fs::path json = fs::path(png).replace_extension(".json");
+  std::error_code ec;
+  if (fs::exists(json, ec)) return json.string() + " is there already: not overwritten";
+  const glm::ivec2 size = host.target() ? host.target()->size() : glm::ivec2(1280, 720);
+  return writeTextFile(json.string(), framePreset(host, size, json).dump(2) + "\n");
+}
+
 StatusLine saveScreenshot(LabHost& host, glm::ivec2 size) {
   const fs::path png = freshName("screenshots", std::string(host.lab().id()), ".png");
   if (auto err = writePng(png.string(), host.readImage()); !err.empty()) return StatusLine::failed(err);
-  nlohmann::json state = host.stateJson();
-  state["size"] = {size.x, size.y};
-  const std::string cmd = "shadelab render --preset " + fs::path(png).replace_extension(".json").string() +
-                          " --out again.png";  // the preset carries the size
-  state["reproduce"] = cmd;
+  const nlohmann::json state = framePreset(host, size, fs::path(png).replace_extension(".json"));
+  const std::string cmd = state["reproduce"];
   if (auto err = writeTextFile(fs::path(png).replace_extension(".json").string(), state.dump(2) + "\n"); !err.empty())
     return StatusLine::failed(err);
   offerDownload(png.string());

@@ -17,5 +17,8 @@ StatusLine loadPreset(LabHost& host, const std::string& path);
 std::vector<std::string> listPresets();
 // The window's default framebuffer, UI included. Returns "" or an error.
 std::string saveWindowImage(const std::string& path, glm::ivec2 size);
+// The frame's preset beside a screenshot saved as `png` (its name with .json), as F12 writes one:
+// what `shadelab render --preset` draws the lab's frame again from. A file already there is kept.
+std::string saveScreenshotPreset(LabHost& host, const std::string& png);
 
 }  // namespace shadelab

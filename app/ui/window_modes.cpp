@@ -83,11 +83,14 @@ class ExitAfter final : public WindowMode {
   void afterUi(FrameEvent& e, glm::ivec2 framebuffer) override {
     if (e.frame + 1 < frames_) return;
     e.app.responsiveness.report();
-    if (!screenshot_.empty())
+    if (!screenshot_.empty()) {  // the window as it is, and beside it the preset of the lab's frame (as F12)
       if (auto err = saveWindowImage(screenshot_, framebuffer); !err.empty()) {
         std::fprintf(stderr, "shadelab: %s\n", err.c_str());
         exitCode = 1;
       }
+      if (auto err = saveScreenshotPreset(e.host, screenshot_); !err.empty())
+        std::fprintf(stderr, "shadelab: the preset beside the screenshot: %s\n", err.c_str());
+    }
     wantsClose = true;
   }
 

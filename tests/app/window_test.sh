@@ -20,6 +20,28 @@ grep -q "shade.frag:6:[0-9]*: error:" "$out/broken.log"
 "$check" "$out/window_broken.png" --min-stddev 0.05 --min-colors 50
 echo "window test passed"
 
+# The student's loop: --exercise opens the exercise's lab on its first configuration (the preset
+# written beside the screenshot says which), and Check on the starter shows, for every
+# configuration that lost points, the student's frame, the solution's and their difference.
+student="$out/exercise_student"
+rm -rf "$student" "$out/window_exercise.json" && mkdir -p "$student"
+cp -r "$(dirname "$0")/../../exercises/shadows/shadow-lookup/starter/." "$student/"
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --shaders "$student" --exercise shadows/shadow-lookup --check \
+  --exit-after 300 --screenshot "$out/window_exercise.png" >"$out/exercise.log" 2>&1
+python3 - "$out/window_exercise.json" <<'PY' || { cat "$out/exercise.log"; exit 1; }
+import json, sys
+state = json.load(open(sys.argv[1]))
+assert state["lab"] == "shadows", "the exercise's lab: " + state["lab"]
+assert state["params"]["view"] == "visibility", "its first configuration's view: " + str(state["params"]["view"])
+PY
+failing=$(grep -cE "^  (FAIL|PARTIAL)" "$out/exercise.log" || true)
+configs=$(grep -E "^  (FAIL|PARTIAL)" "$out/exercise.log" | sed -E 's/^  (FAIL|PARTIAL) +([^:]*):.*/\2/' | sort -u | wc -l)
+shown=$(grep -c "^pictures of '" "$out/exercise.log" || true)
+[ "$failing" -gt 0 ] && [ "$shown" -eq "$configs" ] ||
+  { cat "$out/exercise.log"; echo "Check showed pictures for $shown of $configs failing configurations"; exit 1; }
+"$check" "$out/window_exercise.png" --min-stddev 0.05 --min-colors 200
+echo "exercise opened where it is done, Check with its pictures passed ($shown configurations)"
+
 # A student's include that leaves the shader folders: the window runs on, names the rule, and
 # prints nothing of the file it refused to read.
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --exit-after 4 \

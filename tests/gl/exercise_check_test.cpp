@@ -4,10 +4,14 @@
 
 #include <unistd.h>
 
+#include <cstring>
 #include <fstream>
 
 #include "app/grade/exercise_check.h"
+#include "app/measure/image.h"
 #include "app/measure/report.h"
+
+#include <nlohmann/json.hpp>
 #include "app/util/read_file.h"
 #include "gl_test.h"
 
@@ -66,6 +70,48 @@ TEST_F(Check, TheStarterScoresNothingAndEveryCheckSaysWhy) {
     for (auto& k : c.checks)
       if (k.grade != Grade::Full) EXPECT_FALSE(k.message.empty()) << c.name << ": " << k.check.name;
   EXPECT_NE(check.lines().back().find("NOT PASSED"), std::string::npos) << check.lines().back();
+  // What Check shows beside the lines: per configuration that lost points, the student's frame, the
+  // solution's and their difference, all of one size and not the same picture.
+  ASSERT_EQ(check.pictures().size(), r.configurations.size());
+  for (size_t i = 0; i < r.configurations.size(); ++i) {
+    const auto& p = check.pictures()[i];
+    ASSERT_FALSE(p.student.rgba.empty()) << r.configurations[i].name;
+    EXPECT_EQ(p.solution.size, p.student.size);
+    EXPECT_EQ(p.difference.size, p.student.size);
+    EXPECT_GT(compareImages(p.student, p.solution).rmse, 0.0) << r.configurations[i].name;
+  }
+}
+
+// A configuration the rubric hides is graded by the course's grader, not drawn or named here; the
+// result says that hidden checks exist.
+TEST_F(Check, AHiddenConfigurationIsNeitherDrawnNorNamed) {
+  const fs::path course = student.parent_path() / ("shadelab_hidden_course_" + std::to_string(::getpid()));
+  fs::remove_all(course);
+  fs::create_directories(course / "shading");
+  fs::copy(builtinExercisesRoot() / kExercise, course / "shading" / "hidden-blinn", fs::copy_options::recursive);
+  const fs::path rubricFile = course / "shading" / "hidden-blinn" / "rubric.json";
+  nlohmann::json rubric = nlohmann::json::parse(readWholeFile(rubricFile));
+  rubric["configurations"][1]["visibility"] = "hidden";
+  const std::string hiddenName = rubric["configurations"][1]["name"];
+  std::ofstream(rubricFile, std::ios::trunc) << rubric.dump(2);
+  const fs::path starter = course / "shading" / "hidden-blinn" / "starter" / kFile;
+  std::string text = readWholeFile(starter);  // its TODO region names the exercise
+  for (size_t at; (at = text.find(kExercise)) != std::string::npos;)
+    text.replace(at, std::strlen(kExercise), "shading/hidden-blinn");
+  std::ofstream(starter, std::ios::trunc) << text;
+  addCourseFolder(course);
+  submit(text);
+  ExerciseCheck check;
+  ASSERT_EQ(check.start("shading/hidden-blinn", {student}), "");
+  while (check.running()) check.step();
+  EXPECT_EQ(check.hiddenConfigurations(), 1u);
+  EXPECT_EQ(check.configurations(), rubric["configurations"].size() - 1);
+  for (auto& c : check.result().configurations) EXPECT_NE(c.name, hiddenName);
+  for (auto& line : check.lines()) EXPECT_EQ(line.find(hiddenName), std::string::npos) << line;
+  bool said = false;
+  for (auto& n : check.result().notes) said |= n.find("hidden by your teacher") != std::string::npos;
+  EXPECT_TRUE(said);
+  fs::remove_all(course);
 }
 
 // The classic mistake the hint names: H not normalised turns the highlight into a white disc.
