@@ -385,6 +385,8 @@ WindowSession::WindowSession(GLFWwindow* window, const Options& options, const W
       note(e);
     else if (const StatusLine opened = openExercise(app.exercises, host, ex.id); opened.problem)
       note(opened.text);
+    else
+      std::printf("exercise %s opened on the %s lab: %s\n", ex.id.c_str(), ex.lab.c_str(), opened.text.c_str());
   }
   if (!options.preset.empty()) app.message = loadPreset(host, options.preset);  // "loaded ...", or why not
   if (!options.lab.empty() && options.lab != host.lab().id()) note(host.selectLab(options.lab));

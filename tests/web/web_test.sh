@@ -158,6 +158,14 @@ terminal_diagnosis=$(grep -m1 -o "diagnosis: .*" "$out/squared-grade.log" || tru
 grep -q "drawn with shininess" <<<"$terminal_diagnosis" && [ "$page_diagnosis" = "$terminal_diagnosis" ] ||
   { echo "page:     $page_diagnosis"; echo "terminal: $terminal_diagnosis"; echo "the page's diagnosis is not the grader's"; exit 1; }
 echo "the page's Check says the grader's diagnosis: ${page_diagnosis:0:100}..."
+grep -q "pictures of 'per-fragment': yours, the solution's, the difference" "$out/check-squared.log" ||
+  { echo "the page's Check showed no pictures"; exit 1; }
+
+# A link with only the exercise opens the page on the exercise's lab and its first configuration.
+drive exercise-link "exercise=surface/normal-map" --wait-console "exercise surface/normal-map opened"
+grep -q "exercise surface/normal-map opened on the surface lab" "$out/exercise-link.log" ||
+  { cat "$out/exercise-link.log"; echo "the exercise's link did not open its lab"; exit 1; }
+echo "a link with only exercise= opens its lab"
 # One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
 # each starter checked in the page, told it is the starter, not passed.
 for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
