@@ -1,6 +1,7 @@
 #include "app/grade/exercise_check.h"
 
 #include <algorithm>
+#include <ctime>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,30 @@ std::string copyStarter(const Exercise& ex, const fs::path& folder, std::vector<
     copied.push_back(file);
   }
   return {};
+}
+
+std::string resetToStarter(const Exercise& ex, const fs::path& folder, std::vector<std::string>& kept) {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&now, &tm);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "kept-%Y%m%d-%H%M%S", &tm);
+  for (auto& file : ex.files) {
+    const fs::path name = containedName(file);
+    if (name.empty())
+      return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
+    const fs::path mine = folder / name;
+    std::error_code ec;
+    if (!fs::exists(mine, ec)) continue;
+    fs::path copy = mine;
+    copy.replace_filename(mine.stem().string() + "." + stamp + mine.extension().string());
+    if (fs::exists(copy, ec)) return copy.string() + " is there already: try again in a second";
+    fs::rename(mine, copy, ec);
+    if (ec) return mine.string() + ": cannot be set aside (" + ec.message() + ")";
+    kept.push_back(fs::relative(copy, folder, ec).string());
+  }
+  std::vector<std::string> copied, unchanged;
+  return copyStarter(ex, folder, copied, unchanged);
 }
 
 std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> studentDirs) {

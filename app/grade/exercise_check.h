@@ -28,6 +28,11 @@ namespace shadelab {
 std::string copyStarter(const Exercise& ex, const std::filesystem::path& folder, std::vector<std::string>& copied,
                         std::vector<std::string>& kept);
 
+// The student's files of `ex` set back to the starter's. Each file of theirs is first renamed to a
+// dated copy beside it ("shadows/pcf.kept-20261128-172005.glsl"), never deleted; `kept` receives
+// the copies' names. "" or why not.
+std::string resetToStarter(const Exercise& ex, const std::filesystem::path& folder, std::vector<std::string>& kept);
+
 class ExerciseCheck {
  public:
   // Starts checking exercise `id` with `studentDirs` searched before the built-in shaders. "" or

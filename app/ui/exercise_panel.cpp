@@ -50,6 +50,20 @@ StatusLine openStarter(const std::string& id, LabHost& host, ShaderEditor& edito
   return StatusLine::done(status);
 }
 
+// The student's files set back to the starter's, theirs kept beside them as dated copies.
+StatusLine resetStarter(const std::string& id, LabHost& host, ShaderEditor& editor) {
+  Exercise ex;
+  if (auto e = loadExercise(id, ex); !e.empty()) return StatusLine::failed(e);
+  std::vector<std::string> kept;
+  if (auto e = resetToStarter(ex, editor.folder, kept); !e.empty()) return StatusLine::failed(e);
+  persistStudentFiles();
+  host.pollChanges();
+  editor.open(host, ex.files.front());
+  std::string text = "reset " + id + " to the starter";
+  for (size_t i = 0; i < kept.size(); ++i) text += (i ? ", " : "; yours kept as ") + kept[i];
+  return StatusLine::done(text);
+}
+
 const ImVec4 kPass{0.45f, 0.85f, 0.45f, 1.0f}, kPartial{0.95f, 0.8f, 0.3f, 1.0f}, kFail{1.0f, 0.45f, 0.4f, 1.0f};
 
 gl::Texture2D textureOf(const ImageF& image) {
@@ -228,6 +242,10 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     panel.reveal = panel.check.running() || panel.checkRequested;
   }
   editor.exerciseFiles = panel.files;
+  if (panel.progressFolder != editor.folder) {
+    panel.progressFolder = editor.folder;
+    panel.progress = editor.folder.empty() ? Progress{} : readProgress(editor.folder);
+  }
   const std::string lab(host.lab().id());
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##exercise", panel.selected.empty() ? "Pick an exercise" : panel.selected.c_str())) {
@@ -239,7 +257,11 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
         ImGui::TextDisabled("%s", panel.headers[i].c_str());
       }
       if (!thisLab) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-      if (ImGui::Selectable(("  " + id).c_str(), id == panel.selected)) status = openExercise(panel, host, id);
+      std::string label = "  " + id;
+      if (auto p = panel.progress.find(id); p != panel.progress.end())
+        label +=
+            "   " + std::to_string(int(std::lround(p->second.percent))) + "%" + (p->second.passed ? ", passed" : "");
+      if (ImGui::Selectable(label.c_str(), id == panel.selected)) status = openExercise(panel, host, id);
       if (!thisLab) ImGui::PopStyleColor();
     }
     ImGui::EndCombo();
@@ -253,8 +275,21 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   }
   if (editor.folder.empty()) {
     ImGui::TextDisabled("Start with --shaders DIR to work on an exercise here.");
-  } else if (ImGui::Button("Open the starter")) {
-    status = openStarter(panel.selected, host, editor);
+  } else {
+    if (ImGui::Button("Open the starter")) status = openStarter(panel.selected, host, editor);
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) ImGui::OpenPopup("reset");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Start again from the starter; your file is kept as a dated copy");
+    if (ImGui::BeginPopup("reset")) {
+      ImGui::TextUnformatted("Set your files back to the starter?\nEach is kept beside it as a dated copy.");
+      if (ImGui::Button("Reset to the starter")) {
+        status = resetStarter(panel.selected, host, editor);
+        ImGui::CloseCurrentPopup();
+      }
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+      ImGui::EndPopup();
+    }
   }
   ImGui::SameLine();
   ImGui::Checkbox("Statement", &panel.showStatement);
@@ -267,6 +302,9 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
         "Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
         "solution's and the truth, here in the window.",
         panel.selected.c_str());
+  if (auto p = panel.progress.find(panel.selected); p != panel.progress.end())
+    ImGui::TextDisabled("Last Check %s: %.1f%%, %s", p->second.when.c_str(), p->second.percent,
+                        p->second.passed ? "passed" : "not passed");
   if (!panel.configurations.empty()) {  // the rubric's configurations, each drawn live with the student's files
     ImGui::SetNextItemWidth(-1);
     const std::string label = panel.shown >= 0 && panel.shown < int(panel.configurations.size())
@@ -352,6 +390,12 @@ bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) 
   }
   if (!panel.check.running()) return false;
   panel.check.step();
+  if (!panel.check.running() && panel.check.finished() && !panel.progressFolder.empty()) {  // kept for next time
+    const ExerciseResult& r = panel.check.result();
+    if (auto e = recordProgress(panel.progressFolder, panel.progress, r.id, r.percent(), r.passed()); !e.empty())
+      status = StatusLine::failed("progress: " + e);
+    persistStudentFiles();
+  }
   if (!panel.check.running()) {  // finished: the grader's lines on the terminal (the page's console) too
     for (auto& line : panel.check.lines()) std::printf("%s\n", line.c_str());
     const auto& pictures = panel.check.pictures();

@@ -10,6 +10,7 @@
 
 #include "app/gl/texture.h"
 #include "app/grade/exercise_check.h"
+#include "app/grade/progress.h"
 #include "app/ui/status_line.h"
 
 namespace shadelab {
@@ -35,6 +36,9 @@ struct ExercisePanel {
   std::vector<std::array<gl::Texture2D, 3>> pictures;
   std::vector<float> wipes;
   int picturesOf = -1;  // the check's generation they were made from
+  // The student's progress (grade/progress.h), read from their folder once it is known.
+  Progress progress;
+  std::filesystem::path progressFolder;
 
   void select(const std::string& id);
 };
