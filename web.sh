@@ -55,7 +55,7 @@ export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
   -DIMGUI_SOURCE_DIR="$PWD/$imgui" -DLZ4_SOURCE_DIR="$PWD/$src/lz4" >/dev/null
 cmake -S . -B "$build" -DSHADELAB_COURSE="$course" >/dev/null  # the course this build carries, or none
 cmake --build "$build"
-site=(index.html isolation.js course.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js)
+site=(index.html isolation.js course.js exercise.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js)
 
 case $mode in
   build) echo "web.sh: built $build/index.html" ;;

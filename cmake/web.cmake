@@ -75,7 +75,7 @@ file(GLOB_RECURSE WEB_PRELOADED CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/shaders/* 
 list(APPEND WEB_PRELOADED ${WEB_COURSE_FILES})
 set_property(TARGET shadelab APPEND PROPERTY LINK_DEPENDS ${WEB_PRELOADED})
 # The page around it: copied whenever it changes, whether or not the program was rebuilt.
-set(WEB_PAGE index.html isolation.js course.js)
+set(WEB_PAGE index.html isolation.js course.js exercise.js)
 list(TRANSFORM WEB_PAGE PREPEND ${CMAKE_SOURCE_DIR}/web/ OUTPUT_VARIABLE WEB_PAGE_SOURCES)
 list(TRANSFORM WEB_PAGE PREPEND ${CMAKE_BINARY_DIR}/ OUTPUT_VARIABLE WEB_PAGE_COPIES)
 add_custom_command(OUTPUT ${WEB_PAGE_COPIES}

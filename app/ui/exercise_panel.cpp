@@ -149,6 +149,7 @@ void ExercisePanel::select(const std::string& id) {
     for (auto& c : ex.configurations)
       if (c.visibility == "visible") configurations.push_back(c.name);
   }
+  showExerciseText(id, statement, "");
 }
 
 StatusLine openExercise(ExercisePanel& panel, LabHost& host, const std::string& id) {
@@ -384,6 +385,7 @@ bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) 
       status = StatusLine::failed("Check: " + e);
     } else {
       std::printf("checking %s\n", panel.selected.c_str());
+      showExerciseText(panel.selected, panel.statement, "Checking...");
       panel.reveal = true;
     }
     return panel.check.running();
@@ -397,7 +399,13 @@ bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) 
     persistStudentFiles();
   }
   if (!panel.check.running()) {  // finished: the grader's lines on the terminal (the page's console) too
-    for (auto& line : panel.check.lines()) std::printf("%s\n", line.c_str());
+    std::string text;
+    for (auto& line : panel.check.lines()) {
+      std::printf("%s\n", line.c_str());
+      text += line + "\n";
+    }
+    if (!panel.check.error().empty()) text += "Could not check: " + panel.check.error() + "\n";
+    showExerciseText(panel.selected, panel.statement, text);
     const auto& pictures = panel.check.pictures();
     for (size_t i = 0; i < pictures.size(); ++i)  // what the section shows beside the lines
       if (!pictures[i].student.rgba.empty())

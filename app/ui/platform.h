@@ -33,6 +33,11 @@ std::string copyLink(const std::string& fragment);
 // the browser's storage (it survives a reload); on the desktop the file is already on disk.
 void persistStudentFiles();
 
+// The exercise open in the section (`id`, "" for none), its statement (Markdown) and the last
+// Check's lines ("" before one): the page writes them into its document beside the canvas
+// (web/exercise.js), as text; the desktop's window shows them in the section only.
+void showExerciseText(const std::string& id, const std::string& statement, const std::string& checkLines);
+
 // What to tell a user about the data scenes that are not here (real meshes fetched by the
 // desktop's tools/get_data.sh): how to fetch them, or that the page does not carry them.
 const char* missingDataAdvice();

@@ -126,9 +126,16 @@ void enableContextFeatures() {
       std::fprintf(stderr, "shadelab: the browser has no %s\n", name);
 }
 
+void showExerciseText(const std::string& id, const std::string& statement, const std::string& checkLines) {
+  EM_ASM({ ShadeLabExercise.show(UTF8ToString($0), UTF8ToString($1), UTF8ToString($2)); }, id.c_str(),
+         statement.c_str(), checkLines.c_str());
+}
+
 void followPageSize(GLFWwindow* window) {
   const auto fit = [](int, const EmscriptenUiEvent*, void* w) -> EM_BOOL {
-    const int width = EM_ASM_INT(return window.innerWidth), height = EM_ASM_INT(return window.innerHeight);
+    // The canvas takes the width the exercise's text (web/exercise.js) leaves it.
+    const int width = EM_ASM_INT(return window.innerWidth - document.getElementById('exercise').offsetWidth),
+              height = EM_ASM_INT(return window.innerHeight);
     glfwSetWindowSize(static_cast<GLFWwindow*>(w), std::max(width, 240), std::max(height, 240));
     return EM_FALSE;
   };

@@ -166,6 +166,23 @@ drive exercise-link "exercise=surface/normal-map" --wait-console "exercise surfa
 grep -q "exercise surface/normal-map opened on the surface lab" "$out/exercise-link.log" ||
   { cat "$out/exercise-link.log"; echo "the exercise's link did not open its lab"; exit 1; }
 echo "a link with only exercise= opens its lab"
+
+# The exercise as text in the document beside the canvas: its statement, and once Check has run,
+# the grader's lines, read from document.body as a screen reader or a translator would.
+text_after_check="(async () => { const c = document.getElementById('exercise-check');
+  for (let i = 0; i < 600 && !/points \\(/.test(c.innerText); ++i) await new Promise((r) => setTimeout(r, 250));
+  return document.body.innerText; })()"
+drive exercise-text "exercise=shading/blinn-phong&check" --frames 5 --eval "$text_after_check"
+python3 - "$out/exercise-text.log" "$repo/exercises/shading/blinn-phong/statement.md" <<'PY' ||
+import json, sys
+line = next(l for l in open(sys.argv[1]) if l.startswith("eval "))
+body = json.loads(line.split(": ", 1)[1])
+heading = next(l for l in open(sys.argv[2]) if l.startswith("#")).lstrip("#").strip()
+for want in ("Exercise shading/blinn-phong", heading, "Check", "shading/blinn-phong: 0 / "):
+    assert want in body, f"not in the page's text: {want!r}"
+print("the exercise's statement and Check's lines are text in the page")
+PY
+  { cat "$out/exercise-text.log"; echo "the page's exercise text is missing"; exit 1; }
 # One exercise of each kind since (the from-scratch ones, a vertex stage, the GPU smoothing):
 # each starter checked in the page, told it is the starter, not passed.
 for exercise in filtering/mip-level shading/perspective-correct shadows/shadow-lookup shadows/point-light surface/displacement surface/screen-tbn denoise/laplacian denoise/apply-map; do
