@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <sstream>
 
@@ -16,6 +15,7 @@
 #include "app/grade/grading.h"
 #include "app/grade/watchdog.h"
 #include "app/measure/report.h"
+#include "app/util/format.h"
 #include "app/util/output_files.h"
 
 namespace shadelab {
@@ -116,12 +116,7 @@ int cannotGrade(const std::string& message) {
   return kCannotGrade;
 }
 
-std::string gradeDate() {
-  char date[32];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M", std::localtime(&now));
-  return date;
-}
+std::string gradeDate() { return localTimeNow("%Y-%m-%d %H:%M"); }
 
 SolutionCache solutionCacheFor(const Options& o) {
   if (o.noCache) return {};

@@ -1,7 +1,6 @@
 #include "app/grade/exercise_check.h"
 
 #include <algorithm>
-#include <ctime>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +9,7 @@
 #include "app/measure/image.h"
 #include "app/shader/preprocessor.h"
 #include "app/util/contained_path.h"
+#include "app/util/format.h"
 #include "app/util/output_files.h"
 #include "app/util/read_file.h"
 
@@ -17,19 +17,31 @@ namespace shadelab {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// Where the student's copy of the exercise's `file` lives in `folder`; "" or why the rubric's name
+// is not one inside a shader folder.
+std::string studentCopy(const Exercise& ex, const std::string& file, const fs::path& folder, fs::path& mine) {
+  const fs::path name = containedName(file);
+  if (name.empty())
+    return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
+  mine = folder / name;
+  return {};
+}
+
+}  // namespace
+
 std::string copyStarter(const Exercise& ex, const fs::path& folder, std::vector<std::string>& copied,
                         std::vector<std::string>& kept) {
   for (auto& file : ex.files) {
-    const fs::path name = containedName(file);
-    if (name.empty())
-      return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
-    const fs::path mine = folder / name;
+    fs::path mine;
+    if (auto e = studentCopy(ex, file, folder, mine); !e.empty()) return e;
     std::error_code ec;
     if (fs::exists(mine, ec) || fs::is_symlink(mine, ec)) {
       kept.push_back(file);
       continue;
     }
-    const fs::path starter = ex.dir / "starter" / name;
+    const fs::path starter = ex.dir / "starter" / containedName(file);
     if (!fs::is_regular_file(starter, ec))
       return starter.string() + " is missing: the exercise has no starter for " + file;
     if (auto e = writeTextFile(mine.string(), readWholeFile(starter)); !e.empty()) return e;
@@ -39,16 +51,10 @@ std::string copyStarter(const Exercise& ex, const fs::path& folder, std::vector<
 }
 
 std::string resetToStarter(const Exercise& ex, const fs::path& folder, std::vector<std::string>& kept) {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&now, &tm);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "kept-%Y%m%d-%H%M%S", &tm);
+  const std::string stamp = localTimeNow("kept-%Y%m%d-%H%M%S");
   for (auto& file : ex.files) {
-    const fs::path name = containedName(file);
-    if (name.empty())
-      return (ex.dir / "rubric.json").string() + ": \"files\": '" + file + "' is not a name inside a shader folder";
-    const fs::path mine = folder / name;
+    fs::path mine;
+    if (auto e = studentCopy(ex, file, folder, mine); !e.empty()) return e;
     std::error_code ec;
     if (!fs::exists(mine, ec)) continue;
     fs::path copy = mine;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <ctime>
 #include <set>
 
 #include "app/measure/image.h"
@@ -131,15 +130,6 @@ bool isUtcSecond(const std::string& t) {  // "YYYY-MM-DDTHH:MM:SSZ"
   return true;
 }
 
-std::string utcNow() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
-}
-
 }  // namespace
 
 std::string classroom50IdentityFromEnvironment(Classroom50Identity& id) {
@@ -162,7 +152,7 @@ std::string classroom50IdentityFromEnvironment(Classroom50Identity& id) {
   read("REVIEW_URL", id.review, "COMMIT_URL");
   read("COMMIT_DATE", id.datetime);
   if (const char* actor = std::getenv("GITHUB_ACTOR")) id.submittedBy = actor;
-  id.gradedAt = utcNow();
+  id.gradedAt = utcTimeNow("%Y-%m-%dT%H:%M:%SZ");
   std::string problems;
   if (!missing.empty()) {
     problems = "not set: ";

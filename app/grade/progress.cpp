@@ -1,10 +1,9 @@
 #include "app/grade/progress.h"
 
-#include <ctime>
-
 #include <nlohmann/json.hpp>
 
 #include "app/measure/report.h"
+#include "app/util/format.h"
 #include "app/util/read_file.h"
 
 namespace shadelab {
@@ -33,12 +32,7 @@ Progress readProgress(const fs::path& studentFolder) {
 
 std::string recordProgress(const fs::path& studentFolder, Progress& progress, const std::string& id, double percent,
                            bool passed) {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  localtime_r(&now, &tm);
-  char when[32];
-  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", &tm);
-  progress[id] = {percent, passed, when};
+  progress[id] = {percent, passed, localTimeNow("%Y-%m-%d %H:%M")};
   nlohmann::json exercises = nlohmann::json::object();
   for (auto& [key, p] : progress) exercises[key] = {{"percent", p.percent}, {"passed", p.passed}, {"when", p.when}};
   const nlohmann::json j = {{"what", "ShadeLab: each exercise's last Check in the window or the page"},

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 
 namespace shadelab {
 
@@ -13,6 +14,24 @@ std::string formatNumber(double v) {
   }
   return buf;
 }
+
+namespace {
+
+std::string timeNow(const char* format, bool utc) {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  if (utc)
+    gmtime_r(&now, &tm);
+  else
+    localtime_r(&now, &tm);
+  char text[64];
+  return std::strftime(text, sizeof text, format, &tm) ? text : "";
+}
+
+}  // namespace
+
+std::string localTimeNow(const char* format) { return timeNow(format, false); }
+std::string utcTimeNow(const char* format) { return timeNow(format, true); }
 
 std::string formatFixed(double v, int decimals) {
   char buf[48];

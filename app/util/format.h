@@ -11,6 +11,11 @@ std::string formatNumber(double v);
 // A fixed number of decimals, for tables people compare by eye (panel rows, notes).
 std::string formatFixed(double v, int decimals = 3);
 
+// Now as text in strftime's `format`: the local time ("%Y-%m-%d %H:%M" for people, "%Y%m%d-%H%M%S"
+// in file names), or UTC ("%Y-%m-%dT%H:%M:%SZ" for gradebooks).
+std::string localTimeNow(const char* format);
+std::string utcTimeNow(const char* format);
+
 // Text to number for values a user types (an option, a link): a whole number in [lo, hi] and
 // nothing else ("8", not "8x" or "" or "1e3"). False, leaving `out` as it was, otherwise.
 bool parseWholeNumber(const std::string& text, long lo, long hi, long& out);

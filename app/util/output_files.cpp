@@ -1,7 +1,8 @@
 #include "app/util/output_files.h"
 
 #include <cstdlib>
-#include <ctime>
+
+#include "app/util/format.h"
 
 namespace fs = std::filesystem;
 
@@ -26,9 +27,7 @@ fs::path outputDir(const std::string& sub) {
 }
 
 fs::path freshName(const std::string& sub, const std::string& stem, const std::string& ext) {
-  char stamp[32];
-  const std::time_t t = std::time(nullptr);
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&t));
+  const std::string stamp = localTimeNow("%Y%m%d-%H%M%S");
   const fs::path dir = outputDir(sub);
   fs::path p = dir / (stem + "-" + stamp + ext);
   for (int n = 2; fs::exists(p) || fs::exists(fs::path(p).replace_extension(".json")); ++n)

@@ -135,6 +135,24 @@ def class_csvs(subs):
     assert canvas[1][0].strip() == 'Points Possible' and len(canvas) == 2 + len(subs)
 
 
+def hidden_configuration():
+    """A rubric's configuration hidden until the due date (the test course's point-lights, "per
+    vertex"): graded and counted, its tests carrying that visibility in Gradescope's results."""
+    course = repo / 'tests/data/course'
+    student = out / 'hidden' / 'student'
+    shutil.copytree(course / 'shading/point-lights/starter', student)
+    done = subprocess.run([str(c) for c in [shadelab, 'grade', '--exercises', course, '--exercise',
+                                            'shading/point-lights', '--shaders', student, '--format', 'gradescope',
+                                            '--out', out / 'hidden/report']], capture_output=True, text=True)
+    assert done.returncode in (0, 1), done.stdout + done.stderr
+    r = json.loads((out / 'hidden/report/results.json').read_text())
+    schema('gradescope-results.schema.json').validate(r)
+    hidden = [t for t in r['tests'] if ': per vertex: ' in t['name']]
+    assert hidden and all(t['visibility'] == 'after_due_date' for t in hidden), hidden
+    assert all(t['visibility'] == 'visible' for t in r['tests'] if t not in hidden)
+    assert abs(sum(t['score'] for t in r['tests']) - r['score']) < 1e-9, 'the hidden tests are counted'
+
+
 def main():
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir(parents=True)
@@ -144,9 +162,10 @@ def main():
         seen[name] = (gradescope(name, text), classroom50(name, text), prairielearn(name, text))
     assert prairielearn('missing', None) is None
     class_csvs(subs)
+    hidden_configuration()
     assert seen['passing'][2] == 1.0 and seen['failing'][2] < 0.7, seen
     print('passed: gradescope, classroom50, prairielearn and moodle/canvas on a passing, a failing and an '
-          'ungradable submission:', json.dumps(seen))
+          'ungradable submission, and a hidden configuration graded:', json.dumps(seen))
 
 
 if __name__ == '__main__':

@@ -158,8 +158,12 @@ terminal_diagnosis=$(grep -m1 -o "diagnosis: .*" "$out/squared-grade.log" || tru
 grep -q "drawn with shininess" <<<"$terminal_diagnosis" && [ "$page_diagnosis" = "$terminal_diagnosis" ] ||
   { echo "page:     $page_diagnosis"; echo "terminal: $terminal_diagnosis"; echo "the page's diagnosis is not the grader's"; exit 1; }
 echo "the page's Check says the grader's diagnosis: ${page_diagnosis:0:100}..."
-grep -q "pictures of 'per-fragment': yours, the solution's, the difference" "$out/check-squared.log" ||
-  { echo "the page's Check showed no pictures"; exit 1; }
+squared=$(sed -n '/--- reloaded ---/,$p' "$out/check-squared.log")
+lost=$(grep -E "^(console log: )?  (FAIL|PARTIAL)" <<<"$squared" |
+  sed -E 's/^(console log: )?  (FAIL|PARTIAL) +([^:]*):.*/\3/' | sort -u | wc -l)
+shown=$(grep -c "pictures of '" <<<"$squared" || true)
+[ "$lost" -gt 0 ] && [ "$shown" -eq "$lost" ] ||
+  { echo "$squared"; echo "the page's Check showed pictures for $shown of $lost configurations that lost points"; exit 1; }
 
 # A link with only the exercise opens the page on the exercise's lab and its first configuration.
 drive exercise-link "exercise=surface/normal-map" --wait-console "exercise surface/normal-map opened"
@@ -218,6 +222,9 @@ for _ in $(seq 50); do grep -q "http://" "$out/course-serve.log" 2>/dev/null && 
 drive_port=$course_port
 check_starter course-link "lab=shading&course=week3.zip&exercise=shading/point-lights&check" shading/point-lights \
   common/lighting.glsl.part "$repo/tests/data/course/shading/point-lights/starter/common/lighting.glsl.part"
+# Its "per vertex" configuration is hidden until the due date: the page's Check neither draws nor names it.
+grep -q "hidden by your teacher" "$out/course-link.log" && ! grep -q "per vertex" "$out/course-link.log" ||
+  { cat "$out/course-link.log"; echo "the page's Check showed a hidden configuration"; exit 1; }
 drive course-broken "lab=shading&course=broken.zip" --wait-console "broken.zip: not a zip archive"
 drop_zip="(async () => { for (const name of ['evil.zip', 'week3.zip']) {
     const bytes = await (await fetch(name)).arrayBuffer();
