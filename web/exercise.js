@@ -11,6 +11,7 @@ const ShadeLabExercise = (() => {
   };
   // `code` spans and **bold** inside a line of prose; the rest as it is (formulas stay text).
   function inline(parent, text) {
+    text = text.replace(/\[([^\]]+)\]\([^)]*\)/g, '$1');  // a link's text: its target lies outside the page
     for (const part of text.split(/(`[^`]*`|\*\*[^*]+\*\*)/)) {
       if (part.startsWith('`') && part.endsWith('`') && part.length > 1) parent.appendChild(el('code', '', part.slice(1, -1)));
       else if (part.startsWith('**') && part.endsWith('**') && part.length > 3) parent.appendChild(el('strong', '', part.slice(2, -2)));
@@ -34,6 +35,13 @@ const ShadeLabExercise = (() => {
         const code = [];
         while (++i < lines.length && !/^\s*```/.test(lines[i])) code.push(lines[i]);
         out.appendChild(el('pre', '', code.join('\n')));
+      } else if (!paragraph.length && !list && (/^( {4}|\t)/.test(line) || /^\s*\|/.test(line))) {
+        // An indented block (formulas laid out in columns) or a table: kept as it is, in monospace.
+        flush();
+        const table = /^\s*\|/.test(line), block = [line.replace(/^( {4}|\t)/, '')];
+        while (i + 1 < lines.length && (table ? /^\s*\|/.test(lines[i + 1]) : /^( {4}|\t)/.test(lines[i + 1])))
+          block.push(lines[++i].replace(table ? /^/ : /^( {4}|\t)/, ''));
+        out.appendChild(el('pre', '', block.join('\n')));
       } else if (/^#{1,6}\s/.test(line)) {
         flush();
         const level = Math.min(line.match(/^#+/)[0].length + 1, 6);  // the page's own title is h1

@@ -274,10 +274,25 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     ImGui::TextDisabled("A course of your own: drop its folder on the window (in the page: its .zip).");
     return;
   }
+  // The buttons in the order a student needs them, the ones used most first (a narrow panel cuts
+  // the row's end): the starter, Check, the statement, and starting again.
   if (editor.folder.empty()) {
     ImGui::TextDisabled("Start with --shaders DIR to work on an exercise here.");
   } else {
     if (ImGui::Button("Open the starter")) status = openStarter(panel.selected, host, editor);
+    ImGui::SameLine();
+  }
+  ImGui::BeginDisabled(panel.check.running());
+  if (ImGui::Button("Check")) panel.checkRequested = true;
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
+        "solution's and the truth, here in the window.",
+        panel.selected.c_str());
+  ImGui::SameLine();
+  ImGui::Checkbox("Statement", &panel.showStatement);
+  if (!editor.folder.empty()) {
     ImGui::SameLine();
     if (ImGui::Button("Reset")) ImGui::OpenPopup("reset");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Start again from the starter; your file is kept as a dated copy");
@@ -292,17 +307,6 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
       ImGui::EndPopup();
     }
   }
-  ImGui::SameLine();
-  ImGui::Checkbox("Statement", &panel.showStatement);
-  ImGui::SameLine();
-  ImGui::BeginDisabled(panel.check.running());
-  if (ImGui::Button("Check")) panel.checkRequested = true;
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip(
-        "Grades your files as `shadelab grade --exercise %s` does: the rubric's frames against the "
-        "solution's and the truth, here in the window.",
-        panel.selected.c_str());
   if (auto p = panel.progress.find(panel.selected); p != panel.progress.end())
     ImGui::TextDisabled("Last Check %s: %.1f%%, %s", p->second.when.c_str(), p->second.percent,
                         p->second.passed ? "passed" : "not passed");

@@ -173,14 +173,14 @@ echo "a link with only exercise= opens its lab"
 
 # The exercise as text in the document beside the canvas: its statement, and once Check has run,
 # the grader's lines, read from document.body as a screen reader or a translator would.
-text_after_check="(async () => { const c = document.getElementById('exercise-check');
-  for (let i = 0; i < 600 && !/points \\(/.test(c.innerText); ++i) await new Promise((r) => setTimeout(r, 250));
+text_after_check="(async () => { const c = document.getElementById('exercise-check'); \
+  for (let i = 0; i < 600 && !/points \\(/.test(c.innerText); ++i) await new Promise((r) => setTimeout(r, 250)); \
   return document.body.innerText; })()"
 drive exercise-text "exercise=shading/blinn-phong&check" --frames 5 --eval "$text_after_check"
 python3 - "$out/exercise-text.log" "$repo/exercises/shading/blinn-phong/statement.md" <<'PY' ||
 import json, sys
 line = next(l for l in open(sys.argv[1]) if l.startswith("eval "))
-body = json.loads(line.split(": ", 1)[1])
+body = json.loads(line[line.index(': "') + 2:])  # the result, a JSON string, after the expression (which has no '"')
 heading = next(l for l in open(sys.argv[2]) if l.startswith("#")).lstrip("#").strip()
 for want in ("Exercise shading/blinn-phong", heading, "Check", "shading/blinn-phong: 0 / "):
     assert want in body, f"not in the page's text: {want!r}"
