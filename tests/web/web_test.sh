@@ -114,8 +114,10 @@ check_starter() {
   text=$(python3 -c 'import json, sys; print(json.dumps(open(sys.argv[1]).read()))' "$source")
   save="(async () => { Module.FS.mkdirTree('/student/$(dirname "$file")'); Module.FS.writeFile('/student/$file', $text);
     await new Promise((ok, fail) => Module.FS.syncfs(false, (e) => e ? fail(e) : ok())); return 'saved'; })()"
+  # A Check in SwiftShader draws the solution and every listed mistake of each configuration: the
+  # surface exercises' take minutes on two busy cores, so these drives may run past the usual 180 s.
   drive "$name" "$link" --frames 10 --eval "$save" --wait-console "$exercise: " --reload \
-    --wait-console-after-reload "$exercise: "
+    --wait-console-after-reload "$exercise: " --timeout 420
   checked=$(sed -n '/--- reloaded ---/,$p' "$out/$name.log")
   grep -q "diagnosis: Your frames are the starter's" <<<"$checked" &&
     grep -qE "$exercise: [0-9.]+ / [0-9.]+ points .*NOT PASSED" <<<"$checked" ||
