@@ -127,14 +127,20 @@ void enableContextFeatures() {
 }
 
 void showExerciseText(const std::string& id, const std::string& statement, const std::string& checkLines) {
-  EM_ASM({ ShadeLabExercise.show(UTF8ToString($0), UTF8ToString($1), UTF8ToString($2)); }, id.c_str(),
-         statement.c_str(), checkLines.c_str());
+  // A page without web/exercise.js (a site copied without it) keeps the text in the canvas only.
+  EM_ASM(
+      {
+        if (typeof ShadeLabExercise == 'object')
+          ShadeLabExercise.show(UTF8ToString($0), UTF8ToString($1), UTF8ToString($2));
+      },
+      id.c_str(), statement.c_str(), checkLines.c_str());
 }
 
 void followPageSize(GLFWwindow* window) {
   const auto fit = [](int, const EmscriptenUiEvent*, void* w) -> EM_BOOL {
     // The canvas takes the width the exercise's text (web/exercise.js) leaves it.
-    const int width = EM_ASM_INT(return window.innerWidth - document.getElementById('exercise').offsetWidth),
+    const int width = EM_ASM_INT(const text = document.getElementById('exercise');
+                                 return window.innerWidth - (text ? text.offsetWidth : 0)),
               height = EM_ASM_INT(return window.innerHeight);
     glfwSetWindowSize(static_cast<GLFWwindow*>(w), std::max(width, 240), std::max(height, 240));
     return EM_FALSE;

@@ -201,7 +201,7 @@ done
 # refused with the zip's name; a zip dropped on the page opens as a course.
 course_site=$out/course-site
 rm -rf "$course_site" && mkdir -p "$course_site"
-for f in index.html isolation.js course.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js; do
+for f in index.html isolation.js course.js exercise.js shadelab.js shadelab.wasm shadelab.data shadelab.worker.js; do
   ln -s "$(realpath "$site/$f")" "$course_site/$f"
 done
 python3 - "$repo/tests/data/course" "$course_site" <<'ZIP'
