@@ -239,14 +239,16 @@ grep -q "evil.zip: 'week3/../../student/common/lighting.glsl.part' leaves the co
   { cat "$out/course-drop.log"; echo "a dropped course zip was not opened (or a hostile one not refused)"; exit 1; }
 # Copy link on a page the course link opened, its exercise selected: the address (the page puts it
 # in the address bar too) carries the exercise and the course zip on. The button sits where the
-# page's Lab panel puts it for the shading lab at 1280x800 (course-copy-link.png shows it).
+# page's Lab panel puts it for the shading lab in a 1660x1000 page, the exercise's text beside the
+# canvas and the Exercises section on top (course-copy-link.png shows it).
 copy_link="(async () => { const at = (type, x, y) => Module.canvas.dispatchEvent(new MouseEvent(type,
     {clientX: x, clientY: y, button: 0, bubbles: true}));
   const frames = (n) => new Promise((ok) => { const end = Module.shadelabFrames + n;
     const wait = () => Module.shadelabFrames >= end ? ok() : setTimeout(wait, 20); wait(); });
-  at('mousemove', 265, 733); await frames(3); at('mousedown', 265, 733); await frames(3);
-  at('mouseup', 265, 733); await frames(3); return 'hash: ' + location.hash; })()"
-drive course-copy-link "lab=shading&course=week3.zip&exercise=shading/point-lights" --frames 5 --eval "$copy_link"
+  at('mousemove', 644, 802); await frames(3); at('mousedown', 644, 802); await frames(3);
+  at('mouseup', 644, 802); await frames(3); return 'hash: ' + location.hash; })()"
+drive course-copy-link "lab=shading&course=week3.zip&exercise=shading/point-lights" --frames 5 --size 1660,1000 \
+  --eval "$copy_link"
 grep -q "hash: #lab=shading&.*&exercise=shading%2Fpoint-lights&course=week3.zip" "$out/course-copy-link.log" ||
   { cat "$out/course-copy-link.log"; echo "Copy link did not carry the course's exercise on"; exit 1; }
 unset drive_port
