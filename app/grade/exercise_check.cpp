@@ -76,9 +76,7 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   ++generation_;
   Exercise ex;
   if (auto e = loadExercise(id, ex); !e.empty()) return error_ = e;
-  const size_t all = ex.configurations.size();
-  std::erase_if(ex.configurations, [](const Configuration& c) { return c.visibility != "visible"; });
-  hidden_ = all - ex.configurations.size();
+  hidden_ = dropHiddenConfigurations(ex.configurations);
   exercise_ = std::move(ex);
   studentDirs_ = std::move(studentDirs);
   // The kept solutions (and mistakes) hold only while the built-in shaders and the exercises (rubrics,

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "app/grade/rubric.h"
 #include "app/measure/image.h"
 #include "app/measure/report.h"
 #include "app/util/csv.h"
@@ -83,9 +84,7 @@ std::string exerciseSummary(const nlohmann::json& e) {
 
 }  // namespace
 
-bool validGradescopeVisibility(const std::string& v) {
-  return v == "visible" || v == "hidden" || v == "after_due_date" || v == "after_published";
-}
+bool validGradescopeVisibility(const std::string& v) { return validVisibility(v); }
 
 nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string& visibility) {
   nlohmann::json tests = nlohmann::json::array();

@@ -215,9 +215,7 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
       return at + ": \"probe\" must be true or false (the view draws the function's result)";
     c.probe = j["probe"].get<bool>();
   }
-  if (j.contains("visibility") &&
-      (!text(j, "visibility", c.visibility) || (c.visibility != "visible" && c.visibility != "hidden" &&
-                                                c.visibility != "after_due_date" && c.visibility != "after_published")))
+  if (j.contains("visibility") && (!text(j, "visibility", c.visibility) || !validVisibility(c.visibility)))
     return at + ": \"visibility\" must be visible, hidden, after_due_date or after_published";
   if (j.contains("channels") && (!text(j, "channels", c.channels) || c.channels.empty()))
     return at + ": \"channels\" must name the view's three channels (\"the normal's x, y, z\")";
@@ -422,6 +420,14 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
     }
   }
   return {};
+}
+
+bool validVisibility(const std::string& v) {
+  return v == "visible" || v == "hidden" || v == "after_due_date" || v == "after_published";
+}
+
+size_t dropHiddenConfigurations(std::vector<Configuration>& configurations) {
+  return std::erase_if(configurations, [](const Configuration& c) { return c.hidden(); });
 }
 
 }  // namespace shadelab

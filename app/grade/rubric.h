@@ -73,8 +73,14 @@ struct Configuration {
   // Who sees the configuration's checks in a gradebook that can hide them (Gradescope): visible,
   // hidden, after_due_date or after_published ("visibility"). Every check is graded and counted.
   std::string visibility = "visible";
+  bool hidden() const { return visibility != "visible"; }
   bool needsTruth() const;
 };
+
+// The visibilities a configuration may have: visible, hidden, after_due_date, after_published.
+bool validVisibility(const std::string& visibility);
+// Leaves out the configurations a rubric hides (Configuration::hidden); returns how many.
+size_t dropHiddenConfigurations(std::vector<Configuration>& configurations);
 
 // A mistake students make, written as a change to the solution: either the starter's TODO region
 // replaced by `body`, or `find` (which must occur exactly once) replaced by `replace` in the lab's

@@ -87,12 +87,16 @@ ImTextureID imguiTexture(const gl::Texture2D& t) { return reinterpret_cast<ImTex
 // The last Check's pictures as textures, made once per Check.
 void makePictures(ExercisePanel& panel) {
   const ExerciseCheck& check = panel.check;
-  if (panel.picturesOf == check.generation() && panel.pictures.size() == check.pictures().size()) return;
-  panel.pictures.clear();
-  for (auto& p : check.pictures())
+  if (panel.picturesOf != check.generation()) {  // a new Check: its pictures come one configuration a step
+    panel.pictures.clear();
+    panel.wipes.clear();
+    panel.picturesOf = check.generation();
+  }
+  for (size_t i = panel.pictures.size(); i < check.pictures().size(); ++i) {  // only the ones new since the last frame
+    const auto& p = check.pictures()[i];
     panel.pictures.push_back({textureOf(p.student), textureOf(p.solution), textureOf(p.difference)});
-  panel.wipes.assign(panel.pictures.size(), -1.0f);  // < 0: the wipe folded away
-  panel.picturesOf = check.generation();
+    panel.wipes.push_back(-1.0f);  // < 0: the wipe folded away
+  }
 }
 
 // Configuration `i` lost points: the student's frame, the solution's and their difference side by
@@ -147,7 +151,7 @@ void ExercisePanel::select(const std::string& id) {
   if (loadExercise(id, ex).empty()) {
     files = ex.files;
     for (auto& c : ex.configurations)
-      if (c.visibility == "visible") configurations.push_back(c.name);
+      if (!c.hidden()) configurations.push_back(c.name);
   }
   showExerciseText(id, statement, "");
 }
@@ -167,7 +171,7 @@ StatusLine openExercise(ExercisePanel& panel, LabHost& host, const std::string& 
 StatusLine showConfiguration(ExercisePanel& panel, LabHost& host, int index) {
   Exercise ex;
   if (auto e = loadExercise(panel.selected, ex); !e.empty()) return StatusLine::failed(e);
-  std::erase_if(ex.configurations, [](const Configuration& c) { return c.visibility != "visible"; });
+  dropHiddenConfigurations(ex.configurations);
   if (index < 0 || index >= int(ex.configurations.size())) return StatusLine::failed("no such configuration");
   const Configuration& c = ex.configurations[size_t(index)];
   if (host.lab().id() != ex.lab)
