@@ -127,11 +127,12 @@ std::string loadUnlisted(const Exercise& ex, const fs::path& dir, std::vector<Un
   return {};
 }
 
-// A diagnosis that states only what the frames show (where they differ, how much, that they are the
-// starter's), no cause: it cannot be wrong, though it may not name the cause either.
+// A diagnosis that states only what the frames or the function's table show (where they differ, how
+// much, that they are the starter's), no cause: it cannot be wrong, though it may not name the cause either.
 bool evidenceOnly(const std::string& explanation) {
   return explanation == "evidence" || explanation == "starter-result" || explanation.rfind("where:", 0) == 0 ||
-         explanation.rfind("only:", 0) == 0;
+         explanation.rfind("only:", 0) == 0 || explanation.rfind("probe:only:", 0) == 0 ||
+         explanation == "probe:starter";
 }
 
 // The grading of the class the check writes: each submission's exercise entry of report.json.

@@ -10,6 +10,7 @@
 
 #include "app/grade/frame_properties.h"
 #include "app/grade/frame_relations.h"
+#include "app/grade/function_probe.h"
 #include "app/host/configure.h"
 #include "app/host/measurer.h"
 #include "app/measure/report.h"
@@ -46,13 +47,21 @@ std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolut
   for (auto& m : ex.mistakes) {
     const fs::path dir = scratch.dir / m.name;
     if (auto e = writeMistakeFolder(ex, m, dir); !e.empty()) return e;
-    std::string configError;
-    const auto host = configuredHost({dir, builtinShaderDir()}, ex, c, configError);
-    if (!configError.empty()) return where(ex, c) + ": " + configError;
-    host->settle();
-    host->renderFrame(ex.size);
-    ImageF frame = host->readImage();
-    const std::vector<std::string> errors = buildErrors(*host);
+    ImageF frame;
+    std::vector<std::string> errors;
+    if (c.function >= 0) {
+      if (auto e = drawFunctionProbe(ex.probes[size_t(c.function)], {dir, builtinShaderDir()}, frame, errors);
+          !e.empty())
+        return where(ex, c) + ": " + e;
+    } else {
+      std::string configError;
+      const auto host = configuredHost({dir, builtinShaderDir()}, ex, c, configError);
+      if (!configError.empty()) return where(ex, c) + ": " + configError;
+      host->settle();
+      host->renderFrame(ex.size);
+      frame = host->readImage();
+      errors = buildErrors(*host);
+    }
     if (!errors.empty())
       return (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "' does not build: " + errors.front();
     out.numbers["mistakes"].push_back({{"name", m.name}, {"distance", frameDistance(frame, out.frame)}});
@@ -132,6 +141,32 @@ nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const 
   return out;
 }
 
+// The student's side of a function probe: their table, its distance to the solution's and to
+// each mistake's, and what it says against them (grade/function_probe.h).
+nlohmann::json probeStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& roots,
+                            const CachedSolution& solution, ImageF& image, std::string& error) {
+  const FunctionProbe& probe = ex.probes[size_t(c.function)];
+  std::vector<std::string> errors;
+  if (auto e = drawFunctionProbe(probe, roots, image, errors); !e.empty()) {
+    error = where(ex, c) + ": " + e;
+    return {};
+  }
+  nlohmann::json student{{"errors", errors}};
+  student["vs_solution"] = nlohmann::json::object();
+  student["distance"] = frameDistance(image, solution.frame);
+  student["mistakes"] = nlohmann::json::array();
+  for (auto& m : solution.mistakes) student["mistakes"].push_back(frameDistance(image, m));
+  student["pairs"] = student["relations"] = nlohmann::json::array();
+  student["properties"] = {
+      {"nan_pixels", 0}, {"inf_pixels", 0}, {"non_finite", ""}, {"edge_shift", {0, 0}}, {"edge_width_ratio", 1.0}};
+  student["probe"] = nlohmann::json::array();
+  if (errors.empty())
+    for (auto& f :
+         analyseProbe(probe, image, solution.frame, solution.mistakes.empty() ? nullptr : &solution.mistakes[0]))
+      student["probe"].push_back({{"kind", f.kind}, {"key", f.key}, {"text", f.text}, {"fit", f.fit}});
+  return student;
+}
+
 }  // namespace
 
 void lookUpSubmission(const Exercise& ex, const std::vector<fs::path>& studentDirs, ExerciseResult& out) {
@@ -179,6 +214,14 @@ std::vector<std::string> buildErrors(LabHost& host) {
 }
 
 std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolution& out) {
+  if (c.function >= 0) {
+    std::vector<std::string> errors;
+    if (auto e = drawFunctionProbe(ex.probes[size_t(c.function)], {builtinShaderDir()}, out.frame, errors); !e.empty())
+      return where(ex, c) + ": " + e;
+    if (!errors.empty())
+      return where(ex, c) + ": the probe does not build with the lab's own shaders: " + errors.front();
+    return drawMistakes(ex, c, out);
+  }
   std::string configError;
   const auto solutionHost = configuredHost({builtinShaderDir()}, ex, c, configError);
   if (!configError.empty()) return where(ex, c) + ": " + configError;
@@ -203,6 +246,7 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
                            const CachedSolution& solution, ImageF& image, std::string& error) {
   std::vector<fs::path> roots = studentDirs;
   roots.push_back(builtinShaderDir());
+  if (c.function >= 0) return probeStudent(ex, c, roots, solution, image, error);
   std::string configError;
   const auto studentHost = configuredHost(roots, ex, c, configError);
   if (!configError.empty()) {

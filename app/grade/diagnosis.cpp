@@ -130,10 +130,14 @@ struct Evidence {
   std::vector<const ConfigurationResult*> losing, matching;
 
   std::vector<const ConfigurationResult*> losingProbes;  // the losing configurations whose view is a probe
+  std::vector<const ConfigurationResult*> functions;     // the function probed by itself (no checks)
 
   Evidence(const Exercise& x, const ExerciseResult& r) : ex(x), e(r) {
     for (auto& c : e.configurations)
-      if (c.drawn) (lostPoints(c) ? losing : matching).push_back(&c);
+      if (c.drawn && c.function)
+        functions.push_back(&c);
+      else if (c.drawn)
+        (lostPoints(c) ? losing : matching).push_back(&c);
     for (auto* c : losing)
       if (const Configuration* rc = rubricOf(*c); rc && rc->probe) losingProbes.push_back(c);
   }
@@ -170,6 +174,8 @@ bool agrees(const Evidence& ev, size_t k, double& misfit) {
   double toMistake = 0.0, toSolution = 0.0;
   bool shows = false;
   for (auto* c : ev.losing)  // a configuration whose frame is the solution's lost points on a truth's number
+    if (c->distance > kDiffers && !differs(*c, k)) return false;
+  for (auto* c : ev.functions)  // the student's function differs where the mistake's does not
     if (c->distance > kDiffers && !differs(*c, k)) return false;
   for (auto& c : ev.e.configurations) {
     if (!c.drawn || !differs(c, k)) continue;
@@ -535,6 +541,15 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
                         " And: " + mistakeSentence(ex, ex.mistakes[j]) + mistakeEvidence(e, j);
           return;
         }
+  // The function probed by itself: what its table says, before what the pictures made of it say.
+  for (auto* c : ev.functions)
+    for (auto& f : c->probeFindings)
+      if (f.kind != "agrees") {
+        e.explanation = "probe:" + f.kind + (f.key.empty() ? "" : ":" + f.key);
+        e.diagnosis = f.text + " (Evidence: your function and the solution's, each evaluated by itself on the same " +
+                      "table of inputs, " + quoted(c->name) + ".)";
+        return;
+      }
   for (auto& c : e.configurations)
     if (c.nanPixels + c.infPixels > 0) {
       e.explanation = "non-finite";

@@ -84,6 +84,7 @@ CheckResult failedCheck(const Check& check, double solutionValue, const std::str
 }
 
 std::string describeConfiguration(const Configuration& c) {
+  if (c.function >= 0) return "the exercised function alone, on a table of inputs";
   std::string s = "scene " + (c.scene.empty() ? std::string("(the lab's default)") : c.scene);
   if (!c.camera.empty()) s += ", camera " + c.camera;
   for (auto& [k, v] : c.settings) s += ", " + k + "=" + v;
@@ -141,7 +142,12 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
     if (student.contains("relations") && student["relations"].is_array())
       for (auto& r : student["relations"])
         out.relations.push_back({r.value("kind", ""), r.value("a", 1.0), r.value("b", 0.0), r.value("residual", 0.0)});
+    if (student.contains("probe") && student["probe"].is_array())
+      for (auto& f : student["probe"])
+        out.probeFindings.push_back(
+            {f.value("kind", ""), f.value("key", ""), f.value("text", ""), f.value("fit", 0.0)});
   }
+  out.function = c.function >= 0;
   for (auto& check : c.checks) {
     const bool truth = check.against == Against::Truth;
     const double solutionValue = truth ? number(solution["vs_truth"], check.metric) : 0.0;

@@ -9,6 +9,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "app/grade/frame_relations.h"
+#include "app/grade/function_probe.h"
 #include "app/grade/rubric.h"
 
 namespace shadelab {
@@ -69,6 +70,9 @@ struct ConfigurationResult {
     double distance = 0.0;
   };
   std::vector<SettingMatch> settingMatches;
+  // A function probe's configuration (grade/function_probe.h): no checks, and what its table says.
+  bool function = false;
+  std::vector<ProbeFinding> probeFindings;
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;
   std::vector<CheckResult> checks;

@@ -384,6 +384,22 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
           if (!checkExists(out.configurations, c, ref))
             return where + ": configuration '" + c.name + "': check '" + k.name + "': \"hint_when\" names '" + ref +
                    "', which is no check (\"check\" in the same configuration, or \"configuration: check\")";
+  if (j.contains("probes")) {
+    if (!j["probes"].is_array()) return where + ": \"probes\" must be an array";
+    for (size_t i = 0; i < j["probes"].size(); ++i) {
+      FunctionProbe probe;
+      if (auto e = parseFunctionProbe(j["probes"][i], where + ": probes[" + std::to_string(i) + "]", probe); !e.empty())
+        return e;
+      if (std::any_of(out.configurations.begin(), out.configurations.end(),
+                      [&](const Configuration& c) { return c.name == probe.name; }))
+        return where + ": probes[" + std::to_string(i) + "]: the name '" + probe.name + "' is used twice";
+      Configuration c;
+      c.name = probe.name;
+      c.function = int(out.probes.size());
+      out.configurations.push_back(std::move(c));
+      out.probes.push_back(std::move(probe));
+    }
+  }
   Mistake starter;
   starter.starter = true;
   starter.name = "starter";

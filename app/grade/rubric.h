@@ -20,6 +20,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/grade/function_probe.h"
+
 namespace shadelab {
 
 struct Threshold {
@@ -70,6 +72,9 @@ struct Configuration {
   // true): the visibility a shadow test returns, the normal a normal map gives. A relation found
   // here speaks of the function, not only of a picture made from it.
   bool probe = false;
+  // The exercised function probed by itself (grade/function_probe.h): this configuration draws
+  // Exercise::probes[function]'s table rather than a lab's frame, and has no checks (-1: a frame).
+  int function = -1;
   // Who sees the configuration's checks in a gradebook that can hide them (Gradescope): visible,
   // hidden, after_due_date or after_published ("visibility"). Every check is graded and counted.
   std::string visibility = "visible";
@@ -116,6 +121,9 @@ struct Exercise {
   // formula): each must score full marks with no diagnosis, or the rubric is too tight. Their
   // `diagnosis` is empty.
   std::vector<Mistake> correct;
+  // The function probed by itself ("probes"): each adds a configuration of its name, after the
+  // rubric's, whose frame is the probe's table and which costs no points.
+  std::vector<FunctionProbe> probes;
   double totalPoints() const;
 };
 
