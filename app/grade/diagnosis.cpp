@@ -399,6 +399,14 @@ std::string relationSentence(const Evidence& ev, const FrameRelation& r) {
   return s + ": " + relationCause(r) + ".";
 }
 
+// The first finding of `kind` in the function's tables, and the configuration it comes from.
+std::pair<const ProbeFinding*, const ConfigurationResult*> probeFinding(const Evidence& ev, const std::string& kind) {
+  for (auto* c : ev.functions)
+    for (auto& f : c->probeFindings)
+      if (f.kind == kind) return {&f, c};
+  return {nullptr, nullptr};
+}
+
 // What the frames show when no explanation stands: how many configurations differ, where most.
 std::string evidenceSentence(const Evidence& ev) {
   const ConfigurationResult* most = nullptr;
@@ -512,6 +520,17 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
           relationSentence(ev, relation) + " A known mistake draws exactly these frames: " + mistakeSentence(ex, m);
       return;
     }
+    if (!relationFitsBetter && !split && exactly(e, k) && !m.starter)
+      if (auto [finding, probe] = probeFinding(ev, "ignores"); finding) {
+        // The mistake's code is one way to ignore an input; the student's may be another (the
+        // strength left out draws what the strength applied to every component draws): say what
+        // the function's table shows, and the mistake as one way to it.
+        e.mistake = m.name;
+        e.explanation = "probe:ignores:" + finding->key;
+        e.diagnosis = finding->text + " (Evidence: " + quoted(probe->name) +
+                      ".) A known mistake returns exactly these values: " + mistakeSentence(ex, m);
+        return;
+      }
     if (!relationFitsBetter && !split) {
       // Frames that are the mistake's name it; frames only close to them say so: the effect is the
       // mistake's, the code that makes it may differ (a bias far too small acts as none).
@@ -542,14 +561,18 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
           return;
         }
   // The function probed by itself: what its table says, before what the pictures made of it say.
-  for (auto* c : ev.functions)
-    for (auto& f : c->probeFindings)
-      if (f.kind != "agrees") {
-        e.explanation = "probe:" + f.kind + (f.key.empty() ? "" : ":" + f.key);
-        e.diagnosis = f.text + " (Evidence: your function and the solution's, each evaluated by itself on the same " +
-                      "table of inputs, " + quoted(c->name) + ".)";
-        return;
-      }
+  // The most telling kind first: an input turned round or ignored says more than a where.
+  static const char* const kProbeOrder[] = {"non-finite", "starter", "transform", "relation",
+                                            "ignores",    "uses",    "quantity",  "only"};
+  for (const char* kind : kProbeOrder)
+    for (auto* c : ev.functions)
+      for (auto& f : c->probeFindings)
+        if (f.kind == kind) {
+          e.explanation = "probe:" + f.kind + (f.key.empty() ? "" : ":" + f.key);
+          e.diagnosis = f.text + " (Evidence: your function and the solution's, each evaluated by itself on the " +
+                        "same table of inputs, " + quoted(c->name) + ".)";
+          return;
+        }
   for (auto& c : e.configurations)
     if (c.nanPixels + c.infPixels > 0) {
       e.explanation = "non-finite";

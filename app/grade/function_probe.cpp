@@ -179,6 +179,7 @@ std::string probeSource(const FunctionProbe& probe) {
       "// The exercised function probed by itself (grade/function_probe.h); written by the grader.\n";
   s += probe.prelude + "\n";
   for (auto& f : probe.include) s += "#include \"" + f + "\"\n";
+  s += probe.helpers + "\n";
   for (auto& [name, kind] : probe.textures)
     if (name.rfind("probe_", 0) == 0) s += "uniform sampler2D " + name + ";\n";
   s += "uniform highp sampler2D shadelab_probeInputs;\n"
@@ -326,6 +327,7 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
     out.include.push_back(f.get<std::string>());
   }
   readText(j, "prelude", out.prelude);
+  readText(j, "helpers", out.helpers);
   if (j.contains("defines")) {
     if (!j["defines"].is_object()) return at + ": \"defines\" must be an object NAME -> value";
     for (auto& [k, v] : j["defines"].items()) {
@@ -368,6 +370,7 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
       const std::string ab = at + ": uniforms[" + std::to_string(b) + "]";
       ProbeBlock block;
       if (!jb.is_object() || !readText(jb, "says", block.says)) return ab + ": \"says\" is missing";
+      readText(jb, "name", block.name);
       readText(jb, "varies", block.varies);
       if (!jb.contains("set") || !jb["set"].is_object()) return ab + ": \"set\" must be an object uniform -> value";
       for (auto& [name, v] : jb["set"].items()) {
@@ -381,10 +384,12 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
           return ab + ": \"set\"." + name + " must be a number or 2 to 4 numbers";
         block.uniforms.push_back({name, value});
       }
+      if (block.name.empty())
+        block.name = block.uniforms.empty() ? "block-" + std::to_string(b) : block.uniforms[0].first;
       out.blocks.push_back(std::move(block));
     }
   }
-  if (out.blocks.empty()) out.blocks.push_back({"the lab's defaults", "", {}});
+  if (out.blocks.empty()) out.blocks.push_back({"defaults", "the lab's defaults", "", {}});
   if (j.contains("textures")) {
     if (!j["textures"].is_object()) return at + ": \"textures\" must be an object sampler -> kind";
     for (auto& [name, kind] : j["textures"].items()) {
@@ -503,14 +508,31 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::
     textures[t].bind(int(t) + 1);
     program->set(probe.textures[t].first.c_str(), int(t) + 1);
   }
+  // The block's values as the uniform is declared: an int (u_maxLevel) from a whole number.
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  const auto setUniform = [&](const std::string& name, const std::vector<float>& v) {
+    const GLint location = glGetUniformLocation(GLuint(current), name.c_str());
+    if (location < 0) return;  // not read by this function
+    GLint count = 0;
+    glGetProgramiv(GLuint(current), GL_ACTIVE_UNIFORMS, &count);
+    GLenum type = GL_FLOAT;
+    for (GLint i = 0; i < count; ++i) {
+      char buffer[256];
+      GLint size = 0;
+      GLenum t = 0;
+      glGetActiveUniform(GLuint(current), GLuint(i), sizeof buffer, nullptr, &size, &t, buffer);
+      if (name == buffer) type = t;
+    }
+    if (type == GL_INT || type == GL_BOOL) glUniform1i(location, GLint(std::lround(v[0])));
+    if (type == GL_FLOAT) glUniform1f(location, v[0]);
+    if (type == GL_FLOAT_VEC2 && v.size() >= 2) glUniform2f(location, v[0], v[1]);
+    if (type == GL_FLOAT_VEC3 && v.size() >= 3) glUniform3f(location, v[0], v[1], v[2]);
+    if (type == GL_FLOAT_VEC4 && v.size() >= 4) glUniform4f(location, v[0], v[1], v[2], v[3]);
+  };
   for (size_t d = 0; d < draws.size(); ++d) {
     const FunctionProbe::Draw& draw = draws[d];
-    for (auto& [name, v] : probe.blocks[draw.block].uniforms) {
-      if (v.size() == 1) program->set(name.c_str(), v[0]);
-      if (v.size() == 2) program->set(name.c_str(), glm::vec2(v[0], v[1]));
-      if (v.size() == 3) program->set(name.c_str(), glm::vec3(v[0], v[1], v[2]));
-      if (v.size() == 4) program->set(name.c_str(), glm::vec4(v[0], v[1], v[2], v[3]));
-    }
+    for (auto& [name, v] : probe.blocks[draw.block].uniforms) setUniform(name, v);
     program->set("shadelab_probeVary", draw.kind == FunctionProbe::Draw::Kind::Vary ? draw.index : -1);
     program->set("shadelab_probeTransform", draw.kind == FunctionProbe::Draw::Kind::Transform ? draw.index : -1);
     program->set("shadelab_probeQuantity", draw.kind == FunctionProbe::Draw::Kind::Quantity ? draw.index : -1);

@@ -49,6 +49,7 @@ struct ProbeInput {
 };
 
 struct ProbeBlock {    // one setting of the uniforms the function reads
+  std::string name;    // for the explanation's tag: "strength" (the first uniform's name by default)
   std::string says;    // "u_scale at 0.04 and u_bias at -0.02"
   std::string varies;  // what it changes from the first block, for "does not change with ...": "the scale u_scale"
   std::vector<std::pair<std::string, std::vector<float>>> uniforms;
@@ -71,15 +72,19 @@ struct ProbeQuantity {           // a number of the exercise's inputs a result m
 struct FunctionProbe {
   std::string name;                  // the configuration's name: "the function by itself"
   std::vector<std::string> include;  // files included in order (the student's comes through them)
-  std::string prelude;               // GLSL before the includes (helpers the including file defines)
+  std::string prelude;               // GLSL before the includes (what the including file defines first)
+  std::string helpers;               // GLSL after them (a wrapper for a function with an out parameter)
   std::vector<std::pair<std::string, std::string>> defines;
   std::string result;      // a float, vec2 or vec3 expression of the inputs
   int size = 1;            // its components
   std::string says;        // "the specular factor"
   std::string components;  // "x, y, z": names of the result's components, for sentences
   std::vector<ProbeInput> inputs;
-  std::vector<ProbeBlock> blocks;                             // at least one (the first is the base)
-  std::vector<std::pair<std::string, std::string>> textures;  // sampler uniform -> ramp-r, ramp-rgb, levels
+  std::vector<ProbeBlock> blocks;  // at least one (the first is the base)
+  // Sampler uniform -> a texture made for the probe: ramp-r (one channel), ramp-rgb (smooth, not
+  // symmetric in u or v), levels (a mip chain whose level k holds k). A name beginning "probe_" is
+  // declared by the probe; any other is the included files' own (u_displacement).
+  std::vector<std::pair<std::string, std::string>> textures;
   std::vector<ProbeEdge> edges;
   std::vector<ProbeTransform> transforms;
   std::vector<ProbeQuantity> quantities;

@@ -190,7 +190,9 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
          [&](const glm::vec3& p, int, int) { return mask - p; }},
         {"scaled", "is the solution's scaled by " + number(a) + ": a factor missing, extra or applied twice",
          [a](const glm::vec3& p, int, int) { return a * p; }},
-        {"offset", "is the solution's plus " + number(b) + ": a term added or left out",
+        {"offset",
+         "is the solution's " + std::string(b < 0 ? "minus " : "plus ") + number(std::abs(b)) +
+             ": a term added or left out",
          [&](const glm::vec3& p, int, int) { return p + b * mask; }},
         {"squared", "is the solution's squared: a factor applied twice",
          [](const glm::vec3& p, int, int) { return p * p; }},
@@ -290,20 +292,33 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
   }
 
   // Inputs the result ignores, or follows where the solution's does not.
+  // Every ignored input in one finding: "Changing A or B changes ...".
   const auto units = probe.variedUnits();
+  std::vector<std::string> ignoredNames, ignoredSays;
+  size_t ignoredMoves = 0;
   for (size_t u = 0; u < units.size(); ++u) {
     const Tables::Moves m = t.moves(t.base(0), t.drawOf(FunctionProbe::Draw::Kind::Vary, 0, int(u)));
-    if (m.solution >= m.rows / 4 && m.both * 20 <= m.solution)
-      out.push_back({"ignores", probe.unitName(int(u)),
-                     "Changing " + probe.unitSays(int(u)) + " changes the solution's " + probe.says + " (on " +
-                         count(m.solution, m.rows) + " inputs probed) but not yours (on " + count(m.both, m.solution) +
-                         "): " + probe.unitSays(int(u)) + " does not reach your result.",
-                     0.0});
-    else if (m.solution * 100 <= m.rows && m.student >= m.rows / 4)
+    if (m.solution >= m.rows / 4 && m.both * 20 <= m.solution) {
+      ignoredNames.push_back(probe.unitName(int(u)));
+      ignoredSays.push_back(probe.unitSays(int(u)));
+      ignoredMoves = std::max(ignoredMoves, m.solution);
+    } else if (m.solution * 100 <= m.rows && m.student >= m.rows / 4)
       out.push_back({"uses", probe.unitName(int(u)),
                      "Changing " + probe.unitSays(int(u)) + " changes " + result + " (on " + count(m.student, m.rows) +
                          " inputs probed), though the solution's does not depend on it.",
                      0.0});
+  }
+  if (!ignoredNames.empty()) {
+    std::string names, says;
+    for (size_t i = 0; i < ignoredNames.size(); ++i) {
+      names += (i ? "+" : "") + ignoredNames[i];
+      says += (i == 0 ? "" : i + 1 == ignoredSays.size() ? " or " : ", ") + ignoredSays[i];
+    }
+    out.push_back({"ignores", names,
+                   "Changing " + says + " changes the solution's " + probe.says + " (on up to " +
+                       count(ignoredMoves, size_t(probe.rows)) + " inputs probed) but not yours: " +
+                       (ignoredSays.size() == 1 ? says + " does not" : "none of them does") + " reach your result.",
+                   0.0});
   }
   for (size_t b = 1; b < probe.blocks.size(); ++b) {
     if (probe.blocks[b].varies.empty()) continue;
@@ -361,7 +376,7 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
       } else {
         for (size_t b : blocksDiffer) {
           says.push_back(probe.blocks[b].says);
-          names.push_back(probe.blocks[b].uniforms.empty() ? probe.blocks[b].says : probe.blocks[b].uniforms[0].first);
+          names.push_back(probe.blocks[b].name);
           shown += differing(int(b), -1, n);
           of += n;
         }
