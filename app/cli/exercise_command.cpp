@@ -132,7 +132,7 @@ std::string loadUnlisted(const Exercise& ex, const fs::path& dir, std::vector<Un
 bool evidenceOnly(const std::string& explanation) {
   return explanation == "evidence" || explanation == "starter-result" || explanation.rfind("where:", 0) == 0 ||
          explanation.rfind("only:", 0) == 0 || explanation.rfind("probe:only:", 0) == 0 ||
-         explanation == "probe:starter";
+         explanation == "probe:starter" || explanation.rfind("seen:", 0) == 0;
 }
 
 // The grading of the class the check writes: each submission's exercise entry of report.json.

@@ -89,11 +89,13 @@ Cause propertyCause(const ConfigurationResult& c) {
     return {"property:out-of-range", "Your values leave the view's range" + in + " (" + fixed(c.outOfRangePct, "%.1f") +
                                          " % of the pixels): a sum where an average was meant, or weights that do "
                                          "not add up to 1."};
+  // An umbra that does not reach shadow has more than one usual cause (the comparison, taps or a
+  // search that leave the occluder, too few blockers found): what was seen, and the candidates.
   if (c.umbraLevel > 0.1)
-    return {"property:umbra", "Where the truth and the solution are in full shadow, yours is not" + in +
-                                  " (it averages " + fixed(c.umbraLevel, "%.2f") +
-                                  " of the way to lit): an occluder closer than the receiver must count as in "
-                                  "shadow."};
+    return {"seen:umbra", "Where the truth and the solution are in full shadow, yours is not" + in + " (it averages " +
+                              fixed(c.umbraLevel, "%.2f") +
+                              " of the way to lit): points the occluder hides count as lit there. Look at what "
+                              "decides that a tap is occluded, and at where the taps land."};
   if (c.litLevel > 0.1)
     return {"property:lit", "Where the truth and the solution are fully lit, yours is not" + in + " (" +
                                 fixed(c.litLevel, "%.2f") +

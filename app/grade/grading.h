@@ -106,7 +106,9 @@ struct ExerciseResult {
   std::string mistake;  // the rubric's mistake that explains the frames, when one does
   // What the diagnosis rests on, for the reports and for measuring the grader: "mistake:NAME",
   // "mistakes:A+B", "relation:KIND", "where:KEY=VALUE", "starter", "starter-result",
-  // "non-finite", "property:NAME", "only:CONFIGURATION", "evidence" ("" with no diagnosis).
+  // "non-finite", "property:NAME", "seen:NAME" (a property whose cause is not known),
+  // "probe:KIND:KEY" (what the function's table says: grade/function_probe.h), "only:CONFIGURATION",
+  // "evidence" ("" with no diagnosis).
   std::string explanation;
   double earned = 0.0, total = 0.0, passMark = 0.0;
   double percent() const { return total > 0 ? 100.0 * earned / total : 0.0; }

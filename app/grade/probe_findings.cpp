@@ -324,8 +324,7 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
     if (probe.blocks[b].varies.empty()) continue;
     const Tables::Moves m = t.moves(t.base(0), t.base(int(b)));
     if (m.solution >= m.rows / 4 && m.both * 20 <= m.solution)
-      out.push_back({"ignores",
-                     probe.blocks[b].uniforms.empty() ? probe.blocks[b].says : probe.blocks[b].uniforms[0].first,
+      out.push_back({"ignores", probe.blocks[b].name,
                      "Changing " + probe.blocks[b].varies + " changes the solution's " + probe.says + " (on " +
                          count(m.solution, m.rows) + " inputs probed) but not yours: " + probe.blocks[b].varies +
                          " does not reach your result.",
