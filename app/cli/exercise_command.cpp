@@ -22,6 +22,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/commands.h"
+#include "app/grade/frame_properties.h"
+#include "app/grade/mutants.h"
 #include "app/grade/rubric.h"
 #include "app/lab/lab.h"
 #include "app/measure/report.h"
@@ -77,6 +79,29 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
     return "starter/" + file + " differs from the lab's " + file + " after its TODO region (from line " +
            std::to_string(lineOf(starter, afterAt + 1)) + ")";
   return {};
+}
+
+// The solution's text of the starter's TODO region in the lab's `file`, with the lab's text before
+// and after it; false for a whole-file starter (no region).
+bool solutionRegion(const Exercise& ex, const std::string& file, std::string& before, std::string& region,
+                    std::string& after) {
+  const std::string starter = readWholeFile(ex.dir / "starter" / file), lab = labText(ex, file);
+  const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
+  const size_t b = starter.find(begin), e = starter.find(end);
+  if (b == std::string::npos || e == std::string::npos || e < b) return false;
+  // The starter's text around the region is the lab's (starterMatchesLabFile), so the lab's region
+  // lies between the same text; a part file's own prose first is matched from its first function.
+  const size_t beforeEnd = starter.rfind('\n', b) + 1, afterAt = starter.find('\n', e);
+  const std::string tail = afterAt == std::string::npos ? "" : starter.substr(afterAt + 1);
+  const std::string head = starter.substr(0, beforeEnd);
+  const size_t headAt = lab.find(head.substr(head.size() > 400 ? head.size() - 400 : 0));
+  if (headAt == std::string::npos || lab.size() < tail.size()) return false;
+  const size_t from = headAt + std::min(head.size(), size_t(400)), to = lab.size() - tail.size();
+  if (to < from || lab.compare(to, tail.size(), tail) != 0) return false;
+  before = lab.substr(0, from);
+  region = lab.substr(from, to - from);
+  after = tail;
+  return true;
 }
 
 // How the grader did on an unlisted mistake, worst first.
@@ -138,7 +163,8 @@ bool evidenceOnly(const std::string& explanation) {
 // The grading of the class the check writes: each submission's exercise entry of report.json.
 std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs::path& work,
                                                    const std::vector<std::string>& courseArgs,
-                                                   const std::vector<UnlistedMistake>& unlisted, std::string& error) {
+                                                   const std::vector<UnlistedMistake>& unlisted,
+                                                   const std::vector<std::string>& mutantFiles, std::string& error) {
   const fs::path cls = work / "class", out = work / "out";
   // The solution: the lab's own files (a part file: its functions as the lab defines them).
   for (auto& file : ex.files)
@@ -158,6 +184,12 @@ std::map<std::string, nlohmann::json> gradeAsClass(const Exercise& ex, const fs:
     }
   for (auto& u : unlisted)
     if (auto e = writeMistakeFolder(ex, u.change, cls / ("unlisted-" + u.change.name)); !e.empty()) {
+      error = e;
+      return {};
+    }
+  for (size_t k = 0; k < mutantFiles.size(); ++k)
+    if (auto e = writeTextFile((cls / ("mutant-" + std::to_string(k + 1)) / ex.files.front()).string(), mutantFiles[k]);
+        !e.empty()) {
       error = e;
       return {};
     }
@@ -193,18 +225,50 @@ bool isGuard(const Check& c) {
 }
 
 // Every problem of one exercise, one line each; none when it is ready to go out.
+// A passing mutant known harmless: DIR/LAB/NAME.json {"harmless": [{"before", "after", "why"}]}.
+struct HarmlessMutant {
+  std::string before, after, why;
+};
+std::string loadHarmless(const Exercise& ex, const fs::path& dir, std::vector<HarmlessMutant>& out) {
+  const fs::path file = dir / (ex.id + ".json");
+  std::error_code ec;
+  if (dir.empty() || !fs::is_regular_file(file, ec)) return {};
+  const nlohmann::json j = nlohmann::json::parse(readWholeFile(file), nullptr, false);
+  if (!j.is_object() || !j.contains("harmless") || !j["harmless"].is_array())
+    return file.string() + ": must hold {\"harmless\": [{\"before\", \"after\", \"why\"}, ...]}";
+  for (auto& h : j["harmless"]) {
+    if (!h.is_object() || !h.contains("before") || !h.contains("after") || !h.contains("why") ||
+        !h["before"].is_string() || !h["after"].is_string() || !h["why"].is_string())
+      return file.string() + ": every harmless mutant needs \"before\", \"after\" and \"why\" (strings)";
+    out.push_back({h["before"], h["after"], h["why"]});
+  }
+  return {};
+}
+
 std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std::string>& courseArgs,
-                                       const fs::path& unlistedDir, std::string& summary) {
+                                       const fs::path& unlistedDir, const fs::path& mutantsDir, std::string& summary) {
   std::vector<std::string> problems;
   for (auto& file : ex.files)
     if (auto e = starterMatchesLabFile(ex, file); !e.empty()) problems.push_back(e);
   std::vector<UnlistedMistake> unlisted;
   if (auto e = loadUnlisted(ex, unlistedDir, unlisted); !e.empty()) return {e};
+  // Mutants of the solution's region of the first file, when asked for.
+  std::vector<Mutant> mutants;
+  std::vector<std::string> mutantFiles;
+  std::vector<HarmlessMutant> harmless;
+  if (!mutantsDir.empty()) {
+    if (auto e = loadHarmless(ex, mutantsDir, harmless); !e.empty()) return {e};
+    std::string before, region, after;
+    if (solutionRegion(ex, ex.files.front(), before, region, after)) {
+      mutants = mutate(region);
+      for (auto& m : mutants) mutantFiles.push_back(before + m.text + after);
+    }
+  }
   const fs::path work = fs::temp_directory_path() / ("shadelab-exercise-check-" + std::to_string(getpid()));
   std::error_code ec;
   fs::remove_all(work, ec);
   std::string error;
-  const auto rows = gradeAsClass(ex, work, courseArgs, unlisted, error);
+  const auto rows = gradeAsClass(ex, work, courseArgs, unlisted, mutantFiles, error);
   fs::remove_all(work, ec);
   if (!error.empty()) return {error};
   const auto row = [&](const std::string& name) -> const nlohmann::json& {
@@ -253,7 +317,9 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   std::map<std::string, std::string> hints;
   for (const auto& [name, e] : rows) {
     // The unlisted set measures the diagnoses; it never stands in for the rubric's own mistakes.
-    if (name == "solution" || name.rfind("correct-", 0) == 0 || name.rfind("unlisted-", 0) == 0) continue;
+    if (name == "solution" || name.rfind("correct-", 0) == 0 || name.rfind("unlisted-", 0) == 0 ||
+        name.rfind("mutant-", 0) == 0)
+      continue;
     for (auto& c : e.value("checks", nlohmann::json::array())) {
       const std::string key = c["configuration"].get<std::string>() + ": " + c["check"].get<std::string>();
       auto& [failed, shown] = checks[key];
@@ -279,6 +345,56 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   summary = "solution " + formatNumber(percent(solution)) + " %, starter " + formatNumber(percent(starter)) + " %, " +
             std::to_string(named) + " of " + std::to_string(ex.mistakes.size() - 1) + " mistakes named, " +
             std::to_string(ex.correct.size()) + " correct variants, " + std::to_string(checks.size()) + " checks";
+  if (!mutantsDir.empty()) {
+    // A mutant that does not build, or draws what the solution draws everywhere, says nothing of
+    // the rubric: set aside. Of the rest, those that pass are holes unless known harmless.
+    size_t invalid = 0, equivalent = 0, killed = 0, unexplained = 0;
+    std::vector<std::string> passingLines;
+    for (size_t k = 0; k < mutants.size(); ++k) {
+      const Mutant& m = mutants[k];
+      const nlohmann::json& e = row("mutant-" + std::to_string(k + 1));
+      if (e.value("status", "") != "graded") {
+        ++invalid;
+        continue;
+      }
+      bool same = percent(e) == 100.0;
+      for (auto& f : e.value("frames", nlohmann::json::array()))
+        same = same && f.value("distance", 1.0) <= kFramesDiffer;
+      if (same) {
+        ++equivalent;
+        continue;
+      }
+      const std::string change =
+          "line " + std::to_string(m.line) + " (" + m.kind + "): '" + m.before + "' -> '" + m.after + "'";
+      if (!e.value("passed", false)) {
+        ++killed;
+        const std::string said = e.value("explanation", "");
+        if (said.empty() || said == "evidence") {
+          ++unexplained;
+          std::printf("       mutant %s fails, no explanation names it\n", change.c_str());
+        }
+        continue;
+      }
+      const auto known = std::find_if(harmless.begin(), harmless.end(), [&](const HarmlessMutant& h) {
+        return h.before == m.before && h.after == m.after;
+      });
+      std::printf("       mutant %s passes (%s %%)%s\n", change.c_str(), formatNumber(percent(e)).c_str(),
+                  known == harmless.end() ? "" : (": harmless, " + known->why).c_str());
+      if (known == harmless.end())
+        passingLines.push_back("mutant " + change + " passes (" + formatNumber(percent(e)) +
+                               " %): add a configuration or tighten a check, or list it as harmless with why");
+    }
+    const size_t graded = mutants.size() - invalid - equivalent;
+    const double score = graded ? 100.0 * double(killed) / double(graded) : 100.0;
+    summary += "; mutants: " + std::to_string(mutants.size()) + " made, " + std::to_string(invalid) +
+               " not building, " + std::to_string(equivalent) + " equivalent, " + std::to_string(killed) + " of " +
+               std::to_string(graded) + " fail (score " + formatNumber(std::round(score * 10.0) / 10.0) + " %), " +
+               std::to_string(unexplained) + " with no explanation";
+    if (score < 90.0)
+      problems.push_back("mutation score " + formatNumber(std::round(score * 10.0) / 10.0) +
+                         " %: under 90 % of the mutants that draw differently fail the rubric");
+    problems.insert(problems.end(), passingLines.begin(), passingLines.end());
+  }
   if (unlisted.empty()) return problems;
   size_t unlistedNamed = 0, wrong = 0, passing = 0;
   for (auto& u : unlisted) {
@@ -335,7 +451,7 @@ int runExerciseCheck(const Options& o) {
       continue;
     }
     std::string summary;
-    const std::vector<std::string> problems = checkExercise(ex, courseArgs, o.unlisted, summary);
+    const std::vector<std::string> problems = checkExercise(ex, courseArgs, o.unlisted, o.mutants, summary);
     std::printf("%s %s%s\n", problems.empty() ? "ok  " : "FAIL", id.c_str(),
                 summary.empty() ? "" : (" (" + summary + ")").c_str());
     for (auto& p : problems) std::printf("       %s\n", p.c_str());

@@ -36,8 +36,8 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
   if (solution.contains("error")) return solution["error"].get<std::string>();
   if (!solution.contains("renderer"))
     return "configuration '" + c.name + "': the solution's frame was not made (" + run.describe() + ")";
-  out.solutionImage = job.stem + "-solution.png";
-  std::string why;  // why nothing the student drew can be scored
+  if (c.function < 0) out.solutionImage = job.stem + "-solution.png";  // a function's table is not a picture
+  std::string why;                                                     // why nothing the student drew can be scored
   if (run.end == WatchedRun::End::TimedOut) {
     char s[160];
     std::snprintf(s, sizeof s,
@@ -50,7 +50,7 @@ std::string scoreConfiguration(const ConfigurationJob& job, const WatchedRun& ru
     why = "the renderer died drawing the student's shader (" + run.describe() + ")";
     out.outcome = Outcome::Crashed;
   }
-  if (student.is_object()) {
+  if (student.is_object() && c.function < 0) {
     out.studentImage = job.stem + "-student.png";
     out.diffImage = job.stem + "-diff.png";
   }

@@ -71,8 +71,9 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
     writeResult(job, "solution", solutionJson);
     return 0;
   }
-  if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty())
-    return failSolution(e);
+  if (c.function < 0)
+    if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty())
+      return failSolution(e);
   writeResult(job, "solution", solutionJson);
 
   // The student's folders first: their frame, compared with the solution's and with the truth.
@@ -81,8 +82,10 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   std::string configError;
   const nlohmann::json student = drawStudent(ex, c, job.studentDirs, built, image, configError);
   if (!configError.empty()) return failSolution(configError);
-  writePng((job.dir / (job.stem + "-student.png")).string(), image);
-  writePng((job.dir / (job.stem + "-diff.png")).string(), diffImage(image, solution));
+  if (c.function < 0) {  // a function's table is evidence, not a picture for the report
+    writePng((job.dir / (job.stem + "-student.png")).string(), image);
+    writePng((job.dir / (job.stem + "-diff.png")).string(), diffImage(image, solution));
+  }
   writeResult(job, "student", student);
   return 0;
 }

@@ -42,7 +42,11 @@ commands:
                   and the solution, starter, listed mistakes and correct variants graded as a class;
                   one line per problem, exit 1 if any. --unlisted DIR: also grade DIR/LAB/NAME.json,
                   mistakes no rubric lists, each with the explanations that name its cause: how many
-                  are named, and a problem for each that passes or is named wrongly
+                  are named, and a problem for each that passes or is named wrongly. --mutants DIR:
+                  also grade mutants of the solution (an operator, comparison or constant changed, a
+                  call dropped, arguments exchanged, a component swizzled) and print the mutation
+                  score; a problem when under 90 % of those that draw differently fail, or when one
+                  passes that DIR/LAB/NAME.json does not list as harmless, with why
 
 options:
   --lab ID            lab to run (see `shadelab list`)
@@ -185,6 +189,11 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       if (!std::filesystem::is_directory(v, ec))
         return "--unlisted: '" + v + "' is not a folder (it holds LAB/NAME.json, an exercise's unlisted mistakes)";
       o.unlisted = v;
+    } else if (arg == "--mutants") {
+      std::error_code ec;
+      if (!std::filesystem::is_directory(v, ec))
+        return "--mutants: '" + v + "' is not a folder (it holds LAB/NAME.json, the passing mutants known harmless)";
+      o.mutants = v;
     } else if (arg == "--function")
       o.function = v;
     else if (arg == "--format") {

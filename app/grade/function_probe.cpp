@@ -251,9 +251,9 @@ gl::Texture2D probeTexture(const std::string& kind, std::string& error) {
     if (kind == "ramp-r") {
       std::vector<float> r(size_t(n) * n);
       for (size_t i = 0; i < r.size(); ++i) r[i] = px[i * 4];
-      return gl::Texture2D::fromData({n, n}, GL_R32F, GL_RED, GL_FLOAT, r.data(), sampler);
+      return gl::Texture2D::fromData({n, n}, GL_R16F, GL_RED, GL_FLOAT, r.data(), sampler);
     }
-    return gl::Texture2D::fromData({n, n}, GL_RGBA32F, GL_RGBA, GL_FLOAT, px.data(), sampler);
+    return gl::Texture2D::fromData({n, n}, GL_RGBA16F, GL_RGBA, GL_FLOAT, px.data(), sampler);
   }
   if (kind == "levels") {  // every texel of level k holds k: what a lookup returns says which levels it read
     const int levels = 7;

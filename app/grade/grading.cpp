@@ -83,6 +83,12 @@ CheckResult failedCheck(const Check& check, double solutionValue, const std::str
   return r;
 }
 
+namespace {
+constexpr const char* kFunctionNote =
+    "Your function and the solution's, each evaluated by itself on the same table of inputs: no checks and no "
+    "points; what the table shows is in the diagnosis when it speaks of it.";
+}  // namespace
+
 std::string describeConfiguration(const Configuration& c) {
   if (c.function >= 0) return "the exercised function alone, on a table of inputs";
   std::string s = "scene " + (c.scene.empty() ? std::string("(the lab's default)") : c.scene);
@@ -269,6 +275,10 @@ std::string gradeMarkdown(const GradeReport& report) {
     for (auto& f : e.missingFiles) m += "- **Not submitted**: `" + f + "` is in none of the graded folders.\n";
     for (auto& n : e.notes) m += "- " + n + "\n";
     for (auto& c : e.configurations) {
+      if (c.function) {  // a table, not a picture: what it shows is in the diagnosis
+        m += "\n### " + c.name + "\n\n" + kFunctionNote + "\n";
+        continue;
+      }
       m += "\n### " + c.name + "\n\n" + c.description + "\n\n";
       for (auto& err : c.errors) m += "```\n" + err + "\n```\n\n";
       if (!c.nonFiniteText.empty()) m += "The frame holds " + c.nonFiniteText + ".\n\n";
@@ -324,6 +334,10 @@ std::string gradeHtml(const GradeReport& report, const std::filesystem::path& di
     for (auto& f : e.missingFiles) h += "<p class='FAIL'>Not submitted: <code>" + htmlEscape(f) + "</code></p>\n";
     for (auto& n : e.notes) h += "<p>" + htmlEscape(n) + "</p>\n";
     for (auto& c : e.configurations) {
+      if (c.function) {
+        h += "<h3>" + htmlEscape(c.name) + "</h3>\n<p>" + htmlEscape(kFunctionNote) + "</p>\n";
+        continue;
+      }
       h += "<h3>" + htmlEscape(c.name) + "</h3>\n<p>" + htmlEscape(c.description) + "</p>\n";
       for (auto& err : c.errors) h += "<pre>" + htmlEscape(err) + "</pre>\n";
       h += "<table><tr>";
@@ -373,6 +387,11 @@ std::string gradeJson(const GradeReport& report) {
     if (!e.diagnosis.empty()) je["diagnosis"] = e.diagnosis;
     if (!e.mistake.empty()) je["mistake"] = e.mistake;
     if (!e.explanation.empty()) je["explanation"] = e.explanation;
+    // How far each drawn frame (a function probe's table too) lies from the solution's: a rubric's
+    // mutation test tells an equivalent mutant from one the checks let through.
+    je["frames"] = nlohmann::json::array();
+    for (auto& c : e.configurations)
+      if (c.drawn) je["frames"].push_back({{"configuration", c.name}, {"distance", c.distance}});
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
         je["checks"].push_back(

@@ -151,7 +151,7 @@ void ExercisePanel::select(const std::string& id) {
   if (loadExercise(id, ex).empty()) {
     files = ex.files;
     for (auto& c : ex.configurations)
-      if (!c.hidden()) configurations.push_back(c.name);
+      if (!c.hidden() && c.function < 0) configurations.push_back(c.name);  // a frame to show, not a probe's table
   }
   showExerciseText(id, statement, "");
 }

@@ -71,10 +71,16 @@ TEST_F(Check, TheStarterScoresNothingAndEveryCheckSaysWhy) {
       if (k.grade != Grade::Full) EXPECT_FALSE(k.message.empty()) << c.name << ": " << k.check.name;
   EXPECT_NE(check.lines().back().find("NOT PASSED"), std::string::npos) << check.lines().back();
   // What Check shows beside the lines: per configuration that lost points, the student's frame, the
-  // solution's and their difference, all of one size and not the same picture.
+  // solution's and their difference, all of one size and not the same picture. The function probed
+  // by itself has no checks and no pictures: it is evidence for the diagnosis.
   ASSERT_EQ(check.pictures().size(), r.configurations.size());
   for (size_t i = 0; i < r.configurations.size(); ++i) {
     const auto& p = check.pictures()[i];
+    if (r.configurations[i].function) {
+      EXPECT_TRUE(r.configurations[i].checks.empty());
+      EXPECT_TRUE(p.student.rgba.empty()) << r.configurations[i].name;
+      continue;
+    }
     ASSERT_FALSE(p.student.rgba.empty()) << r.configurations[i].name;
     EXPECT_EQ(p.solution.size, p.student.size);
     EXPECT_EQ(p.difference.size, p.student.size);
@@ -105,7 +111,9 @@ TEST_F(Check, AHiddenConfigurationIsNeitherDrawnNorNamed) {
   ASSERT_EQ(check.start("shading/hidden-blinn", {student}), "");
   while (check.running()) check.step();
   EXPECT_EQ(check.hiddenConfigurations(), 1u);
-  EXPECT_EQ(check.configurations(), rubric["configurations"].size() - 1);
+  // The rubric's configurations but the hidden one, and each probe of the function by itself.
+  EXPECT_EQ(check.configurations(),
+            rubric["configurations"].size() - 1 + rubric.value("probes", nlohmann::json::array()).size());
   for (auto& c : check.result().configurations) EXPECT_NE(c.name, hiddenName);
   for (auto& line : check.lines()) EXPECT_EQ(line.find(hiddenName), std::string::npos) << line;
   bool said = false;
