@@ -391,7 +391,8 @@ std::string gradeJson(const GradeReport& report) {
     // mutation test tells an equivalent mutant from one the checks let through.
     je["frames"] = nlohmann::json::array();
     for (auto& c : e.configurations)
-      if (c.drawn) je["frames"].push_back({{"configuration", c.name}, {"distance", c.distance}});
+      if (c.drawn)
+        je["frames"].push_back({{"configuration", c.name}, {"distance", c.distance}, {"function", c.function}});
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
         je["checks"].push_back(
