@@ -30,6 +30,11 @@ bool readText(const nlohmann::json& j, const char* key, std::string& out) {
   return true;
 }
 
+// A key that is true; false when absent or not a boolean (a rubric is untrusted: never a throw).
+bool flag(const nlohmann::json& j, const char* key) {
+  return j.contains(key) && j[key].is_boolean() && j[key].get<bool>();
+}
+
 bool identifier(const std::string& s) {
   if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
   return std::all_of(s.begin(), s.end(),
@@ -46,12 +51,12 @@ std::string parseGenerator(const nlohmann::json& j, const std::string& at, Probe
     g.kind = ProbeGenerator::Kind::Range;
     g.low = r[0].get<float>();
     g.high = r[1].get<float>();
-  } else if (j.value("unit", false)) {
+  } else if (flag(j, "unit")) {
     g.kind = ProbeGenerator::Kind::Unit;
   } else if (j.contains("hemisphere")) {
     if (!readText(j, "hemisphere", g.around)) return at + ": \"hemisphere\" must name another input";
     g.kind = ProbeGenerator::Kind::Hemisphere;
-  } else if (j.value("rotation", false)) {
+  } else if (flag(j, "rotation")) {
     g.kind = ProbeGenerator::Kind::Rotation;
   } else if (j.contains("values")) {
     if (!j["values"].is_array() || j["values"].empty()) return at + ": \"values\" must be a non-empty array";
@@ -356,7 +361,8 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
       return ai + ": \"type\" must be float, vec2, vec3, vec4 or mat3";
     if (!readText(ji, "says", in.says) || in.says.empty()) return ai + ": \"says\" must name the input for a student";
     if (auto e = parseGenerator(ji, ai, in.generator); !e.empty()) return e;
-    in.varyComponents = ji.value("vary", std::string()) == "components";
+    std::string vary;
+    in.varyComponents = readText(ji, "vary", vary) && vary == "components";
     if (in.varyComponents && in.type == "mat3") return ai + ": \"vary\": \"components\" is for vectors";
     out.inputs.push_back(std::move(in));
   }
@@ -449,6 +455,10 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
     out.rows = j["rows"].get<int>();
   }
   if (out.totalRows() > 2048) return at + ": too many edges (the table holds at most 2048 rows)";
+  // A table a driver draws at once: a few inputs, at most 64 draws.
+  if (out.inputs.size() > 16) return at + ": \"inputs\": at most 16";
+  if (out.draws().size() > 64)
+    return at + ": too many uniform blocks, varied inputs, transforms and quantities (at most 64 draws in all)";
   return {};
 }
 

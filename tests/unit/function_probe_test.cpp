@@ -158,6 +158,14 @@ TEST(FunctionProbe, BadRubricsAreNamedByKey) {
   j["textures"] = {{"u_map", "checker"}};
   EXPECT_NE(parseFunctionProbe(j, "r.json: probes[0]", p).find("valid: ramp-r, ramp-rgb, levels"), std::string::npos);
   j = nlohmann::json::parse(kProbe);
+  j["inputs"][0].erase("range");
+  j["inputs"][0]["unit"] = "yes";  // not a boolean: no way of drawing it, and no throw
+  EXPECT_NE(parseFunctionProbe(j, "r.json: probes[0]", p).find("say how values are drawn"), std::string::npos);
+  j = nlohmann::json::parse(kProbe);
+  j["inputs"][0]["vary"] = 3;
+  EXPECT_EQ(parseFunctionProbe(j, "r.json: probes[0]", p), "");
+  EXPECT_FALSE(p.inputs[0].varyComponents);
+  j = nlohmann::json::parse(kProbe);
   j["include"] = {"../../etc/passwd"};
   EXPECT_NE(parseFunctionProbe(j, "r.json: probes[0]", p).find("without \"..\""), std::string::npos);
 }
