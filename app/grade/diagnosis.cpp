@@ -7,6 +7,8 @@
 #include <set>
 #include <string>
 
+#include "app/grade/frame_causes.h"
+
 namespace shadelab {
 
 namespace {
@@ -67,62 +69,6 @@ void silenceUnsupportedHints(ExerciseResult& e) {
         if (const CheckResult* o = findCheck(e, c, ref); !o || o->grade == Grade::Full) supported = false;
       if (!supported) r.message.clear();
     }
-}
-
-std::string nonFiniteCause(const ConfigurationResult& c) {
-  std::string s = "Your frame holds non-finite values in " + quoted(c.name) + ": " + c.nonFiniteText + ". ";
-  if (c.nanPixels)
-    return s +
-           "A NaN comes from 0/0 (an average over no samples), normalize() of a zero vector, or sqrt() or log() "
-           "of a negative number: guard the case that makes the divisor or the length 0.";
-  return s + "An Inf comes from dividing a non-zero value by 0 or from log(0): guard the divisor.";
-}
-
-struct Cause {
-  std::string tag, text;  // ExerciseResult::explanation and diagnosis
-};
-
-// What a configuration's frame properties say, or nothing.
-Cause propertyCause(const ConfigurationResult& c) {
-  const std::string in = " in " + quoted(c.name);
-  if (c.outOfRangePct > 0.5)
-    return {"property:out-of-range", "Your values leave the view's range" + in + " (" + fixed(c.outOfRangePct, "%.1f") +
-                                         " % of the pixels): a sum where an average was meant, or weights that do "
-                                         "not add up to 1."};
-  // An umbra that does not reach shadow has more than one usual cause (the comparison, taps or a
-  // search that leave the occluder, too few blockers found): what was seen, and the candidates.
-  if (c.umbraLevel > 0.1)
-    return {"seen:umbra", "Where the truth and the solution are in full shadow, yours is not" + in + " (it averages " +
-                              fixed(c.umbraLevel, "%.2f") +
-                              " of the way to lit): points the occluder hides count as lit there. Look at what "
-                              "decides that a tap is occluded, and at where the taps land."};
-  if (c.litLevel > 0.1)
-    return {"property:lit", "Where the truth and the solution are fully lit, yours is not" + in + " (" +
-                                fixed(c.litLevel, "%.2f") +
-                                " of the way to shadow): surfaces shadow themselves (the bias) or the taps are "
-                                "scaled wrong."};
-  if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
-    return {"property:edge-width", "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
-                                       " times as wide as the solution's: the filter's footprint is " +
-                                       (c.edgeWidthRatio > 1.0 ? "too large" : "too small") +
-                                       " (its size, or the scale of its offsets)."};
-  return {};
-}
-
-// What a configuration's frame properties measure, without a cause: "In 'a', where the truth and
-// the solution are fully lit, yours is 0.63 of the way to shadow." ("" when nothing stands out).
-std::string propertyObservation(const ConfigurationResult& c) {
-  const std::string in = "In " + quoted(c.name) + ", ";
-  if (c.outOfRangePct > 0.5) return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range.";
-  if (c.umbraLevel > 0.1)
-    return in + "where the truth and the solution are in full shadow, yours averages " + fixed(c.umbraLevel, "%.2f") +
-           " of the way to lit.";
-  if (c.litLevel > 0.1)
-    return in + "where the truth and the solution are fully lit, yours is " + fixed(c.litLevel, "%.2f") +
-           " of the way to shadow.";
-  if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
-    return in + "your soft edges are " + fixed(c.edgeWidthRatio, "%.2f") + " times as wide as the solution's.";
-  return {};
 }
 
 // The configurations a diagnosis reasons over: those drawn, split by whether they lost points.
