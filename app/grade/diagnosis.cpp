@@ -509,18 +509,22 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
           return;
         }
   // The function probed by itself: what its table says, before what the pictures made of it say.
-  // The most telling kind first: an input turned round or ignored says more than a where.
-  static const char* const kProbeOrder[] = {"non-finite", "starter", "transform", "relation",
-                                            "ignores",    "uses",    "quantity",  "only"};
-  for (const char* kind : kProbeOrder)
-    for (auto* c : ev.functions)
-      for (auto& f : c->probeFindings)
-        if (f.kind == kind) {
-          e.explanation = "probe:" + f.kind + (f.key.empty() ? "" : ":" + f.key);
-          e.diagnosis = f.text + " (Evidence: your function and the solution's, each evaluated by itself on the " +
-                        "same table of inputs, " + quoted(c->name) + ".)";
-          return;
-        }
+  // The most telling finding of any probe (findingRank): an input turned round or ignored says
+  // more than a where.
+  const ProbeFinding* told = nullptr;
+  const ConfigurationResult* toldBy = nullptr;
+  for (auto* c : ev.functions)
+    for (auto& f : c->probeFindings)
+      if (findingRank(f.kind) >= 0 && (!told || findingRank(f.kind) < findingRank(told->kind))) {
+        told = &f;
+        toldBy = c;
+      }
+  if (told) {
+    e.explanation = "probe:" + told->kind + (told->key.empty() ? "" : ":" + told->key);
+    e.diagnosis = told->text + " (Evidence: your function and the solution's, each evaluated by itself on the " +
+                  "same table of inputs, " + quoted(toldBy->name) + ".)";
+    return;
+  }
   for (auto& c : e.configurations)
     if (c.nanPixels + c.infPixels > 0) {
       e.explanation = "non-finite";

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numeric>
 
 #include <glm/glm.hpp>
@@ -281,6 +282,14 @@ gl::Texture2D probeTexture(const std::string& kind, std::string& error) {
 
 }  // namespace
 
+int findingRank(const std::string& kind) {
+  static const char* const kOrder[] = {"non-finite", "starter", "transform", "relation",
+                                       "ignores",    "uses",    "quantity",  "only"};
+  for (size_t i = 0; i < std::size(kOrder); ++i)
+    if (kind == kOrder[i]) return int(i);
+  return -1;
+}
+
 int ProbeInput::components() const {
   if (type == "float") return 1;
   if (type == "vec2") return 2;
@@ -518,31 +527,35 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::
     textures[t].bind(int(t) + 1);
     program->set(probe.textures[t].first.c_str(), int(t) + 1);
   }
-  // The block's values as the uniform is declared: an int (u_maxLevel) from a whole number.
-  GLint current = 0;
+  // The block's values as each uniform is declared (an int, u_maxLevel, from a whole number): the
+  // program's active uniforms read once, a block's values set only when the block changes.
+  GLint current = 0, count = 0;
   glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  glGetProgramiv(GLuint(current), GL_ACTIVE_UNIFORMS, &count);
+  std::map<std::string, GLenum> types;
+  for (GLint i = 0; i < count; ++i) {
+    char buffer[256];
+    GLint size = 0;
+    GLenum type = 0;
+    glGetActiveUniform(GLuint(current), GLuint(i), sizeof buffer, nullptr, &size, &type, buffer);
+    types[buffer] = type;
+  }
   const auto setUniform = [&](const std::string& name, const std::vector<float>& v) {
+    const auto it = types.find(name);
+    if (it == types.end()) return;  // not read by this function
     const GLint location = glGetUniformLocation(GLuint(current), name.c_str());
-    if (location < 0) return;  // not read by this function
-    GLint count = 0;
-    glGetProgramiv(GLuint(current), GL_ACTIVE_UNIFORMS, &count);
-    GLenum type = GL_FLOAT;
-    for (GLint i = 0; i < count; ++i) {
-      char buffer[256];
-      GLint size = 0;
-      GLenum t = 0;
-      glGetActiveUniform(GLuint(current), GLuint(i), sizeof buffer, nullptr, &size, &t, buffer);
-      if (name == buffer) type = t;
-    }
+    const GLenum type = it->second;
     if (type == GL_INT || type == GL_BOOL) glUniform1i(location, GLint(std::lround(v[0])));
     if (type == GL_FLOAT) glUniform1f(location, v[0]);
     if (type == GL_FLOAT_VEC2 && v.size() >= 2) glUniform2f(location, v[0], v[1]);
     if (type == GL_FLOAT_VEC3 && v.size() >= 3) glUniform3f(location, v[0], v[1], v[2]);
     if (type == GL_FLOAT_VEC4 && v.size() >= 4) glUniform4f(location, v[0], v[1], v[2], v[3]);
   };
+  int block = -1;
   for (size_t d = 0; d < draws.size(); ++d) {
     const FunctionProbe::Draw& draw = draws[d];
-    for (auto& [name, v] : probe.blocks[draw.block].uniforms) setUniform(name, v);
+    if (draw.block != block)
+      for (auto& [name, v] : probe.blocks[size_t(block = draw.block)].uniforms) setUniform(name, v);
     program->set("shadelab_probeVary", draw.kind == FunctionProbe::Draw::Kind::Vary ? draw.index : -1);
     program->set("shadelab_probeTransform", draw.kind == FunctionProbe::Draw::Kind::Transform ? draw.index : -1);
     program->set("shadelab_probeQuantity", draw.kind == FunctionProbe::Draw::Kind::Quantity ? draw.index : -1);

@@ -123,6 +123,10 @@ struct ProbeFinding {
   std::string text;  // for the student, in the exercise's words, naming no formula
   double fit = 0.0;  // residual over the student's distance from the solution (0 = exact)
 };
+// How telling a finding's kind is, for the diagnosis: 0 (non-finite) before the starter's values,
+// an input turned round, a relation, an input ignored or used, a quantity, and last where they
+// differ (7); -1 for "agrees", which explains nothing.
+int findingRank(const std::string& kind);
 std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF& student, const ImageF& solution,
                                        const ImageF* starter);
 

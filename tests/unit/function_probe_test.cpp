@@ -76,14 +76,14 @@ ImageF table(const FunctionProbe& p, const Function& f) {
 
 const Function kSolution = [](glm::vec3 v, float k, float gain) { return v * k * gain; };
 
-// The first finding that is not "agrees", as the diagnosis takes them (grade/diagnosis.cpp's order).
+// The finding the diagnosis says: the most telling by findingRank.
 ProbeFinding first(const Function& student) {
   const FunctionProbe p = probe();
   const auto findings = analyseProbe(p, table(p, student), table(p, kSolution), nullptr);
-  for (const char* kind : {"non-finite", "starter", "transform", "relation", "ignores", "uses", "quantity", "only"})
-    for (auto& f : findings)
-      if (f.kind == kind) return f;
-  return findings.empty() ? ProbeFinding{} : findings.front();
+  const ProbeFinding* best = nullptr;
+  for (auto& f : findings)
+    if (findingRank(f.kind) >= 0 && (!best || findingRank(f.kind) < findingRank(best->kind))) best = &f;
+  return best ? *best : findings.empty() ? ProbeFinding{} : findings.front();
 }
 
 TEST(FunctionProbe, TheSameFunctionAgrees) {
