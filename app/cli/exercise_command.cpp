@@ -224,7 +224,6 @@ bool isGuard(const Check& c) {
   return (c.metric == "non_finite_pct" || c.metric == "out_of_range_pct") && c.full.base == Threshold::Base::Absolute;
 }
 
-// Every problem of one exercise, one line each; none when it is ready to go out.
 // A passing mutant known harmless: DIR/LAB/NAME.json {"harmless": [{"before", "after", "why"}]}.
 struct HarmlessMutant {
   std::string before, after, why;
@@ -245,6 +244,7 @@ std::string loadHarmless(const Exercise& ex, const fs::path& dir, std::vector<Ha
   return {};
 }
 
+// Every problem of one exercise, one line each; none when it is ready to go out.
 std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std::string>& courseArgs,
                                        const fs::path& unlistedDir, const fs::path& mutantsDir, std::string& summary) {
   std::vector<std::string> problems;
@@ -347,8 +347,10 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
             std::to_string(ex.correct.size()) + " correct variants, " + std::to_string(checks.size()) + " checks";
   if (!mutantsDir.empty()) {
     // A mutant that does not build, or draws what the solution draws everywhere, says nothing of
-    // the rubric: set aside. Of the rest, those that pass are holes unless known harmless.
-    size_t invalid = 0, equivalent = 0, killed = 0, unexplained = 0;
+    // the rubric: set aside. Of the rest, those that pass are holes unless known harmless: a
+    // passing mutant listed with why it does no harm wherever the lab calls the function is set
+    // aside too, as an equivalent one is, and printed with its reason.
+    size_t invalid = 0, equivalent = 0, killed = 0, unexplained = 0, harmlessPassing = 0;
     std::vector<std::string> passingLines;
     for (size_t k = 0; k < mutants.size(); ++k) {
       const Mutant& m = mutants[k];
@@ -380,16 +382,19 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
       });
       std::printf("       mutant %s passes (%s %%)%s\n", change.c_str(), formatNumber(percent(e)).c_str(),
                   known == harmless.end() ? "" : (": harmless, " + known->why).c_str());
+      if (known != harmless.end()) ++harmlessPassing;
       if (known == harmless.end())
         passingLines.push_back("mutant " + change + " passes (" + formatNumber(percent(e)) +
                                " %): add a configuration or tighten a check, or list it as harmless with why");
     }
-    const size_t graded = mutants.size() - invalid - equivalent;
+    const size_t graded = mutants.size() - invalid - equivalent - harmlessPassing;
     const double score = graded ? 100.0 * double(killed) / double(graded) : 100.0;
     summary += "; mutants: " + std::to_string(mutants.size()) + " made, " + std::to_string(invalid) +
-               " not building, " + std::to_string(equivalent) + " equivalent, " + std::to_string(killed) + " of " +
-               std::to_string(graded) + " fail (score " + formatNumber(std::round(score * 10.0) / 10.0) + " %), " +
-               std::to_string(unexplained) + " with no explanation";
+               " not building, " + std::to_string(equivalent) + " equivalent, " +
+               (harmlessPassing ? std::to_string(harmlessPassing) + " listed harmless, " : std::string()) +
+               std::to_string(killed) + " of " + std::to_string(graded) + " fail (score " +
+               formatNumber(std::round(score * 10.0) / 10.0) + " %), " + std::to_string(unexplained) +
+               " with no explanation";
     if (score < 90.0)
       problems.push_back("mutation score " + formatNumber(std::round(score * 10.0) / 10.0) +
                          " %: under 90 % of the mutants that draw differently fail the rubric");

@@ -261,8 +261,10 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
   const ImageError e = compareImages(image, solution.frame);
   const FrameProperties properties = measureFrameProperties(
       image, solution.frame, solution.truths.empty() ? nullptr : &solution.truths.front(), {c.bounded, c.low, c.high});
-  Metrics vsSolution{
-      {"rmse", e.rmse}, {"covered_rmse", e.coveredRmse}, {"max_error", e.maxError}, {"bad_pixel_pct", e.badPixelPct}};
+  Metrics vsSolution{{"rmse", e.rmse},
+                     {"covered_rmse", drawnRmse(image, solution.frame)},
+                     {"max_error", e.maxError},
+                     {"bad_pixel_pct", e.badPixelPct}};
   for (auto& m : properties.metrics(image)) vsSolution.push_back(m);
   student["vs_solution"] = metricsJson(vsSolution);
   // The evidence a diagnosis rests on: how far the frame lies from the solution's and from each

@@ -207,7 +207,7 @@ std::vector<std::string> checkCells(const CheckResult& r) {
           "<= " + bound(r.check.full, r.fullBound),
           "<= " + bound(r.check.partial, r.partialBound),
           gradeName(r.grade),
-          points(r.earned) + " / " + points(r.check.points)};
+          r.check.points == 0.0 ? "condition" : points(r.earned) + " / " + points(r.check.points)};
 }
 
 std::string percent(double p) {
@@ -221,9 +221,10 @@ std::string percent(double p) {
 std::string checkLine(const ConfigurationResult& c, const CheckResult& r) {
   char line[512];
   const std::string what = c.name + ": " + r.check.name;
-  std::snprintf(line, sizeof line, "  %-7s %-44s %-16s %9s <= %-24s %s/%s", gradeName(r.grade), what.c_str(),
+  const std::string earned = r.check.points == 0.0 ? "condition" : points(r.earned) + "/" + points(r.check.points);
+  std::snprintf(line, sizeof line, "  %-7s %-44s %-16s %9s <= %-24s %s", gradeName(r.grade), what.c_str(),
                 r.check.metric.c_str(), value(r.value).c_str(), bound(r.check.full, r.fullBound).c_str(),
-                points(r.earned).c_str(), points(r.check.points).c_str());
+                earned.c_str());
   return line;
 }
 

@@ -177,7 +177,8 @@ std::string loadCheck(const nlohmann::json& j, const std::string& where, Check& 
   if (text(j, "partial", partial))
     if (auto e = parseThreshold(partial, c.partial); !e.empty()) return at + ": \"partial\": " + e;
   if (j.contains("points")) {
-    if (!j["points"].is_number() || !(j["points"].get<double>() > 0)) return at + ": \"points\" must be a number > 0";
+    if (!j["points"].is_number() || !(j["points"].get<double>() >= 0))
+      return at + ": \"points\" must be a number >= 0 (0: a condition other checks require)";
     c.points = j["points"].get<double>();
   }
   if (j.contains("partial_credit")) {
@@ -248,6 +249,13 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
         std::none_of(c.checks.begin(), c.checks.end(), [&](const Check& o) { return o.name == k.requiredCheck; }))
       return at + ": check '" + k.name + "' requires '" + k.requiredCheck +
              "', which is not a check of this configuration";
+  // A check of no points earns nothing by passing: it only makes sense as a condition that other
+  // checks of the configuration require (visibility within [0, 1] before its edges count).
+  for (auto& k : c.checks)
+    if (k.points == 0.0 &&
+        std::none_of(c.checks.begin(), c.checks.end(), [&](const Check& o) { return o.requiredCheck == k.name; }))
+      return at + ": check '" + k.name + "' has no points and no check requires it (a condition needs a check that " +
+             "\"requires\" it)";
   return {};
 }
 
@@ -377,6 +385,7 @@ std::string loadExercise(const fs::path& root, const std::string& id, Exercise& 
       return e;
     out.configurations.push_back(std::move(c));
   }
+  if (!(out.totalPoints() > 0)) return where + ": no check has points: a score needs at least one";
   for (auto& c : out.configurations)
     for (auto& k : c.checks)
       for (auto* list : {&k.hintIfPassed, &k.hintIfFailed})

@@ -41,7 +41,7 @@ struct Check {
   std::string metric;  // "rmse" (against the solution) or a lab metric (against the truth)
   Against against = Against::Solution;
   Threshold full, partial;  // value <= full: all points; <= partial: partialCredit of them
-  double points = 1.0;
+  double points = 1.0;      // 0: a condition, earning nothing, that other checks "require"
   double partialCredit = 0.5;
   std::string hint;  // shown when the check is not passed in full: what is likely wrong
   // The evidence the hint's cause needs: checks that must have passed in full, or failed, for it to

@@ -44,6 +44,35 @@ ImageError compareImages(const ImageF& a, const ImageF& b, double badThreshold) 
   return e;
 }
 
+double drawnRmse(const ImageF& a, const ImageF& b) {
+  if (a.size != b.size || a.rgba.empty()) return 1.0;
+  const int w = a.size.x, h = a.size.y;
+  const auto covers = [w](const ImageF& im, int x, int y) { return im.rgba[(size_t(y) * w + x) * 4 + 3] > 0.5f; };
+  const auto touches = [&](const ImageF& im, int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int u = x + dx, v = y + dy;
+        if (u >= 0 && v >= 0 && u < w && v < h && covers(im, u, v)) return true;
+      }
+    return false;
+  };
+  double sumSq = 0.0;
+  size_t counted = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool inA = covers(a, x, y), inB = covers(b, x, y);
+      if (!inA && !inB) continue;
+      if (inA != inB && touches(inA ? b : a, x, y)) continue;
+      const size_t i = size_t(y) * w + x;
+      for (int c = 0; c < 3; ++c) {
+        const double d = double(clamp01(a.rgba[i * 4 + c])) - clamp01(b.rgba[i * 4 + c]);
+        sumSq += d * d;
+      }
+      ++counted;
+    }
+  return counted ? std::sqrt(sumSq / double(counted * 3)) : 0.0;
+}
+
 size_t countNonFinite(const ImageF& image) {
   return size_t(std::count_if(image.rgba.begin(), image.rgba.end(), [](float v) { return !std::isfinite(v); }));
 }

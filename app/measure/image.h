@@ -27,6 +27,12 @@ struct ImageError {
 
 // Both images must have the same size.
 ImageError compareImages(const ImageF& a, const ImageF& b, double badThreshold = 0.1);
+// RMSE (RGB, clamped to [0,1]) over the pixels either image covers: where both draw the same
+// surface, the colours' difference; where one draws and the other leaves the background, that
+// difference too, unless the pixel touches (8-neighbourhood) what the other covers: a silhouette
+// that moved by a pixel is not counted. Unlike `coveredRmse`, a frame that draws less than the
+// other (geometry flung away, a surface discarded) cannot score 0. Same size, or 1.
+double drawnRmse(const ImageF& a, const ImageF& b);
 // Count of NaN or Inf values (any channel).
 size_t countNonFinite(const ImageF& image);
 // Box filter by an integer factor (supersampled reference -> output size).

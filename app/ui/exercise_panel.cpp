@@ -371,8 +371,11 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
       }
     for (auto& k : c.checks) {
       const ImVec4 colour = k.grade == Grade::Full ? kPass : k.grade == Grade::Partial ? kPartial : kFail;
-      ImGui::TextColored(colour, "%-7s %s  %.3g/%.3g", gradeName(k.grade), k.check.name.c_str(), k.earned,
-                         k.check.points);
+      if (k.check.points == 0.0)
+        ImGui::TextColored(colour, "%-7s %s  (a condition)", gradeName(k.grade), k.check.name.c_str());
+      else
+        ImGui::TextColored(colour, "%-7s %s  %.3g/%.3g", gradeName(k.grade), k.check.name.c_str(), k.earned,
+                           k.check.points);
       ImGui::Indent();
       if (std::isfinite(k.value))
         ImGui::TextDisabled("%s %.4g, full marks at <= %.4g", k.check.metric.c_str(), k.value, k.fullBound);

@@ -37,6 +37,34 @@ TEST(ImageMetrics, NonFiniteCountedAndDownsampleAverages) {
   EXPECT_FLOAT_EQ(d.at(0, 0)[0], 0.25f);
 }
 
+// A frame that draws nothing where the other draws a surface: covered_rmse (both cover) sees no
+// pixel and reads 0; drawnRmse counts what the other drew, yet not a silhouette moved by a pixel.
+TEST(ImageMetrics, DrawnRmseCountsWhatOneFrameLeavesOut) {
+  ImageF surface = flat(8, 8, 0.0f), empty = flat(8, 8, 0.0f);
+  for (int y = 2; y < 6; ++y)
+    for (int x = 2; x < 6; ++x) {
+      float* p = surface.at(x, y);
+      p[0] = p[1] = p[2] = 0.8f;
+      p[3] = 1.0f;
+    }
+  EXPECT_DOUBLE_EQ(compareImages(empty, surface).coveredRmse, 0.0);
+  EXPECT_NEAR(drawnRmse(empty, surface), 0.8, 1e-6);
+  EXPECT_NEAR(drawnRmse(surface, empty), 0.8, 1e-6);
+  EXPECT_DOUBLE_EQ(drawnRmse(surface, surface), 0.0);
+  ImageF wider = surface;  // one more column at the silhouette: touches the other's surface
+  for (int y = 2; y < 6; ++y) {
+    float* p = wider.at(6, y);
+    p[0] = p[1] = p[2] = 0.8f;
+    p[3] = 1.0f;
+  }
+  EXPECT_DOUBLE_EQ(drawnRmse(wider, surface), 0.0);
+  ImageF stray = surface;  // a pixel two away from the surface counts
+  stray.at(0, 0)[0] = stray.at(0, 0)[1] = stray.at(0, 0)[2] = 0.8f;
+  stray.at(0, 0)[3] = 1.0f;
+  EXPECT_NEAR(drawnRmse(stray, surface), std::sqrt(3 * 0.64 / (17.0 * 3)), 1e-6);
+  EXPECT_DOUBLE_EQ(drawnRmse(surface, flat(4, 4, 0.0f)), 1.0);
+}
+
 TEST(Report, ParetoFrontCsvAndHtml) {
   SweepReport r;
   r.plots = {{"rmse"}};
