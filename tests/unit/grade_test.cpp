@@ -126,6 +126,48 @@ TEST(Grade, StartersAreTheLabsShadersOutsideTheirTodoRegion) {
   }
 }
 
+// A check of no points is a condition: refused unless a check requires it, and a rubric whose
+// checks all have no points is refused too; required, it gates without earning.
+TEST(Grade, ACheckOfNoPointsIsAConditionOthersRequire) {
+  const fs::path root = fs::temp_directory_path() / "shadelab-condition-test";
+  fs::remove_all(root);
+  fs::create_directories(root / "shadows" / "c");
+  const auto rubric = [&](const std::string& checks) {
+    std::ofstream(root / "shadows" / "c" / "rubric.json")
+        << R"({"title": "t", "lab": "shadows", "files": ["shadows/shadow_lookup.glsl"], "configurations": [
+               {"name": "a", "range": [0, 1], "checks": [)" +
+               checks + "]}]}";
+    Exercise ex;
+    return loadExercise(root, "shadows/c", ex);
+  };
+  const std::string range = R"({"name": "in range", "metric": "out_of_range_pct", "full": 0.5, "points": 0})";
+  const std::string edges = R"({"name": "edges", "metric": "covered_rmse", "full": 0.004, "requires": "in range"})";
+  std::string err = rubric(range + ", " + R"({"name": "edges", "metric": "covered_rmse", "full": 0.004})");
+  EXPECT_NE(err.find("'in range' has no points and no check requires it"), std::string::npos) << err;
+  err = rubric(R"({"name": "in range", "metric": "out_of_range_pct", "full": 0.5, "points": 0, "requires": "more"},
+                  {"name": "more", "metric": "rmse", "full": 1, "points": 0, "requires": "in range"})");
+  EXPECT_NE(err.find("no check has points"), std::string::npos) << err;
+  err = rubric(R"({"name": "x", "metric": "rmse", "full": 1, "points": -1})");
+  EXPECT_NE(err.find("\"points\" must be a number >= 0"), std::string::npos) << err;
+  err = rubric(range + ", " + edges);
+  EXPECT_EQ(err, "");
+  fs::remove_all(root);
+
+  Check inRange = check("0.5", "0.5"), hard = check("1", "1");
+  inRange.name = "in range";
+  inRange.points = 0;
+  hard.name = "edges";
+  hard.requiredCheck = "in range";
+  std::vector<CheckResult> results = {scoreCheck(inRange, 40.0, 0.0), scoreCheck(hard, 0.0, 0.0)};
+  applyRequirements(results);
+  EXPECT_EQ(results[0].earned, 0.0);
+  EXPECT_EQ(results[1].grade, Grade::Fail);
+  EXPECT_EQ(results[1].earned, 0.0);
+  ConfigurationResult c;
+  c.name = "a";
+  EXPECT_NE(checkLine(c, scoreCheck(inRange, 0.0, 0.0)).find("condition"), std::string::npos);
+}
+
 TEST(Grade, ABadRubricNamesItsFileAndKey) {
   const fs::path root = fs::temp_directory_path() / "shadelab-rubric-test";
   fs::remove_all(root);
