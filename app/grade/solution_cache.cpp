@@ -91,7 +91,45 @@ std::string ContentHash::hex() const {
   return s;
 }
 
-SolutionCache::SolutionCache(fs::path dir) : dir_(std::move(dir)) {}
+SolutionCache::SolutionCache(fs::path dir, uint64_t budgetBytes) : dir_(std::move(dir)), budget_(budgetBytes) {}
+
+uint64_t SolutionCache::defaultBudgetBytes() {
+  constexpr uint64_t kMiB = 1024 * 1024;
+  if (const char* env = std::getenv("SHADELAB_CACHE_MB"); env && *env) {
+    char* end = nullptr;
+    const unsigned long long mb = std::strtoull(env, &end, 10);
+    if (end != env && *end == '\0' && mb >= 1 && mb < (1ull << 40)) return mb * kMiB;
+  }
+  return 4096 * kMiB;
+}
+
+void SolutionCache::prune(const fs::path& keep) const {
+  struct Entry {
+    fs::path path;
+    uint64_t bytes;
+    fs::file_time_type used;
+  };
+  std::vector<Entry> entries;
+  uint64_t total = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() != ".bin" || !it->is_regular_file(ec)) continue;
+    const uint64_t bytes = it->file_size(ec);
+    if (ec) continue;
+    const fs::file_time_type used = it->last_write_time(ec);
+    if (ec) continue;
+    entries.push_back({it->path(), bytes, used});
+    total += bytes;
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  for (auto& e : entries) {
+    if (total <= budget_) break;
+    if (e.path == keep) continue;
+    // Another process may have removed it, or be reading it (it keeps its open file): either is fine.
+    fs::remove(e.path, ec);
+    if (!ec) total -= e.bytes;
+  }
+}
 
 fs::path SolutionCache::file(const std::string& key) const { return dir_ / (key + ".bin"); }
 
@@ -115,6 +153,8 @@ bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
     for (auto& image : *images)
       if (!getImage(in, image)) return false;
   if (in.at != bytes.size()) return false;
+  std::error_code ec;
+  fs::last_write_time(file(key), fs::file_time_type::clock::now(), ec);  // used: the last to be pruned
   out = std::move(entry);
   return true;
 }
@@ -149,6 +189,7 @@ std::string SolutionCache::store(const std::string& key, const CachedSolution& e
     fs::remove(temp, ec);
     return "the solution cache " + file(key).string() + ": " + ec.message();
   }
+  prune(file(key));
   return {};
 }
 

@@ -11,6 +11,10 @@
 // Entries are written under a temporary name and renamed into place, so processes grading side
 // by side (--jobs, shards on a shared folder) never read half an entry; an entry that does not read
 // back whole (truncated, another version's layout) is a miss, never an error.
+//
+// Keys that are never asked for again (a new build of shadelab, an edited rubric) would make the
+// folder grow without end: after each store the least recently used entries are removed until the
+// folder holds at most its budget (4 GiB, or $SHADELAB_CACHE_MB MiB). A load marks its entry used.
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -51,8 +55,11 @@ struct CachedSolution {
 
 class SolutionCache {
  public:
-  SolutionCache() = default;                          // off: every lookup misses, nothing is stored
-  explicit SolutionCache(std::filesystem::path dir);  // created on the first store
+  SolutionCache() = default;  // off: every lookup misses, nothing is stored
+  explicit SolutionCache(std::filesystem::path dir,
+                         uint64_t budgetBytes = defaultBudgetBytes());  // created on the first store
+  // $SHADELAB_CACHE_MB (MiB, a whole number >= 1), else 4 GiB.
+  static uint64_t defaultBudgetBytes();
   bool enabled() const { return !dir_.empty(); }
   const std::filesystem::path& dir() const { return dir_; }
 
@@ -62,7 +69,11 @@ class SolutionCache {
 
  private:
   std::filesystem::path file(const std::string& key) const;
+  // Removes the least recently used entries (by modification time) until the folder's entries
+  // hold at most budget_ bytes, never `keep`.
+  void prune(const std::filesystem::path& keep) const;
   std::filesystem::path dir_;
+  uint64_t budget_ = 0;
 };
 
 // $SHADELAB_CACHE, else $XDG_CACHE_HOME/shadelab, else ~/.cache/shadelab; "solutions" under it.
