@@ -384,7 +384,9 @@ int explainingMistake(const Exercise& ex, const ExerciseResult& e) {
   return best;
 }
 
-void diagnose(const Exercise& ex, ExerciseResult& e) {
+namespace {
+
+void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   silenceUnsupportedHints(e);
   e.diagnosis.clear();
   e.mistake.clear();
@@ -584,6 +586,19 @@ void diagnose(const Exercise& ex, ExerciseResult& e) {
                    worst->check.metric + " " +
                    (std::isfinite(worst->value) ? fixed(worst->value, "%.4g") : std::string("n/a")) +
                    ", full marks at <= " + fixed(worst->fullBound, "%.4g") + ").";
+}
+
+}  // namespace
+
+void diagnose(const Exercise& ex, ExerciseResult& e) {
+  diagnoseFromEvidence(ex, e);
+  // Where no listed mistake is named, say what the explanation could look at: without a probe of
+  // the function by itself, the frames are all there is.
+  static const std::string kFramesAlone =
+      "This exercise has no probe of its function by itself: the diagnosis above rests on the frames alone.";
+  if (!e.diagnosis.empty() && e.mistake.empty() && e.outcome() == Outcome::Graded && ex.probes.empty() &&
+      std::find(e.notes.begin(), e.notes.end(), kFramesAlone) == e.notes.end())
+    e.notes.push_back(kFramesAlone);
 }
 
 }  // namespace shadelab

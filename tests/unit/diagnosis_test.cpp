@@ -146,6 +146,7 @@ TEST(Diagnosis, TheMistakeClearlyCloserThanTheSolutionWhereItDiffersExplainsTheF
                       drawn("b", 0.12, {0.2, 0.002, 0.12}, {0.2, 0.12, 0.0})};
   diagnose(ex, e);
   EXPECT_EQ(e.mistake, "sign");
+  EXPECT_TRUE(e.notes.empty()) << "a listed mistake named: no word on the evidence it lacked";
   EXPECT_EQ(e.explanation, "mistake:sign");
   EXPECT_EQ(e.diagnosis.rfind("because sign (Evidence: where this mistake shows, in 'a' and 'b', your frames are its "
                               "frames.)",
@@ -167,10 +168,14 @@ TEST(Diagnosis, NothingCloseEnoughFallsBackToTheEvidence) {
   diagnose(ex, e);
   EXPECT_TRUE(e.mistake.empty());
   EXPECT_NE(e.diagnosis.find("12 NaN pixels in x 1-4, y 2-5"), std::string::npos) << e.diagnosis;
+  // No probe of the function in this exercise: the report says the frames are all it had, once.
+  ASSERT_EQ(e.notes.size(), 1u);
+  EXPECT_NE(e.notes[0].find("rests on the frames alone"), std::string::npos) << e.notes[0];
   // No NaN: the one configuration that lost points is named.
   e.configurations[0].nanPixels = 0;
   diagnose(ex, e);
   EXPECT_EQ(e.diagnosis.rfind("Only 'a' loses points", 0), 0u) << e.diagnosis;
+  EXPECT_EQ(e.notes.size(), 1u);
   // Full marks: no diagnosis at all.
   e.configurations[0].checks[0].earned = 1.0;
   e.configurations[0].checks[0].grade = Grade::Full;
