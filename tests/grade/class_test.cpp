@@ -372,14 +372,13 @@ TEST(GradeClass, BadArgumentsAreNamed) {
   }
 }
 
-// --all over a class of three: the lab's own shaders (full marks everywhere), every exercise's
-// starter (each below 30 %, compiling and drawing: told it is the starter by `exercise check`,
-// where it is graded alone), and the seeded mistakes of tests/grade
-// in one folder, each failing the check meant to catch it.
-TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) {
+// --all over a class of two: every exercise's starter in one folder (each below 30 %, compiling and
+// drawing beside the other exercises' starters), and the seeded mistakes of tests/grade in one
+// folder, each failing the check meant to catch it. The lab's own shaders at full marks, and each
+// starter alone, are every exercise's `exercise check` (grade.exercise_check.*).
+TEST(GradeClass, EveryExerciseGradesTheStartersTogetherAndTheSeededMistakes) {
   const fs::path root = scratch("all"), cls = root / "class", out = root / "out";
   fs::create_directories(cls);
-  fs::copy(builtinShaderDir(), cls / "solution", fs::copy_options::recursive);
   const std::vector<std::string> ids = listExercises();
   for (auto& id : ids) {
     Exercise ex;
@@ -409,16 +408,14 @@ TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) 
   const Ran r = runShadelab("grade --class '" + cls.string() + "' --all --jobs 2 --out '" + out.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::map<std::pair<std::string, std::string>, nlohmann::json> rows;  // (student, exercise) -> its report entry
-  for (const char* student : {"solution", "starters", "mistakes"}) {
+  for (const char* student : {"starters", "mistakes"}) {
     const nlohmann::json report =
         nlohmann::json::parse(readText(out / "students" / student / "report.json"), nullptr, false);
     ASSERT_TRUE(report.is_object()) << student;
     for (auto& e : report["exercises"]) rows[{student, e["id"].get<std::string>()}] = e;
   }
   for (auto& id : ids) {
-    const nlohmann::json &solution = rows[std::pair<std::string, std::string>("solution", id)],
-                         &starter = rows[std::pair<std::string, std::string>("starters", id)];
-    EXPECT_DOUBLE_EQ(solution["percent"].get<double>(), 100.0) << id;
+    const nlohmann::json& starter = rows[std::pair<std::string, std::string>("starters", id)];
     EXPECT_EQ(starter["status"], "graded") << id;
     EXPECT_LT(starter["percent"].get<double>(), 30.0) << id;
     for (auto& c : starter["checks"]) {  // the starter compiles and draws: every check has a number
@@ -440,5 +437,5 @@ TEST(GradeClass, EveryExerciseGradesTheSolutionTheStartersAndTheSeededMistakes) 
   std::istringstream book(readText(out / "gradebook.csv"));
   size_t lines = 0;
   for (std::string line; std::getline(book, line);) ++lines;
-  EXPECT_EQ(lines, 1 + 3 * ids.size());
+  EXPECT_EQ(lines, 1 + 2 * ids.size());
 }
