@@ -305,7 +305,8 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
                            {"inf_pixels", properties.infPixels},
                            {"non_finite", properties.nonFiniteText()},
                            {"edge_shift", {properties.edgeShift.x, properties.edgeShift.y}},
-                           {"edge_width_ratio", properties.edgeWidthRatio}};
+                           {"edge_width_ratio", properties.edgeWidthRatio},
+                           {"outside_median", properties.outsideMedian}};
   if (c.needsTruth() && student["errors"].empty()) {
     const Judge& judge = *host.lab().judge();  // the solution was measured against its truth: the lab judges
     if (referenceOf(host.lab()).kind == TruthKind::Mesh) {

@@ -14,6 +14,10 @@ std::string fixed(double v, const char* format) {
   return b;
 }
 
+std::string range(const ConfigurationResult& c) {
+  return "[" + fixed(c.rangeLow, "%g") + ", " + fixed(c.rangeHigh, "%g") + "]";
+}
+
 }  // namespace
 
 std::string nonFiniteCause(const ConfigurationResult& c) {
@@ -28,9 +32,12 @@ std::string nonFiniteCause(const ConfigurationResult& c) {
 Cause propertyCause(const ConfigurationResult& c) {
   const std::string in = " in " + quoted(c.name);
   if (c.outOfRangePct > 0.5)
-    return {"property:out-of-range", "Your values leave the view's range" + in + " (" + fixed(c.outOfRangePct, "%.1f") +
-                                         " % of the pixels): a sum where an average was meant, or weights that do "
-                                         "not add up to 1."};
+    return {"property:out-of-range",
+            "Your values leave the view's range, " + range(c) + "," + in + " (" + fixed(c.outOfRangePct, "%.1f") +
+                " % of the pixels; their median is " + fixed(c.outsideMedian, "%.3g") +
+                "), where the solution's stay inside it. Values go there from a result outside the range returned "
+                "for one of the cases (lit or in shadow, say), a sum where an average was meant, or weights that "
+                "do not add up to 1."};
   // An umbra that does not reach shadow has more than one usual cause (the comparison, taps or a
   // search that leave the occluder, too few blockers found): what was seen, and the candidates.
   if (c.umbraLevel > 0.1)
@@ -53,7 +60,9 @@ Cause propertyCause(const ConfigurationResult& c) {
 
 std::string propertyObservation(const ConfigurationResult& c) {
   const std::string in = "In " + quoted(c.name) + ", ";
-  if (c.outOfRangePct > 0.5) return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range.";
+  if (c.outOfRangePct > 0.5)
+    return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range, " + range(c) +
+           " (their median is " + fixed(c.outsideMedian, "%.3g") + ").";
   if (c.umbraLevel > 0.1)
     return in + "where the truth and the solution are in full shadow, yours averages " + fixed(c.umbraLevel, "%.2f") +
            " of the way to lit.";

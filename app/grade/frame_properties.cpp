@@ -91,6 +91,7 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
   const double low = range.low, span = double(range.high) - range.low;
   size_t outside = 0, coveredPixels = 0, umbraN = 0, litN = 0, studentEdge = 0, solutionEdge = 0;
   double umbra = 0.0, lit = 0.0;
+  std::vector<double> outsideValues;
   const auto inside = [&](double v) { return v > low + 0.05 * span && v < low + 0.95 * span; };
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
@@ -101,7 +102,10 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
       if (!finitePixel(s)) continue;
       const double v = value(s);
       const double eps = 2e-3 * span;
-      outside += std::any_of(s, s + 3, [&](float c) { return c < low - eps || c > low + span + eps; });
+      if (std::any_of(s, s + 3, [&](float c) { return c < low - eps || c > low + span + eps; })) {
+        ++outside;
+        outsideValues.push_back(v);
+      }
       studentEdge += inside(v);
       const double t = truth && !(truth->at(x, y)[3] < 0.5f) ? truth->at(x, y)[0] : value(p);
       if (value(p) <= low + 0.02 * span && t <= low + 0.01 * span) {
@@ -114,6 +118,11 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
       }
     }
   out.outOfRangePct = coveredPixels ? 100.0 * double(outside) / double(coveredPixels) : 0.0;
+  if (!outsideValues.empty()) {
+    auto middle = outsideValues.begin() + std::ptrdiff_t(outsideValues.size() / 2);
+    std::nth_element(outsideValues.begin(), middle, outsideValues.end());
+    out.outsideMedian = *middle;
+  }
   out.umbraLevel = umbraN >= kFewestPixels ? umbra / double(umbraN) : 0.0;
   out.litLevel = litN >= kFewestPixels ? lit / double(litN) : 0.0;
   out.edgeWidthRatio = solutionEdge >= kFewestPixels ? double(studentEdge) / double(solutionEdge) : 1.0;

@@ -30,6 +30,7 @@ struct FrameProperties {
   // The rest read as right (0, or a ratio of 1) where they do not apply: no range, an empty mask,
   // no edge in the solution.
   double outOfRangePct = 0.0;   // covered pixels with a channel outside [low, high], in percent
+  double outsideMedian = 0.0;   // the median of those pixels' values (mean of RGB): where they went
   double umbraLevel = 0.0;      // mean (value - low) / (high - low) over the umbra mask; 0 when right
   double litLevel = 0.0;        // mean (high - value) / (high - low) over the lit mask; 0 when right
   glm::ivec2 edgeShift{0};      // the best-matching shift of the student's frame, in pixels

@@ -113,6 +113,8 @@ double number(const nlohmann::json& values, const std::string& key) {
 
 std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
                         const nlohmann::json& student, std::string why, ConfigurationResult& out) {
+  out.rangeLow = c.low;
+  out.rangeHigh = c.high;
   if (!why.empty()) out.errors.push_back(why);
   if (student.is_object()) {
     for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
@@ -136,6 +138,7 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
     out.edgeShiftY = p["edge_shift"][1].get<int>();
     out.edgeWidthRatio = p["edge_width_ratio"].get<double>();
     out.outOfRangePct = number(student["vs_solution"], "out_of_range_pct");
+    out.outsideMedian = p.value("outside_median", 0.0);
     out.umbraLevel = number(student["vs_solution"], "umbra_level");
     out.litLevel = number(student["vs_solution"], "lit_level");
     if (student.contains("pairs") && student["pairs"].is_array())

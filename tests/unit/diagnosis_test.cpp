@@ -2,6 +2,7 @@
 // values out of the view's range, umbra and lit levels, an edge shifted or widened against the
 // solution's; then which mistake explains a set of frames, and hints that need evidence.
 #include "app/grade/diagnosis.h"
+#include "app/grade/frame_causes.h"
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,15 @@ TEST(FrameProperties, ASumInsteadOfAnAverageLeavesTheRange) {
   for (auto& v : student.rgba) v *= 25.0f;  // alpha too: still covered
   const FrameProperties p = measureFrameProperties(student, solution, nullptr, kVisibility);
   EXPECT_GT(p.outOfRangePct, 40.0);
+  EXPECT_NEAR(p.outsideMedian, 25.0, 1e-4) << "the lit half, 1 x 25: where the values went";
+  // The cause names the range and where the values went, whatever the lab.
+  ConfigurationResult c;
+  c.name = "lit";
+  c.outOfRangePct = p.outOfRangePct;
+  c.outsideMedian = p.outsideMedian;
+  const std::string said = propertyCause(c).text;
+  EXPECT_NE(said.find("range, [0, 1], in 'lit'"), std::string::npos) << said;
+  EXPECT_NE(said.find("their median is 25"), std::string::npos) << said;
   // Unbounded views (shaded colour) have no range to leave.
   EXPECT_EQ(measureFrameProperties(student, solution, nullptr, {}).outOfRangePct, 0.0);
 }
