@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Grading a class: seconds per submission, measured side by side in one run.
-#   tools/grade_bench.sh [BUILD_DIR] [STUDENTS] [EXERCISE]      (defaults: build 6 shadows/pcf)
+#   tools/grade_bench.sh [BUILD_DIR] [STUDENTS] [EXERCISE] [SCOPE]  (defaults: build 6 shadows/pcf "one all")
+# SCOPE "one" measures EXERCISE alone (a few minutes), without --all and the projection.
 # A synthetic class of STUDENTS submissions (the solution, the starter and a seeded mistake in
 # turn), graded for EXERCISE and for --all:
 #   single   `grade --shaders` of one submission without the cache: how one student is graded alone
@@ -20,6 +21,8 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
 students=${2:-6}
 exercise=${3:-shadows/pcf}
+scopes=${4:-one all}
+case $scopes in "one" | "one all") ;; *) echo "grade_bench: SCOPE is 'one' or 'one all', not '$scopes'" >&2; exit 2 ;; esac
 bin=$build/shadelab
 [ -x "$bin" ] || { echo "grade_bench: no $bin; build first (cmake --build $build)" >&2; exit 2; }
 export LIBGL_ALWAYS_SOFTWARE=1
@@ -62,7 +65,7 @@ done
 declare -A result
 for rubrics in with without; do
 if [ $rubrics = with ]; then unset SHADELAB_EXERCISES; else export SHADELAB_EXERCISES=$work/no-mistakes; fi
-for scope in one all; do
+for scope in $scopes; do
   if [ $scope = one ]; then sel=(--exercise "$exercise"); label=$exercise; reps=3; else sel=(--all); label="--all"; reps=1; fi
   times=()
   for ((r = 0; r < reps; ++r)); do times+=("$(run single "${sel[@]}" --shaders "$work/class/student001" --no-cache)"); done
@@ -79,6 +82,7 @@ for scope in one all; do
 done
 done
 unset SHADELAB_EXERCISES
+[ "$scopes" = one ] && exit 0
 printf '\nWith the mistakes against without (same run): single %sx, cold %sx, warm %sx (--all)\n' \
   "$(per "${result[with.all.single]}" "${result[without.all.single]}")" "$(per "${result[with.all.cold]}" "${result[without.all.cold]}")" \
   "$(per "${result[with.all.warm]}" "${result[without.all.warm]}")"
