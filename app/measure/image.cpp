@@ -96,7 +96,10 @@ ImageF diffImage(const ImageF& a, const ImageF& b, float gain) {
   d.size = a.size;
   d.rgba.resize(a.rgba.size());
   for (size_t i = 0; i < a.rgba.size(); ++i)
-    d.rgba[i] = (i % 4 == 3) ? 1.0f : std::min(1.0f, std::abs(clamp01(a.rgba[i]) - clamp01(b.rgba[i])) * gain);
+    d.rgba[i] = (i % 4 == 3) ? 1.0f
+                : !std::isfinite(a.rgba[i]) || !std::isfinite(b.rgba[i])
+                    ? 1.0f
+                    : std::min(1.0f, std::abs(a.rgba[i] - b.rgba[i]) * gain);
   return d;
 }
 

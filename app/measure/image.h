@@ -37,7 +37,9 @@ double drawnRmse(const ImageF& a, const ImageF& b);
 size_t countNonFinite(const ImageF& image);
 // Box filter by an integer factor (supersampled reference -> output size).
 ImageF downsample(const ImageF& image, int factor);
-// |a-b| amplified, for golden-image failure reports.
+// |a-b| amplified (1 where either is not finite), for golden-image failure reports and the
+// grader's pictures. The values as drawn, not clamped for display: a visibility of 2 beside the
+// solution's 1 shows, though both look white.
 ImageF diffImage(const ImageF& a, const ImageF& b, float gain = 4.0f);
 
 // PNG output (RGB8, values clamped). Writes to a temporary name and renames, so a reader never

@@ -37,6 +37,19 @@ TEST(ImageMetrics, NonFiniteCountedAndDownsampleAverages) {
   EXPECT_FLOAT_EQ(d.at(0, 0)[0], 0.25f);
 }
 
+// The difference picture shows what the display hides: 2 against 1 is a difference, and a NaN is
+// the largest one.
+TEST(ImageMetrics, TheDifferenceIsOfTheValuesAsDrawn) {
+  ImageF a = flat(2, 1, 1.0f), b = flat(2, 1, 1.0f);
+  a.at(0, 0)[0] = 2.0f;
+  a.at(1, 0)[1] = NAN;
+  const ImageF d = diffImage(a, b, 4.0f);
+  EXPECT_EQ(d.at(0, 0)[0], 1.0f);
+  EXPECT_EQ(d.at(0, 0)[1], 0.0f);
+  EXPECT_EQ(d.at(1, 0)[1], 1.0f);
+  EXPECT_EQ(d.at(1, 0)[3], 1.0f);
+}
+
 // A frame that draws nothing where the other draws a surface: covered_rmse (both cover) sees no
 // pixel and reads 0; drawnRmse counts what the other drew, yet not a silhouette moved by a pixel.
 TEST(ImageMetrics, DrawnRmseCountsWhatOneFrameLeavesOut) {
