@@ -14,9 +14,7 @@ std::string fixed(double v, const char* format) {
   return b;
 }
 
-std::string range(const ConfigurationResult& c) {
-  return "[" + fixed(c.rangeLow, "%g") + ", " + fixed(c.rangeHigh, "%g") + "]";
-}
+std::string bracketed(const ViewRange& r) { return "[" + fixed(r.low, "%g") + ", " + fixed(r.high, "%g") + "]"; }
 
 }  // namespace
 
@@ -29,12 +27,12 @@ std::string nonFiniteCause(const ConfigurationResult& c) {
   return s + "An Inf comes from dividing a non-zero value by 0 or from log(0): guard the divisor.";
 }
 
-Cause propertyCause(const ConfigurationResult& c) {
+Cause propertyCause(const ConfigurationResult& c, const ViewRange& range) {
   const std::string in = " in " + quoted(c.name);
   if (c.outOfRangePct > 0.5)
     return {"property:out-of-range",
-            "Your values leave the view's range, " + range(c) + "," + in + " (" + fixed(c.outOfRangePct, "%.1f") +
-                " % of the pixels; their median is " + fixed(c.outsideMedian, "%.3g") +
+            "Your values leave the view's range, " + bracketed(range) + "," + in + " (" +
+                fixed(c.outOfRangePct, "%.1f") + " % of the pixels; their median is " + fixed(c.outsideMedian, "%.3g") +
                 "), where the solution's stay inside it. Values go there from a result outside the range returned "
                 "for one of the cases (lit or in shadow, say), a sum where an average was meant, or weights that "
                 "do not add up to 1."};
@@ -58,10 +56,10 @@ Cause propertyCause(const ConfigurationResult& c) {
   return {};
 }
 
-std::string propertyObservation(const ConfigurationResult& c) {
+std::string propertyObservation(const ConfigurationResult& c, const ViewRange& range) {
   const std::string in = "In " + quoted(c.name) + ", ";
   if (c.outOfRangePct > 0.5)
-    return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range, " + range(c) +
+    return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range, " + bracketed(range) +
            " (their median is " + fixed(c.outsideMedian, "%.3g") + ").";
   if (c.umbraLevel > 0.1)
     return in + "where the truth and the solution are in full shadow, yours averages " + fixed(c.umbraLevel, "%.2f") +

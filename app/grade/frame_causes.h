@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "app/grade/frame_properties.h"
 #include "app/grade/grading.h"
 
 namespace shadelab {
@@ -14,11 +15,12 @@ std::string nonFiniteCause(const ConfigurationResult& c);
 struct Cause {
   std::string tag, text;  // ExerciseResult::explanation and diagnosis
 };
-// What a configuration's frame properties say, or nothing (an empty text).
-Cause propertyCause(const ConfigurationResult& c);
+// What a configuration's frame properties say, or nothing (an empty text); `range` is the
+// configuration's (its "range"), named where values leave it.
+Cause propertyCause(const ConfigurationResult& c, const ViewRange& range);
 
 // What a configuration's frame properties measure, without a cause: "In 'a', where the truth and
 // the solution are fully lit, yours is 0.63 of the way to shadow." ("" when nothing stands out).
-std::string propertyObservation(const ConfigurationResult& c);
+std::string propertyObservation(const ConfigurationResult& c, const ViewRange& range);
 
 }  // namespace shadelab

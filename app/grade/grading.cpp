@@ -113,8 +113,6 @@ double number(const nlohmann::json& values, const std::string& key) {
 
 std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
                         const nlohmann::json& student, std::string why, ConfigurationResult& out) {
-  out.rangeLow = c.low;
-  out.rangeHigh = c.high;
   if (!why.empty()) out.errors.push_back(why);
   if (student.is_object()) {
     for (auto& e : student["errors"]) out.errors.push_back(e.get<std::string>());
@@ -210,7 +208,7 @@ std::vector<std::string> checkCells(const CheckResult& r) {
           "<= " + bound(r.check.full, r.fullBound),
           "<= " + bound(r.check.partial, r.partialBound),
           gradeName(r.grade),
-          r.check.points == 0.0 ? "condition" : points(r.earned) + " / " + points(r.check.points)};
+          r.check.isCondition() ? "condition" : points(r.earned) + " / " + points(r.check.points)};
 }
 
 std::string percent(double p) {
@@ -224,7 +222,7 @@ std::string percent(double p) {
 std::string checkLine(const ConfigurationResult& c, const CheckResult& r) {
   char line[512];
   const std::string what = c.name + ": " + r.check.name;
-  const std::string earned = r.check.points == 0.0 ? "condition" : points(r.earned) + "/" + points(r.check.points);
+  const std::string earned = r.check.isCondition() ? "condition" : points(r.earned) + "/" + points(r.check.points);
   std::snprintf(line, sizeof line, "  %-7s %-44s %-16s %9s <= %-24s %s", gradeName(r.grade), what.c_str(),
                 r.check.metric.c_str(), value(r.value).c_str(), bound(r.check.full, r.fullBound).c_str(),
                 earned.c_str());

@@ -63,7 +63,6 @@ struct ConfigurationResult {
   double edgeWidthRatio = 1.0;                                   // its edges' width over the solution's
   double outOfRangePct = 0.0, umbraLevel = 0.0, litLevel = 0.0;  // grade/frame_properties.h
   double outsideMedian = 0.0;                                    // the median value of the pixels out of range
-  float rangeLow = 0.0f, rangeHigh = 1.0f;                       // the configuration's "range", where it has one
   std::vector<FrameRelation> relations;  // how the student's frame relates to the solution's, best first
   // Settings of the configuration at whose other value the solution draws the student's frame:
   // {key, value ("" = the lab's default), distance}, drawn only when nothing else explains it.

@@ -252,7 +252,7 @@ std::string loadConfiguration(const nlohmann::json& j, const std::string& where,
   // A check of no points earns nothing by passing: it only makes sense as a condition that other
   // checks of the configuration require (visibility within [0, 1] before its edges count).
   for (auto& k : c.checks)
-    if (k.points == 0.0 &&
+    if (k.isCondition() &&
         std::none_of(c.checks.begin(), c.checks.end(), [&](const Check& o) { return o.requiredCheck == k.name; }))
       return at + ": check '" + k.name + "' has no points and no check requires it (a condition needs a check that " +
              "\"requires\" it)";

@@ -42,6 +42,7 @@ struct Check {
   Against against = Against::Solution;
   Threshold full, partial;  // value <= full: all points; <= partial: partialCredit of them
   double points = 1.0;      // 0: a condition, earning nothing, that other checks "require"
+  bool isCondition() const { return points == 0.0; }
   double partialCredit = 0.5;
   std::string hint;  // shown when the check is not passed in full: what is likely wrong
   // The evidence the hint's cause needs: checks that must have passed in full, or failed, for it to

@@ -371,7 +371,7 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
       }
     for (auto& k : c.checks) {
       const ImVec4 colour = k.grade == Grade::Full ? kPass : k.grade == Grade::Partial ? kPartial : kFail;
-      if (k.check.points == 0.0)
+      if (k.check.isCondition())
         ImGui::TextColored(colour, "%-7s %s  (a condition)", gradeName(k.grade), k.check.name.c_str());
       else
         ImGui::TextColored(colour, "%-7s %s  %.3g/%.3g", gradeName(k.grade), k.check.name.c_str(), k.earned,

@@ -61,7 +61,7 @@ TEST(FrameProperties, ASumInsteadOfAnAverageLeavesTheRange) {
   c.name = "lit";
   c.outOfRangePct = p.outOfRangePct;
   c.outsideMedian = p.outsideMedian;
-  const std::string said = propertyCause(c).text;
+  const std::string said = propertyCause(c, kVisibility).text;
   EXPECT_NE(said.find("range, [0, 1], in 'lit'"), std::string::npos) << said;
   EXPECT_NE(said.find("their median is 25"), std::string::npos) << said;
   // Unbounded views (shaded colour) have no range to leave.
