@@ -40,15 +40,6 @@ namespace {
 
 constexpr double kStarterBelow = 30.0;  // percent: a starter that scores more gives away the exercise
 
-// The lab's own text of one of an exercise's files: the built-in file, or for a part file
-// (function_parts.h) the built-in functions its starter gives, as the lab defines them.
-std::string labText(const Exercise& ex, const std::string& file) {
-  if (!file.ends_with(kPartSuffix)) return readWholeFile(builtinShaderDir() / file);
-  std::vector<std::string> names;
-  for (auto& f : findFunctions(readWholeFile(ex.dir / "starter" / file))) names.push_back(f.name);
-  return extractPart(readWholeFile(builtinShaderDir() / file.substr(0, file.size() - kPartSuffix.size())), names);
-}
-
 // The starter equals the lab's file but for its TODO region: "" or where they part.
 std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
   std::string starter = readWholeFile(ex.dir / "starter" / file);
@@ -60,12 +51,9 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
       at = starter.find('\n', at) + 1;
     starter = starter.substr(std::min(at, starter.size()));
   }
-  const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
-  const size_t b = starter.find(begin), e = starter.find(end);
-  if (b == std::string::npos || e == std::string::npos || e < b) return {};  // a whole-file starter: nothing to compare
-  const std::string before = starter.substr(0, starter.rfind('\n', b) + 1);
-  const size_t afterAt = starter.find('\n', e);
-  const std::string after = afterAt == std::string::npos ? "" : starter.substr(afterAt + 1);
+  TodoRegion r;
+  if (!findTodoRegion(starter, ex.id, r)) return {};  // a whole-file starter: nothing to compare
+  const std::string before = starter.substr(0, r.from), after = starter.substr(r.to);
   const auto lineOf = [](const std::string& text, size_t at) {
     return 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(at, text.size())), '\n');
   };
@@ -77,31 +65,8 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
   }
   if (lab.size() < after.size() || lab.compare(lab.size() - after.size(), after.size(), after) != 0)
     return "starter/" + file + " differs from the lab's " + file + " after its TODO region (from line " +
-           std::to_string(lineOf(starter, afterAt + 1)) + ")";
+           std::to_string(lineOf(starter, r.to)) + ")";
   return {};
-}
-
-// The solution's text of the starter's TODO region in the lab's `file`, with the lab's text before
-// and after it; false for a whole-file starter (no region).
-bool solutionRegion(const Exercise& ex, const std::string& file, std::string& before, std::string& region,
-                    std::string& after) {
-  const std::string starter = readWholeFile(ex.dir / "starter" / file), lab = labText(ex, file);
-  const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
-  const size_t b = starter.find(begin), e = starter.find(end);
-  if (b == std::string::npos || e == std::string::npos || e < b) return false;
-  // The starter's text around the region is the lab's (starterMatchesLabFile), so the lab's region
-  // lies between the same text; a part file's own prose first is matched from its first function.
-  const size_t beforeEnd = starter.rfind('\n', b) + 1, afterAt = starter.find('\n', e);
-  const std::string tail = afterAt == std::string::npos ? "" : starter.substr(afterAt + 1);
-  const std::string head = starter.substr(0, beforeEnd);
-  const size_t headAt = lab.find(head.substr(head.size() > 400 ? head.size() - 400 : 0));
-  if (headAt == std::string::npos || lab.size() < tail.size()) return false;
-  const size_t from = headAt + std::min(head.size(), size_t(400)), to = lab.size() - tail.size();
-  if (to < from || lab.compare(to, tail.size(), tail) != 0) return false;
-  before = lab.substr(0, from);
-  region = lab.substr(from, to - from);
-  after = tail;
-  return true;
 }
 
 // How the grader did on an unlisted mistake, worst first.

@@ -62,6 +62,8 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   if (!cached) {
     built.numbers = {{"renderer", renderer}};
     if (auto e = drawSolution(ex, c, built); !e.empty()) return failSolution(e);
+    // The slips too: a class needs them once, and the window's Check draws the same (grade/diagnosis.h).
+    if (auto e = drawSlips(ex, c, built); !e.empty()) return failSolution(e);
     if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
   }
   const ImageF& solution = built.frame;

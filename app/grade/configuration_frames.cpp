@@ -11,6 +11,7 @@
 #include "app/grade/frame_properties.h"
 #include "app/grade/frame_relations.h"
 #include "app/grade/function_probe.h"
+#include "app/grade/mutants.h"
 #include "app/host/configure.h"
 #include "app/host/measurer.h"
 #include "app/measure/report.h"
@@ -32,36 +33,49 @@ std::string where(const Exercise& ex, const Configuration& c) {
   return (ex.dir / "rubric.json").string() + ": configuration '" + c.name + "'";
 }
 
+// A folder removed however the loop that fills it ends.
+struct ScratchFolder {
+  fs::path dir;
+  explicit ScratchFolder(const std::string& name)
+      : dir(fs::temp_directory_path() / ("shadelab-" + name + "-" + std::to_string(getpid()))) {}
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+// The configuration drawn with `dir` searched before the built-in shaders: its frame (a function
+// probe's table for a probe configuration) and the build errors. Returns "" or why the rubric is
+// at fault.
+std::string drawChanged(const Exercise& ex, const Configuration& c, const fs::path& dir, ImageF& frame,
+                        std::vector<std::string>& errors) {
+  if (c.function >= 0) {
+    if (auto e = drawFunctionProbe(ex.probes[size_t(c.function)], {dir, builtinShaderDir()}, frame, errors); !e.empty())
+      return where(ex, c) + ": " + e;
+    return {};
+  }
+  std::string configError;
+  const auto host = configuredHost({dir, builtinShaderDir()}, ex, c, configError);
+  if (!configError.empty()) return where(ex, c) + ": " + configError;
+  host->settle();
+  host->renderFrame(ex.size);
+  frame = host->readImage();
+  errors = buildErrors(*host);
+  return {};
+}
+
 // Each of the rubric's mistakes drawn in the configuration: the solution with that one change,
 // from a shader folder of its own searched before the built-in one.
 std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolution& out) {
   out.mistakes.clear();
   out.numbers["mistakes"] = nlohmann::json::array();
-  struct Scratch {  // removed however the loop ends
-    fs::path dir = fs::temp_directory_path() / ("shadelab-mistakes-" + std::to_string(getpid()));
-    ~Scratch() {
-      std::error_code ec;
-      fs::remove_all(dir, ec);
-    }
-  } scratch;
+  const ScratchFolder scratch("mistakes");
   for (auto& m : ex.mistakes) {
     const fs::path dir = scratch.dir / m.name;
     if (auto e = writeMistakeFolder(ex, m, dir); !e.empty()) return e;
     ImageF frame;
     std::vector<std::string> errors;
-    if (c.function >= 0) {
-      if (auto e = drawFunctionProbe(ex.probes[size_t(c.function)], {dir, builtinShaderDir()}, frame, errors);
-          !e.empty())
-        return where(ex, c) + ": " + e;
-    } else {
-      std::string configError;
-      const auto host = configuredHost({dir, builtinShaderDir()}, ex, c, configError);
-      if (!configError.empty()) return where(ex, c) + ": " + configError;
-      host->settle();
-      host->renderFrame(ex.size);
-      frame = host->readImage();
-      errors = buildErrors(*host);
-    }
+    if (auto e = drawChanged(ex, c, dir, frame, errors); !e.empty()) return e;
     if (!errors.empty())
       return (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "' does not build: " + errors.front();
     out.numbers["mistakes"].push_back({{"name", m.name}, {"distance", frameDistance(frame, out.frame)}});
@@ -164,6 +178,7 @@ nlohmann::json probeStudent(const Exercise& ex, const Configuration& c, const st
     for (auto& f :
          analyseProbe(probe, image, solution.frame, solution.mistakes.empty() ? nullptr : &solution.mistakes[0]))
       student["probe"].push_back({{"kind", f.kind}, {"key", f.key}, {"text", f.text}, {"fit", f.fit}});
+  if (errors.empty()) student["slips"] = slipDistances(c, image, solution);
   return student;
 }
 
@@ -242,6 +257,58 @@ std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolut
   return {};
 }
 
+std::vector<Mutant> solutionSlips(const Exercise& ex) {
+  std::string before, region, after;
+  if (ex.files.empty() || !solutionRegion(ex, ex.files.front(), before, region, after)) return {};
+  return mutate(region, kMostSlips);
+}
+
+namespace {
+
+// A slip's frame as it is kept: a picture at half size (the pixels a change moves come in areas),
+// a probe's table as it is (each pixel its own input).
+ImageF slipFrame(const Configuration& c, const ImageF& frame) { return c.function >= 0 ? frame : halvedFrame(frame); }
+
+}  // namespace
+
+std::string drawSlips(const Exercise& ex, const Configuration& c, CachedSolution& out) {
+  out.slips.clear();
+  out.numbers["slips"] = nlohmann::json::array();
+  const ImageF solution = slipFrame(c, out.frame);
+  const ScratchFolder scratch("slips");
+  const std::vector<Mutant> slips = solutionSlips(ex);
+  for (size_t i = 0; i < slips.size(); ++i) {
+    Mistake m;
+    m.name = "slip-" + std::to_string(i);
+    m.file = ex.files.front();
+    m.body = slips[i].text;
+    const fs::path dir = scratch.dir / m.name;
+    if (auto e = writeMistakeFolder(ex, m, dir); !e.empty()) return e;
+    ImageF frame;
+    std::vector<std::string> errors;
+    if (auto e = drawChanged(ex, c, dir, frame, errors); !e.empty()) return e;
+    if (!errors.empty() || frame.size != out.frame.size) continue;  // a slip that does not build is no evidence
+    frame = slipFrame(c, frame);
+    const double separation = frameDistance(frame, solution);
+    if (separation <= kFramesDiffer) continue;  // draws the solution's frame here
+    out.numbers["slips"].push_back({{"index", i},
+                                    {"kind", slips[i].kind},
+                                    {"cause", describeSlip(slips[i], false)},
+                                    {"cause_and_fix", describeSlip(slips[i], true)},
+                                    {"separation", separation}});
+    out.slips.push_back(std::move(frame));
+  }
+  return {};
+}
+
+nlohmann::json slipDistances(const Configuration& c, const ImageF& image, const CachedSolution& solution) {
+  if (!solution.numbers.contains("slips")) return nullptr;
+  const ImageF student = slipFrame(c, image);
+  nlohmann::json to = nlohmann::json::array();
+  for (auto& slip : solution.slips) to.push_back(frameDistance(student, slip));
+  return {{"distance", frameDistance(student, slipFrame(c, solution.frame))}, {"to", to}};
+}
+
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,
                            const CachedSolution& solution, ImageF& image, std::string& error) {
   std::vector<fs::path> roots = studentDirs;
@@ -301,6 +368,7 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
                   [&](const nlohmann::json& d) { return d.get<double>() <= kFramesDiffer; });
   if (!explained && student["errors"].empty() && properties.nonFinitePixels() == 0)
     student["settings"] = settingMatches(ex, c, image, distance);
+  if (student["errors"].empty()) student["slips"] = slipDistances(c, image, solution);
   student["properties"] = {{"nan_pixels", properties.nanPixels},
                            {"inf_pixels", properties.infPixels},
                            {"non_finite", properties.nonFiniteText()},

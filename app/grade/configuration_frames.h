@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/grade/grading.h"
+#include "app/grade/mutants.h"
 #include "app/grade/rubric.h"
 #include "app/grade/solution_cache.h"
 #include "app/host/lab_host.h"
@@ -34,6 +35,21 @@ std::vector<std::string> buildErrors(LabHost& host);
 // The built-in side: `out.frame`, and when a check needs them `out.truths` and out.numbers["vs_truth"].
 // Returns "" or why it could not be drawn (the rubric's or the lab's fault, never the student's).
 std::string drawSolution(const Exercise& ex, const Configuration& c, CachedSolution& out);
+
+// The solution's slips: its TODO region changed in one place each (grade/mutants.h: an operator or
+// comparison turned round, a constant changed, a call dropped, ...), at most kMostSlips, spread
+// over the kinds. Evidence like the rubric's mistakes, with no list to write: a student's frames
+// that are a slip's in every configuration name that slip. None for a whole-file starter.
+constexpr size_t kMostSlips = 30;
+std::vector<Mutant> solutionSlips(const Exercise& ex);
+// Each slip drawn in the configuration; those that build and draw differently from `out.frame`
+// kept in out.slips (at half size; a probe's table whole) with their numbers in out.numbers["slips"].
+// Returns "" or why the rubric is at fault. `shadelab grade` draws them with the solution's frame
+// and caches them with it; the window's Check only when a diagnosis asks for them (slipsNeeded).
+std::string drawSlips(const Exercise& ex, const Configuration& c, CachedSolution& out);
+// The student's frame against the slips: {"distance": to the solution's, "to": [to each slip]}, both
+// at the slips' size; null when the slips were not drawn.
+nlohmann::json slipDistances(const Configuration& c, const ImageF& image, const CachedSolution& solution);
 
 // The student's side against the solution's: their frame in `image` and its numbers
 // {"errors": [...], "vs_solution": {rmse, covered_rmse, max_error, bad_pixel_pct, the frame's

@@ -24,6 +24,9 @@ constexpr double kClose = 1.5, kSlack = 0.005;
 // A relation to the solution's frames (grade/frame_relations.h) wins over a listed mistake when
 // its residual is at most this fraction of the student's distance to the mistake's frames.
 constexpr double kRelationWins = 0.5;
+// A slip's frame is the student's when their distance is within one 8-bit step or this fraction of
+// the student's distance from the solution: a slip is named only on frames that are its own.
+constexpr double kSlipFits = 0.1;
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
@@ -345,6 +348,73 @@ std::string evidenceSentence(const Evidence& ev) {
   return s;
 }
 
+// Whether the student's frames are slip `index`'s (grade/configuration_frames.h: drawSlips): in every
+// drawn configuration where the student's frame differs from the solution's the slip's does too,
+// and wherever the slip's differs the student's is its frame. `misfit`: the summed distance to the
+// slip's frames over the summed distance to the solution's, where it shows; `where` the
+// configurations it shows in.
+bool slipAgrees(const Evidence& ev, int index, double& misfit, std::vector<std::string>& where) {
+  double toSlip = 0.0, toSolution = 0.0;
+  where.clear();
+  for (auto& c : ev.e.configurations) {
+    if (!c.drawn) continue;
+    if (!c.slipsDrawn) return false;
+    const auto it = std::find_if(c.slips.begin(), c.slips.end(),
+                                 [&](const ConfigurationResult::Slip& s) { return s.index == index; });
+    if (it == c.slips.end()) {  // the slip draws the solution's frame here
+      if (c.slipBase > kDiffers) return false;
+      continue;
+    }
+    if (it->distance > std::max(kDiffers, kSlipFits * c.slipBase)) return false;
+    toSlip += it->distance;
+    toSolution += c.slipBase;
+    where.push_back(c.name);
+  }
+  if (where.empty() || toSolution <= 0.0) return false;
+  misfit = toSlip / toSolution;
+  return true;
+}
+
+// The slips whose frames are the student's, as one sentence naming each different cause (at most
+// two: more say only that the frames are those of a small change); `tag` "slip:KIND".
+std::string slipSentence(const Evidence& ev, std::string& tag, double& misfit) {
+  struct Fit {
+    double misfit;
+    const ConfigurationResult::Slip* slip;
+    std::vector<std::string> where;
+  };
+  std::vector<Fit> fits;
+  std::set<int> seen;
+  for (auto& c : ev.e.configurations)
+    for (auto& s : c.slips)
+      if (seen.insert(s.index).second)
+        if (Fit f{0.0, &s, {}}; slipAgrees(ev, s.index, f.misfit, f.where)) fits.push_back(std::move(f));
+  if (fits.empty()) return {};
+  std::sort(fits.begin(), fits.end(), [](const Fit& a, const Fit& b) { return a.misfit < b.misfit; });
+  const bool withFix = ev.ex.reveal == "cause-and-fix";
+  std::vector<std::string> causes;  // the different causes of the slips that fit about as well as the best
+  std::vector<std::string> where = fits.front().where;
+  for (auto& f : fits) {
+    if (f.misfit > kClose * fits.front().misfit + kSlack) break;
+    const std::string cause = withFix ? f.slip->causeAndFix : f.slip->cause;
+    if (std::find(causes.begin(), causes.end(), cause) == causes.end()) causes.push_back(cause);
+  }
+  if (causes.size() > 2) return {};
+  tag = "slip:" + fits.front().slip->kind;
+  misfit = fits.front().misfit;
+  const bool exact = fits.front().misfit <= kSlack;
+  std::string s = causes.size() == 1
+                      ? "Your frames are the solution's with one slip: " + causes.front() + "."
+                      : "Your frames are the solution's with one slip, and two slips draw them alike: either " +
+                            causes[0] + ", or " + causes[1] + ".";
+  const size_t drawn = size_t(std::count_if(ev.e.configurations.begin(), ev.e.configurations.end(),
+                                            [](const ConfigurationResult& c) { return c.drawn; }));
+  return s + " Your code may be written otherwise, but it has this effect. (Evidence: where the slip shows, in " +
+         listed(where) + ", your frames " +
+         (exact ? "are its frames" : "lie far closer to its frames than to the solution's") +
+         (where.size() < drawn ? "; where it draws the solution's frames, so do yours.)" : ".)");
+}
+
 }  // namespace
 
 int explainingMistake(const Exercise& ex, const ExerciseResult& e) {
@@ -418,17 +488,23 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   FrameRelation relation;
   double relationResidual = 0.0, relationMisfit = 0.0;  // summed where it must hold; over the distance
   const bool related = commonRelation(ev, relation, relationResidual, relationMisfit);
+  std::string slipTag;
+  double slipMisfit = 0.0;
+  const std::string slip = slipSentence(ev, slipTag, slipMisfit);
 
   if (!agreeing.empty()) {
     const size_t k = agreeing.front().second;
     const Mistake& m = ex.mistakes[k];
-    const bool relationFitsBetter =
-        related && relationResidual <= kRelationWins * distanceToMistake(ev, k) && !m.starter;
+    // A relation, or a slip of the solution, whose frames are far closer to the student's than a
+    // mistake's that is only close to them.
+    const bool closerFitElsewhere =
+        (related && relationResidual <= kRelationWins * distanceToMistake(ev, k) && !m.starter) ||
+        (!slip.empty() && !m.starter && !exactly(e, k) && slipMisfit <= kRelationWins * agreeing.front().first);
     // A second mistake fits about as well, and the first is not the only one whose frames the
     // student's are exactly.
     const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack &&
                        (!exactly(e, k) || exactly(e, agreeing[1].second));
-    if (m.starter && !relationFitsBetter) {
+    if (m.starter && !closerFitElsewhere) {
       e.mistake = m.name;
       e.explanation = e.starterUnchanged ? "starter" : "starter-result";
       e.diagnosis = e.starterUnchanged ? m.diagnosis
@@ -445,7 +521,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
           relationSentence(ev, relation) + " A known mistake draws exactly these frames: " + mistakeSentence(ex, m);
       return;
     }
-    if (!relationFitsBetter && !split && exactly(e, k) && !m.starter)
+    if (!closerFitElsewhere && !split && exactly(e, k) && !m.starter)
       if (auto [finding, probe] = probeFinding(ev, "ignores"); finding) {
         // The mistake's code is one way to ignore an input; the student's may be another (the
         // strength left out draws what the strength applied to every component draws): say what
@@ -456,7 +532,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
                       ".) A known mistake returns exactly these values: " + mistakeSentence(ex, m);
         return;
       }
-    if (!relationFitsBetter && !split) {
+    if (!closerFitElsewhere && !split) {
       // Frames that are the mistake's name it; frames only close to them say so: the effect is the
       // mistake's, the code that makes it may differ (a bias far too small acts as none).
       const bool exact = exactly(e, k);
@@ -466,7 +542,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
                     mistakeSentence(ex, m) + mistakeEvidence(e, k);
       return;
     }
-    if (!relationFitsBetter) {  // two listed mistakes fit about as well: say what the frames show
+    if (!closerFitElsewhere) {  // two listed mistakes fit about as well: say what the frames show
       std::string tag, where = wherePredicate(ev, tag);
       e.explanation = "evidence";
       e.diagnosis = (where.empty() ? "" : where + " ") +
@@ -485,6 +561,16 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
                         " And: " + mistakeSentence(ex, ex.mistakes[j]) + mistakeEvidence(e, j);
           return;
         }
+  // One slip of the solution draws the student's frames: no list of mistakes needed. When a
+  // relation to the solution's frames holds as exactly, the relation is what the frames show and
+  // the slip one way to it.
+  if (!slip.empty()) {
+    e.explanation = slipTag;
+    e.diagnosis = related && relationResidual <= kDiffers * double(ev.related().size())
+                      ? relationSentence(ev, relation) + " " + slip
+                      : slip;
+    return;
+  }
   // The function probed by itself: what its table says, before what the pictures made of it say.
   // The most telling finding of any probe (findingRank): an input turned round or ignored says
   // more than a where.
@@ -564,6 +650,16 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
 }
 
 }  // namespace
+
+bool slipsNeeded(const ExerciseResult& e) {
+  // A slip is looked at where no listed mistake is named, or one only close to the frames is.
+  if (e.outcome() != Outcome::Graded || e.diagnosis.empty() ||
+      !(e.mistake.empty() || e.explanation.rfind("like:", 0) == 0))
+    return false;
+  for (auto& c : e.configurations)
+    if (c.drawn && !c.slipsDrawn) return true;
+  return false;
+}
 
 void diagnose(const Exercise& ex, ExerciseResult& e) {
   diagnoseFromEvidence(ex, e);

@@ -9,18 +9,23 @@
 //      with the rubric's sentence (and its fix, where the rubric reveals fixes) and where it
 //      shows; the untouched starter as the starter, a changed file that draws what the starter
 //      draws as such. When a second mistake fits about as well, or a relation to the solution's
-//      frames (3) fits clearly better, no mistake is named;
+//      frames (5) fits clearly better, no mistake is named;
 //   2. two known mistakes made together: each shows alone somewhere and agrees there;
-//   3. the frame holds NaN or Inf (how many, where, and the usual causes of each);
-//   4. a relation holds in every configuration that lost points (grade/frame_relations.h: turned
+//   3. one slip of the solution (grade/mutants.h: an operator or comparison turned round, a
+//      constant changed, a call dropped, ...) whose frames are the student's in every configuration,
+//      named by its kind and, where the rubric reveals fixes, what the solution has in its place;
+//      no list needed. Two slips that draw the same frames are named together. Then what the
+//      function probed by itself shows (grade/function_probe.h), where the exercise has a probe;
+//   4. the frame holds NaN or Inf (how many, where, and the usual causes of each);
+//   5. a relation holds in every configuration that lost points (grade/frame_relations.h: turned
 //      over, scaled, offset, squared, mirrored, shifted, components exchanged or turned over): the
 //      relation, where it holds, and what it usually comes from;
 //      Or, when it fits better, a setting at whose other value the solution draws the student's
 //      frames in every losing configuration ("your frames are the solution's at strength 1").
-//   5. a property of the frame: values outside the view's range, an umbra that does not reach
+//   6. a property of the frame: values outside the view's range, an umbra that does not reach
 //      its low end or a lit region its high end, edges wider or narrower than the solution's;
-//   6. where the frames differ, as a setting: "differ only where light_type is spot";
-//   7. otherwise what the frames show: how many configurations differ, where most, and the check
+//   7. where the frames differ, as a setting: "differ only where light_type is spot";
+//   8. otherwise what the frames show: how many configurations differ, where most, and the check
 //      that lost most.
 //
 // Hints obey the same rule: a check's hint is shown only when the checks its cause needs passed or
@@ -35,6 +40,10 @@ namespace shadelab {
 // on) and e.mistake when a mistake of the rubric explains the frames. Leaves them empty when every
 // point was earned.
 void diagnose(const Exercise& ex, ExerciseResult& e);
+
+// Whether the diagnosis of `e` would look at the solution's slips and some drawn configuration has
+// none yet: the window's Check draws them then (grade/exercise_check.h) and diagnoses again.
+bool slipsNeeded(const ExerciseResult& e);
 
 // Which of the rubric's mistakes explains the frames of `e`: its index, or -1.
 int explainingMistake(const Exercise& ex, const ExerciseResult& e);

@@ -73,6 +73,8 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   error_.clear();
   result_ = ExerciseResult{};
   pictures_.clear();
+  studentFrames_.clear();
+  slipStep_ = -1;
   ++generation_;
   Exercise ex;
   if (auto e = loadExercise(id, ex); !e.empty()) return error_ = e;
@@ -103,10 +105,12 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
 
 void ExerciseCheck::step() {
   if (!running_) return;
+  if (slipStep_ >= 0) return stepSlips();
   const size_t i = result_.configurations.size();
   const Configuration& c = exercise_.configurations[i];
   ConfigurationResult out;
   Pictures picturesOf;
+  ImageF studentFrame;
   out.name = c.name;
   out.description = describeConfiguration(c);
   out.visibility = c.visibility;
@@ -133,12 +137,38 @@ void ExerciseCheck::step() {
                     [](const CheckResult& r) { return r.grade != Grade::Full; }) &&
         !image.rgba.empty() && image.size == kept->second.frame.size)
       picturesOf = {image, kept->second.frame, diffImage(image, kept->second.frame)};
+    studentFrame = std::move(image);
   }
   pictures_.push_back(std::move(picturesOf));
+  studentFrames_.push_back(std::move(studentFrame));
   for (auto& r : out.checks) result_.earned += r.earned;
   result_.configurations.push_back(std::move(out));
   running_ = result_.configurations.size() < exercise_.configurations.size();
-  if (!running_) diagnose(exercise_, result_);
+  if (running_) return;
+  diagnose(exercise_, result_);
+  if (slipsNeeded(result_)) {
+    slipStep_ = 0;
+    running_ = true;
+  }
+}
+
+void ExerciseCheck::stepSlips() {
+  const size_t i = size_t(slipStep_);
+  ConfigurationResult& out = result_.configurations[i];
+  if (out.drawn && !out.slipsDrawn) {
+    const Configuration& c = exercise_.configurations[i];
+    CachedSolution& kept = solutions_.at(exercise_.id + "#" + std::to_string(i));
+    if (!kept.numbers.contains("slips"))
+      if (auto e = drawSlips(exercise_, c, kept); !e.empty()) {
+        error_ = e;
+        running_ = false;
+        return;
+      }
+    addSlipEvidence(kept.numbers, slipDistances(c, studentFrames_[i], kept), out);
+  }
+  if (size_t(++slipStep_) < result_.configurations.size()) return;
+  running_ = false;
+  diagnose(exercise_, result_);
 }
 
 std::vector<std::string> ExerciseCheck::lines() const {

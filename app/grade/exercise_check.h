@@ -43,8 +43,12 @@ class ExerciseCheck {
   bool finished() const {
     return !running_ && error_.empty() && result_.configurations.size() == exercise_.configurations.size();
   }
-  // Draws and scores the next configuration (one call can take a while: a truth to trace).
+  // Draws and scores the next configuration (one call can take a while: a truth to trace). When
+  // every configuration is scored and the diagnosis asks for the solution's slips (slipsNeeded),
+  // the next steps draw them, one configuration each, and the diagnosis is made again with them.
   void step();
+  // Drawing the slips after every configuration was scored.
+  bool drawingSlips() const { return running_ && slipStep_ >= 0; }
 
   const std::string& id() const { return exercise_.id; }
   size_t configurationsDone() const { return result_.configurations.size(); }
@@ -69,10 +73,13 @@ class ExerciseCheck {
   std::vector<std::string> lines() const;
 
  private:
+  void stepSlips();
   Exercise exercise_;
   std::vector<std::filesystem::path> studentDirs_;
   ExerciseResult result_;
   std::vector<Pictures> pictures_;
+  std::vector<ImageF> studentFrames_;  // every configuration's, kept for the slips
+  long slipStep_ = -1;                 // the configuration whose slips the next step draws; -1: not yet
   size_t hidden_ = 0;
   int generation_ = 0;
   std::string error_;

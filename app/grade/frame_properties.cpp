@@ -151,4 +151,20 @@ double frameDistance(const ImageF& a, const ImageF& b) {
   return n ? std::sqrt(sum / double(n * 3)) : 0.0;
 }
 
+ImageF halvedFrame(const ImageF& frame) {
+  ImageF out;
+  out.size = frame.size / 2;
+  out.rgba.assign(size_t(out.size.x) * size_t(out.size.y) * 4, 0.0f);
+  for (int y = 0; y < out.size.y; ++y)
+    for (int x = 0; x < out.size.x; ++x) {
+      float* o = out.at(x, y);
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx) {
+          const float* p = frame.at(2 * x + dx, 2 * y + dy);
+          for (int c = 0; c < 4; ++c) o[c] += 0.25f * p[c];
+        }
+    }
+  return out;
+}
+
 }  // namespace shadelab

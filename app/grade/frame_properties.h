@@ -62,4 +62,8 @@ double frameDistance(const ImageF& a, const ImageF& b);
 // Two frames differ when frameDistance puts them further apart than one 8-bit step.
 constexpr double kFramesDiffer = 0.004;
 
+// The frame at half its width and height, each pixel the mean of four (a non-finite one makes the
+// mean non-finite): what the solution's slips are kept and compared at (grade/configuration_frames.h).
+ImageF halvedFrame(const ImageF& frame);
+
 }  // namespace shadelab

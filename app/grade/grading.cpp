@@ -111,6 +111,21 @@ double number(const nlohmann::json& values, const std::string& key) {
 
 }  // namespace
 
+void addSlipEvidence(const nlohmann::json& solution, const nlohmann::json& distances, ConfigurationResult& out) {
+  out.slips.clear();
+  out.slipsDrawn = false;
+  if (!distances.is_object() || !solution.contains("slips") || !solution["slips"].is_array()) return;
+  const nlohmann::json& slips = solution["slips"];
+  const nlohmann::json& to = distances.value("to", nlohmann::json::array());
+  if (!to.is_array() || to.size() != slips.size()) return;
+  out.slipsDrawn = true;
+  out.slipBase = distances.value("distance", 0.0);
+  for (size_t i = 0; i < slips.size(); ++i)
+    out.slips.push_back({slips[i].value("index", -1), slips[i].value("kind", ""), slips[i].value("cause", ""),
+                         slips[i].value("cause_and_fix", ""), slips[i].value("separation", 0.0),
+                         to[i].is_number() ? to[i].get<double>() : 1.0});
+}
+
 std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
                         const nlohmann::json& student, std::string why, ConfigurationResult& out) {
   if (!why.empty()) out.errors.push_back(why);
@@ -153,6 +168,7 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
       for (auto& f : student["probe"])
         out.probeFindings.push_back(
             {f.value("kind", ""), f.value("key", ""), f.value("text", ""), f.value("fit", 0.0)});
+    addSlipEvidence(solution, student.value("slips", nlohmann::json()), out);
   }
   out.function = c.function >= 0;
   for (auto& check : c.checks) {

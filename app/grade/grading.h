@@ -71,6 +71,18 @@ struct ConfigurationResult {
     double distance = 0.0;
   };
   std::vector<SettingMatch> settingMatches;
+  // The solution's slips that draw differently here (grade/configuration_frames.h: drawSlips), each
+  // with its frame's distance from the solution's and the student's frame's distance to it, at the
+  // slips' size; `slipBase` the student's to the solution's at that size. `slipsDrawn` is false when
+  // the slips were not drawn (the window draws them only when a diagnosis needs them).
+  struct Slip {
+    int index = -1;
+    std::string kind, cause, causeAndFix;
+    double separation = 0.0, distance = 0.0;
+  };
+  bool slipsDrawn = false;
+  double slipBase = 0.0;
+  std::vector<Slip> slips;
   // A function probe's configuration (grade/function_probe.h): no checks, and what its table says.
   bool function = false;
   std::vector<ProbeFinding> probeFindings;
@@ -90,6 +102,10 @@ std::string describeConfiguration(const Configuration& c);
 // the lab does not report).
 std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohmann::json& solution,
                         const nlohmann::json& student, std::string why, ConfigurationResult& out);
+
+// The slips' evidence of one configuration: the solution's "slips" (its numbers) and the student's
+// distances to them (slipDistances); nothing when either is missing or they do not match.
+void addSlipEvidence(const nlohmann::json& solution, const nlohmann::json& distances, ConfigurationResult& out);
 
 // A configuration not graded because a file is missing (`why`: "X is in none of the folders"):
 // every check scores 0 with it.

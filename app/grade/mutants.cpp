@@ -141,9 +141,12 @@ std::vector<Mutant> mutate(const std::string& region, size_t most) {
   const Source src{region};
   std::vector<Mutant> all;
   // One change: the text from `from` to `to` replaced by `with`.
-  const auto add = [&](const std::string& kind, size_t from, size_t to, const std::string& with) {
+  const auto add = [&](const std::string& kind, size_t from, size_t to, const std::string& with,
+                       const std::string& subject = {}) {
     Mutant m;
     m.kind = kind;
+    m.from = subject.empty() ? region.substr(from, to - from) : subject;
+    m.to = subject.empty() ? with : subject;
     m.line = lineOf(region, from);
     m.text = region.substr(0, from) + with + region.substr(to);
     m.before = lineText(region, from);
@@ -197,7 +200,7 @@ std::vector<Mutant> mutate(const std::string& region, size_t most) {
       const size_t argsFrom = src.end(open), argsTo = src.tokens[close].at;
       if (kDroppable.count(s)) {
         const size_t firstEnd = commas.empty() ? argsTo : src.tokens[commas[0]].at;
-        add("call-dropped", tok.at, src.end(close), "(" + region.substr(argsFrom, firstEnd - argsFrom) + ")");
+        add("call-dropped", tok.at, src.end(close), "(" + region.substr(argsFrom, firstEnd - argsFrom) + ")", s);
       }
       if (!kSymmetric.count(s) && !commas.empty()) {
         const size_t secondEnd = commas.size() > 1 ? src.tokens[commas[1]].at : argsTo;
@@ -209,7 +212,7 @@ std::vector<Mutant> mutate(const std::string& region, size_t most) {
         };
         a = trim(a);
         b = trim(b);
-        if (!a.empty() && !b.empty() && a != b) add("arguments-swapped", argsFrom, secondEnd, b + ", " + a);
+        if (!a.empty() && !b.empty() && a != b) add("arguments-swapped", argsFrom, secondEnd, b + ", " + a, s);
       }
     }
   }
@@ -224,6 +227,28 @@ std::vector<Mutant> mutate(const std::string& region, size_t most) {
       if (out.size() < most && taken[kind] < list.size()) out.push_back(list[taken[kind]++]);
   std::sort(out.begin(), out.end(), [](const Mutant& a, const Mutant& b) { return a.line < b.line; });
   return out;
+}
+
+std::string describeSlip(const Mutant& m, bool withFix) {
+  const auto terms = [&](const std::string& what) {
+    return withFix ? " (in the solution's terms, " + what + ")" : std::string();
+  };
+  if (m.kind == "comparison" && (m.from == "&&" || m.from == "||"))
+    return "two conditions joined the other way ('and' for 'or', or the reverse)" +
+           terms("a '" + m.to + "' where a '" + m.from + "' belongs");
+  if (m.kind == "comparison")
+    return "a comparison turned round, so the test holds where it should fail" +
+           terms("a '" + m.to + "' where a '" + m.from + "' belongs");
+  if (m.kind == "operator")
+    return "an operation turned into its inverse (an addition for a subtraction, or a product for a quotient)" +
+           terms("a '" + m.to + "' where a '" + m.from + "' belongs");
+  if (m.kind == "constant") return "one constant at another value" + terms(m.to + " where " + m.from + " belongs");
+  if (m.kind == "call-dropped") return "a call to " + m.from + " left out, its argument used as it is";
+  if (m.kind == "arguments-swapped") return "the first two arguments of " + m.from + " exchanged";
+  if (m.kind == "swizzle")
+    return "one vector component read in place of another" + terms("'." + m.to + "' where '." + m.from + "' belongs");
+  if (m.kind == "negation-dropped") return "a minus sign left out, so one term has the opposite sign";
+  return "one change of kind " + m.kind;
 }
 
 }  // namespace shadelab

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/measure/report.h"
+#include "app/shader/function_parts.h"
 #include "app/shader/preprocessor.h"
 #include "app/util/contained_path.h"
 #include "app/util/format.h"
@@ -290,6 +291,43 @@ std::string loadMistake(const nlohmann::json& j, const std::string& where, const
 
 }  // namespace
 
+bool findTodoRegion(const std::string& text, const std::string& id, TodoRegion& out) {
+  const std::string marker = "TODO(exercise " + id + "): ";
+  const size_t b = text.find(marker + "begin"), e = text.find(marker + "end");
+  if (b == std::string::npos || e == std::string::npos || e < b) return false;
+  const size_t lineStart = text.rfind('\n', b), lineEnd = text.find('\n', e);
+  out.from = lineStart == std::string::npos ? 0 : lineStart + 1;
+  out.to = lineEnd == std::string::npos ? text.size() : lineEnd + 1;
+  return true;
+}
+
+std::string labText(const Exercise& ex, const std::string& file) {
+  if (!file.ends_with(kPartSuffix)) return readWholeFile(builtinShaderDir() / file);
+  std::vector<std::string> names;
+  for (auto& f : findFunctions(readWholeFile(ex.dir / "starter" / file))) names.push_back(f.name);
+  return extractPart(readWholeFile(builtinShaderDir() / file.substr(0, file.size() - kPartSuffix.size())), names);
+}
+
+bool solutionRegion(const Exercise& ex, const std::string& file, std::string& before, std::string& region,
+                    std::string& after) {
+  const std::string starter = readWholeFile(ex.dir / "starter" / file), lab = labText(ex, file);
+  TodoRegion r;
+  if (!findTodoRegion(starter, ex.id, r)) return false;
+  // The starter's text around the region is the lab's (exercise check says so), so the lab's
+  // region lies between the same text; a part file's own prose first is matched by its last 400
+  // characters before the region.
+  const std::string head = starter.substr(0, r.from), tail = starter.substr(r.to);
+  constexpr size_t kHead = 400;
+  const size_t headAt = lab.find(head.substr(head.size() > kHead ? head.size() - kHead : 0));
+  if (headAt == std::string::npos || lab.size() < tail.size()) return false;
+  const size_t from = headAt + std::min(head.size(), kHead), to = lab.size() - tail.size();
+  if (to < from || lab.compare(to, tail.size(), tail) != 0) return false;
+  before = lab.substr(0, from);
+  region = lab.substr(from, to - from);
+  after = tail;
+  return true;
+}
+
 std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out) {
   const std::string at = (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "'";
   if (m.starter) {
@@ -298,14 +336,13 @@ std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out
   }
   if (m.find.empty()) {
     const std::string starter = readWholeFile(ex.dir / "starter" / m.file);
-    const std::string begin = "TODO(exercise " + ex.id + "): begin", end = "TODO(exercise " + ex.id + "): end";
-    const size_t b = starter.find(begin), e = starter.find(end);
-    if (b == std::string::npos || e == std::string::npos || e < b)
-      return at + ": the starter " + m.file + " has no TODO region (lines holding '" + begin + "' and '" + end + "')";
-    const size_t from = starter.rfind('\n', b) + 1, to = starter.find('\n', e);  // whole lines, markers included
+    TodoRegion r;
+    if (!findTodoRegion(starter, ex.id, r))
+      return at + ": the starter " + m.file + " has no TODO region (lines holding 'TODO(exercise " + ex.id +
+             "): begin' and '...: end')";
     std::string body = m.body;
     if (!body.empty() && body.back() != '\n') body += '\n';
-    out = starter.substr(0, from) + body + (to == std::string::npos ? "" : starter.substr(to + 1));
+    out = starter.substr(0, r.from) + body + starter.substr(r.to);
     return {};
   }
   std::string text = readWholeFile(builtinShaderDir() / m.file);

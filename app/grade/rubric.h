@@ -150,6 +150,23 @@ std::string loadExercise(const std::string& id, Exercise& out);
 // That root, or an empty path where none holds `id`.
 std::filesystem::path exerciseRootOf(const std::string& id);
 
+// Where an exercise's TODO region lies in a starter's text: whole lines, from the start of the
+// line holding "TODO(exercise ID): begin" to just past the line holding "...: end" (markers
+// included). False for a whole-file starter (no region, or the markers out of order).
+struct TodoRegion {
+  size_t from = 0, to = 0;
+};
+bool findTodoRegion(const std::string& text, const std::string& id, TodoRegion& out);
+
+// The lab's own text of one of an exercise's files: the built-in file, or for a part file
+// (shader/function_parts.h) the built-in functions its starter gives, as the lab defines them.
+std::string labText(const Exercise& ex, const std::string& file);
+// The solution's text of the starter's TODO region in the lab's `file`, with the lab's text before
+// and after it; false for a whole-file starter, or a lab file the starter's text around its region
+// cannot be found in.
+bool solutionRegion(const Exercise& ex, const std::string& file, std::string& before, std::string& region,
+                    std::string& after);
+
 // The text of the mistake's file: the starter with its TODO region replaced, or the lab's own file
 // with `find` replaced. "" on success, else one line naming the rubric's mistake and what is wrong.
 std::string mistakeSource(const Exercise& ex, const Mistake& m, std::string& out);

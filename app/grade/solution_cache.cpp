@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kMagic = "SHADELAB-SOLUTION 2\n";
+constexpr std::string_view kMagic = "SHADELAB-SOLUTION 3\n";
 constexpr int kMaxSide = 16384;
 
 template <typename T>
@@ -140,16 +140,19 @@ bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
   Reader in{bytes};
   if (bytes.compare(0, kMagic.size(), kMagic) != 0) return false;
   in.at = kMagic.size();
-  uint32_t jsonBytes = 0, truths = 0, mistakes = 0;
+  uint32_t jsonBytes = 0, truths = 0, mistakes = 0, slips = 0;
   if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
   CachedSolution entry;
   entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
   in.at += jsonBytes;
   if (entry.numbers.is_discarded() || !entry.numbers.is_object()) return false;
-  if (!in.get(truths) || !in.get(mistakes) || truths > 64 || mistakes > 256 || !getImage(in, entry.frame)) return false;
+  if (!in.get(truths) || !in.get(mistakes) || !in.get(slips) || truths > 64 || mistakes > 256 || slips > 256 ||
+      !getImage(in, entry.frame))
+    return false;
   entry.truths.resize(truths);
   entry.mistakes.resize(mistakes);
-  for (auto* images : {&entry.truths, &entry.mistakes})
+  entry.slips.resize(slips);
+  for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
     for (auto& image : *images)
       if (!getImage(in, image)) return false;
   if (in.at != bytes.size()) return false;
@@ -167,8 +170,9 @@ std::string SolutionCache::store(const std::string& key, const CachedSolution& e
   bytes += json;
   put<uint32_t>(bytes, uint32_t(entry.truths.size()));
   put<uint32_t>(bytes, uint32_t(entry.mistakes.size()));
+  put<uint32_t>(bytes, uint32_t(entry.slips.size()));
   putImage(bytes, entry.frame);
-  for (auto* images : {&entry.truths, &entry.mistakes})
+  for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
     for (auto& image : *images) putImage(bytes, image);
 
   std::error_code ec;

@@ -1,6 +1,7 @@
 // What grading renders with the built-in shaders, kept between runs: for one rubric configuration,
 // the solution's frame, the lab's ground truths and the solution's numbers against them, and the
-// frame of every mistake the rubric lists (the solution with that one change). A class of
+// frame of every mistake the rubric lists (the solution with that one change), and of every slip
+// (the solution changed in one place, grade/mutants.h) that draws differently. A class of
 // 500 students needs them once, not 500 times.
 //
 // An entry is named by a key over everything that could change it: the contents of every built-in
@@ -48,8 +49,12 @@ struct CachedSolution {
   ImageF frame;                  // the solution's frame
   std::vector<ImageF> truths;    // the lab's references for the configuration (empty when no check needs them)
   std::vector<ImageF> mistakes;  // each of the rubric's mistakes drawn in the configuration, in its order
-  // What the solution's phase reports: renderer, vs_truth, and "mistakes": [{name, distance}], each
-  // mistake's frame against the solution's (frameDistance).
+  // The solution's slips (grade/mutants.h) that build and draw differently here, at half size
+  // (halvedFrame); absent until drawSlips has run.
+  std::vector<ImageF> slips;
+  // What the solution's phase reports: renderer, vs_truth, "mistakes": [{name, distance}], each
+  // mistake's frame against the solution's (frameDistance), and once drawn "slips": [{index, kind,
+  // cause, cause_and_fix, separation}], one for each of `slips`.
   nlohmann::json numbers;
 };
 

@@ -410,3 +410,86 @@ TEST(Diagnosis, AFromScratchExerciseIsToldTheCauseAndNotTheFix) {
   diagnose(ex, e);
   EXPECT_EQ(e.diagnosis.find("because sign Write it so."), 0u) << e.diagnosis;
 }
+
+namespace {
+
+// Slip `index` of the solution drawn in configuration c: its frame `separation` from the solution's,
+// the student's `distance` from it; `base` the student's from the solution's at the slips' size.
+void withSlip(ConfigurationResult& c, int index, const std::string& kind, double separation, double distance,
+              double base) {
+  c.slipsDrawn = true;
+  c.slipBase = base;
+  c.slips.push_back({index, kind, "cause " + kind, "cause " + kind + " and its fix", separation, distance});
+}
+
+}  // namespace
+
+TEST(Diagnosis, ASlipOfTheSolutionWhoseFramesAreTheStudentsIsNamedWithoutAList) {
+  Exercise ex = twoMistakes();
+  ex.reveal = "cause";
+  ExerciseResult e;
+  e.total = 3.0;
+  // The student loses points in "a" and "b" and matches in "c"; no listed mistake comes near.
+  e.configurations = {drawn("a", 0.3, {0.4, 0.3, 0.3}, {0.4, 0.0, 0.0}),
+                      drawn("b", 0.2, {0.4, 0.2, 0.2}, {0.4, 0.0, 0.0}),
+                      drawn("c", 0.0, {0.4, 0.0, 0.0}, {0.4, 0.0, 0.0}, 1.0)};
+  withSlip(e.configurations[0], 3, "comparison", 0.3, 0.001, 0.3);
+  withSlip(e.configurations[1], 3, "comparison", 0.2, 0.0, 0.2);
+  e.configurations[2].slipsDrawn = true;  // the slip draws the solution's frame in "c", as the student does
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "slip:comparison") << e.diagnosis;
+  EXPECT_TRUE(e.mistake.empty());
+  EXPECT_EQ(e.diagnosis.find("Your frames are the solution's with one slip: cause comparison."), 0u) << e.diagnosis;
+  EXPECT_NE(e.diagnosis.find("in 'a' and 'b', your frames are its frames; where it draws the solution's"),
+            std::string::npos)
+      << e.diagnosis;
+  // Where the exercise reveals fixes, the slip's sentence with what the solution has in its place.
+  ex.reveal = "cause-and-fix";
+  diagnose(ex, e);
+  EXPECT_NE(e.diagnosis.find("cause comparison and its fix"), std::string::npos) << e.diagnosis;
+
+  // A second slip drawing the same frames with another cause: both are named, neither alone.
+  withSlip(e.configurations[0], 7, "operator", 0.3, 0.001, 0.3);
+  withSlip(e.configurations[1], 7, "operator", 0.2, 0.001, 0.2);
+  diagnose(ex, e);
+  EXPECT_NE(e.diagnosis.find("either cause comparison and its fix, or cause operator and its fix"), std::string::npos)
+      << e.diagnosis;
+
+  // The slips also change "c", where the student's frame is the solution's: not the student's slip.
+  for (int index : {3, 7}) withSlip(e.configurations[2], index, "comparison", 0.1, 0.1, 0.0);
+  diagnose(ex, e);
+  EXPECT_NE(e.explanation.rfind("slip:", 0), 0u) << e.diagnosis;
+
+  // Frames near a slip's but not on it (a tenth of the distance or more away) name no slip.
+  e.configurations[2].slips.clear();
+  for (auto& c : e.configurations)
+    for (auto& s : c.slips) s.distance = 0.5 * c.slipBase;
+  diagnose(ex, e);
+  EXPECT_NE(e.explanation.rfind("slip:", 0), 0u) << e.diagnosis;
+
+  // Slips not drawn for a configuration the student drew (the window draws them on demand): no slip
+  // is named, and the diagnosis asks for them.
+  for (auto& c : e.configurations)
+    for (auto& s : c.slips) s.distance = 0.0;
+  e.configurations[2].slipsDrawn = false;
+  diagnose(ex, e);
+  EXPECT_NE(e.explanation.rfind("slip:", 0), 0u) << e.diagnosis;
+}
+
+TEST(Diagnosis, ASlipOnTheFramesBeatsAListedMistakeThatIsOnlyNearThem) {
+  const Exercise ex = twoMistakes();
+  ExerciseResult e;
+  e.total = 2.0;
+  // "sign" agrees loosely (the student 0.3 of the way from it); a slip draws the student's frames.
+  e.configurations = {drawn("a", 0.5, {0.6, 0.15, 0.5}, {0.6, 0.5, 0.0}),
+                      drawn("b", 0.4, {0.6, 0.12, 0.4}, {0.6, 0.4, 0.0})};
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "like:sign") << e.diagnosis;
+  EXPECT_TRUE(slipsNeeded(e)) << "a mistake only near the frames: the window draws the slips";
+  withSlip(e.configurations[0], 0, "constant", 0.5, 0.0, 0.5);
+  withSlip(e.configurations[1], 0, "constant", 0.4, 0.0, 0.4);
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "slip:constant") << e.diagnosis;
+  EXPECT_TRUE(e.mistake.empty());
+  EXPECT_FALSE(slipsNeeded(e));
+}

@@ -39,6 +39,38 @@ TEST(Mutants, EachKindOfSlipOnce) {
   }
 }
 
+TEST(Mutants, ASlipIsDescribedByItsKindAndNeverByTheSolutionsLine) {
+  const std::string region =
+      "  float s = max(dot(N, h), 0.25);\n"
+      "  if (s < 0.5) s = -s;\n"
+      "  return mix(a.xy, b.x, s);\n";
+  const std::vector<Mutant> ms = mutate(region, 1000);
+  const auto find = [&](const std::string& kind, const std::string& from) {
+    const auto it =
+        std::find_if(ms.begin(), ms.end(), [&](const Mutant& m) { return m.kind == kind && m.from == from; });
+    EXPECT_NE(it, ms.end()) << kind << " " << from;
+    return it == ms.end() ? Mutant{} : *it;
+  };
+  const Mutant comparison = find("comparison", "<");
+  EXPECT_EQ(comparison.to, ">");
+  EXPECT_EQ(describeSlip(comparison, false), "a comparison turned round, so the test holds where it should fail");
+  EXPECT_EQ(describeSlip(comparison, true),
+            "a comparison turned round, so the test holds where it should fail (in the solution's terms, a '>' "
+            "where a '<' belongs)");
+  EXPECT_EQ(describeSlip(find("constant", "0.25"), true),
+            "one constant at another value (in the solution's terms, 0.5 where 0.25 belongs)");
+  EXPECT_EQ(describeSlip(find("call-dropped", "max"), false), "a call to max left out, its argument used as it is");
+  EXPECT_EQ(describeSlip(find("arguments-swapped", "mix"), false), "the first two arguments of mix exchanged");
+  EXPECT_EQ(describeSlip(find("negation-dropped", "-"), false),
+            "a minus sign left out, so one term has the opposite sign");
+  for (auto& m : ms)
+    for (bool withFix : {false, true}) {
+      const std::string d = describeSlip(m, withFix);
+      EXPECT_EQ(d.find(m.before), std::string::npos) << d;  // the solution's line is never shown
+      EXPECT_EQ(d.find("dot(N"), std::string::npos) << d;
+    }
+}
+
 TEST(Mutants, CommentsPreprocessorLinesAndUnaryOperatorsAreLeftAlone) {
   const std::string region =
       "  // a + b * 0.5 in a comment\n"
