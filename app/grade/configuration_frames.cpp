@@ -267,7 +267,7 @@ namespace {
 
 // A slip's frame as it is kept: a picture at half size (the pixels a change moves come in areas),
 // a probe's table as it is (each pixel its own input).
-ImageF slipFrame(const Configuration& c, const ImageF& frame) { return c.function >= 0 ? frame : halvedFrame(frame); }
+ImageF slipFrame(const Configuration& c, const ImageF& frame) { return c.function >= 0 ? frame : downsample(frame, 2); }
 
 }  // namespace
 
@@ -289,7 +289,7 @@ std::string drawSlips(const Exercise& ex, const Configuration& c, CachedSolution
     if (auto e = drawChanged(ex, c, dir, frame, errors); !e.empty()) return e;
     if (!errors.empty() || frame.size != out.frame.size) continue;  // a slip that does not build is no evidence
     frame = slipFrame(c, frame);
-    const double separation = frameDistance(frame, solution);
+    const double separation = drawnDistance(frame, solution);
     if (separation <= kFramesDiffer) continue;  // draws the solution's frame here
     out.numbers["slips"].push_back({{"index", i},
                                     {"kind", slips[i].kind},
@@ -305,8 +305,8 @@ nlohmann::json slipDistances(const Configuration& c, const ImageF& image, const 
   if (!solution.numbers.contains("slips")) return nullptr;
   const ImageF student = slipFrame(c, image);
   nlohmann::json to = nlohmann::json::array();
-  for (auto& slip : solution.slips) to.push_back(frameDistance(student, slip));
-  return {{"distance", frameDistance(student, slipFrame(c, solution.frame))}, {"to", to}};
+  for (auto& slip : solution.slips) to.push_back(drawnDistance(student, slip));
+  return {{"distance", drawnDistance(student, slipFrame(c, solution.frame))}, {"to", to}};
 }
 
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 
 #include "app/grade/frame_causes.h"
 #include "app/grade/hints.h"
@@ -27,6 +28,7 @@ constexpr double kRelationWins = 0.5;
 // A slip's frame is the student's when their distance is within one 8-bit step or this fraction of
 // the student's distance from the solution: a slip is named only on frames that are its own.
 constexpr double kSlipFits = 0.1;
+constexpr std::string_view kSlipLead = "Your frames are the solution's with one slip";
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
@@ -391,22 +393,30 @@ std::string slipSentence(const Evidence& ev, std::string& tag, double& misfit) {
         if (Fit f{0.0, &s, {}}; slipAgrees(ev, s.index, f.misfit, f.where)) fits.push_back(std::move(f));
   if (fits.empty()) return {};
   std::sort(fits.begin(), fits.end(), [](const Fit& a, const Fit& b) { return a.misfit < b.misfit; });
-  const bool withFix = ev.ex.reveal == "cause-and-fix";
-  std::vector<std::string> causes;  // the different causes of the slips that fit about as well as the best
-  std::vector<std::string> where = fits.front().where;
+  // The different causes of the slips that fit about as well as the best, each with its fix where
+  // the rubric reveals fixes and every slip of that cause has the same one (a difference of two
+  // samples made zero by either sign turned round has a cause, but no one fix).
+  std::vector<std::pair<std::string, std::string>> causes;  // cause, and its fix or ""
+  const std::vector<std::string> where = fits.front().where;
   for (auto& f : fits) {
     if (f.misfit > kClose * fits.front().misfit + kSlack) break;
-    const std::string cause = withFix ? f.slip->causeAndFix : f.slip->cause;
-    if (std::find(causes.begin(), causes.end(), cause) == causes.end()) causes.push_back(cause);
+    const auto it = std::find_if(causes.begin(), causes.end(), [&](const auto& c) { return c.first == f.slip->cause; });
+    if (it == causes.end())
+      causes.push_back({f.slip->cause, f.slip->causeAndFix});
+    else if (it->second != f.slip->causeAndFix)
+      it->second.clear();
   }
   if (causes.size() > 2) return {};
+  const bool withFix = ev.ex.reveal == "cause-and-fix";
+  const auto said = [&](const std::pair<std::string, std::string>& c) {
+    return withFix && !c.second.empty() ? c.second : c.first;
+  };
   tag = "slip:" + fits.front().slip->kind;
   misfit = fits.front().misfit;
   const bool exact = fits.front().misfit <= kSlack;
-  std::string s = causes.size() == 1
-                      ? "Your frames are the solution's with one slip: " + causes.front() + "."
-                      : "Your frames are the solution's with one slip, and two slips draw them alike: either " +
-                            causes[0] + ", or " + causes[1] + ".";
+  std::string s = causes.size() == 1 ? std::string(kSlipLead) + ": " + said(causes[0]) + "."
+                                     : std::string(kSlipLead) + ", and two slips draw them alike: either " +
+                                           said(causes[0]) + ", or " + said(causes[1]) + ".";
   const size_t drawn = size_t(std::count_if(ev.e.configurations.begin(), ev.e.configurations.end(),
                                             [](const ConfigurationResult& c) { return c.drawn; }));
   return s + " Your code may be written otherwise, but it has this effect. (Evidence: where the slip shows, in " +
@@ -565,10 +575,23 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   // relation to the solution's frames holds as exactly, the relation is what the frames show and
   // the slip one way to it.
   if (!slip.empty()) {
-    e.explanation = slipTag;
-    e.diagnosis = related && relationResidual <= kDiffers * double(ev.related().size())
-                      ? relationSentence(ev, relation) + " " + slip
-                      : slip;
+    // What the frames show comes first when a relation or a setting draws them as exactly: a slip is
+    // one way to that effect, and the student's code may be another (the strength applied to z
+    // draws what the strength dividing x and y draws).
+    std::string key;
+    std::vector<std::string> values;
+    double settingMisfit = 0.0;
+    const std::string also = "They are also the solution's with one slip";
+    if (related && relationResidual <= kDiffers * double(ev.related().size())) {
+      e.explanation = "relation:" + relation.kind;
+      e.diagnosis = relationSentence(ev, relation) + " " + also + slip.substr(kSlipLead.size());
+    } else if (commonSetting(ev, key, values, settingMisfit) && settingMisfit <= kSlipFits) {
+      e.explanation = "setting:" + key;
+      e.diagnosis = settingSentence(ev, key, values) + " " + also + slip.substr(kSlipLead.size());
+    } else {
+      e.explanation = slipTag;
+      e.diagnosis = slip;
+    }
     return;
   }
   // The function probed by itself: what its table says, before what the pictures made of it say.

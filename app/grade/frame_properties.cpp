@@ -151,20 +151,41 @@ double frameDistance(const ImageF& a, const ImageF& b) {
   return n ? std::sqrt(sum / double(n * 3)) : 0.0;
 }
 
-ImageF halvedFrame(const ImageF& frame) {
-  ImageF out;
-  out.size = frame.size / 2;
-  out.rgba.assign(size_t(out.size.x) * size_t(out.size.y) * 4, 0.0f);
-  for (int y = 0; y < out.size.y; ++y)
-    for (int x = 0; x < out.size.x; ++x) {
-      float* o = out.at(x, y);
-      for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) {
-          const float* p = frame.at(2 * x + dx, 2 * y + dy);
-          for (int c = 0; c < 4; ++c) o[c] += 0.25f * p[c];
-        }
+double drawnDistance(const ImageF& a, const ImageF& b) {
+  if (a.size != b.size || a.rgba.empty()) return 1.0;
+  const auto touches = [](const ImageF& im, int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int u = x + dx, v = y + dy;
+        if (u >= 0 && v >= 0 && u < im.size.x && v < im.size.y && covered(im.at(u, v))) return true;
+      }
+    return false;
+  };
+  double sum = 0.0;
+  size_t n = 0;
+  for (int y = 0; y < a.size.y; ++y)
+    for (int x = 0; x < a.size.x; ++x) {
+      const float *p = a.at(x, y), *q = b.at(x, y);
+      const bool inA = covered(p), inB = covered(q);
+      if (!inA && !inB) continue;
+      if (inA != inB) {
+        if (touches(inA ? b : a, x, y)) continue;
+        ++n;
+        sum += 3.0;
+        continue;
+      }
+      ++n;
+      const bool fp = finitePixel(p), fq = finitePixel(q);
+      if (!fp || !fq) {
+        sum += fp == fq ? 0.0 : 3.0;
+        continue;
+      }
+      for (int c = 0; c < 3; ++c) {
+        const double d = std::min(1.0, std::abs(double(p[c]) - q[c]));
+        sum += d * d;
+      }
     }
-  return out;
+  return n ? std::sqrt(sum / double(n * 3)) : 0.0;
 }
 
 }  // namespace shadelab

@@ -62,8 +62,10 @@ double frameDistance(const ImageF& a, const ImageF& b);
 // Two frames differ when frameDistance puts them further apart than one 8-bit step.
 constexpr double kFramesDiffer = 0.004;
 
-// The frame at half its width and height, each pixel the mean of four (a non-finite one makes the
-// mean non-finite): what the solution's slips are kept and compared at (grade/configuration_frames.h).
-ImageF halvedFrame(const ImageF& frame);
+// frameDistance over the pixels either frame covers: a pixel only one covers counts as the largest
+// difference, unless it touches (8-neighbourhood) what the other covers (a silhouette moved by a
+// pixel). A frame that draws nothing is far from one that draws, as frameDistance alone would not
+// say: what the solution's slips are told apart by (grade/configuration_frames.h).
+double drawnDistance(const ImageF& a, const ImageF& b);
 
 }  // namespace shadelab

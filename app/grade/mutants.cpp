@@ -240,8 +240,9 @@ std::string describeSlip(const Mutant& m, bool withFix) {
     return "a comparison turned round, so the test holds where it should fail" +
            terms("a '" + m.to + "' where a '" + m.from + "' belongs");
   if (m.kind == "operator")
-    return "an operation turned into its inverse (an addition for a subtraction, or a product for a quotient)" +
-           terms("a '" + m.to + "' where a '" + m.from + "' belongs");
+    return withFix
+               ? "an operation turned into its inverse" + terms("a '" + m.to + "' where a '" + m.from + "' belongs")
+               : "an operation turned into its inverse (an addition for a subtraction, or a product for a quotient)";
   if (m.kind == "constant") return "one constant at another value" + terms(m.to + " where " + m.from + " belongs");
   if (m.kind == "call-dropped") return "a call to " + m.from + " left out, its argument used as it is";
   if (m.kind == "arguments-swapped") return "the first two arguments of " + m.from + " exchanged";

@@ -50,7 +50,7 @@ struct CachedSolution {
   std::vector<ImageF> truths;    // the lab's references for the configuration (empty when no check needs them)
   std::vector<ImageF> mistakes;  // each of the rubric's mistakes drawn in the configuration, in its order
   // The solution's slips (grade/mutants.h) that build and draw differently here, at half size
-  // (halvedFrame); absent until drawSlips has run.
+  // (downsample, app/measure/image.h); absent until drawSlips has run.
   std::vector<ImageF> slips;
   // What the solution's phase reports: renderer, vs_truth, "mistakes": [{name, distance}], each
   // mistake's frame against the solution's (frameDistance), and once drawn "slips": [{index, kind,

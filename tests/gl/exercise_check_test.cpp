@@ -138,6 +138,42 @@ TEST_F(Check, AnUnnormalisedHalfVectorLosesTheHighlightsPoints) {
   EXPECT_GT(highlight.value, 0.05);
 }
 
+// A slip no rubric lists (the clamp's 0 turned into 1: every specular factor at least 1): the
+// Check draws the solution's slips once the diagnosis asks for them, and names it as the grader does.
+TEST_F(Check, ASlipNoRubricListsIsNamedAfterTheSlipsAreDrawn) {
+  std::string text = readWholeFile(kShaders / kFile);
+  const std::string clamp = "safeNormalize(L + V, N)), 0.0)";
+  const size_t at = text.find(clamp);
+  ASSERT_NE(at, std::string::npos) << "the solution's clamp is written differently now";
+  text.replace(at, clamp.size(), "safeNormalize(L + V, N)), 1.0)");
+  submit(text);
+  ExerciseCheck check;
+  ASSERT_EQ(check.start(kExercise, {student}), "");
+  bool drewSlips = false;
+  for (int steps = 0; check.running() && steps < 100; ++steps) {
+    check.step();
+    drewSlips |= check.drawingSlips();
+  }
+  EXPECT_TRUE(drewSlips);
+  const ExerciseResult& r = check.result();
+  EXPECT_EQ(r.explanation, "slip:constant") << r.diagnosis;
+  // The safe normalisation's arguments exchanged normalises N instead: N.N is 1 as well, so the
+  // evidence cannot tell the two slips apart and names both, as `shadelab grade` does.
+  EXPECT_NE(r.diagnosis.find("two slips draw them alike: either one constant at another value (in the solution's "
+                             "terms, 1.0 where 0.0 belongs), or the first two arguments of safeNormalize exchanged"),
+            std::string::npos)
+      << r.diagnosis;
+  for (auto& c : r.configurations) EXPECT_TRUE(!c.drawn || c.slipsDrawn) << c.name;
+
+  // Checked again, the slips are kept with the solution's frames: none is drawn a second time.
+  ASSERT_EQ(check.start(kExercise, {student}), "");
+  while (check.running()) {
+    check.step();
+    EXPECT_FALSE(check.drawingSlips());
+  }
+  EXPECT_EQ(check.result().explanation, "slip:constant");
+}
+
 TEST_F(Check, AMissingFileIsNotSubmitted) {
   ExerciseCheck check;
   const ExerciseResult& r = run(check);

@@ -9,6 +9,8 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include "app/grade/configuration_frames.h"
+#include "app/grade/frame_properties.h"
 #include "app/grade/rubric.h"
 #include "app/grade/solution_cache.h"
 #include "app/shader/preprocessor.h"
@@ -130,6 +132,15 @@ TEST(Diagnosis, TheCacheHoldsTheMistakesFramesAndASecondRunDrawsNone) {
     EXPECT_EQ(s.mistakes.size(), ex.mistakes.size()) << "the starter's and every listed mistake's frame";
     EXPECT_EQ(s.numbers["mistakes"].size(), ex.mistakes.size());
     for (auto& m : s.mistakes) EXPECT_EQ(m.size, s.frame.size);
+    // The slips that draw differently, kept at half size (a probe's table whole), each with its
+    // numbers: none equivalent to the solution, none beyond what the mutator makes.
+    ASSERT_TRUE(s.numbers.contains("slips"));
+    EXPECT_EQ(s.numbers["slips"].size(), s.slips.size());
+    EXPECT_LE(s.slips.size(), solutionSlips(ex).size());
+    for (size_t i = 0; i < s.slips.size(); ++i) {
+      EXPECT_TRUE(s.slips[i].size == s.frame.size || s.slips[i].size == s.frame.size / 2);
+      EXPECT_GT(s.numbers["slips"][i]["separation"].get<double>(), kFramesDiffer);
+    }
     ++entries;
   }
   EXPECT_EQ(entries, ex.configurations.size());

@@ -111,6 +111,28 @@ TEST(FrameProperties, FrameDistanceCountsANanAgainstAFiniteValueAsTheLargestDiff
   EXPECT_EQ(frameDistance(b, b), 0.0) << "NaN where the other frame has NaN too";
 }
 
+TEST(FrameProperties, DrawnDistanceCountsWhatOnlyOneFrameDrawsButNotAMovedSilhouette) {
+  const auto disc = [](float cx, bool drawn) {
+    ImageF im;
+    im.size = {32, 32};
+    im.rgba.assign(32 * 32 * 4, 0.0f);
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x)
+        if (drawn && (x - cx) * (x - cx) + (y - 16.0f) * (y - 16.0f) < 64.0f) {
+          float* p = im.at(x, y);
+          p[0] = p[1] = p[2] = 0.5f;
+          p[3] = 1.0f;
+        }
+    return im;
+  };
+  // Nothing drawn against a drawn disc: frameDistance sees no pixel both cover; drawnDistance the largest.
+  EXPECT_EQ(frameDistance(disc(16, false), disc(16, true)), 0.0);
+  EXPECT_DOUBLE_EQ(drawnDistance(disc(16, false), disc(16, true)), 1.0);
+  // The same disc a pixel to the side: every pixel one covers alone touches the other's surface.
+  EXPECT_EQ(drawnDistance(disc(16, true), disc(17, true)), 0.0);
+  EXPECT_GT(drawnDistance(disc(12, true), disc(20, true)), 0.3);
+}
+
 namespace {
 
 // An exercise with two configurations and the starter plus two mistakes.
@@ -492,4 +514,18 @@ TEST(Diagnosis, ASlipOnTheFramesBeatsAListedMistakeThatIsOnlyNearThem) {
   EXPECT_EQ(e.explanation, "slip:constant") << e.diagnosis;
   EXPECT_TRUE(e.mistake.empty());
   EXPECT_FALSE(slipsNeeded(e));
+}
+
+TEST(Diagnosis, SlipsOfOneCauseWithDifferentFixesAreToldTheCauseAlone) {
+  const Exercise ex = twoMistakes();  // reveals fixes
+  ExerciseResult e;
+  e.total = 1.0;
+  e.configurations = {drawn("a", 0.3, {0.4, 0.3, 0.3}, {0.4, 0.0, 0.0})};
+  // Either sign of a difference of two samples turned round makes it zero: same cause, two fixes.
+  withSlip(e.configurations[0], 0, "operator", 0.3, 0.0, 0.3);
+  withSlip(e.configurations[0], 4, "operator", 0.3, 0.0, 0.3);
+  e.configurations[0].slips[1].causeAndFix = "cause operator and another fix";
+  diagnose(ex, e);
+  EXPECT_EQ(e.explanation, "slip:operator") << e.diagnosis;
+  EXPECT_EQ(e.diagnosis.find("Your frames are the solution's with one slip: cause operator. "), 0u) << e.diagnosis;
 }
