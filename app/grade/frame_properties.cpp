@@ -129,63 +129,55 @@ FrameProperties measureFrameProperties(const ImageF& student, const ImageF& solu
   return out;
 }
 
-double frameDistance(const ImageF& a, const ImageF& b) {
-  if (a.size != b.size || a.rgba.empty()) return 1.0;
+namespace {
+
+// The squared difference of two pixels both frames cover, summed over RGB (each channel's at most
+// 1): a pixel non-finite in one and not the other counts as the largest, one non-finite in both as
+// none.
+double squaredDifference(const float* p, const float* q) {
+  const bool fp = finitePixel(p), fq = finitePixel(q);
+  if (!fp || !fq) return fp == fq ? 0.0 : 3.0;
   double sum = 0.0;
-  size_t n = 0;
-  for (int y = 0; y < a.size.y; ++y)
-    for (int x = 0; x < a.size.x; ++x) {
-      const float *p = a.at(x, y), *q = b.at(x, y);
-      if (!covered(p) || !covered(q)) continue;
-      ++n;
-      const bool fp = finitePixel(p), fq = finitePixel(q);
-      if (!fp || !fq) {
-        sum += fp == fq ? 0.0 : 3.0;
-        continue;
-      }
-      for (int c = 0; c < 3; ++c) {
-        const double d = std::min(1.0, std::abs(double(p[c]) - q[c]));
-        sum += d * d;
-      }
-    }
-  return n ? std::sqrt(sum / double(n * 3)) : 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const double d = std::min(1.0, std::abs(double(p[c]) - q[c]));
+    sum += d * d;
+  }
+  return sum;
 }
 
-double drawnDistance(const ImageF& a, const ImageF& b) {
+// Whether `im` covers a pixel of the 8-neighbourhood of (x, y), or (x, y) itself.
+bool touches(const ImageF& im, int x, int y) {
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int u = x + dx, v = y + dy;
+      if (u >= 0 && v >= 0 && u < im.size.x && v < im.size.y && covered(im.at(u, v))) return true;
+    }
+  return false;
+}
+
+// The RMS difference over the pixels both frames cover, or (`eitherDraws`) over those either
+// covers, a pixel only one covers counting as the largest difference unless it touches the other's
+// surface (a silhouette moved by a pixel).
+double distance(const ImageF& a, const ImageF& b, bool eitherDraws) {
   if (a.size != b.size || a.rgba.empty()) return 1.0;
-  const auto touches = [](const ImageF& im, int x, int y) {
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int u = x + dx, v = y + dy;
-        if (u >= 0 && v >= 0 && u < im.size.x && v < im.size.y && covered(im.at(u, v))) return true;
-      }
-    return false;
-  };
   double sum = 0.0;
   size_t n = 0;
   for (int y = 0; y < a.size.y; ++y)
     for (int x = 0; x < a.size.x; ++x) {
       const float *p = a.at(x, y), *q = b.at(x, y);
       const bool inA = covered(p), inB = covered(q);
+      if (inA != inB && (!eitherDraws || touches(inA ? b : a, x, y))) continue;
       if (!inA && !inB) continue;
-      if (inA != inB) {
-        if (touches(inA ? b : a, x, y)) continue;
-        ++n;
-        sum += 3.0;
-        continue;
-      }
       ++n;
-      const bool fp = finitePixel(p), fq = finitePixel(q);
-      if (!fp || !fq) {
-        sum += fp == fq ? 0.0 : 3.0;
-        continue;
-      }
-      for (int c = 0; c < 3; ++c) {
-        const double d = std::min(1.0, std::abs(double(p[c]) - q[c]));
-        sum += d * d;
-      }
+      sum += inA == inB ? squaredDifference(p, q) : 3.0;
     }
   return n ? std::sqrt(sum / double(n * 3)) : 0.0;
 }
+
+}  // namespace
+
+double frameDistance(const ImageF& a, const ImageF& b) { return distance(a, b, false); }
+
+double drawnDistance(const ImageF& a, const ImageF& b) { return distance(a, b, true); }
 
 }  // namespace shadelab
