@@ -367,7 +367,12 @@ bool slipAgrees(const Evidence& ev, int index, double& misfit, std::vector<std::
       if (c.slipBase > kDiffers) return false;
       continue;
     }
-    if (it->distance > std::max(kDiffers, kSlipFits * c.slipBase)) return false;
+    // Where the student's frame holds NaN or Inf, only the slip's own frame will do: a few such
+    // pixels weigh little in a distance, and a slip without them would hide them.
+    const bool nonFinite =
+        c.nanPixels + c.infPixels > 0 || std::any_of(c.probeFindings.begin(), c.probeFindings.end(),
+                                                     [](const ProbeFinding& f) { return f.kind == "non-finite"; });
+    if (it->distance > (nonFinite ? kDiffers : std::max(kDiffers, kSlipFits * c.slipBase))) return false;
     toSlip += it->distance;
     toSolution += c.slipBase;
     where.push_back(c.name);
@@ -419,9 +424,17 @@ std::string slipSentence(const Evidence& ev, std::string& tag, double& misfit) {
                                            said(causes[0]) + ", or " + said(causes[1]) + ".";
   const size_t drawn = size_t(std::count_if(ev.e.configurations.begin(), ev.e.configurations.end(),
                                             [](const ConfigurationResult& c) { return c.drawn; }));
+  // NaN or Inf in the student's frames that the slip's hold too (slipAgrees asks for its very
+  // frame there): the slip is where they come from, and the student is told so.
+  std::string nonFinite;
+  for (auto& c : ev.e.configurations)
+    if (c.drawn && !c.nonFiniteText.empty() && std::find(where.begin(), where.end(), c.name) != where.end()) {
+      nonFinite = ", NaN and Inf included (" + quoted(c.name) + ": " + c.nonFiniteText + ")";
+      break;
+    }
   return s + " Your code may be written otherwise, but it has this effect. (Evidence: where the slip shows, in " +
          listed(where) + ", your frames " +
-         (exact ? "are its frames" : "lie far closer to its frames than to the solution's") +
+         (exact ? "are its frames" : "lie far closer to its frames than to the solution's") + nonFinite +
          (where.size() < drawn ? "; where it draws the solution's frames, so do yours.)" : ".)");
 }
 
