@@ -71,6 +71,13 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
   out.notes = g.notes;
   std::printf("%s: %s (%s)\n", ex.id.c_str(), ex.title.c_str(), (ex.dir / "statement.md").c_str());
   lookUpSubmission(ex, g.shaderDirs, out);
+  const auto jobOf = [&](size_t i) {
+    const Configuration& c = ex.configurations[i];
+    return ConfigurationJob{&ex,          &c,
+                            g.shaderDirs, g.backend,
+                            g.dir,        gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(c.name),
+                            g.cache,      solutionKeyBase(ex, i)};
+  };
   for (size_t i = 0; i < ex.configurations.size(); ++i) {
     const Configuration& c = ex.configurations[i];
     ConfigurationResult result;
@@ -80,10 +87,7 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
     if (!out.missingFiles.empty()) {
       notSubmitted(c, out.missingFiles.front() + " is in none of the --shaders folders", result);
     } else {
-      ConfigurationJob job{&ex,          &c,
-                           g.shaderDirs, g.backend,
-                           g.dir,        gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(c.name),
-                           g.cache,      solutionKeyBase(ex, i)};
+      const ConfigurationJob job = jobOf(i);
       const WatchedRun run =
           runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
                      [&](const std::string& phase) { return phase == "student" ? g.watchdog : kSolutionSeconds; },
@@ -99,6 +103,24 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
   }
   // The lines once every configuration is in: a hint may rest on another configuration's checks.
   diagnose(ex, out);
+  if (slipsNeeded(out)) {
+    // The solution's slips, for a diagnosis that no listed mistake settles: drawn in a second pass
+    // (once, then from the cache) where the first had none, and the exercise diagnosed again.
+    for (size_t i = 0; i < out.configurations.size(); ++i) {
+      ConfigurationResult& result = out.configurations[i];
+      if (!result.drawn || result.slipsDrawn) continue;
+      ConfigurationJob job = jobOf(i);
+      job.slips = true;
+      runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
+                 [&](const std::string& phase) { return phase == "student" ? g.watchdog : kSolutionSeconds; },
+                 (g.dir / "logs" / (job.stem + "-slips.log")).string());
+      const nlohmann::json solution = readResult(job, "solution"), distances = readResult(job, "slips");
+      for (const char* phase : {"solution", "slips"}) fs::remove(g.dir / (job.stem + "-" + phase + ".json"));
+      if (solution.contains("error")) return solution["error"].get<std::string>();
+      addSlipEvidence(solution, distances, result);
+    }
+    diagnose(ex, out);
+  }
   for (auto& line : diagnosisLines(out)) std::printf("%s\n", line.c_str());
   std::vector<std::string> printed;
   for (auto& c : out.configurations)

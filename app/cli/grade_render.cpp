@@ -62,9 +62,21 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   if (!cached) {
     built.numbers = {{"renderer", renderer}};
     if (auto e = drawSolution(ex, c, built); !e.empty()) return failSolution(e);
-    // The slips too: a class needs them once, and the window's Check draws the same (grade/diagnosis.h).
-    if (auto e = drawSlips(ex, c, built); !e.empty()) return failSolution(e);
     if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
+  }
+  if (job.slips) {
+    // The slips, drawn once and kept with the solution's frames for the next student who needs
+    // them, then the student's frame against them.
+    if (!built.numbers.contains("slips")) {
+      if (auto e = drawSlips(ex, c, built); !e.empty()) return failSolution(e);
+      if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
+    }
+    writeResult(job, "solution", built.numbers);
+    enter("student");
+    nlohmann::json distances;
+    if (auto e = studentSlipDistances(ex, c, job.studentDirs, built, distances); !e.empty()) return failSolution(e);
+    writeResult(job, "slips", distances);
+    return 0;
   }
   const ImageF& solution = built.frame;
   nlohmann::json solutionJson = built.numbers;

@@ -5,6 +5,7 @@
 // watchdog kill:
 //   <stem>-solution.png, <stem>-student.png, <stem>-diff.png      images for the report
 //   <stem>-solution.json, <stem>-student.json                    numbers and build errors
+//   <stem>-slips.json                                            the student's frame against the slips
 #pragma once
 #include <filesystem>
 #include <functional>
@@ -30,6 +31,10 @@ struct ConfigurationJob {
   SolutionCache cache;
   std::string cacheKey;       // solutionKeyBase(): everything but the renderer
   bool solutionOnly = false;  // fill the cache and stop (a class run does this once per configuration)
+  // The second pass, when the diagnosis asks for the solution's slips (grade/diagnosis.h:
+  // slipsNeeded): draw them unless the cache holds them (and keep them there), draw the student's
+  // frame again and write its distances to them, <stem>-slips.json (slipDistances).
+  bool slips = false;
 };
 
 // The part of a configuration's cache key known before a context exists: the built-in shaders,

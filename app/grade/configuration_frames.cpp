@@ -44,18 +44,17 @@ struct ScratchFolder {
   }
 };
 
-// The configuration drawn with `dir` searched before the built-in shaders: its frame (a function
-// probe's table for a probe configuration) and the build errors. Returns "" or why the rubric is
-// at fault.
-std::string drawChanged(const Exercise& ex, const Configuration& c, const fs::path& dir, ImageF& frame,
+// The configuration drawn with `roots` searched for the shaders: its frame (a function probe's
+// table for a probe configuration) and the build errors. Returns "" or why the rubric is at fault.
+std::string drawChanged(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& roots, ImageF& frame,
                         std::vector<std::string>& errors) {
   if (c.function >= 0) {
-    if (auto e = drawFunctionProbe(ex.probes[size_t(c.function)], {dir, builtinShaderDir()}, frame, errors); !e.empty())
+    if (auto e = drawFunctionProbe(ex.probes[size_t(c.function)], roots, frame, errors); !e.empty())
       return where(ex, c) + ": " + e;
     return {};
   }
   std::string configError;
-  const auto host = configuredHost({dir, builtinShaderDir()}, ex, c, configError);
+  const auto host = configuredHost(roots, ex, c, configError);
   if (!configError.empty()) return where(ex, c) + ": " + configError;
   host->settle();
   host->renderFrame(ex.size);
@@ -75,7 +74,7 @@ std::string drawMistakes(const Exercise& ex, const Configuration& c, CachedSolut
     if (auto e = writeMistakeFolder(ex, m, dir); !e.empty()) return e;
     ImageF frame;
     std::vector<std::string> errors;
-    if (auto e = drawChanged(ex, c, dir, frame, errors); !e.empty()) return e;
+    if (auto e = drawChanged(ex, c, {dir, builtinShaderDir()}, frame, errors); !e.empty()) return e;
     if (!errors.empty())
       return (ex.dir / "rubric.json").string() + ": mistake '" + m.name + "' does not build: " + errors.front();
     out.numbers["mistakes"].push_back({{"name", m.name}, {"distance", frameDistance(frame, out.frame)}});
@@ -286,7 +285,7 @@ std::string drawSlips(const Exercise& ex, const Configuration& c, CachedSolution
     if (auto e = writeMistakeFolder(ex, m, dir); !e.empty()) return e;
     ImageF frame;
     std::vector<std::string> errors;
-    if (auto e = drawChanged(ex, c, dir, frame, errors); !e.empty()) return e;
+    if (auto e = drawChanged(ex, c, {dir, builtinShaderDir()}, frame, errors); !e.empty()) return e;
     if (!errors.empty() || frame.size != out.frame.size) continue;  // a slip that does not build is no evidence
     frame = slipFrame(c, frame);
     const double separation = drawnDistance(frame, solution);
@@ -307,6 +306,17 @@ nlohmann::json slipDistances(const Configuration& c, const ImageF& image, const 
   nlohmann::json to = nlohmann::json::array();
   for (auto& slip : solution.slips) to.push_back(drawnDistance(student, slip));
   return {{"distance", drawnDistance(student, slipFrame(c, solution.frame))}, {"to", to}};
+}
+
+std::string studentSlipDistances(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,
+                                 const CachedSolution& solution, nlohmann::json& out) {
+  std::vector<fs::path> roots = studentDirs;
+  roots.push_back(builtinShaderDir());
+  ImageF image;
+  std::vector<std::string> errors;
+  if (auto e = drawChanged(ex, c, roots, image, errors); !e.empty()) return e;
+  out = errors.empty() ? slipDistances(c, image, solution) : nlohmann::json();
+  return {};
 }
 
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,

@@ -44,12 +44,18 @@ constexpr size_t kMostSlips = 30;
 std::vector<Mutant> solutionSlips(const Exercise& ex);
 // Each slip drawn in the configuration; those that build and draw differently from `out.frame`
 // kept in out.slips (at half size; a probe's table whole) with their numbers in out.numbers["slips"].
-// Returns "" or why the rubric is at fault. `shadelab grade` draws them with the solution's frame
-// and caches them with it; the window's Check only when a diagnosis asks for them (slipsNeeded).
+// Returns "" or why the rubric is at fault. Drawn only when a diagnosis asks for them
+// (slipsNeeded), then kept with the solution's frame: in the cache by `shadelab grade`, in memory
+// by the window's Check.
 std::string drawSlips(const Exercise& ex, const Configuration& c, CachedSolution& out);
 // The student's frame against the slips: {"distance": to the solution's, "to": [to each slip]}, both
 // at the slips' size; null when the slips were not drawn.
 nlohmann::json slipDistances(const Configuration& c, const ImageF& image, const CachedSolution& solution);
+// The student's frame drawn again (their folders first) and its slipDistances in `out`; the slips
+// must be drawn. Returns "" or why the rubric is at fault.
+std::string studentSlipDistances(const Exercise& ex, const Configuration& c,
+                                 const std::vector<std::filesystem::path>& studentDirs, const CachedSolution& solution,
+                                 nlohmann::json& out);
 
 // The student's side against the solution's: their frame in `image` and its numbers
 // {"errors": [...], "vs_solution": {rmse, covered_rmse, max_error, bad_pixel_pct, the frame's
