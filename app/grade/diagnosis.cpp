@@ -6,10 +6,10 @@
 #include <map>
 #include <set>
 #include <string>
-#include <string_view>
 
 #include "app/grade/frame_causes.h"
 #include "app/grade/hints.h"
+#include "app/grade/slip_diagnosis.h"
 
 namespace shadelab {
 
@@ -19,16 +19,11 @@ constexpr double kDiffers = kFramesDiffer;
 // A mistake's frame explains the student's in a configuration when the student's lies at most
 // this fraction of its distance to the solution from the mistake's.
 constexpr double kExplains = 0.5;
-// Two explanations fit about as well when the second's misfit is within this factor of the
-// first's (plus kSlack, for misfits near 0): the evidence cannot tell them apart.
-constexpr double kClose = 1.5, kSlack = 0.005;
+// Two explanations fit about as well (diagnosis.h), by shorter names.
+constexpr double kClose = kDiagnosisClose, kSlack = kDiagnosisSlack;
 // A relation to the solution's frames (grade/frame_relations.h) wins over a listed mistake when
 // its residual is at most this fraction of the student's distance to the mistake's frames.
 constexpr double kRelationWins = 0.5;
-// A slip's frame is the student's when their distance is within one 8-bit step or this fraction of
-// the student's distance from the solution: a slip is named only on frames that are its own.
-constexpr double kSlipFits = 0.1;
-constexpr std::string_view kSlipLead = "Your frames are the solution's with one slip";
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
@@ -36,13 +31,6 @@ std::string fixed(double v, const char* format) {
   char b[64];
   std::snprintf(b, sizeof b, format, v);
   return b;
-}
-
-std::string listed(const std::vector<std::string>& names) {
-  std::string s;
-  for (size_t i = 0; i < names.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quoted(names[i]);
-  return s;
 }
 
 bool lostPoints(const ConfigurationResult& c) {
@@ -220,7 +208,7 @@ std::string settingSentence(const Evidence& ev, const std::string& key, const st
   std::string as, set;
   for (auto& v : asIf) as += (as.empty() ? "" : " or ") + v;
   for (auto& v : given) set += (set.empty() ? "" : " and ") + v;
-  std::string s = "Your frames in " + listed(where) + " are the solution's drawn with " + key + " at " + as +
+  std::string s = "Your frames in " + quotedList(where) + " are the solution's drawn with " + key + " at " + as +
                   " (the configuration sets " + set + "): ";
   return s + (unused ? "your result does not use " + key +
                            " (a fixed value stands in its place), or uses it where it "
@@ -281,8 +269,8 @@ std::string wherePredicate(const Evidence& ev, std::string& tag) {
     separating += (separating.empty() ? "" : " and ") + key + " is " + values;
   }
   if (!separating.empty())
-    return "Your frames match the solution's in " + listed(matchingNames) + " and differ only where " + separating +
-           " (" + listed(losingNames) + "): the cause lies in what " +
+    return "Your frames match the solution's in " + quotedList(matchingNames) + " and differ only where " + separating +
+           " (" + quotedList(losingNames) + "): the cause lies in what " +
            (separating.find(" and ") == std::string::npos ? "that setting changes." : "those settings change.");
   if (ev.losing.size() == 1) {
     tag = "only:" + ev.losing.front()->name;
@@ -311,7 +299,7 @@ std::string mistakeEvidence(const ExerciseResult& e, size_t k) {
   std::vector<std::string> where;
   for (auto& c : e.configurations)
     if (c.drawn && differs(c, k)) where.push_back(c.name);
-  return " (Evidence: where this mistake shows, in " + listed(where) + ", your frames " +
+  return " (Evidence: where this mistake shows, in " + quotedList(where) + ", your frames " +
          (exactly(e, k) ? "are its frames" : "lie far closer to its frames than to the solution's") + ".)";
 }
 
@@ -321,9 +309,9 @@ std::string relationSentence(const Evidence& ev, const FrameRelation& r) {
   for (auto* c : ev.related()) where.push_back(c->name);
   std::string s = "Your frames are " + describeRelation(r, ev.range(first), ev.channels(first));
   if (!ev.losingProbes.empty())
-    s += " in " + listed(where) + ", where the view draws your function's result itself";
+    s += " in " + quotedList(where) + ", where the view draws your function's result itself";
   else
-    s += ev.matching.empty() ? " in every configuration" : " in " + listed(where) + " (the others match)";
+    s += ev.matching.empty() ? " in every configuration" : " in " + quotedList(where) + " (the others match)";
   return s + ": " + relationCause(r) + ".";
 }
 
@@ -348,94 +336,6 @@ std::string evidenceSentence(const Evidence& ev) {
          std::to_string(ev.losing.size() + ev.matching.size()) + " configurations, most in " + quoted(most->name) +
          " (RMS difference " + fixed(most->distance, "%.3f") + ").";
   return s;
-}
-
-// Whether the student's frames are slip `index`'s (grade/configuration_frames.h: drawSlips): in every
-// drawn configuration where the student's frame differs from the solution's the slip's does too,
-// and wherever the slip's differs the student's is its frame. `misfit`: the summed distance to the
-// slip's frames over the summed distance to the solution's, where it shows; `where` the
-// configurations it shows in.
-bool slipAgrees(const Evidence& ev, int index, double& misfit, std::vector<std::string>& where) {
-  double toSlip = 0.0, toSolution = 0.0;
-  where.clear();
-  for (auto& c : ev.e.configurations) {
-    if (!c.drawn) continue;
-    if (!c.slipsDrawn) return false;
-    const auto it = std::find_if(c.slips.begin(), c.slips.end(),
-                                 [&](const ConfigurationResult::Slip& s) { return s.index == index; });
-    if (it == c.slips.end()) {  // the slip draws the solution's frame here
-      if (c.slipBase > kDiffers) return false;
-      continue;
-    }
-    // Where the student's frame holds NaN or Inf, only the slip's own frame will do: a few such
-    // pixels weigh little in a distance, and a slip without them would hide them.
-    const bool nonFinite =
-        c.nanPixels + c.infPixels > 0 || std::any_of(c.probeFindings.begin(), c.probeFindings.end(),
-                                                     [](const ProbeFinding& f) { return f.kind == "non-finite"; });
-    if (it->distance > (nonFinite ? kDiffers : std::max(kDiffers, kSlipFits * c.slipBase))) return false;
-    toSlip += it->distance;
-    toSolution += c.slipBase;
-    where.push_back(c.name);
-  }
-  if (where.empty() || toSolution <= 0.0) return false;
-  misfit = toSlip / toSolution;
-  return true;
-}
-
-// The slips whose frames are the student's, as one sentence naming each different cause (at most
-// two: more say only that the frames are those of a small change); `tag` "slip:KIND".
-std::string slipSentence(const Evidence& ev, std::string& tag, double& misfit) {
-  struct Fit {
-    double misfit;
-    const ConfigurationResult::Slip* slip;
-    std::vector<std::string> where;
-  };
-  std::vector<Fit> fits;
-  std::set<int> seen;
-  for (auto& c : ev.e.configurations)
-    for (auto& s : c.slips)
-      if (seen.insert(s.index).second)
-        if (Fit f{0.0, &s, {}}; slipAgrees(ev, s.index, f.misfit, f.where)) fits.push_back(std::move(f));
-  if (fits.empty()) return {};
-  std::sort(fits.begin(), fits.end(), [](const Fit& a, const Fit& b) { return a.misfit < b.misfit; });
-  // The different causes of the slips that fit about as well as the best, each with its fix where
-  // the rubric reveals fixes and every slip of that cause has the same one (a difference of two
-  // samples made zero by either sign turned round has a cause, but no one fix).
-  std::vector<std::pair<std::string, std::string>> causes;  // cause, and its fix or ""
-  const std::vector<std::string> where = fits.front().where;
-  for (auto& f : fits) {
-    if (f.misfit > kClose * fits.front().misfit + kSlack) break;
-    const auto it = std::find_if(causes.begin(), causes.end(), [&](const auto& c) { return c.first == f.slip->cause; });
-    if (it == causes.end())
-      causes.push_back({f.slip->cause, f.slip->causeAndFix});
-    else if (it->second != f.slip->causeAndFix)
-      it->second.clear();
-  }
-  if (causes.size() > 2) return {};
-  const bool withFix = ev.ex.reveal == "cause-and-fix";
-  const auto said = [&](const std::pair<std::string, std::string>& c) {
-    return withFix && !c.second.empty() ? c.second : c.first;
-  };
-  tag = "slip:" + fits.front().slip->kind;
-  misfit = fits.front().misfit;
-  const bool exact = fits.front().misfit <= kSlack;
-  std::string s = causes.size() == 1 ? std::string(kSlipLead) + ": " + said(causes[0]) + "."
-                                     : std::string(kSlipLead) + ", and two slips draw them alike: either " +
-                                           said(causes[0]) + ", or " + said(causes[1]) + ".";
-  const size_t drawn = size_t(std::count_if(ev.e.configurations.begin(), ev.e.configurations.end(),
-                                            [](const ConfigurationResult& c) { return c.drawn; }));
-  // NaN or Inf in the student's frames that the slip's hold too (slipAgrees asks for its very
-  // frame there): the slip is where they come from, and the student is told so.
-  std::string nonFinite;
-  for (auto& c : ev.e.configurations)
-    if (c.drawn && !c.nonFiniteText.empty() && std::find(where.begin(), where.end(), c.name) != where.end()) {
-      nonFinite = ", NaN and Inf included (" + quoted(c.name) + ": " + c.nonFiniteText + ")";
-      break;
-    }
-  return s + " Your code may be written otherwise, but it has this effect. (Evidence: where the slip shows, in " +
-         listed(where) + ", your frames " +
-         (exact ? "are its frames" : "lie far closer to its frames than to the solution's") + nonFinite +
-         (where.size() < drawn ? "; where it draws the solution's frames, so do yours.)" : ".)");
 }
 
 }  // namespace
@@ -511,9 +411,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   FrameRelation relation;
   double relationResidual = 0.0, relationMisfit = 0.0;  // summed where it must hold; over the distance
   const bool related = commonRelation(ev, relation, relationResidual, relationMisfit);
-  std::string slipTag;
-  double slipMisfit = 0.0;
-  const std::string slip = slipSentence(ev, slipTag, slipMisfit);
+  const SlipFinding slip = findSlip(ex, e);
 
   if (!agreeing.empty()) {
     const size_t k = agreeing.front().second;
@@ -522,7 +420,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     // mistake's that is only close to them.
     const bool closerFitElsewhere =
         (related && relationResidual <= kRelationWins * distanceToMistake(ev, k) && !m.starter) ||
-        (!slip.empty() && !m.starter && !exactly(e, k) && slipMisfit <= kRelationWins * agreeing.front().first);
+        (slip.found() && !m.starter && !exactly(e, k) && slip.misfit <= kRelationWins * agreeing.front().first);
     // A second mistake fits about as well, and the first is not the only one whose frames the
     // student's are exactly.
     const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack &&
@@ -587,23 +485,23 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   // One slip of the solution draws the student's frames: no list of mistakes needed. When a
   // relation to the solution's frames holds as exactly, the relation is what the frames show and
   // the slip one way to it.
-  if (!slip.empty()) {
+  if (slip.found()) {
     // What the frames show comes first when a relation or a setting draws them as exactly: a slip is
     // one way to that effect, and the student's code may be another (the strength applied to z
     // draws what the strength dividing x and y draws).
     std::string key;
     std::vector<std::string> values;
     double settingMisfit = 0.0;
-    const std::string also = "They are also the solution's with one slip";
+    const std::string also = " They are also the solution's with " + slip.what + slip.evidence;
     if (related && relationResidual <= kDiffers * double(ev.related().size())) {
       e.explanation = "relation:" + relation.kind;
-      e.diagnosis = relationSentence(ev, relation) + " " + also + slip.substr(kSlipLead.size());
+      e.diagnosis = relationSentence(ev, relation) + also;
     } else if (commonSetting(ev, key, values, settingMisfit) && settingMisfit <= kSlipFits) {
       e.explanation = "setting:" + key;
-      e.diagnosis = settingSentence(ev, key, values) + " " + also + slip.substr(kSlipLead.size());
+      e.diagnosis = settingSentence(ev, key, values) + also;
     } else {
-      e.explanation = slipTag;
-      e.diagnosis = slip;
+      e.explanation = slip.tag;
+      e.diagnosis = "Your frames are the solution's with " + slip.what + slip.evidence;
     }
     return;
   }
@@ -695,6 +593,13 @@ bool slipsNeeded(const ExerciseResult& e) {
   for (auto& c : e.configurations)
     if (c.drawn && !c.slipsDrawn) return true;
   return false;
+}
+
+std::string quotedList(const std::vector<std::string>& names) {
+  std::string s;
+  for (size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quoted(names[i]);
+  return s;
 }
 
 void diagnose(const Exercise& ex, ExerciseResult& e) {

@@ -36,6 +36,13 @@
 
 namespace shadelab {
 
+// Two explanations fit about as well when the second's misfit is within kDiagnosisClose times the
+// first's (plus kDiagnosisSlack, for misfits near 0): the evidence cannot tell them apart.
+constexpr double kDiagnosisClose = 1.5, kDiagnosisSlack = 0.005;
+
+// "'a', 'b' and 'c'": the names of configurations as a diagnosis lists them.
+std::string quotedList(const std::vector<std::string>& names);
+
 // Clears the hints whose evidence is missing, then sets e.diagnosis, e.explanation (what it rests
 // on) and e.mistake when a mistake of the rubric explains the frames. Leaves them empty when every
 // point was earned.
