@@ -158,8 +158,10 @@ std::string classroom50IdentityFromEnvironment(Classroom50Identity& id) {
     for (size_t i = 0; i < missing.size(); ++i) problems += (i ? ", " : "") + missing[i];
   }
   auto malformed = [&](const std::string& what) { problems += (problems.empty() ? "" : "; ") + what; };
+  // The runner passes "team" for what the result schema calls a group (one repository, several students).
+  if (id.assignmentType == "team") id.assignmentType = "group";
   if (!id.assignmentType.empty() && id.assignmentType != "individual" && id.assignmentType != "group")
-    malformed("ASSIGNMENT_TYPE is '" + id.assignmentType + "' (valid: individual, group)");
+    malformed("ASSIGNMENT_TYPE is '" + id.assignmentType + "' (valid: individual, group, team)");
   if (!id.submission.empty() && id.submission.rfind("submit/", 0) != 0)
     malformed("SUBMISSION_TAG is '" + id.submission + "' (a submit/... tag)");
   if (!id.datetime.empty() && !isUtcSecond(id.datetime))
@@ -167,21 +169,48 @@ std::string classroom50IdentityFromEnvironment(Classroom50Identity& id) {
   return problems.empty() ? "" : "Classroom 50's environment: " + problems;
 }
 
-int wholePointScale(const nlohmann::json& report) {
-  std::vector<double> points;
-  for (auto& e : report.value("exercises", nlohmann::json::array()))
-    for (auto& c : e.value("checks", nlohmann::json::array())) {
-      points.push_back(c.value("points", 0.0));
-      points.push_back(c.value("max_points", 0.0));
-    }
+namespace {
+
+// The smallest k in 1..100 that makes every value whole.
+int wholeFactor(const std::vector<double>& values) {
   for (int k = 1; k <= 100; ++k)
-    if (std::all_of(points.begin(), points.end(), [k](double p) { return std::abs(p * k - std::round(p * k)) < 1e-6; }))
+    if (std::all_of(values.begin(), values.end(), [k](double p) { return std::abs(p * k - std::round(p * k)) < 1e-6; }))
       return k;
   return 100;
 }
 
-nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50Identity& id) {
-  const int k = wholePointScale(report);
+}  // namespace
+
+int wholePointScale(const std::vector<Exercise>& exercises) {
+  std::vector<double> values;  // what a check can score: all its points or its partial credit's share
+  for (auto& ex : exercises)
+    for (auto& configuration : ex.configurations)
+      for (auto& c : configuration.checks) {
+        values.push_back(c.points);
+        values.push_back(c.points * c.partialCredit);
+      }
+  return wholeFactor(values);
+}
+
+int wholePointScale(const nlohmann::json& report) {
+  std::vector<Exercise> exercises;
+  for (auto& e : report.value("exercises", nlohmann::json::array())) {
+    Exercise ex;
+    if (!loadExercise(e.value("id", ""), ex).empty()) {  // its checks as the report has them, at half credit
+      ex.configurations.assign(1, Configuration{});
+      for (auto& c : e.value("checks", nlohmann::json::array())) {
+        Check check;
+        check.points = c.value("max_points", 0.0);
+        ex.configurations[0].checks.push_back(check);
+      }
+    }
+    exercises.push_back(std::move(ex));
+  }
+  return wholePointScale(exercises);
+}
+
+nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50Identity& id, int scale) {
+  const int k = scale > 0 ? scale : wholePointScale(report);
   nlohmann::json tests = nlohmann::json::array();
   long score = 0, maxScore = 0;
   for (auto& e : report.value("exercises", nlohmann::json::array()))

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/grade/class_report.h"
+#include "app/grade/rubric.h"
 
 namespace shadelab {
 
@@ -24,8 +25,10 @@ bool validGradescopeVisibility(const std::string& visibility);
 // Classroom 50's result.json (schema classroom50/result/v1, published in foundation50/classroom50's
 // schemas/result-v1.schema.json): the submission's identity, which the runner hands the autograder
 // in its environment, and one test per check. Its points are whole numbers, so every check's
-// points are multiplied by the smallest factor (1, 2, 3, ...) that makes them all whole: 2.5 of 3
-// points is 5 of 6.
+// points are multiplied by the smallest factor (1, 2, 3, ...) that makes whole every score the
+// rubric can give: a check's points and its partial credit's share of them (3 points at half
+// credit: x2, 3 of 6 or 6 of 6). The factor is the rubric's, never what one student earned, so
+// every student of an assignment has the same max-score.
 struct Classroom50Identity {
   std::string classroom, assignment, assignmentType, owner, submission, commit, release, review;
   std::string datetime;  // the graded commit's date, UTC, "YYYY-MM-DDTHH:MM:SSZ"
@@ -34,11 +37,17 @@ struct Classroom50Identity {
 };
 // From CLASSROOM, ASSIGNMENT, ASSIGNMENT_TYPE, OWNER (or USERNAME), SUBMISSION_TAG, COMMIT_URL,
 // RELEASE_URL, REVIEW_URL (COMMIT_URL where there is no review), COMMIT_DATE and GITHUB_ACTOR.
+// ASSIGNMENT_TYPE is individual, group or team (the runner's word for a group: written "group").
 // Returns "" or one line naming every variable missing or malformed.
 std::string classroom50IdentityFromEnvironment(Classroom50Identity& id);
-// The factor that makes every check's points whole (at most 100; rounded past that).
+// The factor that makes whole every score the exercises' checks can give (at most 100; rounded
+// past that).
+int wholePointScale(const std::vector<Exercise>& exercises);
+// The same for the exercises a report names, their rubrics read by id (exerciseRoots()); an
+// exercise that cannot be read counts its checks' points at the default half credit.
 int wholePointScale(const nlohmann::json& report);
-nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50Identity& id);
+// Points x `scale`, or x wholePointScale(report) where no scale is given.
+nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50Identity& id, int scale = 0);
 
 // PrairieLearn's external grader results (prairielearn.readthedocs.io, "External Grading"):
 // "score" in [0, 1], a test per check with "points" and "max_points", the diagnosis as the

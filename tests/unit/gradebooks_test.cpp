@@ -115,24 +115,46 @@ TEST(Gradebooks, GradescopeTestsTakeTheRubricsVisibility) {
   EXPECT_EQ(out["tests"][1]["visibility"], "hidden");
 }
 
-// Classroom 50's points are whole: 2.5 of 3 becomes 5 of 6, and the sums follow.
+namespace {
+
+Classroom50Identity identityOf(const char* owner) {
+  return {"cg",
+          "pcf",
+          "individual",
+          owner,
+          "submit/2026-11-28T10-00-00Z-abc1234",
+          "https://x/commit/1",
+          "https://x/releases/1",
+          "https://x/compare/0...1",
+          "2026-11-28T10:00:00Z",
+          "2026-11-28T10:01:00Z",
+          owner};
+}
+
+// The rubric of report(): 2 and 3 points, each at half credit when partial.
+std::vector<Exercise> rubricOfReport() {
+  Exercise ex;
+  ex.id = "shadows/pcf";
+  ex.configurations.resize(1);
+  for (double points : {2.0, 3.0}) {
+    Check c;
+    c.points = points;
+    c.partialCredit = 0.5;
+    ex.configurations[0].checks.push_back(c);
+  }
+  return {ex};
+}
+
+}  // namespace
+
+// Classroom 50's points are whole: the factor is the rubric's (3 points at half credit can score
+// 1.5, so x2), and the sums follow.
 TEST(Gradebooks, Classroom50ScalesHalfPointsToWholeOnes) {
   nlohmann::json r = report();
   r["exercises"][0]["checks"][1]["points"] = 1.5;
-  EXPECT_EQ(wholePointScale(r), 2);
-  EXPECT_EQ(wholePointScale(report()), 1);
-  Classroom50Identity id{"cg",
-                         "pcf",
-                         "individual",
-                         "ada",
-                         "submit/2026-11-28T10-00-00Z-abc1234",
-                         "https://x/commit/1",
-                         "https://x/releases/1",
-                         "https://x/compare/0...1",
-                         "2026-11-28T10:00:00Z",
-                         "2026-11-28T10:01:00Z",
-                         "ada"};
-  const nlohmann::json c = classroom50Result(r, id);
+  const int scale = wholePointScale(rubricOfReport());
+  EXPECT_EQ(scale, 2);
+  const nlohmann::json c = classroom50Result(r, identityOf("ada"), scale);
   EXPECT_EQ(c["schema"], "classroom50/result/v1");
   EXPECT_EQ(c["score"], 7);  // (2 + 1.5) x 2
   EXPECT_EQ(c["max-score"], 10);
@@ -142,6 +164,30 @@ TEST(Gradebooks, Classroom50ScalesHalfPointsToWholeOnes) {
   EXPECT_TRUE(c["tests"][1]["score"].is_number_integer());
   EXPECT_EQ(c["tests"][1]["passed"], false);
   EXPECT_EQ(c["submitted_by"]["username"], "ada");
+
+  std::vector<Exercise> whole = rubricOfReport();
+  for (auto& check : whole[0].configurations[0].checks) check.partialCredit = 0.0;
+  EXPECT_EQ(wholePointScale(whole), 1);  // whole points, no partial credit: as they are
+  whole[0].configurations[0].checks[0].partialCredit = 0.25;
+  EXPECT_EQ(wholePointScale(whole), 2);  // 2 points x 0.25 = 0.5
+}
+
+// Two students of one assignment, one with a half-credit check and one with full marks, have the
+// same max-score: the factor does not follow what either earned.
+TEST(Gradebooks, Classroom50GivesEveryStudentOfAnAssignmentTheSameMaxScore) {
+  nlohmann::json partial = report(), full = report();
+  partial["exercises"][0]["checks"][1]["points"] = 1.5;
+  full["exercises"][0]["checks"][1]["points"] = 3.0;
+  full["exercises"][0]["checks"][1]["result"] = "PASS";
+  for (auto& r : {&partial, &full}) (*r)["exercises"][0]["id"] = "course/not-an-exercise";  // the report alone
+  const nlohmann::json a = classroom50Result(partial, identityOf("ada"));
+  const nlohmann::json b = classroom50Result(full, identityOf("grace"));
+  EXPECT_EQ(a["max-score"], b["max-score"]);
+  EXPECT_EQ(a["max-score"], 10);
+  EXPECT_EQ(a["score"], 7);
+  EXPECT_EQ(b["score"], 10);
+  const nlohmann::json c = classroom50Result(full, identityOf("grace"), wholePointScale(rubricOfReport()));
+  EXPECT_EQ(c["max-score"], b["max-score"]);
 }
 
 // Outside Classroom 50's runner, every identity variable missing is named in one line.
@@ -160,6 +206,28 @@ TEST(Gradebooks, Classroom50NamesTheEnvironmentItLacks) {
   EXPECT_EQ(e.find('\n'), std::string::npos);
   unsetenv("CLASSROOM");
   unsetenv("COMMIT_DATE");
+}
+
+// The runner's "team" is the schema's group; any other type is named with the valid ones.
+TEST(Gradebooks, Classroom50TakesATeamAssignmentAsAGroup) {
+  const std::pair<const char*, const char*> environment[] = {
+      {"CLASSROOM", "cg"},
+      {"ASSIGNMENT", "pcf"},
+      {"OWNER", "team-7"},
+      {"SUBMISSION_TAG", "submit/2026-11-28T10-00-00Z-abc1234"},
+      {"COMMIT_URL", "https://x/commit/1"},
+      {"RELEASE_URL", "https://x/releases/tag/submit/2026-11-28T10-00-00Z-abc1234"},
+      {"COMMIT_DATE", "2026-11-28T10:00:00Z"}};
+  for (auto [name, value] : environment) setenv(name, value, 1);
+  setenv("ASSIGNMENT_TYPE", "team", 1);
+  Classroom50Identity id;
+  EXPECT_EQ(classroom50IdentityFromEnvironment(id), "");
+  EXPECT_EQ(id.assignmentType, "group");
+  setenv("ASSIGNMENT_TYPE", "pair", 1);
+  EXPECT_NE(classroom50IdentityFromEnvironment(id).find("ASSIGNMENT_TYPE is 'pair' (valid: individual, group, team)"),
+            std::string::npos);
+  for (auto [name, value] : environment) unsetenv(name);
+  unsetenv("ASSIGNMENT_TYPE");
 }
 
 // PrairieLearn: a score in [0, 1], the failing configuration's three pictures inline, halved until
