@@ -40,9 +40,31 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// What every submission of a run is graded with besides its own files.
+struct ClassRun {
+  std::vector<std::string> ids;    // the exercises
+  std::vector<std::string> files;  // their files, which each upload is placed into (placeUpload)
+  // One student's results for a platform (--format gradescope, classroom50, prairielearn: a class
+  // of one upload, as each platform's entry point grades it), written beside their report.
+  std::string format;
+  Classroom50Identity identity;
+  int wholeScale = 1;  // Classroom 50's factor, the rubrics'
+};
+
+// The platform's file for one student, beside their report in `dir`. "" or why it was not written.
+std::string writeStudentResults(const ClassRun& run, const GradeReport& report, const fs::path& dir) {
+  if (run.format != "gradescope" && run.format != "classroom50" && run.format != "prairielearn") return {};
+  const nlohmann::json j = nlohmann::json::parse(gradeJson(report));
+  const nlohmann::json results = run.format == "gradescope"    ? gradescopeResults(j)
+                                 : run.format == "classroom50" ? classroom50Result(j, run.identity, run.wholeScale)
+                                                               : prairieLearnResults(j, dir);
+  return writeTextFile((dir / (run.format == "classroom50" ? "result.json" : "results.json")).string(),
+                       results.dump(2) + "\n");
+}
+
 // Runs in a worker process: grades one submission into out/students/<name>/. Exit 0 when its
 // report was written, 2 when the grader could not go on.
-int gradeSubmission(const Submission& sub, const std::vector<std::string>& ids, const Options& o, const fs::path& out,
+int gradeSubmission(const Submission& sub, const ClassRun& run, const Options& o, const fs::path& out,
                     const SolutionCache& cache) {
   StudentGrading g;
   g.dir = out / "students" / sub.name;
@@ -54,9 +76,9 @@ int gradeSubmission(const Submission& sub, const std::vector<std::string>& ids, 
   if (ec) return cannotGrade(g.dir.string() + ": " + ec.message());
   if (FILE* log = std::freopen((g.dir / "grade.log").c_str(), "w", stdout)) dup2(fileno(log), STDERR_FILENO);
 
-  fs::path unpacked;
+  fs::path upload = sub.source, unpacked;
   if (sub.zip) {
-    unpacked = out / "unpacked" / sub.name;
+    unpacked = upload = out / "unpacked" / sub.name;
     removeUnpacked(unpacked);  // what an earlier, interrupted run left
     if (auto e = unpackZip(sub.source, unpacked); !e.empty()) {
       removeUnpacked(unpacked);
@@ -64,17 +86,25 @@ int gradeSubmission(const Submission& sub, const std::vector<std::string>& ids, 
       g.notes.push_back("the zip was not unpacked: " + e);
       std::printf("%s\n", e.c_str());
     }
-    g.shaderDirs = {shaderRootOf(unpacked)};
-  } else {
-    g.shaderDirs = {shaderRootOf(sub.source)};
   }
+  // The upload as the student made it, its files put where the rubric expects them.
+  const fs::path placed = out / "placed" / sub.name;
+  removeUnpacked(placed);
+  Placement placement;
+  if (auto e = placeUpload(upload, run.files, placed, sub.source.filename().string(), placement); !e.empty())
+    return cannotGrade(e);
+  for (auto& n : placement.notes) std::printf("%s: %s\n", sub.name.c_str(), n.c_str());
+  g.notes.insert(g.notes.end(), placement.notes.begin(), placement.notes.end());
+  g.shaderDirs = {placed};
   GradeReport report;
   report.studentDirs = {sub.source.string()};
   report.date = gradeDate();
   report.command = "shadelab grade --class " + o.classDir.string() + " (submission " + sub.name + ")";
   CacheCount count;
-  const std::string e = gradeStudent(ids, g, report, count);
+  std::string e = gradeStudent(run.ids, g, report, count);
+  if (e.empty()) e = writeStudentResults(run, report, g.dir);
   if (!unpacked.empty()) removeUnpacked(unpacked);
+  removeUnpacked(placed);
   if (!e.empty()) return cannotGrade(e);
   return 0;
 }
@@ -148,23 +178,37 @@ int runGradeClass(const Options& o) {
     return cannotGrade("name one exercise (--exercise LAB/NAME) or --all; exercises: see `shadelab list`");
   if (!o.shaderDirs.empty())
     return cannotGrade("--shaders and --class do not go together: --class DIR holds every student's folder");
-  if (o.format == "gradescope" || o.format == "classroom50" || o.format == "prairielearn")
-    return cannotGrade("--format " + o.format + " is one student's results (no --class); a class: moodle or canvas");
-  const std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
-  for (auto& id : ids) {
+  ClassRun run;
+  run.ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
+  std::vector<Exercise> exercises;
+  for (auto& id : run.ids) {
     Exercise ex;
     if (auto e = loadExercise(id, ex); !e.empty()) return cannotGrade(e);
+    for (auto& f : ex.files)
+      if (std::find(run.files.begin(), run.files.end(), f) == run.files.end()) run.files.push_back(f);
+    exercises.push_back(std::move(ex));
   }
   std::vector<Submission> all;
   if (auto e = listSubmissions(o.classDir, all); !e.empty()) return cannotGrade(e);
   if (all.empty())
     return cannotGrade("--class " + o.classDir.string() + " holds no submissions (a folder or a .zip per student)");
+  if (o.format == "gradescope" || o.format == "classroom50" || o.format == "prairielearn") {
+    if (all.size() != 1)
+      return cannotGrade("--format " + o.format + " is one student's results: --class then holds one upload (" +
+                         o.classDir.string() + " holds " + std::to_string(all.size()) + "); a class: moodle or canvas");
+    run.format = o.format;
+    run.wholeScale = wholePointScale(exercises);
+    if (o.format == "classroom50")
+      if (auto e = classroom50IdentityFromEnvironment(run.identity); !e.empty())
+        return cannotGrade(e + " (--format classroom50 runs in Classroom 50's runner: tools/classroom50/autograder.py)");
+  }
   // The slice: every n-th submission by name, starting at the i-th. Which shard a student falls
   // in depends only on the sorted names, so every node computes the same split.
   std::vector<Submission> mine;
   for (size_t k = 0; k < all.size(); ++k)
     if (int(k % size_t(o.shards)) == o.shard - 1) mine.push_back(all[k]);
 
+  const std::vector<std::string>& ids = run.ids;
   const fs::path out = o.out.empty()
                            ? freshName("grades", "class-" + gradeSlug(o.allExercises ? "all" : o.exercise), "")
                            : fs::path(o.out);
@@ -208,12 +252,13 @@ int runGradeClass(const Options& o) {
     while (int(running.size()) >= o.jobs) reap();
     std::fflush(nullptr);
     const pid_t pid = fork();
-    if (pid == 0) _exit(gradeSubmission(sub, ids, o, out, cache));
+    if (pid == 0) _exit(gradeSubmission(sub, run, o, out, cache));
     if (pid < 0) return cannotGrade(std::string("cannot start a worker: ") + std::strerror(errno));
     running[pid] = &sub;
   }
   while (!running.empty()) reap();
   fs::remove_all(out / "unpacked");
+  fs::remove_all(out / "placed");
 
   std::vector<std::string> names;
   for (auto& s : mine) names.push_back(s.name);

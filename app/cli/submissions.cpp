@@ -4,8 +4,10 @@
 #include <zip.h>
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <memory>
+#include <set>
 
 #include "app/shader/preprocessor.h"
 
@@ -160,6 +162,151 @@ fs::path shaderRootOf(const fs::path& dir) {
     root = entries[0].path();
   }
   return root;
+}
+
+namespace {
+
+// One plain file of an upload: where it is, and how the notes name it ("my_shaders.zip/common/x.glsl").
+struct UploadFile {
+  fs::path path;
+  std::vector<std::string> parts;  // its path's components under the upload (or the zip)
+  std::string shown;
+};
+
+std::string lowerCase(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Left out of an upload: hidden entries, and the folder macOS adds to every zip it makes.
+bool skippedName(const std::string& name) { return name.empty() || name[0] == '.' || name == "__MACOSX"; }
+
+// Every plain file under `root`, as `prefix` + its relative path; symbolic links are listed in `ignored`.
+void listUpload(const fs::path& root, const std::string& prefix, std::vector<UploadFile>& files,
+                std::vector<std::string>& ignored) {
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+    const fs::path relative = it->path().lexically_relative(root);
+    if (skippedName(it->path().filename().string())) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_symlink(ec)) {
+      ignored.push_back(prefix + relative.generic_string() + " (a symbolic link)");
+      continue;
+    }
+    if (!it->is_regular_file(ec)) continue;
+    UploadFile f{it->path(), {}, prefix + relative.generic_string()};
+    for (auto& part : relative) f.parts.push_back(part.string());
+    files.push_back(std::move(f));
+  }
+  std::sort(files.begin(), files.end(), [](auto& a, auto& b) { return a.shown < b.shown; });
+}
+
+// How well an upload's file stands for the rubric's `wanted`: 0 at its path (the last components
+// are the rubric's), 1 by its name, 2 by its name in another case, 3 not at all.
+int matchOf(const UploadFile& f, const std::vector<std::string>& wanted) {
+  if (f.parts.size() >= wanted.size() && std::equal(wanted.rbegin(), wanted.rend(), f.parts.rbegin())) return 0;
+  if (f.parts.back() == wanted.back()) return 1;
+  if (lowerCase(f.parts.back()) == lowerCase(wanted.back())) return 2;
+  return 3;
+}
+
+// "a, b and c", at most ten named.
+std::string namesOf(const std::vector<std::string>& names) {
+  std::string text;
+  const size_t shown = std::min<size_t>(names.size(), 10);
+  for (size_t i = 0; i < shown; ++i) text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  if (names.size() > shown) text += " and " + std::to_string(names.size() - shown) + " more";
+  return text;
+}
+
+}  // namespace
+
+std::string placeUpload(const fs::path& upload, const std::vector<std::string>& files, const fs::path& dest,
+                        const std::string& shown, Placement& out) {
+  std::error_code ec;
+  if (!fs::is_directory(upload, ec)) return upload.string() + ": not a folder; an upload is placed from its folder";
+  if (fs::exists(dest, ec)) return dest.string() + ": already exists; an upload is only placed into a new folder";
+  fs::create_directories(dest, ec);
+  if (ec) return dest.string() + ": " + ec.message();
+  out = Placement{};
+
+  std::vector<UploadFile> found;
+  std::vector<std::string> ignored;
+  listUpload(upload, "", found, ignored);
+  // A zip in the upload: its files count as the upload's, named through it.
+  const fs::path zips = dest.parent_path() / (dest.filename().string() + ".zips");
+  std::vector<UploadFile> unzipped;
+  int k = 0;
+  for (auto it = found.begin(); it != found.end();) {
+    if (lowerCase(fs::path(it->shown).extension().string()) != ".zip") {
+      ++it;
+      continue;
+    }
+    const fs::path into = zips / std::to_string(k++);
+    if (auto e = unpackZip(it->path, into); !e.empty()) {
+      out.notes.push_back("not unpacked: " + e.substr(e.find(": ") + 2) + " (" + it->shown + ")");
+    } else {
+      std::vector<UploadFile> inside;
+      listUpload(into, it->shown + "/", inside, ignored);
+      for (auto& f : inside)
+        if (lowerCase(f.path.extension().string()) == ".zip") {
+          ignored.push_back(f.shown + " (a zip inside a zip)");
+        } else {
+          unzipped.push_back(std::move(f));
+        }
+    }
+    it = found.erase(it);
+  }
+  found.insert(found.end(), unzipped.begin(), unzipped.end());
+
+  std::set<size_t> considered;  // every file that stood for one of `files`
+  for (auto& file : files) {
+    std::vector<std::string> wanted;
+    for (auto& part : fs::path(file)) wanted.push_back(part.string());
+    std::vector<std::pair<std::pair<int, size_t>, size_t>> candidates;  // (rule, depth), index
+    for (size_t i = 0; i < found.size(); ++i)
+      if (int m = matchOf(found[i], wanted); m < 3) candidates.push_back({{m, found[i].parts.size()}, i});
+    std::stable_sort(candidates.begin(), candidates.end(), [](auto& a, auto& b) { return a.first < b.first; });
+    if (candidates.empty()) {
+      out.missing.push_back(file);
+      continue;
+    }
+    const auto [rank, index] = candidates.front();
+    const UploadFile& taken = found[index];
+    const fs::path target = dest / file;
+    fs::create_directories(target.parent_path(), ec);
+    if (!ec) fs::copy_file(taken.path, target, ec);
+    if (ec) return target.string() + ": " + ec.message();
+    for (auto& c : candidates) considered.insert(c.second);
+    static const char* how[] = {"at its path", "by its name", "by its name in another case"};
+    if (rank.first != 0 || taken.shown != file) {
+      if (rank.first == 0)
+        out.notes.push_back(file + ": taken from " + taken.shown);
+      else
+        out.notes.push_back(file + ": " + taken.shown + " taken " + how[rank.first]);
+    }
+    if (candidates.size() > 1) {
+      std::vector<std::string> others;
+      for (size_t i = 1; i < candidates.size(); ++i) others.push_back(found[candidates[i].second].shown);
+      const auto& next = candidates[1].first;
+      const std::string why = next.first != rank.first ? std::string("found ") + how[rank.first]
+                              : next.second != rank.second ? "the shallower of those found " + std::string(how[rank.first])
+                                                           : "the first by name of those found " + std::string(how[rank.first]);
+      out.notes.push_back(std::to_string(candidates.size()) + " files could be " + file + ": took " + taken.shown +
+                          " (" + why + "), not " + namesOf(others));
+    }
+  }
+  for (size_t i = 0; i < found.size(); ++i)
+    if (!considered.count(i)) ignored.push_back(found[i].shown);
+  if (!ignored.empty()) out.notes.push_back("ignored, not among the exercise's files: " + namesOf(ignored));
+  if (!out.missing.empty())
+    out.notes.push_back("not in the upload: " + namesOf(out.missing) +
+                        " (looked for at that path, then by name in any case, in every folder of " + shown +
+                        (k > 0 ? " and of the zips in it)" : ")"));
+  removeUnpacked(zips);
+  return {};
 }
 
 }  // namespace shadelab

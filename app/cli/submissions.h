@@ -1,5 +1,6 @@
 // A class's submissions: each subfolder of the class folder, or each .zip in it, is one student's,
-// named by the folder or the file. A zip is unpacked into a private folder first; what is in it is
+// named by the folder or the file; then each upload's files put where the rubric expects them
+// (placeUpload), for `grade --class` and every platform's entry point alike. A zip is unpacked into a private folder first; what is in it is
 // untrusted, so unpacking refuses any entry that would land outside that folder (an absolute
 // name, a "..", a symbolic link), and stops at limits on entries and bytes (a zip bomb costs its
 // own submission only).
@@ -33,6 +34,27 @@ std::string unpackZip(const std::filesystem::path& zip, const std::filesystem::p
 
 // Removes a folder unpackZip made (its read-only files and folders included).
 void removeUnpacked(const std::filesystem::path& dir);
+
+// How an upload's files were put where the exercises expect them (placeUpload).
+struct Placement {
+  std::vector<std::string> notes;    // for the report: what was taken from where and why, ignored, missing
+  std::vector<std::string> missing;  // the exercises' files found nowhere in the upload
+};
+
+// Puts each of `files` (paths under a shader root: "common/specular.glsl") from `upload`, a
+// student's folder as they made it, into `dest` (made afresh; must not exist), at its path there.
+// A file is taken
+//   1. at its path, under the upload or any folder in it ("my_shaders/common/specular.glsl"),
+//   2. else by its name, anywhere ("specular.glsl" dropped at the top: a flat upload),
+//   3. else by its name in another case ("Specular.GLSL").
+// A .zip in the upload is unpacked first (unpackZip's limits), so a zip of a folder counts with or
+// without its top folder. Where two files would do, the earlier rule wins, then the shallower,
+// then the first by name, and a note says which was taken and why; every other file is ignored and
+// listed; a file found nowhere is named with where it was looked for. Hidden entries, __MACOSX/ and
+// symbolic links are skipped. `shown` names the upload in the notes ("ana.zip"). "" or why the
+// upload could not be read; a zip inside it that is refused is a note, not an error.
+std::string placeUpload(const std::filesystem::path& upload, const std::vector<std::string>& files,
+                        const std::filesystem::path& dest, const std::string& shown, Placement& out);
 
 // The folder that holds the shader files: `dir` itself, or the one folder in it when that is all
 // it holds and it is not one of the lab's shader folders (students zip "ana/shadows/pcf.glsl" as
