@@ -13,13 +13,14 @@ import csv
 import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
 
 import jsonschema
 
-shadelab, repo, out = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+shadelab, repo, out = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3]).resolve()
 EXERCISE = 'shading/blinn-phong'
 FILE = 'common/specular.glsl'
 schemas = repo / 'tests/grade/schemas'
@@ -76,9 +77,11 @@ def classroom50(name, text):
         grader.mkdir(parents=True)
         shutil.copy(repo / 'tools/classroom50/autograder.py', grader)
         (grader / 'autograder.json').write_text(json.dumps({'exercise': EXERCISE, 'shaders': 'shaders'}))
+    tag = 'submit/2026-11-27T22-59-58Z-abc1234'
+    release = f'https://github.com/graphics/blinn-phong-{name}/releases/tag/{tag}'
     env = dict(os.environ, SHADELAB=str(shadelab), CLASSROOM='graphics', ASSIGNMENT='blinn-phong',
-               ASSIGNMENT_TYPE='individual', OWNER=name, SUBMISSION_TAG='submit/2026-11-27T22-59-58Z-abc1234',
-               COMMIT_URL='https://example.org/commit/abc1234', RELEASE_URL='https://example.org/releases/1',
+               ASSIGNMENT_TYPE='team' if name == 'failing' else 'individual', OWNER=name, SUBMISSION_TAG=tag,
+               COMMIT_URL='https://example.org/commit/abc1234', RELEASE_URL=release,
                REVIEW_URL='https://example.org/compare/0...abc1234', GITHUB_ACTOR=name)
     env.pop('COMMIT_DATE', None)
     run([sys.executable, grader / 'autograder.py'], cwd=checkout, env=env)
@@ -88,9 +91,23 @@ def classroom50(name, text):
     assert r['score'] == sum(t['score'] for t in r['tests']) <= r['max-score'] == sum(t['max-score'] for t in r['tests'])
     assert all(t['score'] <= t['max-score'] for t in r['tests'])
     assert (r['score'] == r['max-score']) == (name == 'passing'), (name, r['score'], r['max-score'])
+    assert r['assignment_type'] == ('group' if name == 'failing' else 'individual'), r['assignment_type']
     for asset in ('release-body.md', 'shadelab-report.html', 'shadelab-pictures.zip'):
         assert (checkout / asset).is_file(), asset + ' for the release'
-    return r['score'] / r['max-score']
+    # Every picture and link of the release's text names an asset the release carries: a file the
+    # autograder left, listed in the assignment's release_assets (autograder.py --release-assets).
+    listed = json.loads(run([sys.executable, grader / 'autograder.py', '--release-assets'], env=env).stdout)
+    body = (checkout / 'release-body.md').read_text()
+    download = release.replace('/releases/tag/', '/releases/download/') + '/'
+    references = re.findall(r'!?\[[^\]]*\]\(([^)\s]+)\)', body)
+    assert references, 'the body links the report and the pictures'
+    for url in references:
+        assert url.startswith(download), url + ': not an asset of ' + release
+        asset = url[len(download):]
+        assert (checkout / asset).is_file() and asset in listed, asset + ': not attached to the release'
+    pictures = re.findall(r'!\[[^\]]*\]\(([^)\s]+)\)', body)
+    assert bool(pictures) == (name != 'passing'), (name, pictures)
+    return r['score'] / r['max-score'], r['max-score']
 
 
 def prairielearn(name, text):
@@ -103,7 +120,7 @@ def prairielearn(name, text):
     path = grade / 'results/results.json'
     r = json.loads(path.read_text())
     schema('prairielearn-results.schema.json').validate(r)
-    assert path.stat().st_size <= 1000000, f'{path.stat().st_size} bytes: over PrairieLearn\'s 1 MB'
+    assert path.stat().st_size <= 1048576, f'{path.stat().st_size} bytes: over PrairieLearn\'s 1,048,576'
     if name in ('broken', 'missing'):
         assert r['gradable'] is False, name + ' is not gradable: no attempt charged'
         errors = ' '.join(r['format_errors'])
@@ -153,9 +170,30 @@ def hidden_configuration():
     assert abs(sum(t['score'] for t in r['tests']) - r['score']) < 1e-9, 'the hidden tests are counted'
 
 
+def docker_context():
+    """The PrairieLearn image's build context leaves a teacher's build/ out (its CMake cache names
+    another machine's paths and fails the image's configure step) and keeps what the image builds
+    from. Docker's rule: a pattern excludes the paths it matches and everything under them."""
+    import fnmatch
+    ignore = repo / 'tools/prairielearn/Dockerfile.dockerignore'
+    patterns = [line.strip() for line in ignore.read_text().splitlines() if line.strip() and line[0] != '#']
+
+    def excluded(path):
+        parts = path.split('/')
+        return any(fnmatch.fnmatch('/'.join(parts[:n]), p.removeprefix('**/')) or
+                   (p.startswith('**/') and fnmatch.fnmatch(parts[n - 1], p[3:]))
+                   for p in patterns for n in range(1, len(parts) + 1))
+    for path in ('build/CMakeCache.txt', 'build/shadelab', 'build-release/CMakeCache.txt', '.git/HEAD'):
+        assert excluded(path), path + ' would be copied into the image'
+    for path in ('CMakeLists.txt', 'app/main.cpp', 'exercises/shading/blinn-phong/rubric.json', 'shaders/common/specular.glsl',
+                 'tools/prairielearn/run.sh', 'app/cli/grade_class.cpp'):
+        assert not excluded(path), path + ' is left out of the image'
+
+
 def main():
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir(parents=True)
+    docker_context()
     subs = submissions()
     seen = {}
     for name, text in subs.items():
@@ -164,6 +202,8 @@ def main():
     class_csvs(subs)
     hidden_configuration()
     assert seen['passing'][2] == 1.0 and seen['failing'][2] < 0.7, seen
+    maxima = {name: scores[1][1] for name, scores in seen.items()}
+    assert len(set(maxima.values())) == 1, ('one max-score for every student of the assignment', maxima)
     print('passed: gradescope, classroom50, prairielearn and moodle/canvas on a passing, a failing and an '
           'ungradable submission, and a hidden configuration graded:', json.dumps(seen))
 
