@@ -310,7 +310,8 @@ nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::file
       if (readImage((reportDir / file).string(), image).empty()) loaded.back().emplace_back(label, std::move(image));
     }
   }
-  const size_t text = results.dump().size() + 256;  // + the note's own bytes
+  // Measured as the file is written (indented by two), where PrairieLearn counts its bytes.
+  const size_t text = results.dump(2).size() + 256;  // + the note's own bytes
   const size_t budget = byteLimit > text ? byteLimit - text : 0;
   size_t kept = pictures.size();
   for (int factor = 1;;) {
@@ -322,7 +323,7 @@ nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::file
         const ImageF small = factor == 1 ? image : downsample(image, factor);
         smallest = std::min({smallest, small.size.x, small.size.y});
         lists[i].push_back({{"label", label}, {"url", pngDataUri(small)}});
-        bytes += lists[i].back().dump().size() + 1;
+        bytes += lists[i].back().dump(2).size() + 16;  // + its indentation inside the test
       }
     if (bytes <= budget) {
       for (size_t i = 0; i < kept; ++i) results["tests"][pictures[i].test]["images"] = lists[i];

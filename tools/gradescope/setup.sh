@@ -11,5 +11,5 @@ DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends cm
   python3 libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libtinyobjloader-dev libstb-dev nlohmann-json3-dev \
   libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgtest-dev libbenchmark-dev libembree-dev \
   libeigen3-dev libflann-dev liblz4-dev libopenmesh-dev libzip-dev
-cmake -S shadelab -B shadelab/build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADELAB_BENCH=OFF > /dev/null
-cmake --build shadelab/build --target shadelab
+cmake -S shadelab -B shadelab-build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADELAB_BENCH=OFF > /dev/null
+cmake --build shadelab-build --target shadelab
