@@ -200,7 +200,8 @@ int runGradeClass(const Options& o) {
     run.wholeScale = wholePointScale(exercises);
     if (o.format == "classroom50")
       if (auto e = classroom50IdentityFromEnvironment(run.identity); !e.empty())
-        return cannotGrade(e + " (--format classroom50 runs in Classroom 50's runner: tools/classroom50/autograder.py)");
+        return cannotGrade(e +
+                           " (--format classroom50 runs in Classroom 50's runner: tools/classroom50/autograder.py)");
   }
   // The slice: every n-th submission by name, starting at the i-th. Which shard a student falls
   // in depends only on the sorted names, so every node computes the same split.

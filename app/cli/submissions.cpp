@@ -292,8 +292,9 @@ std::string placeUpload(const fs::path& upload, const std::vector<std::string>& 
       for (size_t i = 1; i < candidates.size(); ++i) others.push_back(found[candidates[i].second].shown);
       const auto& next = candidates[1].first;
       const std::string why = next.first != rank.first ? std::string("found ") + how[rank.first]
-                              : next.second != rank.second ? "the shallower of those found " + std::string(how[rank.first])
-                                                           : "the first by name of those found " + std::string(how[rank.first]);
+                              : next.second != rank.second
+                                  ? "the shallower of those found " + std::string(how[rank.first])
+                                  : "the first by name of those found " + std::string(how[rank.first]);
       out.notes.push_back(std::to_string(candidates.size()) + " files could be " + file + ": took " + taken.shown +
                           " (" + why + "), not " + namesOf(others));
     }

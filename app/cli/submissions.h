@@ -1,7 +1,7 @@
 // A class's submissions: each subfolder of the class folder, or each .zip in it, is one student's,
 // named by the folder or the file; then each upload's files put where the rubric expects them
-// (placeUpload), for `grade --class` and every platform's entry point alike. A zip is unpacked into a private folder first; what is in it is
-// untrusted, so unpacking refuses any entry that would land outside that folder (an absolute
+// (placeUpload), for `grade --class` and every platform's entry point alike. A zip is unpacked into a private folder
+// first; what is in it is untrusted, so unpacking refuses any entry that would land outside that folder (an absolute
 // name, a "..", a symbolic link), and stops at limits on entries and bytes (a zip bomb costs its
 // own submission only).
 #pragma once

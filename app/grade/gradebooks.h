@@ -53,9 +53,9 @@ nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50
 // "score" in [0, 1], a test per check with "points" and "max_points", the diagnosis as the
 // message, and for every configuration that lost points the student's frame, the solution's and
 // their difference as PNG data URLs, halved in size until the whole file stays under
-// `byteLimit` (PrairieLearn's 1 MiB), measured as the file is written (dump(2)). A submission with a file missing or a shader that does not compile is
-// "gradable": false with the reasons in "format_errors": PrairieLearn then charges no attempt.
-// `reportDir` holds the report's images.
+// `byteLimit` (PrairieLearn's 1 MiB), measured as the file is written (dump(2)). A submission with a file missing or a
+// shader that does not compile is "gradable": false with the reasons in "format_errors": PrairieLearn then charges no
+// attempt. `reportDir` holds the report's images.
 nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::filesystem::path& reportDir,
                                    size_t byteLimit = 1048576);
 
