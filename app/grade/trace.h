@@ -1,0 +1,83 @@
+// The student's own code as evidence: their function traced value by value beside the solution's.
+//
+// 1. Instrument (pure text): every value the function computes is wrapped in a tap,
+//    `shadelab_tap(K, e)`, which returns e and, when K is the traced point, writes it out; every
+//    parameter on entry, every variable after the statement that sets it, every return and every
+//    out-parameter is a point too. Line numbers are kept, so a compile error still points at the
+//    student's line. Types are not inferred: the taps are overloaded for GLSL's basic types, and a
+//    point the compiler refuses (a struct, a matrix) is dropped by line and the build tried again.
+// 2. Draw (grade/function_probe.h, drawFunctionTrace): the probe's table once per point, the
+//    student's and the solution's, each point's value per input row.
+// 3. Align (here, pure CPU): each of the student's values, per component, against every value the
+//    solution computes, its inputs and its constants, over every row both reached. From the
+//    student's result down, through the values each point is made of, to the first point whose
+//    value matches nothing the solution computes while everything it is made of does: the line
+//    where the student's values stop being the solution's. Its sentence says only what the values
+//    show (the line, what matches up to there, how the value relates to the solution's result or to
+//    an input when a simple relation fits exactly); never the solution's code.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+namespace shadelab {
+
+// One value the instrumented function writes out.
+struct TracePoint {
+  enum class Kind { Param, Declared, Assigned, Returned, OutParam, Sub };
+  Kind kind = Kind::Sub;
+  int line = 0;           // 1-based, in the traced file
+  std::string function;   // the function it lies in
+  std::string name;       // the variable, or the expression as written
+  std::string statement;  // Declared / Assigned: the variable; Sub: the variable its statement sets, if any
+  std::vector<int> from;  // the points its value is made of (sub-expressions, variables read)
+  bool constant = false;  // an expression of literals alone
+};
+
+struct InstrumentedSource {
+  std::string text;  // the source with its taps; "" when nothing could be traced
+  std::vector<TracePoint> points;
+  std::vector<double> literals;  // the numbers written in the traced functions
+  std::string error;             // why a function could not be traced
+};
+
+// The source with `functions` instrumented. Sub-expressions on `quietLines` are not tapped (the
+// lines where the compiler refused a tap), and none at all with `subExpressions` false.
+InstrumentedSource instrumentFunctions(const std::string& source, const std::vector<std::string>& functions,
+                                       const std::vector<int>& quietLines = {}, bool subExpressions = true);
+
+// The GLSL the instrumented source needs before it: the tap overloads, `uniform int shadelab_trace`
+// (the point written out, -1 for none) and `vec4 shadelab_traced` (the value: xyz and, in w, its
+// component count; w = 0 where the point was not reached).
+const char* tracePrelude();
+
+// One side's trace: each point's value on each row of the probe's table.
+struct TraceValues {
+  std::vector<TracePoint> points;
+  std::vector<double> literals;
+  std::vector<std::vector<glm::vec4>> values;  // [point][row]
+};
+
+// Where the student's values leave the solution's.
+struct TraceFinding {
+  bool found = false;
+  int line = 0;
+  std::string name;  // the variable or the expression at that point
+  std::string function;
+  std::vector<std::string> matching;  // what it is made of, all matching the solution's values
+  std::string relation;               // "" or how it relates ("the solution's result, negated")
+  int matchedBefore = 0;              // the student's points before it whose values match
+  std::string text;                   // the sentence for the student
+  std::string tag() const { return "line:" + std::to_string(line); }
+};
+// `inputs` names the function's parameters for the student ("the direction to the light L"), by
+// the parameter's name.
+TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution,
+                         const std::vector<std::pair<std::string, std::string>>& inputs, const std::string& file);
+
+nlohmann::json toJson(const TraceFinding& f);
+TraceFinding traceFindingFromJson(const nlohmann::json& j);
+
+}  // namespace shadelab
