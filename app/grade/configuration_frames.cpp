@@ -12,6 +12,7 @@
 #include "app/grade/frame_relations.h"
 #include "app/grade/function_probe.h"
 #include "app/grade/mutants.h"
+#include "app/grade/probe_trace.h"
 #include "app/host/configure.h"
 #include "app/host/measurer.h"
 #include "app/measure/report.h"
@@ -178,6 +179,14 @@ nlohmann::json probeStudent(const Exercise& ex, const Configuration& c, const st
          analyseProbe(probe, image, solution.frame, solution.mistakes.empty() ? nullptr : &solution.mistakes[0]))
       student["probe"].push_back({{"kind", f.kind}, {"key", f.key}, {"text", f.text}, {"fit", f.fit}});
   if (errors.empty()) student["slips"] = slipDistances(c, image, solution);
+  // Where the tables differ, the function traced line by line beside the solution's.
+  if (errors.empty() && student["distance"].get<double>() > kFramesDiffer) {
+    TraceFinding finding;
+    if (auto why = traceOnProbe(ex, probe, roots, finding); !why.empty())
+      student["trace_unavailable"] = why;
+    else
+      student["trace"] = toJson(finding);
+  }
   return student;
 }
 

@@ -412,6 +412,17 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   double relationResidual = 0.0, relationMisfit = 0.0;  // summed where it must hold; over the distance
   const bool related = commonRelation(ev, relation, relationResidual, relationMisfit);
   const SlipFinding slip = findSlip(ex, e);
+  // The student's own code traced beside the solution's (the function probed by itself): the line
+  // where their values part. It states only what the values show, so it stands before any cause
+  // read from frames that are merely close to a mistake's, a slip's or a relation's.
+  const ConfigurationResult* traced = nullptr;
+  for (auto* c : ev.functions)
+    if (!traced && c->trace.found) traced = c;
+  const auto sayTrace = [&] {
+    e.explanation = traced->trace.tag();
+    e.diagnosis = traced->trace.text + " (Evidence: every value your function computes, traced beside the " +
+                  "solution's on the same table of inputs, " + quoted(traced->name) + ".)";
+  };
 
   if (!agreeing.empty()) {
     const size_t k = agreeing.front().second;
@@ -455,8 +466,13 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
       }
     if (!closerFitElsewhere && !split) {
       // Frames that are the mistake's name it; frames only close to them say so: the effect is the
-      // mistake's, the code that makes it may differ (a bias far too small acts as none).
+      // mistake's, the code that makes it may differ (a bias far too small acts as none). Where the
+      // student's code is traced, its own line says more than a likeness.
       const bool exact = exactly(e, k);
+      if (!exact && traced) {
+        sayTrace();
+        return;
+      }
       e.mistake = m.name;
       e.explanation = (exact ? "mistake:" : "like:") + m.name;
       e.diagnosis = (exact ? "" : "Your frames come close to what a known mistake draws, so its effect is yours: ") +
@@ -493,7 +509,10 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     std::vector<std::string> values;
     double settingMisfit = 0.0;
     const std::string also = " They are also the solution's with " + slip.what + slip.evidence;
-    if (related && relationResidual <= kDiffers * double(ev.related().size())) {
+    if (traced) {  // the line first; the slip is the effect it has on the frames
+      sayTrace();
+      e.diagnosis += " Your frames are the solution's with " + slip.what + slip.evidence;
+    } else if (related && relationResidual <= kDiffers * double(ev.related().size())) {
       e.explanation = "relation:" + relation.kind;
       e.diagnosis = relationSentence(ev, relation) + also;
     } else if (commonSetting(ev, key, values, settingMisfit) && settingMisfit <= kSlipFits) {
@@ -503,6 +522,10 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
       e.explanation = slip.tag;
       e.diagnosis = "Your frames are the solution's with " + slip.what + slip.evidence;
     }
+    return;
+  }
+  if (traced) {
+    sayTrace();
     return;
   }
   // The function probed by itself: what its table says, before what the pictures made of it say.

@@ -14,6 +14,7 @@
 
 #include "app/gl/gl.h"
 #include "app/gl/texture.h"
+#include "app/grade/trace.h"
 #include "app/measure/report.h"
 #include "app/shader/shader_library.h"
 
@@ -176,14 +177,16 @@ std::vector<float> inputTable(const FunctionProbe& probe, int& width) {
 
 const char* swizzle(int n) { return n == 1 ? "x" : n == 2 ? "xy" : n == 3 ? "xyz" : "xyzw"; }
 
-// The generated fragment shader.
-std::string probeSource(const FunctionProbe& probe) {
+// The generated fragment shader; `traced`: with the trace's taps declared before the includes, and
+// the traced point's value written in place of the result when one is chosen.
+std::string probeSource(const FunctionProbe& probe, bool traced) {
   int slots = 0;
   for (auto& in : probe.inputs) slots += slotsOf(in);
   std::string s =
       "#version 330 core\n"
       "// The exercised function probed by itself (grade/function_probe.h); written by the grader.\n";
   s += probe.prelude + "\n";
+  if (traced) s += tracePrelude();
   for (auto& f : probe.include) s += "#include \"" + f + "\"\n";
   s += probe.helpers + "\n";
   for (auto& [name, kind] : probe.textures)
@@ -233,6 +236,7 @@ std::string probeSource(const FunctionProbe& probe) {
   const char* type = probe.size == 1 ? "float" : probe.size == 2 ? "vec2" : "vec3";
   s += "  vec4 shadelab_r = vec4(0.0, 0.0, 0.0, 1.0);\n";
   s += "  shadelab_r." + std::string(swizzle(probe.size)) + " = " + type + "(" + probe.result + ");\n";
+  if (traced) s += "  if (shadelab_trace >= 0) shadelab_r = shadelab_traced;\n";
   s += "  shadelab_probeOut = shadelab_r;\n}\n";
   return s;
 }
@@ -276,7 +280,22 @@ gl::Texture2D probeTexture(const std::string& kind, std::string& error) {
     t.setSampler(sampler);
     return t;
   }
-  error = "texture kind '" + kind + "' (valid: ramp-r, ramp-rgb, levels)";
+  if (kind == "noise-rgb") {  // 16 x 16 texels of unrelated values: a texel read one off shows at once
+    constexpr int m = 16;
+    std::vector<float> px(size_t(m) * m * 4);
+    uint32_t h = 0x9e3779b9u;
+    for (auto& v : px) {
+      h ^= h << 13;
+      h ^= h >> 17;
+      h ^= h << 5;
+      v = 0.05f + 0.9f * float(h & 0xffffu) / 65535.0f;
+    }
+    for (size_t i = 3; i < px.size(); i += 4) px[i] = 1.0f;
+    sampler.minFilter = sampler.magFilter = GL_NEAREST;
+    sampler.wrapS = sampler.wrapT = GL_REPEAT;
+    return gl::Texture2D::fromData({m, m}, GL_RGBA16F, GL_RGBA, GL_FLOAT, px.data(), sampler);
+  }
+  error = "texture kind '" + kind + "' (valid: ramp-r, ramp-rgb, levels, noise-rgb)";
   return {};
 }
 
@@ -410,8 +429,8 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
     for (auto& [name, kind] : j["textures"].items()) {
       if (!identifier(name) || !kind.is_string()) return at + ": \"textures\"." + name + " must name a kind";
       const std::string k = kind.get<std::string>();
-      if (k != "ramp-r" && k != "ramp-rgb" && k != "levels")
-        return at + ": \"textures\"." + name + " is '" + k + "' (valid: ramp-r, ramp-rgb, levels)";
+      if (k != "ramp-r" && k != "ramp-rgb" && k != "levels" && k != "noise-rgb")
+        return at + ": \"textures\"." + name + " is '" + k + "' (valid: ramp-r, ramp-rgb, levels, noise-rgb)";
       out.textures.push_back({name, k});
     }
   }
@@ -471,8 +490,11 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
   return {};
 }
 
-std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::path>& roots, ImageF& image,
-                              std::vector<std::string>& errors) {
+namespace {
+
+// The probe's draws (trace == nullptr), or one draw per traced point at the first block's inputs.
+std::string drawProbe(const FunctionProbe& probe, const std::vector<fs::path>& roots, const ProbeTrace* trace,
+                      ImageF& image, std::vector<std::string>& errors) {
   // The generated file lives in a folder of its own, searched first: nothing a student hands in
   // can stand in for it.
   struct Scratch {
@@ -482,7 +504,10 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::
       fs::remove_all(dir, ec);
     }
   } scratch;
-  if (auto e = writeTextFile((scratch.dir / kProbeFile).string(), probeSource(probe)); !e.empty()) return e;
+  if (auto e = writeTextFile((scratch.dir / kProbeFile).string(), probeSource(probe, trace != nullptr)); !e.empty())
+    return e;
+  if (trace)  // the instrumented file in place of the one it was made from
+    if (auto e = writeTextFile((scratch.dir / trace->file).string(), trace->text); !e.empty()) return e;
   std::vector<fs::path> searched{scratch.dir};
   searched.insert(searched.end(), roots.begin(), roots.end());
   ShaderLibrary library{ShaderSearchPath(searched)};
@@ -491,8 +516,9 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::
                    {{GL_VERTEX_SHADER, "common/fullscreen.vert"}, {GL_FRAGMENT_SHADER, kProbeFile}},
                    probe.defines};
   ProgramRef program = library.program(spec);
-  const std::vector<FunctionProbe::Draw> draws = probe.draws();
-  const glm::ivec2 size{probe.totalRows(), int(draws.size())};
+  std::vector<FunctionProbe::Draw> draws = probe.draws();
+  if (trace) draws.assign(size_t(std::max(trace->points, 0)), FunctionProbe::Draw{});
+  const glm::ivec2 size{probe.totalRows(), std::max(int(draws.size()), 1)};
   image = ImageF{size, std::vector<float>(size_t(size.x) * size.y * 4, 0.0f)};
   if (!program->hasGoodProgram()) {
     for (auto& d : program->diagnostics())
@@ -559,6 +585,7 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::
     program->set("shadelab_probeVary", draw.kind == FunctionProbe::Draw::Kind::Vary ? draw.index : -1);
     program->set("shadelab_probeTransform", draw.kind == FunctionProbe::Draw::Kind::Transform ? draw.index : -1);
     program->set("shadelab_probeQuantity", draw.kind == FunctionProbe::Draw::Kind::Quantity ? draw.index : -1);
+    if (trace) program->set("shadelab_trace", int(d));
     glViewport(0, size.y - 1 - int(d), size.x, 1);  // image rows run top-down
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
@@ -566,6 +593,18 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   return {};
+}
+
+}  // namespace
+
+std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<fs::path>& roots, ImageF& image,
+                              std::vector<std::string>& errors) {
+  return drawProbe(probe, roots, nullptr, image, errors);
+}
+
+std::string drawFunctionTrace(const FunctionProbe& probe, const std::vector<fs::path>& roots, const ProbeTrace& trace,
+                              ImageF& image, std::vector<std::string>& errors) {
+  return drawProbe(probe, roots, &trace, image, errors);
 }
 
 }  // namespace shadelab

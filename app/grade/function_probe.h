@@ -82,7 +82,8 @@ struct FunctionProbe {
   std::vector<ProbeInput> inputs;
   std::vector<ProbeBlock> blocks;  // at least one (the first is the base)
   // Sampler uniform -> a texture made for the probe: ramp-r (one channel), ramp-rgb (smooth, not
-  // symmetric in u or v), levels (a mip chain whose level k holds k). A name beginning "probe_" is
+  // symmetric in u or v), levels (a mip chain whose level k holds k), noise-rgb (16 x 16 unrelated
+  // texels, repeating: a read one texel off differs). A name beginning "probe_" is
   // declared by the probe; any other is the included files' own (u_displacement).
   std::vector<std::pair<std::string, std::string>> textures;
   std::vector<ProbeEdge> edges;
@@ -114,6 +115,17 @@ std::string parseFunctionProbe(const nlohmann::json& j, const std::string& where
 // (the rubric's fault: a texture kind it does not know, a float target the driver lacks).
 std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<std::filesystem::path>& roots,
                               ImageF& image, std::vector<std::string>& errors);
+
+// The probe's table traced (grade/trace.h): `text`, the instrumented source of `file`, read in its
+// place, and the table drawn once per point at the first block's inputs (image row k: point k's
+// value on every input row, xyz and its component count in w; w = 0 where it was not reached).
+struct ProbeTrace {
+  std::string file;  // "common/specular.glsl"
+  std::string text;
+  int points = 0;
+};
+std::string drawFunctionTrace(const FunctionProbe& probe, const std::vector<std::filesystem::path>& roots,
+                              const ProbeTrace& trace, ImageF& image, std::vector<std::string>& errors);
 
 // What the student's table says against the solution's (and the starter's), strongest first.
 struct ProbeFinding {

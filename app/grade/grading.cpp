@@ -169,6 +169,8 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
         out.probeFindings.push_back(
             {f.value("kind", ""), f.value("key", ""), f.value("text", ""), f.value("fit", 0.0)});
     addSlipEvidence(solution, student.value("slips", nlohmann::json()), out);
+    if (student.contains("trace")) out.trace = traceFindingFromJson(student["trace"]);
+    out.traceUnavailable = student.value("trace_unavailable", std::string());
   }
   out.function = c.function >= 0;
   for (auto& check : c.checks) {
@@ -409,8 +411,13 @@ std::string gradeJson(const GradeReport& report) {
     // mutation test tells an equivalent mutant from one the checks let through.
     je["frames"] = nlohmann::json::array();
     for (auto& c : e.configurations)
-      if (c.drawn)
-        je["frames"].push_back({{"configuration", c.name}, {"distance", c.distance}, {"function", c.function}});
+      if (c.drawn) {
+        nlohmann::json frame{{"configuration", c.name}, {"distance", c.distance}, {"function", c.function}};
+        // The trace of the function by itself: where the student's values part from the solution's.
+        if (c.trace.found) frame["trace"] = toJson(c.trace);
+        if (!c.traceUnavailable.empty()) frame["trace_unavailable"] = c.traceUnavailable;
+        je["frames"].push_back(std::move(frame));
+      }
     for (auto& c : e.configurations)
       for (auto& r : c.checks)
         je["checks"].push_back(

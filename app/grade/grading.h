@@ -11,6 +11,7 @@
 #include "app/grade/frame_relations.h"
 #include "app/grade/function_probe.h"
 #include "app/grade/rubric.h"
+#include "app/grade/trace.h"
 
 namespace shadelab {
 
@@ -86,6 +87,10 @@ struct ConfigurationResult {
   // A function probe's configuration (grade/function_probe.h): no checks, and what its table says.
   bool function = false;
   std::vector<ProbeFinding> probeFindings;
+  // The student's function traced beside the solution's on the probe's table (grade/trace.h): where
+  // their values part, or why there is no trace ("" when it was not asked for).
+  TraceFinding trace;
+  std::string traceUnavailable;
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;
   std::vector<CheckResult> checks;
@@ -121,7 +126,8 @@ struct ExerciseResult {
   // One cause in a sentence or two (grade/diagnosis.h); empty when every point was earned.
   std::string diagnosis;
   std::string mistake;  // the rubric's mistake that explains the frames, when one does
-  // What the diagnosis rests on, for the reports and for measuring the grader: "mistake:NAME",
+  // What the diagnosis rests on, for the reports and for measuring the grader: "line:N" (the trace:
+  // the line of the exercise's file where the student's values part from the solution's), "mistake:NAME",
   // "mistakes:A+B", "relation:KIND", "where:KEY=VALUE", "starter", "starter-result",
   // "non-finite", "property:NAME", "seen:NAME" (a property whose cause is not known),
   // "probe:KIND:KEY" (what the function's table says: grade/function_probe.h), "only:CONFIGURATION",

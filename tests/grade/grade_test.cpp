@@ -90,6 +90,33 @@ TEST(GradeMistakes, AnUnnormalisedHalfVectorFailsTheHighlight) {
       << g.output;
 }
 
+// A mistake no rubric lists, in the third of four lines: the trace of the student's own function
+// beside the solution's names that line, what matches up to it, and how its value relates to the
+// solution's result, never the solution's code.
+TEST(GradeMistakes, TheLineWhereAStudentsValuesPartIsNamedFromTheirOwnCode) {
+  const fs::path student =
+      seeded("traced", "common/specular.glsl", "  return max(dot(N, safeNormalize(L + V, N)), 0.0);\n",
+             "  vec3 H = safeNormalize(L + V, N);\n"
+             "  float c = dot(N, H);\n"
+             "  float s = max(c, 0.0) * 2.0;\n"
+             "  return s;\n");
+  const Graded g = grade("shading/blinn-phong", student, reportDir("traced"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.exercise()["explanation"], "line:12") << g.output;
+  const std::string said = g.exercise()["diagnosis"].get<std::string>();
+  EXPECT_EQ(said.rfind("Line 12 of common/specular.glsl (`s`): your values up to this line match the solution's", 0),
+            0u)
+      << said;
+  EXPECT_NE(said.find("`max(c, 0.0)`, which it is made of, matches"), std::string::npos) << said;
+  EXPECT_NE(said.find("It is 2 times the solution's result."), std::string::npos) << said;
+  EXPECT_EQ(said.find("dot(N, safeNormalize"), std::string::npos) << "the solution's code is never shown: " << said;
+  // The trace travels in the report with the probe's frame.
+  bool traced = false;
+  for (auto& f : g.exercise()["frames"])
+    if (f.contains("trace")) traced = f["trace"]["line"] == 12;
+  EXPECT_TRUE(traced) << g.exercise()["frames"].dump();
+}
+
 TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
   const fs::path student = seeded(
       "bias-sign", "shadows/pcf.glsl",

@@ -133,8 +133,9 @@ grep -qE "FAIL +per-fragment: highlight +covered_rmse +0\.[0-9]+" <<<"$checked" 
 grep -m1 -E "FAIL +per-fragment: highlight" <<<"$checked"
 echo "Check grades an exercise in the page"
 # The same diagnosis in the page as on the terminal, for a mistake no rubric lists (from
-# tests/grade/unlisted: the highlight squared, which the grader names from the specular factor
-# probed by itself: the page evaluates the function in GLSL ES 3.00 as the terminal does in 3.30).
+# tests/grade/unlisted: the highlight squared, which the grader finds by tracing the student's
+# specular factor line by line beside the solution's: the page instruments and evaluates the
+# function in GLSL ES 3.00 as the terminal does in 3.30).
 squared=$out/squared/common/specular.glsl
 mkdir -p "$(dirname "$squared")"
 python3 - "$repo/exercises/shading/blinn-phong/starter/common/specular.glsl" "$repo/tests/grade/unlisted/shading/blinn-phong.json" \
@@ -157,7 +158,7 @@ rm -rf "$out/squared-grade"
 LIBGL_ALWAYS_SOFTWARE=1 "$shadelab" grade --exercise shading/blinn-phong --shaders "$out/squared" \
   --out "$out/squared-grade" >"$out/squared-grade.log" 2>&1 || true
 terminal_diagnosis=$(grep -m1 -o "diagnosis: .*" "$out/squared-grade.log" || true)
-grep -q "specular factor is the solution's squared" <<<"$terminal_diagnosis" &&
+grep -q "Line 11 of common/specular.glsl .*It is the solution's result, squared" <<<"$terminal_diagnosis" &&
   [ "$page_diagnosis" = "$terminal_diagnosis" ] ||
   { echo "page:     $page_diagnosis"; echo "terminal: $terminal_diagnosis"; echo "the page's diagnosis is not the grader's"; exit 1; }
 echo "the page's Check says the grader's diagnosis: ${page_diagnosis:0:100}..."

@@ -1,0 +1,99 @@
+#include "app/grade/probe_trace.h"
+
+#include <regex>
+#include <set>
+
+#include "app/shader/function_parts.h"
+#include "app/shader/preprocessor.h"
+#include "app/util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int lineOf(const std::string& text, size_t at) {
+  return 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(std::min(at, text.size())), '\n'));
+}
+
+// The lines of `file` that a build's errors name.
+std::vector<int> errorLines(const std::vector<std::string>& errors, const std::string& file) {
+  std::vector<int> lines;
+  const std::regex at(std::regex_replace(file, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") + R"(:(\d+):)");
+  for (auto& e : errors)
+    for (auto it = std::sregex_iterator(e.begin(), e.end(), at); it != std::sregex_iterator(); ++it)
+      lines.push_back(std::stoi((*it)[1]));
+  return lines;
+}
+
+}  // namespace
+
+std::vector<std::string> tracedFunctions(const Exercise& ex) {
+  const std::string& file = ex.files.front();
+  const std::string starter = readWholeFile(ex.dir / "starter" / file);
+  const std::vector<FunctionSpan> spans = findFunctions(starter);
+  std::vector<std::string> names;
+  TodoRegion r;
+  const bool region = findTodoRegion(starter, ex.id, r);
+  const int from = region ? lineOf(starter, r.from) : 0, to = region ? lineOf(starter, r.to) : 0;
+  for (auto& s : spans)
+    if (!region || (s.firstLine <= to && s.lastLine >= from)) names.push_back(s.name);
+  return names;
+}
+
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, const std::string& source,
+                      const std::vector<fs::path>& roots, TraceValues& out) {
+  const std::string& file = ex.files.front();
+  const std::vector<std::string> functions = tracedFunctions(ex);
+  if (functions.empty()) return "no function of " + file + " holds the exercise's TODO region";
+  std::vector<int> quiet;
+  std::string lastError;
+  // Each round drops the taps the compiler refused, by line; the last keeps the variables alone.
+  constexpr int kRounds = 4;
+  for (int round = 0; round < kRounds; ++round) {
+    const bool sub = round + 1 < kRounds;
+    const InstrumentedSource inst = instrumentFunctions(source, functions, quiet, sub);
+    if (!inst.error.empty()) return inst.error;
+    ImageF image;
+    std::vector<std::string> errors;
+    if (auto e = drawFunctionTrace(probe, roots, {file, inst.text, int(inst.points.size())}, image, errors); !e.empty())
+      return e;
+    if (errors.empty()) {
+      out.points = inst.points;
+      out.literals = inst.literals;
+      out.values.assign(inst.points.size(), {});
+      for (size_t k = 0; k < inst.points.size(); ++k)
+        for (int row = 0; row < image.size.x; ++row) {
+          const float* px = image.at(row, int(k));
+          out.values[k].push_back({px[0], px[1], px[2], px[3]});
+        }
+      return {};
+    }
+    lastError = errors.front().substr(0, errors.front().find('\n'));
+    const std::vector<int> lines = errorLines(errors, file);
+    if (lines.empty()) round = std::max(round, kRounds - 2);  // nothing to drop by line: the variables alone
+    quiet.insert(quiet.end(), lines.begin(), lines.end());
+  }
+  return "the instrumented function does not build (" + lastError + ")";
+}
+
+std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe, const std::vector<fs::path>& studentRoots,
+                         TraceFinding& out) {
+  const std::string& file = ex.files.front();
+  if (file.ends_with(kPartSuffix)) return "a part file is not traced yet";
+  const ShaderSearchPath submitted(studentRoots);
+  const ShaderSearchPath::Lookup found = submitted.find(file);
+  if (found.file.empty()) return file + " is not in the student's folders";
+  const std::string student = readWholeFile(found.file);
+  TraceValues mine, theirs;
+  if (auto e = traceSide(ex, probe, student, studentRoots, mine); !e.empty()) return "your " + file + ": " + e;
+  if (auto e = traceSide(ex, probe, labText(ex, file), {builtinShaderDir()}, theirs); !e.empty())
+    return "the solution's " + file + ": " + e;
+  std::vector<std::pair<std::string, std::string>> inputs;
+  for (auto& in : probe.inputs) inputs.push_back({in.name, in.says});
+  out = alignTraces(mine, theirs, inputs, file);
+  return {};
+}
+
+}  // namespace shadelab

@@ -1,0 +1,30 @@
+// The exercised function traced on its probe (grade/trace.h), the student's beside the solution's:
+// both instrumented, both drawn on the probe's table once per point, then aligned. Runs where the
+// probe runs (the grading child, the window's Check, the page), in the GL context current there.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/grade/function_probe.h"
+#include "app/grade/rubric.h"
+#include "app/grade/trace.h"
+
+namespace shadelab {
+
+// The functions a trace follows: those of the exercise's first file that its starter's TODO region
+// lies in (every function of the file for a whole-file starter).
+std::vector<std::string> tracedFunctions(const Exercise& ex);
+
+// One side traced: `source` (the text of the exercise's first file) instrumented and drawn with
+// `roots` behind it. A tap the compiler refuses is dropped with the rest of its line's and the
+// build tried again; then the variables alone. Returns "" or why it could not be traced.
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, const std::string& source,
+                      const std::vector<std::filesystem::path>& roots, TraceValues& out);
+
+// The student's function against the solution's on the probe: "" and `out`, or why there is no
+// trace (a function outside what the trace reads, a build that fails however its taps are dropped).
+std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe,
+                         const std::vector<std::filesystem::path>& studentRoots, TraceFinding& out);
+
+}  // namespace shadelab
