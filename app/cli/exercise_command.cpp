@@ -69,6 +69,11 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
   return {};
 }
 
+// The unlisted mistakes of every exercise checked, for the measure in all.
+struct UnlistedTally {
+  size_t mistakes = 0, named = 0, wrong = 0, passing = 0;
+};
+
 // How the grader did on an unlisted mistake, worst first.
 enum class Verdict { Passes, Wrong, Unnamed, Named };
 constexpr const char* kVerdicts[] = {"passes", "wrong", "unnamed", "named"};
@@ -79,8 +84,45 @@ constexpr const char* kVerdicts[] = {"passes", "wrong", "unnamed", "named"};
 struct UnlistedMistake {
   Mistake change;                    // body, or find and replace, as a rubric's mistake
   std::vector<std::string> namedBy;  // "relation:complement", "where:light_type=spot", ...
+  std::vector<int> lines;            // the lines of the file that hold the mistake: a trace naming one names it
   Verdict recorded = Verdict::Named;
 };
+
+// The lines of `changed` that are not in `base` (a longest common subsequence of their lines,
+// whitespace aside): where a mistake written as a whole region lies, when its set does not say.
+std::vector<int> changedLines(const std::string& changed, const std::string& base) {
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> lines;
+    size_t at = 0;
+    while (at <= text.size()) {
+      const size_t end = std::min(text.find('\n', at), text.size());
+      std::string line;
+      for (size_t i = at; i < end; ++i)
+        if (!std::isspace(static_cast<unsigned char>(text[i]))) line += text[i];
+      lines.push_back(line);
+      at = end + 1;
+    }
+    return lines;
+  };
+  const std::vector<std::string> a = split(changed), b = split(base);
+  std::vector<std::vector<int>> lcs(a.size() + 1, std::vector<int>(b.size() + 1, 0));
+  for (size_t i = a.size(); i-- > 0;)
+    for (size_t j = b.size(); j-- > 0;)
+      lcs[i][j] = a[i] == b[j] ? lcs[i + 1][j + 1] + 1 : std::max(lcs[i + 1][j], lcs[i][j + 1]);
+  std::vector<int> out;
+  for (size_t i = 0, j = 0; i < a.size();) {
+    if (j < b.size() && a[i] == b[j]) {
+      ++i;
+      ++j;
+    } else if (j < b.size() && lcs[i][j + 1] >= lcs[i + 1][j]) {
+      ++j;
+    } else {
+      if (!a[i].empty()) out.push_back(int(i) + 1);
+      ++i;
+    }
+  }
+  return out;
+}
 
 // DIR/LAB/NAME.json: {"mistakes": [{"name", "after", "body" | "find" + "replace", "named_by": [...],
 // "today": "named" | "unnamed" | "wrong" | "passes"}]}.
@@ -112,6 +154,18 @@ std::string loadUnlisted(const Exercise& ex, const fs::path& dir, std::vector<Un
     u.recorded = Verdict(it - std::begin(kVerdicts));
     std::string source;
     if (auto e = mistakeSource(ex, u.change, source); !e.empty()) return at + ": " + u.change.name + ": " + e;
+    // "mistake_lines" count from the body's first line; the body stands where the starter's region began.
+    if (m.contains("mistake_lines") && m["mistake_lines"].is_array() && !u.change.body.empty()) {
+      TodoRegion r;
+      const std::string starter = readWholeFile(ex.dir / "starter" / u.change.file);
+      const int first = findTodoRegion(starter, ex.id, r)
+                            ? 1 + int(std::count(starter.begin(), starter.begin() + std::ptrdiff_t(r.from), '\n'))
+                            : 1;
+      for (auto& l : m["mistake_lines"])
+        if (l.is_number_integer()) u.lines.push_back(first + l.get<int>() - 1);
+    } else {
+      u.lines = changedLines(source, labText(ex, u.change.file));
+    }
     out.push_back(std::move(u));
   }
   return {};
@@ -211,12 +265,18 @@ std::string loadHarmless(const Exercise& ex, const fs::path& dir, std::vector<Ha
 
 // Every problem of one exercise, one line each; none when it is ready to go out.
 std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std::string>& courseArgs,
-                                       const fs::path& unlistedDir, const fs::path& mutantsDir, std::string& summary) {
+                                       const std::vector<std::string>& unlistedDirs, const fs::path& mutantsDir,
+                                       UnlistedTally& tally, std::string& summary) {
   std::vector<std::string> problems;
   for (auto& file : ex.files)
     if (auto e = starterMatchesLabFile(ex, file); !e.empty()) problems.push_back(e);
   std::vector<UnlistedMistake> unlisted;
-  if (auto e = loadUnlisted(ex, unlistedDir, unlisted); !e.empty()) return {e};
+  for (auto& dir : unlistedDirs)
+    if (auto e = loadUnlisted(ex, dir, unlisted); !e.empty()) return {e};
+  for (size_t i = 0; i < unlisted.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (unlisted[i].change.name == unlisted[j].change.name)
+        return {"unlisted mistake '" + unlisted[i].change.name + "' is named twice in the sets for " + ex.id};
   // Mutants of the solution's region of the first file, when asked for.
   std::vector<Mutant> mutants;
   std::vector<std::string> mutantFiles;
@@ -370,14 +430,20 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   for (auto& u : unlisted) {
     const nlohmann::json& e = row("unlisted-" + u.change.name);
     const std::string said = e.value("explanation", "");
+    // A trace names the line where the values part: it names the mistake when that line holds it.
+    const bool namesItsLine = said.rfind("line:", 0) == 0 &&
+                              std::find(u.lines.begin(), u.lines.end(), std::atoi(said.c_str() + 5)) != u.lines.end();
     const Verdict v = e.value("passed", false) || !(percent(e) < 100.0)                        ? Verdict::Passes
                       : std::find(u.namedBy.begin(), u.namedBy.end(), said) != u.namedBy.end() ? Verdict::Named
+                      : namesItsLine                                                           ? Verdict::Named
                       : evidenceOnly(said)                                                     ? Verdict::Unnamed
                                                                                                : Verdict::Wrong;
     unlistedNamed += v == Verdict::Named;
     wrong += v == Verdict::Wrong;
     passing += v == Verdict::Passes;
     std::printf("       unlisted %-34s %-7s %s\n", u.change.name.c_str(), kVerdicts[int(v)], said.c_str());
+    if (const std::string told = e.value("diagnosis", std::string()); !told.empty())
+      std::printf("                %s\n", told.c_str());  // to be read against the mistake
     if (v < u.recorded)
       problems.push_back("unlisted mistake '" + u.change.name + "' " + kVerdicts[int(v)] + " (it was " +
                          kVerdicts[int(u.recorded)] + "; " + formatNumber(percent(e)) +
@@ -385,6 +451,10 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
   }
   summary += "; unlisted: " + std::to_string(unlistedNamed) + " of " + std::to_string(unlisted.size()) + " named, " +
              std::to_string(wrong) + " wrongly, " + std::to_string(passing) + " passing";
+  tally.mistakes += unlisted.size();
+  tally.named += unlistedNamed;
+  tally.wrong += wrong;
+  tally.passing += passing;
   return problems;
 }
 
@@ -413,6 +483,7 @@ int runExerciseCheck(const Options& o) {
     ids.push_back(target);
   }
   int failed = 0;
+  UnlistedTally tally;
   for (auto& id : ids) {
     Exercise ex;
     if (auto e = loadExercise(id, ex); !e.empty()) {
@@ -421,12 +492,24 @@ int runExerciseCheck(const Options& o) {
       continue;
     }
     std::string summary;
-    const std::vector<std::string> problems = checkExercise(ex, courseArgs, o.unlisted, o.mutants, summary);
+    const std::vector<std::string> problems = checkExercise(ex, courseArgs, o.unlisted, o.mutants, tally, summary);
     std::printf("%s %s%s\n", problems.empty() ? "ok  " : "FAIL", id.c_str(),
                 summary.empty() ? "" : (" (" + summary + ")").c_str());
     for (auto& p : problems) std::printf("       %s\n", p.c_str());
     std::fflush(stdout);
     failed += !problems.empty();
+  }
+  if (tally.mistakes > 0) {
+    // Coverage: the mistakes named with their cause or their line. Precision: of the diagnoses given
+    // (a mistake that passes has none), those that state nothing false about the code.
+    const size_t diagnosed = tally.mistakes - tally.passing;
+    std::printf(
+        "unlisted in all: %zu of %zu named (coverage %s %%), %zu of %zu diagnoses false (precision %s %%), "
+        "%zu passing\n",
+        tally.named, tally.mistakes, formatFixed(100.0 * double(tally.named) / double(tally.mistakes), 1).c_str(),
+        tally.wrong, diagnosed,
+        formatFixed(diagnosed ? 100.0 * double(diagnosed - tally.wrong) / double(diagnosed) : 100.0, 1).c_str(),
+        tally.passing);
   }
   std::printf("exercise check: %zu exercises, %d not ready\n", ids.size(), failed);
   return failed ? 1 : 0;

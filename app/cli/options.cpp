@@ -40,7 +40,7 @@ commands:
                   an exercise (an id, an exercise's folder, or a course folder: all of it; none: every
                   exercise) checked before it goes out: its rubric, its starter against the lab's file,
                   and the solution, starter, listed mistakes and correct variants graded as a class;
-                  one line per problem, exit 1 if any. --unlisted DIR: also grade DIR/LAB/NAME.json,
+                  one line per problem, exit 1 if any. --unlisted DIR (repeatable): also grade DIR/LAB/NAME.json,
                   mistakes no rubric lists, each with the explanations that name its cause: how many
                   are named, and a problem for each that passes or is named wrongly. --mutants DIR:
                   also grade mutants of the solution (an operator, comparison or constant changed, a
@@ -188,7 +188,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       std::error_code ec;
       if (!std::filesystem::is_directory(v, ec))
         return "--unlisted: '" + v + "' is not a folder (it holds LAB/NAME.json, an exercise's unlisted mistakes)";
-      o.unlisted = v;
+      o.unlisted.push_back(v);
     } else if (arg == "--mutants") {
       std::error_code ec;
       if (!std::filesystem::is_directory(v, ec))

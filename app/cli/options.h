@@ -31,7 +31,8 @@ struct Options {
   bool measure = false;                   // render: measure against the lab's truth too
   std::string exercise;                   // grade: --exercise lab/name
   std::vector<std::string> exerciseDirs;  // --exercises DIR (repeatable): course folders, before exercises/
-  std::string unlisted;  // exercise check: --unlisted DIR, sets of mistakes no rubric lists (DIR/LAB/NAME.json)
+  std::vector<std::string>
+      unlisted;  // exercise check: --unlisted DIR (repeatable), mistakes no rubric lists (DIR/LAB/NAME.json)
   std::string
       mutants;  // exercise check: --mutants DIR, the rubric tested by mutation (DIR/LAB/NAME.json: harmless ones)
   std::string function;       // exercise new: --function FILE:NAME, the built-in function the exercise asks for
