@@ -461,16 +461,21 @@ int componentsAt(const std::vector<glm::vec4>& v) {
   return n;
 }
 
-// Whether component `ca` of `a` is, row by row, f(component `cb` of `b`).
+// Whether component `ca` of `a` is, row by row, f(component `cb` of `b`), on the rows `a` reached:
+// `b` must have been reached on them too (a value of one branch of the solution's, reached on a
+// third of the rows, says nothing of the other two).
 template <typename F>
 bool follows(const std::vector<glm::vec4>& a, int ca, const std::vector<glm::vec4>& b, int cb, F f) {
-  size_t both = 0, agree = 0;
+  size_t mine = 0, both = 0, agree = 0;
   for (size_t r = 0; r < a.size() && r < b.size(); ++r) {
-    if (a[r].w <= 0.0f || b[r].w <= 0.0f) continue;
+    if (a[r].w <= 0.0f) continue;
+    ++mine;
+    if (b[r].w <= 0.0f) continue;
     ++both;
     agree += close(a[r][ca], f(b[r][cb]));
   }
-  return both >= size_t(kFewestRows) && double(agree) >= kMatchingRows * double(both);
+  return both >= size_t(kFewestRows) && double(both) >= kMatchingRows * double(mine) &&
+         double(agree) >= kMatchingRows * double(both);
 }
 
 bool reached(const std::vector<glm::vec4>& v) {
@@ -557,6 +562,16 @@ class Aligner {
       if (constant && m != 1) continue;
       for (int cb = 0; cb < m; ++cb)
         if (follows(a, c, b, cb, [](float x) { return x; })) return true;
+    }
+    for (auto& q : so_.quantities) {
+      if (constant) break;
+      std::vector<glm::vec4> b(q.size());
+      for (size_t r = 0; r < q.size(); ++r) b[r] = {q[r], 0.0f, 0.0f, 1.0f};
+      if (follows(a, c, b, 0, [](float x) { return x; }) || follows(a, c, b, 0, [](float x) { return 1.0f / x; }) ||
+          follows(a, c, b, 0, [](float x) { return x * x; }) ||
+          follows(a, c, b, 0, [](float x) { return 1.0f / (x * x); }) ||
+          follows(a, c, b, 0, [](float x) { return x >= 0.0f ? std::sqrt(x) : std::nanf(""); }))
+        return true;
     }
     return false;
   }

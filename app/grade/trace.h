@@ -58,6 +58,11 @@ struct TraceValues {
   std::vector<TracePoint> points;
   std::vector<double> literals;
   std::vector<std::vector<glm::vec4>> values;  // [point][row]
+  // The solution's side may add the exercise's quantities (the probe's "quantities": |L + V|,
+  // N.L, ...), one number per row: a student's value that is one of them, its reciprocal, its
+  // square or its square root is made of what the exercise is about (a half vector normalised by
+  // hand), not a departure.
+  std::vector<std::vector<float>> quantities;
 };
 
 // Where the student's values leave the solution's.

@@ -290,13 +290,14 @@ class Parser {
     e.end = endOfPrevious();
     return add(std::move(e));
   }
-  int binary(Expr::Kind kind, const std::string& op, int lhs, int rhs) {
+  // An operation lies on its operator's line (`a -\n b / c`: the division is on the second).
+  int binary(Expr::Kind kind, const std::string& op, int lhs, int rhs, int line) {
     Expr e;
     e.kind = kind;
     e.text = op;
     e.args = {lhs, rhs};
     e.begin = f_.exprs[lhs].begin;
-    e.line = f_.exprs[lhs].line;
+    e.line = line;
     e.end = f_.exprs[rhs].end;
     return add(std::move(e));
   }
@@ -304,8 +305,8 @@ class Parser {
   int expression() {
     int e = assignment();
     while (at(",")) {
-      next();
-      e = binary(Expr::Kind::Sequence, ",", e, assignment());
+      const int line = next().line;
+      e = binary(Expr::Kind::Sequence, ",", e, assignment(), line);
     }
     return e;
   }
@@ -315,8 +316,8 @@ class Parser {
     static const char* const kOps[] = {"=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "|=", "^="};
     for (const char* op : kOps)
       if (at(op) && peek().kind == Token::Kind::Punct) {
-        next();
-        return binary(Expr::Kind::Assign, op, lhs, assignment());
+        const int line = next().line;
+        return binary(Expr::Kind::Assign, op, lhs, assignment(), line);
       }
     return lhs;
   }
@@ -350,8 +351,10 @@ class Parser {
       bool found = false;
       for (auto& op : kLevels[level]) found |= t.text == op;
       if (!found) return lhs;
-      const std::string op = next().text;
-      lhs = binary(Expr::Kind::Binary, op, lhs, binaryLevel(level + 1));
+      const Token& token = next();
+      const std::string op = token.text;
+      const int line = token.line;
+      lhs = binary(Expr::Kind::Binary, op, lhs, binaryLevel(level + 1), line);
     }
   }
 

@@ -72,6 +72,19 @@ TEST(GlslSyntax, ReadsStatementsAndExpressionsWithTheirLines) {
   EXPECT_EQ(f.exprs[size_t(assign.args[1])].line, 12);
 }
 
+TEST(GlslSyntax, AnOperationLiesOnItsOperatorsLine) {
+  glsl::Function f;
+  std::string error;
+  ASSERT_TRUE(glsl::parseFunction("float f(float a, float b) {\n  return (a -\n          b)\n         / a;\n}\n", "f",
+                                  f, error))
+      << error;
+  const glsl::Stmt& ret = f.stmts[size_t(f.stmts[size_t(f.body)].body[0])];
+  const glsl::Expr& divide = f.exprs[size_t(ret.expr)];
+  EXPECT_EQ(divide.text, "/");
+  EXPECT_EQ(divide.line, 4);                           // where the division is written
+  EXPECT_EQ(f.exprs[size_t(divide.args[0])].line, 2);  // the difference's '-'
+}
+
 TEST(GlslSyntax, SaysWhyAFunctionCannotBeRead) {
   glsl::Function f;
   std::string error;
