@@ -180,9 +180,10 @@ nlohmann::json probeStudent(const Exercise& ex, const Configuration& c, const st
       student["probe"].push_back({{"kind", f.kind}, {"key", f.key}, {"text", f.text}, {"fit", f.fit}});
   if (errors.empty()) student["slips"] = slipDistances(c, image, solution);
   // Where the tables differ, the function traced line by line beside the solution's.
-  if (errors.empty() && student["distance"].get<double>() > kFramesDiffer) {
+  // (traceOnProbe finds nothing to trace where no block's values differ beyond rounding.)
+  if (errors.empty() && student["distance"].get<double>() > 0.0) {
     TraceFinding finding;
-    if (auto why = traceOnProbe(ex, probe, roots, finding); !why.empty())
+    if (auto why = traceOnProbe(ex, probe, roots, image, solution.frame, finding); !why.empty())
       student["trace_unavailable"] = why;
     else
       student["trace"] = toJson(finding);

@@ -517,7 +517,10 @@ std::string drawProbe(const FunctionProbe& probe, const std::vector<fs::path>& r
                    probe.defines};
   ProgramRef program = library.program(spec);
   std::vector<FunctionProbe::Draw> draws = probe.draws();
-  if (trace) draws.assign(size_t(std::max(trace->points, 0)), FunctionProbe::Draw{});
+  if (trace)
+    draws.assign(size_t(std::max(trace->points, 0)),
+                 FunctionProbe::Draw{FunctionProbe::Draw::Kind::Base,
+                                     std::clamp(trace->block, 0, int(probe.blocks.size()) - 1), -1});
   const glm::ivec2 size{probe.totalRows(), std::max(int(draws.size()), 1)};
   image = ImageF{size, std::vector<float>(size_t(size.x) * size.y * 4, 0.0f)};
   if (!program->hasGoodProgram()) {

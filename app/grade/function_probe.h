@@ -117,12 +117,13 @@ std::string drawFunctionProbe(const FunctionProbe& probe, const std::vector<std:
                               ImageF& image, std::vector<std::string>& errors);
 
 // The probe's table traced (grade/trace.h): `text`, the instrumented source of `file`, read in its
-// place, and the table drawn once per point at the first block's inputs (image row k: point k's
+// place, and the table drawn once per point at the block's inputs (image row k: point k's
 // value on every input row, xyz and its component count in w; w = 0 where it was not reached).
 struct ProbeTrace {
   std::string file;  // "common/specular.glsl"
   std::string text;
   int points = 0;
+  int block = 0;  // the uniforms' block drawn (one where the two tables differ)
 };
 std::string drawFunctionTrace(const FunctionProbe& probe, const std::vector<std::filesystem::path>& roots,
                               const ProbeTrace& trace, ImageF& image, std::vector<std::string>& errors);

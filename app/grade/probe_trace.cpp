@@ -1,5 +1,7 @@
 #include "app/grade/probe_trace.h"
 
+#include <algorithm>
+#include <cmath>
 #include <regex>
 #include <set>
 
@@ -42,7 +44,7 @@ std::vector<std::string> tracedFunctions(const Exercise& ex) {
   return names;
 }
 
-std::string traceSide(const Exercise& ex, const FunctionProbe& probe, const std::string& source,
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block, const std::string& source,
                       const std::vector<fs::path>& roots, TraceValues& out) {
   const std::string& file = ex.files.front();
   const std::vector<std::string> functions = tracedFunctions(ex);
@@ -57,7 +59,8 @@ std::string traceSide(const Exercise& ex, const FunctionProbe& probe, const std:
     if (!inst.error.empty()) return inst.error;
     ImageF image;
     std::vector<std::string> errors;
-    if (auto e = drawFunctionTrace(probe, roots, {file, inst.text, int(inst.points.size())}, image, errors); !e.empty())
+    if (auto e = drawFunctionTrace(probe, roots, {file, inst.text, int(inst.points.size()), block}, image, errors);
+        !e.empty())
       return e;
     if (errors.empty()) {
       out.points = inst.points;
@@ -79,7 +82,23 @@ std::string traceSide(const Exercise& ex, const FunctionProbe& probe, const std:
 }
 
 std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe, const std::vector<fs::path>& studentRoots,
-                         TraceFinding& out) {
+                         const ImageF& table, const ImageF& solution, TraceFinding& out) {
+  // The first block of uniforms whose base draw differs (the strength at 1 may hide what the
+  // strength at 2.5 shows).
+  int block = -1;
+  for (int b = 0; b < int(probe.blocks.size()) && b < table.size.y && b < solution.size.y; ++b) {
+    double most = 0.0;
+    for (int row = 0; row < table.size.x && row < solution.size.x; ++row)
+      for (int c = 0; c < 3; ++c) {
+        const float x = table.at(row, b)[c], y = solution.at(row, b)[c];
+        most = std::max(most, std::isfinite(x) && std::isfinite(y) ? double(std::abs(x - y)) : 1.0);
+      }
+    if (most > 1e-3) {
+      block = b;
+      break;
+    }
+  }
+  if (block < 0) return {};  // the same values on every block: nothing parts
   const std::string& file = ex.files.front();
   if (file.ends_with(kPartSuffix)) return "a part file is not traced yet";
   const ShaderSearchPath submitted(studentRoots);
@@ -87,9 +106,16 @@ std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe, const s
   if (found.file.empty()) return file + " is not in the student's folders";
   const std::string student = readWholeFile(found.file);
   TraceValues mine, theirs;
-  if (auto e = traceSide(ex, probe, student, studentRoots, mine); !e.empty()) return "your " + file + ": " + e;
-  if (auto e = traceSide(ex, probe, labText(ex, file), {builtinShaderDir()}, theirs); !e.empty())
+  if (auto e = traceSide(ex, probe, block, student, studentRoots, mine); !e.empty()) return "your " + file + ": " + e;
+  if (auto e = traceSide(ex, probe, block, labText(ex, file), {builtinShaderDir()}, theirs); !e.empty())
     return "the solution's " + file + ": " + e;
+  const std::vector<FunctionProbe::Draw> draws = probe.draws();
+  for (size_t d = 0; d < draws.size() && int(d) < table.size.y; ++d)
+    if (draws[d].kind == FunctionProbe::Draw::Kind::Quantity) {
+      std::vector<float> q;
+      for (int row = 0; row < table.size.x; ++row) q.push_back(table.at(row, int(d))[0]);
+      theirs.quantities.push_back(std::move(q));
+    }
   std::vector<std::pair<std::string, std::string>> inputs;
   for (auto& in : probe.inputs) inputs.push_back({in.name, in.says});
   out = alignTraces(mine, theirs, inputs, file);

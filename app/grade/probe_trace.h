@@ -19,12 +19,16 @@ std::vector<std::string> tracedFunctions(const Exercise& ex);
 // One side traced: `source` (the text of the exercise's first file) instrumented and drawn with
 // `roots` behind it. A tap the compiler refuses is dropped with the rest of its line's and the
 // build tried again; then the variables alone. Returns "" or why it could not be traced.
-std::string traceSide(const Exercise& ex, const FunctionProbe& probe, const std::string& source,
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block, const std::string& source,
                       const std::vector<std::filesystem::path>& roots, TraceValues& out);
 
 // The student's function against the solution's on the probe: "" and `out`, or why there is no
 // trace (a function outside what the trace reads, a build that fails however its taps are dropped).
+// `table` is the student's probe table (drawFunctionProbe), `solution` the solution's: the trace is
+// drawn with the first block of uniforms where they differ, and the table's rows of the exercise's
+// quantities join the solution's values.
 std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe,
-                         const std::vector<std::filesystem::path>& studentRoots, TraceFinding& out);
+                         const std::vector<std::filesystem::path>& studentRoots, const ImageF& table,
+                         const ImageF& solution, TraceFinding& out);
 
 }  // namespace shadelab
