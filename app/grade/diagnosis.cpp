@@ -437,11 +437,19 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     const bool split = agreeing.size() > 1 && agreeing[1].first <= kClose * agreeing.front().first + kSlack &&
                        (!exactly(e, k) || exactly(e, agreeing[1].second));
     if (m.starter && !closerFitElsewhere) {
+      // A changed file that draws the starter's frames: what it draws is known, why is not (a
+      // constant returned for a reason of its own, a value read the wrong way round): the trace
+      // says where its values part, where there is one.
       e.mistake = m.name;
       e.explanation = e.starterUnchanged ? "starter" : "starter-result";
       e.diagnosis = e.starterUnchanged ? m.diagnosis
                                        : "Your frames are the starter's, though your file is not: what you wrote "
-                                         "draws what the placeholder draws, so none of it reaches the result yet.";
+                                         "draws exactly what the placeholder draws.";
+      if (!e.starterUnchanged && traced) {
+        const std::string seen = e.diagnosis;
+        sayTrace();
+        e.diagnosis = seen + " " + e.diagnosis;
+      }
       return;
     }
     if (related && !m.starter && exactly(e, k) && relationResidual <= kDiffers * double(ev.losing.size())) {

@@ -43,16 +43,18 @@ Cause propertyCause(const ConfigurationResult& c, const ViewRange& range) {
                               fixed(c.umbraLevel, "%.2f") +
                               " of the way to lit): points the occluder hides count as lit there. Look at what "
                               "decides that a tap is occluded, and at where the taps land."};
+  // A lit region that is not lit and edges of another width have several usual causes each (a
+  // bias, taps that land elsewhere, a filter that does not average its comparisons, an early
+  // return): the frames cannot tell which, so what was seen is said, with where to look.
   if (c.litLevel > 0.1)
-    return {"property:lit", "Where the truth and the solution are fully lit, yours is not" + in + " (" +
-                                fixed(c.litLevel, "%.2f") +
-                                " of the way to shadow): surfaces shadow themselves (the bias) or the taps are "
-                                "scaled wrong."};
+    return {"seen:lit", "Where the truth and the solution are fully lit, yours is not" + in + " (" +
+                            fixed(c.litLevel, "%.2f") +
+                            " of the way to shadow): points nothing hides count as shadowed there. Look at what "
+                            "decides that a point or a tap is occluded, and at where the taps land."};
   if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
-    return {"property:edge-width", "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
-                                       " times as wide as the solution's: the filter's footprint is " +
-                                       (c.edgeWidthRatio > 1.0 ? "too large" : "too small") +
-                                       " (its size, or the scale of its offsets)."};
+    return {"seen:edge-width", "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
+                                   " times as wide as the solution's. Look at what sets an edge's width: the "
+                                   "footprint the taps cover, and how each tap's comparison adds to the result."};
   return {};
 }
 
