@@ -702,7 +702,7 @@ TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution
       (p.kind == TracePoint::Kind::Sub && !p.statement.empty() && p.statement != "return") ? p.statement : p.name;
   for (int q : p.from) {
     const TracePoint& o = student.points[q];
-    if (align.reachedPoint(q) && !o.constant) out.matching.push_back(o.name);
+    if (align.reachedPoint(q) && !o.constant && align.matches(q)) out.matching.push_back(o.name);
   }
   std::sort(out.matching.begin(), out.matching.end());
   out.matching.erase(std::unique(out.matching.begin(), out.matching.end()), out.matching.end());
