@@ -502,32 +502,47 @@ class Aligner {
   Aligner(const TraceValues& student, const TraceValues& solution) : st_(student), so_(solution) {}
 
   // Whether the student's point k is a value the solution computes: a scalar, any of its values'
-  // components; a vector, one of its vectors whole, component for component (x and y exchanged
-  // is another value).
+  // components; a vector, assembled in place from them (component i one of the solution's
+  // vectors' component i, or one of its scalars): x and y exchanged is another value.
   bool matches(int k) {
     if (auto it = memo_.find(k); it != memo_.end()) return it->second;
     const auto& a = st_.values[k];
     const int n = componentsAt(a);
-    // A constant stands for itself only where the student wrote it (0.0, a literal's expression):
-    // a computed value that comes out constant (a channel the map does not hold) must be the
-    // solution's like any other.
-    const TracePoint& p = st_.points[size_t(k)];
-    const bool written = p.constant || (p.from.empty() && p.kind != TracePoint::Kind::Param);
-    bool found = n == 1 && componentMatches(a, 0, written);
-    if (n > 1) {
-      bool constant = true;
-      for (int c = 0; c < n && constant; ++c) constant = constantMatches(a, c);
-      found = constant;
+    // What no input reaches is given, like a uniform: a literal, a texture's size, a product of
+    // uniforms. A value the inputs reach that comes out constant (a channel the map does not
+    // hold) must be the solution's like any other.
+    if (!readsInputs(k)) return memo_[k] = true;
+    bool found = n > 0;
+    for (int c = 0; c < n && found; ++c) {
+      if (n == 1) {
+        found = componentMatches(a, 0, false);
+        break;
+      }
+      if (constantMatches(a, c)) continue;  // a 0.0 or 1.0 written into a vector
+      found = false;
       for (size_t q = 0; q < so_.values.size() && !found; ++q) {
         const auto& b = so_.values[q];
-        if (componentsAt(b) != n) continue;
-        bool all = true;
-        for (int c = 0; c < n && all; ++c)
-          all = constantMatches(a, c) || follows(a, c, b, c, [](float x) { return x; });
-        found = all;
+        const int m = componentsAt(b);
+        if (m == 1 && !isConstant(a, c))
+          found = follows(a, c, b, 0, [](float x) { return x; });
+        else if (m > c && m > 1)
+          found = follows(a, c, b, c, [](float x) { return x; });
       }
     }
     return memo_[k] = found;
+  }
+  // Whether any of the function's parameters reaches point k.
+  bool readsInputs(int k) {
+    if (auto it = reads_.find(k); it != reads_.end()) return it->second;
+    reads_[k] = false;  // a loop's value reads itself
+    const TracePoint& p = st_.points[size_t(k)];
+    bool reads = p.kind == TracePoint::Kind::Param;
+    for (int q : p.from) reads = reads || readsInputs(q);
+    return reads_[k] = reads;
+  }
+  static bool isConstant(const std::vector<glm::vec4>& a, int c) {
+    float value = 0.0f;
+    return constantValue(a, c, value);
   }
   // Whether each component of point k is somewhere among the solution's values (in any place):
   // a value made of the solution's, rearranged, rather than one it never computes.
@@ -578,7 +593,7 @@ class Aligner {
 
   const TraceValues& st_;
   const TraceValues& so_;
-  std::map<int, bool> memo_;
+  std::map<int, bool> memo_, reads_;
 };
 
 // How `a` relates to `b` (same component count), in words: "" when no simple relation fits.

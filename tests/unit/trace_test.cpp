@@ -212,6 +212,28 @@ TEST(Trace, AResultTurnedRoundIsSaidOfTheResultAndAgreeingCodeHasNoFinding) {
   EXPECT_EQ(back.line, 3);
 }
 
+TEST(Trace, WhatNoInputReachesIsGivenAndAConstantTheInputsReachIsNot) {
+  using K = TracePoint::Kind;
+  const TraceValues solution = side({at(K::Param, 1, "x", {}), at(K::Returned, 2, "x", {0}, "return")},
+                                    {[](float x) { return x; }, [](float x) { return x; }});
+  // A texture's size on line 2 (no input reaches it) is not where x + half a texel goes wrong.
+  const TraceValues shifted =
+      side({at(K::Param, 1, "x", {}), at(K::Sub, 2, "textureSize(m, 0).x", {}), at(K::Sub, 3, "x + 0.5 / size", {0, 1}),
+            at(K::Returned, 3, "x + 0.5 / size", {2})},
+           {[](float x) { return x; }, [](float) { return 64.0f; }, [](float x) { return x + 0.5f / 64.0f; },
+            [](float x) { return x + 0.5f / 64.0f; }});
+  TraceFinding f = alignTraces(shifted, solution, {}, "f.glsl");
+  ASSERT_TRUE(f.found);
+  EXPECT_EQ(f.line, 3);
+  // A read the inputs reach that comes out 0 everywhere (a channel the map lacks) is a departure.
+  const TraceValues channel =
+      side({at(K::Param, 1, "x", {}), at(K::Sub, 2, "texture(m, vec2(x)).g", {0}), at(K::Returned, 3, "x * 0.0", {1})},
+           {[](float x) { return x; }, [](float) { return 0.0f; }, [](float) { return 0.0f; }});
+  f = alignTraces(channel, solution, {}, "f.glsl");
+  ASSERT_TRUE(f.found);
+  EXPECT_EQ(f.line, 2);
+}
+
 // Two values side by side in one vector each: (x, 2x) against the solution's (2x, x).
 TraceValues pairs(const std::vector<TracePoint>& points, const std::vector<bool>& exchanged) {
   TraceValues out;
