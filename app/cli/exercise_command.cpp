@@ -72,6 +72,7 @@ std::string starterMatchesLabFile(const Exercise& ex, const std::string& file) {
 // The unlisted mistakes of every exercise checked, for the measure in all.
 struct UnlistedTally {
   size_t mistakes = 0, named = 0, wrong = 0, passing = 0;
+  size_t tracedElsewhere = 0;  // a trace's line that is not the mistake's (unnamed, its claims true)
 };
 
 // How the grader did on an unlisted mistake, worst first.
@@ -431,14 +432,18 @@ std::vector<std::string> checkExercise(const Exercise& ex, const std::vector<std
     const nlohmann::json& e = row("unlisted-" + u.change.name);
     const std::string said = e.value("explanation", "");
     // A trace names the line where the values part: it names the mistake when that line holds it.
-    const bool namesItsLine = said.rfind("line:", 0) == 0 &&
-                              std::find(u.lines.begin(), u.lines.end(), std::atoi(said.c_str() + 5)) != u.lines.end();
+    // Elsewhere it still states only what the values show (every claim of it measured), so it is
+    // evidence that did not reach the cause: unnamed, and counted apart.
+    const bool traced = said.rfind("line:", 0) == 0;
+    const bool namesItsLine =
+        traced && std::find(u.lines.begin(), u.lines.end(), std::atoi(said.c_str() + 5)) != u.lines.end();
     const Verdict v = e.value("passed", false) || !(percent(e) < 100.0)                        ? Verdict::Passes
                       : std::find(u.namedBy.begin(), u.namedBy.end(), said) != u.namedBy.end() ? Verdict::Named
                       : namesItsLine                                                           ? Verdict::Named
-                      : evidenceOnly(said)                                                     ? Verdict::Unnamed
+                      : evidenceOnly(said) || traced                                           ? Verdict::Unnamed
                                                                                                : Verdict::Wrong;
     unlistedNamed += v == Verdict::Named;
+    tally.tracedElsewhere += traced && v == Verdict::Unnamed;
     wrong += v == Verdict::Wrong;
     passing += v == Verdict::Passes;
     std::printf("       unlisted %-34s %-7s %s\n", u.change.name.c_str(), kVerdicts[int(v)], said.c_str());
@@ -505,11 +510,11 @@ int runExerciseCheck(const Options& o) {
     const size_t diagnosed = tally.mistakes - tally.passing;
     std::printf(
         "unlisted in all: %zu of %zu named (coverage %s %%), %zu of %zu diagnoses false (precision %s %%), "
-        "%zu passing\n",
+        "%zu passing; %zu traced to a line that does not hold the mistake\n",
         tally.named, tally.mistakes, formatFixed(100.0 * double(tally.named) / double(tally.mistakes), 1).c_str(),
         tally.wrong, diagnosed,
         formatFixed(diagnosed ? 100.0 * double(diagnosed - tally.wrong) / double(diagnosed) : 100.0, 1).c_str(),
-        tally.passing);
+        tally.passing, tally.tracedElsewhere);
   }
   std::printf("exercise check: %zu exercises, %d not ready\n", ids.size(), failed);
   return failed ? 1 : 0;

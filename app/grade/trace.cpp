@@ -502,43 +502,43 @@ class Aligner {
   Aligner(const TraceValues& student, const TraceValues& solution) : st_(student), so_(solution) {}
 
   // Whether the student's point k is a value the solution computes: a scalar, any of its values'
-  // components; a vector, assembled in place from them (component i one of the solution's
-  // vectors' component i, or one of its scalars): x and y exchanged is another value.
+  // components; a vector, one of its vectors whole, component for component (x and y exchanged
+  // is another value; a 0.0 or 1.0 written into it stands for itself).
   bool matches(int k) {
     if (auto it = memo_.find(k); it != memo_.end()) return it->second;
     const auto& a = st_.values[k];
     const int n = componentsAt(a);
-    // What no input reaches is given, like a uniform: a literal, a texture's size, a product of
-    // uniforms. A value the inputs reach that comes out constant (a channel the map does not
-    // hold) must be the solution's like any other.
-    if (!readsInputs(k)) return memo_[k] = true;
-    bool found = n > 0;
-    for (int c = 0; c < n && found; ++c) {
-      if (n == 1) {
-        found = componentMatches(a, 0, false);
-        break;
-      }
-      if (constantMatches(a, c)) continue;  // a 0.0 or 1.0 written into a vector
-      found = false;
-      for (size_t q = 0; q < so_.values.size() && !found; ++q) {
-        const auto& b = so_.values[q];
-        const int m = componentsAt(b);
-        if (m == 1 && !isConstant(a, c))
-          found = follows(a, c, b, 0, [](float x) { return x; });
-        else if (m > c && m > 1)
-          found = follows(a, c, b, c, [](float x) { return x; });
-      }
+    // What no input reaches (a literal, a texture's size, a product of uniforms) can be told
+    // wrong only against a value of the solution's that no input reaches either; where the
+    // solution has none of its size, it is given, like a uniform. A value the inputs reach that
+    // comes out constant (a channel the map does not hold) must be the solution's like any other.
+    if (!readsInputs(k) && !solutionHasInputFree(n)) return memo_[k] = true;
+    bool found = n == 1 && componentMatches(a, 0, !readsInputs(k));
+    for (size_t q = 0; n > 1 && q < so_.values.size() && !found; ++q) {
+      const auto& b = so_.values[q];
+      if (componentsAt(b) != n) continue;
+      bool all = true;
+      for (int c = 0; c < n && all; ++c) all = constantMatches(a, c) || follows(a, c, b, c, [](float x) { return x; });
+      found = all;
     }
     return memo_[k] = found;
   }
-  // Whether any of the function's parameters reaches point k.
-  bool readsInputs(int k) {
-    if (auto it = reads_.find(k); it != reads_.end()) return it->second;
-    reads_[k] = false;  // a loop's value reads itself
-    const TracePoint& p = st_.points[size_t(k)];
+  // Whether the solution computes a value of n components that no input reaches.
+  bool solutionHasInputFree(int n) const {
+    for (size_t q = 0; q < so_.points.size(); ++q)
+      if (so_.points[q].kind != TracePoint::Kind::Param && componentsAt(so_.values[q]) == n &&
+          !readsInputs(so_, q, solutionReads_))
+        return true;
+    return false;
+  }
+  bool readsInputs(int k) { return readsInputs(st_, size_t(k), reads_); }
+  static bool readsInputs(const TraceValues& side, size_t k, std::map<size_t, bool>& memo) {
+    if (auto it = memo.find(k); it != memo.end()) return it->second;
+    memo[k] = false;  // a loop's value reads itself
+    const TracePoint& p = side.points[k];
     bool reads = p.kind == TracePoint::Kind::Param;
-    for (int q : p.from) reads = reads || readsInputs(q);
-    return reads_[k] = reads;
+    for (int q : p.from) reads = reads || readsInputs(side, size_t(q), memo);
+    return memo[k] = reads;
   }
   static bool isConstant(const std::vector<glm::vec4>& a, int c) {
     float value = 0.0f;
@@ -593,7 +593,9 @@ class Aligner {
 
   const TraceValues& st_;
   const TraceValues& so_;
-  std::map<int, bool> memo_, reads_;
+  std::map<int, bool> memo_;
+  std::map<size_t, bool> reads_;
+  mutable std::map<size_t, bool> solutionReads_;
 };
 
 // How `a` relates to `b` (same component count), in words: "" when no simple relation fits.
