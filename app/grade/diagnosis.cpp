@@ -517,10 +517,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     std::vector<std::string> values;
     double settingMisfit = 0.0;
     const std::string also = " They are also the solution's with " + slip.what + slip.evidence;
-    if (traced) {  // the line first; the slip is the effect it has on the frames
-      sayTrace();
-      e.diagnosis += " Your frames are the solution's with " + slip.what + slip.evidence;
-    } else if (related && relationResidual <= kDiffers * double(ev.related().size())) {
+    if (related && relationResidual <= kDiffers * double(ev.related().size())) {
       e.explanation = "relation:" + relation.kind;
       e.diagnosis = relationSentence(ev, relation) + also;
     } else if (commonSetting(ev, key, values, settingMisfit) && settingMisfit <= kSlipFits) {
@@ -530,6 +527,9 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
       e.explanation = slip.tag;
       e.diagnosis = "Your frames are the solution's with " + slip.what + slip.evidence;
     }
+    // A slip that draws the student's frames exactly is one edit from the solution: its kind
+    // names the cause. The trace adds where the student's own values part.
+    if (traced) e.diagnosis += " Traced line by line: " + traced->trace.text;
     return;
   }
   if (traced) {

@@ -11,16 +11,16 @@
 //      draws as such. When a second mistake fits about as well, or a relation to the solution's
 //      frames (5) fits clearly better, no mistake is named;
 //   2. two known mistakes made together: each shows alone somewhere and agrees there;
-//   3. the student's own code traced beside the solution's on the probe's table (grade/trace.h):
-//      the line where their values stop being the solution's, with what matches up to it and how
-//      the value relates to the solution's result when a simple relation fits; it stands before a
-//      slip (which then follows as its effect on the frames) and before a listed mistake whose
-//      frames are only close to the student's;
-//   3b. one slip of the solution (grade/mutants.h: an operator or comparison turned round, a
+//   3. one slip of the solution (grade/mutants.h: an operator or comparison turned round, a
 //      constant changed, a call dropped, ...) whose frames are the student's in every configuration,
 //      named by its kind and, where the rubric reveals fixes, what the solution has in its place;
-//      no list needed. Two slips that draw the same frames are named together. Then what the
-//      function probed by itself shows (grade/function_probe.h), where the exercise has a probe;
+//      no list needed. Two slips that draw the same frames are named together. The trace (3b)
+//      follows it where there is one ("Traced line by line: ...");
+//   3b. the student's own code traced beside the solution's on the probe's table (grade/trace.h):
+//      the line where their values stop being the solution's, with what matches up to it and how
+//      the value relates to the solution's result when a simple relation fits; it stands before a
+//      listed mistake whose frames are only close to the student's (1). Then what the function
+//      probed by itself shows (grade/function_probe.h), where the exercise has a probe;
 //   4. the frame holds NaN or Inf (how many, where, and the usual causes of each);
 //   5. a relation holds in every configuration that lost points (grade/frame_relations.h: turned
 //      over, scaled, offset, squared, mirrored, shifted, components exchanged or turned over): the
