@@ -10,6 +10,7 @@
 #include "app/grade/frame_causes.h"
 #include "app/grade/hints.h"
 #include "app/grade/slip_diagnosis.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -626,12 +627,7 @@ bool slipsNeeded(const ExerciseResult& e) {
   return false;
 }
 
-std::string quotedList(const std::vector<std::string>& names) {
-  std::string s;
-  for (size_t i = 0; i < names.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quoted(names[i]);
-  return s;
-}
+std::string quotedList(const std::vector<std::string>& names) { return englishList(names, "'"); }
 
 void diagnose(const Exercise& ex, ExerciseResult& e) {
   diagnoseFromEvidence(ex, e);

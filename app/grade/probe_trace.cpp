@@ -44,10 +44,10 @@ std::vector<std::string> tracedFunctions(const Exercise& ex) {
   return names;
 }
 
-std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block, const std::string& source,
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block,
+                      const std::vector<std::string>& functions, const std::string& source,
                       const std::vector<fs::path>& roots, TraceValues& out) {
   const std::string& file = ex.files.front();
-  const std::vector<std::string> functions = tracedFunctions(ex);
   if (functions.empty()) return "no function of " + file + " holds the exercise's TODO region";
   std::vector<int> quiet;
   std::string lastError;
@@ -105,9 +105,11 @@ std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe, const s
   const ShaderSearchPath::Lookup found = submitted.find(file);
   if (found.file.empty()) return file + " is not in the student's folders";
   const std::string student = readWholeFile(found.file);
+  const std::vector<std::string> functions = tracedFunctions(ex);  // the starter read once, for both sides
   TraceValues mine, theirs;
-  if (auto e = traceSide(ex, probe, block, student, studentRoots, mine); !e.empty()) return "your " + file + ": " + e;
-  if (auto e = traceSide(ex, probe, block, labText(ex, file), {builtinShaderDir()}, theirs); !e.empty())
+  if (auto e = traceSide(ex, probe, block, functions, student, studentRoots, mine); !e.empty())
+    return "your " + file + ": " + e;
+  if (auto e = traceSide(ex, probe, block, functions, labText(ex, file), {builtinShaderDir()}, theirs); !e.empty())
     return "the solution's " + file + ": " + e;
   const std::vector<FunctionProbe::Draw> draws = probe.draws();
   for (size_t d = 0; d < draws.size() && int(d) < table.size.y; ++d)

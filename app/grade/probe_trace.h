@@ -16,10 +16,12 @@ namespace shadelab {
 // lies in (every function of the file for a whole-file starter).
 std::vector<std::string> tracedFunctions(const Exercise& ex);
 
-// One side traced: `source` (the text of the exercise's first file) instrumented and drawn with
+// One side traced: `functions` (tracedFunctions) of `source` (the text of the exercise's first
+// file) instrumented and drawn with
 // `roots` behind it. A tap the compiler refuses is dropped with the rest of its line's and the
 // build tried again; then the variables alone. Returns "" or why it could not be traced.
-std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block, const std::string& source,
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block,
+                      const std::vector<std::string>& functions, const std::string& source,
                       const std::vector<std::filesystem::path>& roots, TraceValues& out);
 
 // The student's function against the solution's on the probe: "" and `out`, or why there is no

@@ -47,4 +47,11 @@ bool parseWholeNumber(const std::string& text, long lo, long hi, long& out) {
   return true;
 }
 
+std::string englishList(const std::vector<std::string>& names, const std::string& quote) {
+  std::string s;
+  for (size_t i = 0; i < names.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quote + names[i] + quote;
+  return s;
+}
+
 }  // namespace shadelab

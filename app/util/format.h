@@ -3,6 +3,7 @@
 // value saved and loaded again is bit-identical.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace shadelab {
 
@@ -10,6 +11,9 @@ std::string formatNumber(double v);
 
 // A fixed number of decimals, for tables people compare by eye (panel rows, notes).
 std::string formatFixed(double v, int decimals = 3);
+
+// Names as an English list, each between `quote`s: "'a', 'b' and 'c'".
+std::string englishList(const std::vector<std::string>& names, const std::string& quote);
 
 // Now as text in strftime's `format`: the local time ("%Y-%m-%d %H:%M" for people, "%Y%m%d-%H%M%S"
 // in file names), or UTC ("%Y-%m-%dT%H:%M:%SZ" for gradebooks).
