@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "app/scene/mip_chain.h"
+
 namespace shadelab {
 
 // Our images are rows top-down; GL's first row is v = 0 at the bottom. Flip once, at upload.
@@ -32,6 +34,27 @@ gl::SamplerState samplerFor(const ImageSource& image, const SceneNeeds& needs) {
   return s;
 }
 
+// An 8-bit texture (`channels` 1 or 4, rows bottom-up), with its mip chain made here when the
+// sampler filters between levels: the box filter in linear light (sRGB decoded first) that a
+// driver's glGenerateMipmap uses, without the blit a software driver compiles in every new context
+// (llvmpipe: about a quarter of a second per process, most of a grading child's upload).
+gl::Texture2D texture8(glm::ivec2 size, std::vector<unsigned char> pixels, int channels, bool srgb,
+                       const gl::SamplerState& s) {
+  const GLenum internal = channels == 1 ? GL_R8 : srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  const GLenum format = channels == 1 ? GL_RED : GL_RGBA;
+  if (s.minFilter == GL_LINEAR || s.minFilter == GL_NEAREST)
+    return gl::Texture2D::fromData(size, internal, format, GL_UNSIGNED_BYTE, pixels.data(), s);
+  const std::vector<LinearImage> chain =
+      buildMipChain(srgb ? decodeSrgb8(size, pixels) : decodeLinear8(size, pixels, channels), MipDownsampler::Box);
+  std::vector<std::vector<unsigned char>> bytes;
+  bytes.push_back(std::move(pixels));
+  for (size_t k = 1; k < chain.size(); ++k)
+    bytes.push_back(srgb ? encodeSrgb8(chain[k]) : encodeLinear8(chain[k], channels));
+  std::vector<const void*> levels;
+  for (auto& b : bytes) levels.push_back(b.data());
+  return gl::Texture2D::fromLevels(size, internal, format, GL_UNSIGNED_BYTE, levels, s);
+}
+
 }  // namespace
 
 std::string GpuScene::upload(const Scene& scene, const SceneNeeds& needs, std::vector<std::string>& warnings) {
@@ -56,7 +79,7 @@ std::string GpuScene::upload(const Scene& scene, const SceneNeeds& needs, std::v
       gl::SamplerState s = samplerFor(scene.images[size_t(image)], needs);
       if (needs.mipmaps && (s.minFilter == GL_LINEAR || s.minFilter == GL_NEAREST))
         s.minFilter = GL_LINEAR_MIPMAP_LINEAR;  // build the chain; applySampling sets the asked filter
-      textures_[size_t(image)] = gl::Texture2D::fromRgba8(size, flipRows(rgba, size, 4).data(), s, srgb);
+      textures_[size_t(image)] = texture8(size, flipRows(rgba, size, 4), 4, srgb, s);
       textures_[size_t(image)].setSampler(samplerFor(scene.images[size_t(image)], needs));
     }
     const int h = mat.heightImage;
@@ -74,8 +97,7 @@ std::string GpuScene::upload(const Scene& scene, const SceneNeeds& needs, std::v
     gl::SamplerState s = samplerFor(scene.images[size_t(h)], needs);
     const gl::SamplerState asked = s;
     if (needs.mipmaps && (s.minFilter == GL_LINEAR || s.minFilter == GL_NEAREST)) s.minFilter = GL_LINEAR_MIPMAP_LINEAR;
-    heights_[size_t(h)] =
-        gl::Texture2D::fromData(size, GL_R8, GL_RED, GL_UNSIGNED_BYTE, flipRows(red, size, 1).data(), s);
+    heights_[size_t(h)] = texture8(size, flipRows(red, size, 1), 1, false, s);
     heights_[size_t(h)].setSampler(asked);
   }
   return {};

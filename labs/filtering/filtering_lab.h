@@ -9,12 +9,12 @@
 // much more they flicker than the truth does.
 // Williams 1983 (pyramidal parametrics); Heckbert 1989 (texture mapping survey); the
 // EXT_texture_filter_anisotropic specification; GAMES101 lecture 9.
-// Read next: shaders/filtering/filter.glsl, labs/filtering/mip_chain.h, tutorials/filtering.md.
+// Read next: shaders/filtering/filter.glsl, app/scene/mip_chain.h, tutorials/filtering.md.
 #pragma once
 #include <optional>
 
 #include "app/lab/lab.h"
-#include "labs/filtering/mip_chain.h"
+#include "app/scene/mip_chain.h"
 
 namespace shadelab {
 

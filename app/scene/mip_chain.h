@@ -1,4 +1,6 @@
-// Mip chains made on the CPU, so that how a level is made is something a student can choose and
+// Mip chains made on the CPU: for the scenes' textures (the box filter, as a driver's
+// glGenerateMipmap makes it, without the blit a software driver compiles anew in every process),
+// and in the filtering lab, where how a level is made is something a student can choose and
 // compare: a box filter (what most drivers do) or a Kaiser-windowed sinc (what texture tools do,
 // e.g. NVIDIA Texture Tools' default, width 3, alpha 4). Both work in linear light: averaging
 // sRGB-encoded values darkens every level a little (the mean of the codes is not the code of the
@@ -38,6 +40,10 @@ std::vector<LinearImage> buildMipChain(LinearImage level0, MipDownsampler how, b
 // RGBA8 sRGB (alpha linear) to linear float and back (rounded to nearest, clamped).
 LinearImage decodeSrgb8(glm::ivec2 size, const std::vector<uint8_t>& rgba);
 std::vector<uint8_t> encodeSrgb8(const LinearImage& image);
+// 8-bit data that is linear already (a normal map, a height map), `channels` (1 to 4) per texel:
+// the channels missing from a texel read as 0 (alpha 1); encoding keeps the first `channels`.
+LinearImage decodeLinear8(glm::ivec2 size, const std::vector<uint8_t>& data, int channels);
+std::vector<uint8_t> encodeLinear8(const LinearImage& image, int channels);
 
 // The Kaiser window's zeroth-order modified Bessel function, and the kernel's weight at `t`
 // destination texels from the centre (sinc times the window, zero beyond `width`).

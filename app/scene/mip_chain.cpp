@@ -1,4 +1,4 @@
-#include "labs/filtering/mip_chain.h"
+#include "app/scene/mip_chain.h"
 
 #include <algorithm>
 #include <cmath>
@@ -127,6 +127,21 @@ std::vector<uint8_t> encodeSrgb8(const LinearImage& image) {
     out[i * 4 + 2] = byte(linearToSrgb(c.b));
     out[i * 4 + 3] = byte(c.a);
   }
+  return out;
+}
+
+LinearImage decodeLinear8(glm::ivec2 size, const std::vector<uint8_t>& data, int channels) {
+  LinearImage out{size, std::vector<glm::vec4>(size_t(size.x) * size_t(size.y), glm::vec4(0, 0, 0, 1))};
+  for (size_t i = 0; i < out.texels.size(); ++i)
+    for (int c = 0; c < channels; ++c) out.texels[i][c] = float(data[i * size_t(channels) + size_t(c)]) / 255.0f;
+  return out;
+}
+
+std::vector<uint8_t> encodeLinear8(const LinearImage& image, int channels) {
+  std::vector<uint8_t> out(image.texels.size() * size_t(channels));
+  for (size_t i = 0; i < image.texels.size(); ++i)
+    for (int c = 0; c < channels; ++c)
+      out[i * size_t(channels) + size_t(c)] = uint8_t(std::lround(std::clamp(image.texels[i][c], 0.0f, 1.0f) * 255.0f));
   return out;
 }
 
