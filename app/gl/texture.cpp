@@ -118,6 +118,18 @@ Texture2D Texture2D::fromData(glm::ivec2 size, GLenum internalFormat, GLenum for
   return t;
 }
 
+Texture2D Texture2D::fromLevels(glm::ivec2 size, GLenum internalFormat, GLenum format, GLenum type,
+                                const std::vector<const void*>& levels, const SamplerState& sampler) {
+  Texture2D t = allocate(size, internalFormat, std::max(int(levels.size()), 1));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (size_t level = 0; level < levels.size(); ++level) {
+    const glm::ivec2 s = glm::max(size >> int(level), glm::ivec2(1));
+    glTexSubImage2D(GL_TEXTURE_2D, GLint(level), 0, 0, s.x, s.y, format, type, levels[level]);
+  }
+  t.setSampler(sampler);
+  return t;
+}
+
 void Texture2D::setSampler(const SamplerState& s) const {
   glBindTexture(GL_TEXTURE_2D, id());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, s.minFilter);

@@ -40,6 +40,10 @@ class Texture2D {
   // Any pixel layout (GL_R16 from GL_RED / GL_UNSIGNED_SHORT, ...), rows bottom-up, tightly packed.
   static Texture2D fromData(glm::ivec2 size, GLenum internalFormat, GLenum format, GLenum type, const void* pixels,
                             const SamplerState& sampler);
+  // A mip chain made elsewhere, level 0 first, each level in `format` / `type` as fromData takes it;
+  // the levels' sizes are max(1, size >> k), down to 1 x 1 for a complete chain.
+  static Texture2D fromLevels(glm::ivec2 size, GLenum internalFormat, GLenum format, GLenum type,
+                              const std::vector<const void*>& levels, const SamplerState& sampler);
 
   void setSampler(const SamplerState& s) const;
   void bind(int unit) const;

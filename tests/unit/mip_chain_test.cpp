@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "labs/filtering/mip_chain.h"
+#include "app/scene/mip_chain.h"
 
 using namespace shadelab;
 
