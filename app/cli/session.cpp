@@ -18,18 +18,25 @@ std::string openSession(const Options& o, Session& s) {
   std::string err;
   s.context = createHeadlessContext(o.backend, err);
   if (!s.context) return err;
-  s.host = std::make_unique<LabHost>(shaderSearchPath(o));
+  Preset preset;
+  if (!o.preset.empty())
+    if (auto e = readPreset(o.preset, preset); !e.empty()) return e;
+  // The host opens on the lab and scene it will draw (the preset's, else the options'): entering
+  // the default lab first would build, upload and throw away a scene of its own.
+  const std::string firstLab = preset.lab.value_or(o.lab);
+  const std::string firstScene = preset.lab ? preset.scene.value_or("") : o.scene;
+  s.host = std::make_unique<LabHost>(shaderSearchPath(o), firstLab, firstScene);
   LabHost& host = *s.host;
   s.size = o.size;
   s.time = o.time;
   if (!o.preset.empty()) {
-    Preset preset;
-    if (auto e = readPreset(o.preset, preset); !e.empty()) return e;
     if (auto e = host.applyPreset(preset); !e.empty()) return o.preset + ": " + e;
     if (!o.sizeGiven && preset.size) s.size = *preset.size;
     if (o.time == 0.0f && preset.time) s.time = *preset.time;
   }
-  if (auto e = configureHost(host, o.lab, o.scene, o.sets, o.actions, o.camera); !e.empty()) return e;
+  const bool opened = host.lab().id() == o.lab && host.sceneId() == o.scene;  // nothing to select again
+  if (auto e = configureHost(host, o.lab, opened ? std::string() : o.scene, o.sets, o.actions, o.camera); !e.empty())
+    return e;
   if (!o.heightMap.empty())
     if (auto e = host.setHeightMap(o.heightMap); !e.empty()) return "--height-map: " + e;
   return {};
