@@ -11,14 +11,15 @@
 namespace shadelab {
 
 // Programs the frame used that did not build, with their first error: the frame shows the last
-// good program or the fallback, and a headless run must say so and fail.
+// good program or the fallback, and a headless run must say so and fail: the error as the window
+// shows it, with the offending line and a caret under its column.
 static std::vector<std::string> shaderFailures(LabHost& host) {
   std::vector<std::string> out;
   for (auto& p : host.lab().activePrograms())
     if (p->lastBuildFailed() || !p->hasGoodProgram())
       out.push_back(p->spec().name +
                     (p->hasGoodProgram() ? " (showing its last good build)" : " (drawing the fallback)") +
-                    (p->diagnostics().empty() ? "" : ": " + p->diagnostics().front().format()));
+                    (p->diagnostics().empty() ? "" : ": " + p->diagnostics().front().formatWithCaret()));
   return out;
 }
 
