@@ -26,14 +26,6 @@ constexpr double kClose = kDiagnosisClose, kSlack = kDiagnosisSlack;
 // its residual is at most this fraction of the student's distance to the mistake's frames.
 constexpr double kRelationWins = 0.5;
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-std::string fixed(double v, const char* format) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-
 bool lostPoints(const ConfigurationResult& c) {
   for (auto& r : c.checks)
     if (r.grade != Grade::Full) return true;
@@ -335,7 +327,7 @@ std::string evidenceSentence(const Evidence& ev) {
   if (most)
     s += " They differ in " + std::to_string(ev.losing.size()) + " of " +
          std::to_string(ev.losing.size() + ev.matching.size()) + " configurations, most in " + quoted(most->name) +
-         " (RMS difference " + fixed(most->distance, "%.3f") + ").";
+         " (RMS difference " + formatFixed(most->distance, 3) + ").";
   return s;
 }
 
@@ -611,8 +603,8 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   if (worst)
     e.diagnosis += " The check that lost most is " + quoted(at->name + ": " + worst->check.name) + " (" +
                    worst->check.metric + " " +
-                   (std::isfinite(worst->value) ? fixed(worst->value, "%.4g") : std::string("n/a")) +
-                   ", full marks at <= " + fixed(worst->fullBound, "%.4g") + ").";
+                   (std::isfinite(worst->value) ? formatSignificant(worst->value, 4) : std::string("n/a")) +
+                   ", full marks at <= " + formatSignificant(worst->fullBound, 4) + ").";
 }
 
 }  // namespace

@@ -1,20 +1,14 @@
 #include "app/grade/frame_causes.h"
 
-#include <cstdio>
+#include "app/util/format.h"
 
 namespace shadelab {
 
 namespace {
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-std::string fixed(double v, const char* format) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
+std::string bracketed(const ViewRange& r) {
+  return "[" + formatSignificant(r.low) + ", " + formatSignificant(r.high) + "]";
 }
-
-std::string bracketed(const ViewRange& r) { return "[" + fixed(r.low, "%g") + ", " + fixed(r.high, "%g") + "]"; }
 
 }  // namespace
 
@@ -32,7 +26,8 @@ Cause propertyCause(const ConfigurationResult& c, const ViewRange& range) {
   if (c.outOfRangePct > 0.5)
     return {"property:out-of-range",
             "Your values leave the view's range, " + bracketed(range) + "," + in + " (" +
-                fixed(c.outOfRangePct, "%.1f") + " % of the pixels; their median is " + fixed(c.outsideMedian, "%.3g") +
+                formatFixed(c.outOfRangePct, 1) + " % of the pixels; their median is " +
+                formatSignificant(c.outsideMedian, 3) +
                 "), where the solution's stay inside it. Values go there from a result outside the range returned "
                 "for one of the cases (lit or in shadow, say), a sum where an average was meant, or weights that "
                 "do not add up to 1."};
@@ -40,7 +35,7 @@ Cause propertyCause(const ConfigurationResult& c, const ViewRange& range) {
   // search that leave the occluder, too few blockers found): what was seen, and the candidates.
   if (c.umbraLevel > 0.1)
     return {"seen:umbra", "Where the truth and the solution are in full shadow, yours is not" + in + " (it averages " +
-                              fixed(c.umbraLevel, "%.2f") +
+                              formatFixed(c.umbraLevel, 2) +
                               " of the way to lit): points the occluder hides count as lit there. Look at what "
                               "decides that a tap is occluded, and at where the taps land."};
   // A lit region that is not lit and edges of another width have several usual causes each (a
@@ -48,11 +43,11 @@ Cause propertyCause(const ConfigurationResult& c, const ViewRange& range) {
   // return): the frames cannot tell which, so what was seen is said, with where to look.
   if (c.litLevel > 0.1)
     return {"seen:lit", "Where the truth and the solution are fully lit, yours is not" + in + " (" +
-                            fixed(c.litLevel, "%.2f") +
+                            formatFixed(c.litLevel, 2) +
                             " of the way to shadow): points nothing hides count as shadowed there. Look at what "
                             "decides that a point or a tap is occluded, and at where the taps land."};
   if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
-    return {"seen:edge-width", "Your soft edges" + in + " are " + fixed(c.edgeWidthRatio, "%.2f") +
+    return {"seen:edge-width", "Your soft edges" + in + " are " + formatFixed(c.edgeWidthRatio, 2) +
                                    " times as wide as the solution's. Look at what sets an edge's width: the "
                                    "footprint the taps cover, and how each tap's comparison adds to the result."};
   return {};
@@ -61,16 +56,16 @@ Cause propertyCause(const ConfigurationResult& c, const ViewRange& range) {
 std::string propertyObservation(const ConfigurationResult& c, const ViewRange& range) {
   const std::string in = "In " + quoted(c.name) + ", ";
   if (c.outOfRangePct > 0.5)
-    return in + fixed(c.outOfRangePct, "%.1f") + " % of your values leave the view's range, " + bracketed(range) +
-           " (their median is " + fixed(c.outsideMedian, "%.3g") + ").";
+    return in + formatFixed(c.outOfRangePct, 1) + " % of your values leave the view's range, " + bracketed(range) +
+           " (their median is " + formatSignificant(c.outsideMedian, 3) + ").";
   if (c.umbraLevel > 0.1)
-    return in + "where the truth and the solution are in full shadow, yours averages " + fixed(c.umbraLevel, "%.2f") +
+    return in + "where the truth and the solution are in full shadow, yours averages " + formatFixed(c.umbraLevel, 2) +
            " of the way to lit.";
   if (c.litLevel > 0.1)
-    return in + "where the truth and the solution are fully lit, yours is " + fixed(c.litLevel, "%.2f") +
+    return in + "where the truth and the solution are fully lit, yours is " + formatFixed(c.litLevel, 2) +
            " of the way to shadow.";
   if (c.edgeWidthRatio > 1.5 || c.edgeWidthRatio < 0.67)
-    return in + "your soft edges are " + fixed(c.edgeWidthRatio, "%.2f") + " times as wide as the solution's.";
+    return in + "your soft edges are " + formatFixed(c.edgeWidthRatio, 2) + " times as wide as the solution's.";
   return {};
 }
 

@@ -1,4 +1,5 @@
 #include "app/grade/frame_relations.h"
+#include "app/util/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,11 +55,7 @@ double plainness(const std::string& kind) {
   return 1.0;
 }
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2g", v);
-  return b;
-}
+std::string number(double v) { return formatSignificant(v, 2); }
 
 std::vector<std::string> channelNames(const std::string& channels) {
   std::vector<std::string> out;

@@ -8,6 +8,7 @@
 
 #include "app/measure/image.h"
 #include "app/measure/report.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -198,18 +199,9 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
 
 namespace {
 
-std::string points(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", std::round(v * 100.0) / 100.0);
-  return b;
-}
+std::string points(double v) { return formatSignificant(std::round(v * 100.0) / 100.0); }
 
-std::string value(double v) {
-  if (!std::isfinite(v)) return "n/a";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4g", v);
-  return b;
-}
+std::string value(double v) { return std::isfinite(v) ? formatSignificant(v, 4) : "n/a"; }
 
 std::string bound(const Threshold& t, double b) {
   return t.base == Threshold::Base::Absolute ? value(b) : value(b) + " (" + t.text() + ")";

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "app/grade/function_probe.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -18,11 +19,7 @@ namespace {
 // solution (the relations of the frames use 0.35 over noisier pictures; a table is exact).
 constexpr double kFits = 0.1;
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
+std::string number(double v) { return formatSignificant(v, 3); }
 
 std::string count(size_t n, size_t of) { return std::to_string(n) + " of " + std::to_string(of); }
 

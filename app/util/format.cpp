@@ -39,6 +39,14 @@ std::string formatFixed(double v, int decimals) {
   return buf;
 }
 
+std::string formatSignificant(double v, int digits) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
 bool parseWholeNumber(const std::string& text, long lo, long hi, long& out) {
   char* end = nullptr;
   const long n = std::strtol(text.c_str(), &end, 10);

@@ -11,6 +11,10 @@ std::string formatNumber(double v);
 
 // A fixed number of decimals, for tables people compare by eye (panel rows, notes).
 std::string formatFixed(double v, int decimals = 3);
+// `digits` significant digits, printf's %g ("0.35", "1.2e-05"), for numbers quoted in sentences.
+std::string formatSignificant(double v, int digits = 6);
+// Between single quotes, as sentences name a check, a configuration or a setting: "'no acne'".
+std::string quoted(const std::string& s);
 
 // Names as an English list, each between `quote`s: "'a', 'b' and 'c'".
 std::string englishList(const std::vector<std::string>& names, const std::string& quote);
