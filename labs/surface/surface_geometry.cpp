@@ -1,6 +1,9 @@
 #include "labs/surface/surface_geometry.h"
 
 #include <algorithm>
+#include <deque>
+#include <memory>
+#include <mutex>
 
 #include "app/scene/mesh_topology.h"
 #include "labs/surface/subdivide.h"
@@ -21,6 +24,84 @@ void addNotes(std::vector<std::string>& to, const std::vector<std::string>& from
     if (std::find(to.begin(), to.end(), n) == to.end()) to.push_back(n);
 }
 
+// What the CPU makes of one of the scene's meshes for a key: subdivided, its tangent frames chosen,
+// each vertex's UV scale. The work of a host's first frame at a level (a wall subdivided to a
+// vertex per texel is half a million triangles), and the same for every host a process makes of
+// one scene: a grading child draws the solution, each listed mistake and each slip with a host of
+// its own. So the last few are kept for the process, found by comparing the source mesh whole.
+struct PreparedMesh {
+  MeshData source;
+  SurfaceGeometryKey key;  // its revision aside: another host's build of the same scene matches
+  MeshData mesh;
+  std::vector<float> uScale, vScale, compare;
+  float meanEdge = 0.0f;
+  std::vector<std::string> notes;
+};
+
+bool sameMesh(const MeshData& a, const MeshData& b) {
+  return a.name == b.name && a.material == b.material && a.positions == b.positions && a.normals == b.normals &&
+         a.uvs == b.uvs && a.tangents == b.tangents && a.sourceTangents == b.sourceTangents && a.indices == b.indices;
+}
+
+std::shared_ptr<const PreparedMesh> prepare(const MeshData& source, const SurfaceGeometryKey& key) {
+  auto out = std::make_shared<PreparedMesh>();
+  out->source = source;
+  out->key = key;
+  MeshData m = source;
+  const bool uvs = !m.uvs.empty();
+  if (key.tangents && uvs) {
+    const TangentReport r = computeTangents(m);  // may split vertices where mirrored UVs meet
+    if (r.degenerateUvTriangles)
+      out->notes.push_back("mesh '" + m.name + "': " + std::to_string(r.degenerateUvTriangles) +
+                           " triangles have degenerate UVs (zero area in texture space) and add nothing to the " +
+                           "tangents; " + std::to_string(r.fallbacks) +
+                           " vertices touch only such triangles and get an arbitrary frame");
+    const bool wantsOwn = key.source == TangentSource::Mesh || key.compare == TangentSource::Mesh;
+    if (wantsOwn && m.sourceTangents.size() != m.positions.size())
+      out->notes.push_back("mesh '" + m.name + "' has no tangents of its own (glTF TANGENT): generated ones stand in");
+  }
+  m = splitEdges(subdivide(m, key.level), uvs ? key.parts : 1);  // without UVs nothing is displaced
+  const std::vector<glm::vec4> own = m.sourceTangents.size() == m.positions.size() ? m.sourceTangents : m.tangents;
+  const std::vector<glm::vec4>& generated = m.tangents;
+  auto frames = [&](TangentSource s) -> const std::vector<glm::vec4>& {
+    return s == TangentSource::Mesh ? own : generated;
+  };
+  std::vector<glm::vec4> compare = key.tangents && uvs ? frames(key.compare) : std::vector<glm::vec4>();
+  if (key.tangents && uvs) m.tangents = frames(key.source);
+  if (m.tangents.empty()) m.tangents.assign(m.positions.size(), glm::vec4(1, 0, 0, 1));  // unused, but bound
+  if (compare.empty()) compare = m.tangents;
+  out->compare = flatten(compare);
+  out->meanEdge = float(meanEdgeLength(m.positions, m.indices));
+  for (auto& s : uvScale(m)) {
+    out->uScale.push_back(s.x);
+    out->vScale.push_back(s.y);
+  }
+  out->mesh = std::move(m);
+  return out;
+}
+
+std::shared_ptr<const PreparedMesh> prepared(const MeshData& source, SurfaceGeometryKey key) {
+  constexpr size_t kKeptMeshes = 3;  // a level and the truth's, of a scene or two
+  static std::mutex lock;
+  static std::deque<std::shared_ptr<const PreparedMesh>> kept;  // most recent first
+  key.revision = -1;
+  {
+    const std::lock_guard<std::mutex> held(lock);
+    for (auto it = kept.begin(); it != kept.end(); ++it)
+      if ((*it)->key == key && sameMesh((*it)->source, source)) {
+        std::shared_ptr<const PreparedMesh> found = *it;
+        kept.erase(it);
+        kept.push_front(found);
+        return found;
+      }
+  }
+  std::shared_ptr<const PreparedMesh> made = prepare(source, key);
+  const std::lock_guard<std::mutex> held(lock);
+  kept.push_front(made);
+  while (kept.size() > kKeptMeshes) kept.pop_back();
+  return made;
+}
+
 }  // namespace
 
 const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const SurfaceGeometryKey& key,
@@ -38,44 +119,18 @@ const std::vector<SurfaceDraw>& SurfaceGeometry::get(const Scene& scene, const S
   Entry e;
   e.key = key;
   for (const Instance& inst : scene.instances) {
-    MeshData m = scene.meshes[size_t(inst.mesh)];
-    const bool uvs = !m.uvs.empty();
-    if (key.tangents && uvs) {
-      const TangentReport r = computeTangents(m);  // may split vertices where mirrored UVs meet
-      if (r.degenerateUvTriangles)
-        e.notes.push_back(
-            "mesh '" + m.name + "': " + std::to_string(r.degenerateUvTriangles) +
-            " triangles have degenerate UVs (zero area in texture space) and add nothing to the tangents; " +
-            std::to_string(r.fallbacks) + " vertices touch only such triangles and get an arbitrary frame");
-      const bool wantsOwn = key.source == TangentSource::Mesh || key.compare == TangentSource::Mesh;
-      if (wantsOwn && m.sourceTangents.size() != m.positions.size())
-        e.notes.push_back("mesh '" + m.name + "' has no tangents of its own (glTF TANGENT): generated ones stand in");
-    }
-    m = splitEdges(subdivide(m, key.level), uvs ? key.parts : 1);  // without UVs nothing is displaced
-    const std::vector<glm::vec4> own = m.sourceTangents.size() == m.positions.size() ? m.sourceTangents : m.tangents;
-    const std::vector<glm::vec4>& generated = m.tangents;
-    auto frames = [&](TangentSource s) -> const std::vector<glm::vec4>& {
-      return s == TangentSource::Mesh ? own : generated;
-    };
-    std::vector<glm::vec4> compare = key.tangents && uvs ? frames(key.compare) : std::vector<glm::vec4>();
-    if (key.tangents && uvs) m.tangents = frames(key.source);
-    if (m.tangents.empty()) m.tangents.assign(m.positions.size(), glm::vec4(1, 0, 0, 1));  // unused, but bound
-    if (compare.empty()) compare = m.tangents;
+    const std::shared_ptr<const PreparedMesh> m = prepared(scene.meshes[size_t(inst.mesh)], key);
     SurfaceDraw d;
     d.model = inst.model;
-    d.material = m.material;
-    d.hasUvs = uvs;
-    d.triangles = m.triangleCount();
-    d.meanEdge = float(meanEdgeLength(m.positions, m.indices));
-    d.mesh = GpuMesh::upload(m);
-    std::vector<float> su, sv;
-    for (auto& s : uvScale(m)) {
-      su.push_back(s.x);
-      sv.push_back(s.y);
-    }
-    d.mesh.setScalars(kScalar0, su);
-    d.mesh.setScalars(kScalar1, sv);
-    d.mesh.setAttribute(kVector0, 4, flatten(compare));
+    d.material = m->mesh.material;
+    d.hasUvs = !m->mesh.uvs.empty();
+    d.triangles = m->mesh.triangleCount();
+    d.meanEdge = m->meanEdge;
+    d.mesh = GpuMesh::upload(m->mesh);
+    d.mesh.setScalars(kScalar0, m->uScale);
+    d.mesh.setScalars(kScalar1, m->vScale);
+    d.mesh.setAttribute(kVector0, 4, m->compare);
+    addNotes(e.notes, m->notes);
     e.draws.push_back(std::move(d));
   }
   addNotes(notes, e.notes);
