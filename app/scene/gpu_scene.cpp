@@ -37,7 +37,7 @@ gl::SamplerState samplerFor(const ImageSource& image, const SceneNeeds& needs) {
 // An 8-bit texture (`channels` 1 or 4, rows bottom-up), with its mip chain made here when the
 // sampler filters between levels: the box filter in linear light (sRGB decoded first) that a
 // driver's glGenerateMipmap uses, without the blit a software driver compiles in every new context
-// (llvmpipe: about a quarter of a second per process, most of a grading child's upload).
+// (llvmpipe: about a quarter of a second, nearly all of a process's first upload).
 gl::Texture2D texture8(glm::ivec2 size, std::vector<unsigned char> pixels, int channels, bool srgb,
                        const gl::SamplerState& s) {
   const GLenum internal = channels == 1 ? GL_R8 : srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
