@@ -5,6 +5,7 @@
 
 #include "app/cli/session.h"
 #include "app/grade/configuration_frames.h"
+#include "app/lab/host_batch.h"
 #include "app/measure/report.h"
 
 namespace shadelab {
@@ -43,6 +44,7 @@ nlohmann::json readResult(const ConfigurationJob& job, const std::string& phase)
 int renderConfiguration(const ConfigurationJob& job, const std::function<void(const std::string&)>& enter) {
   const Exercise& ex = *job.exercise;
   const Configuration& c = *job.configuration;
+  const HostBatch batch;  // this child's hosts, one after another, all draw this configuration's scene
   const auto failSolution = [&](const std::string& message) {
     writeResult(job, "solution", {{"error", message}});
     return 2;

@@ -6,6 +6,7 @@
 
 #include "app/grade/configuration_frames.h"
 #include "app/grade/diagnosis.h"
+#include "app/lab/host_batch.h"
 #include "app/measure/image.h"
 #include "app/shader/preprocessor.h"
 #include "app/util/contained_path.h"
@@ -105,6 +106,7 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
 
 void ExerciseCheck::step() {
   if (!running_) return;
+  const HostBatch batch;  // the hosts of one configuration (solution, mistakes, slips, student) share its work
   if (slipStep_ >= 0) return stepSlips();
   const size_t i = result_.configurations.size();
   const Configuration& c = exercise_.configurations[i];

@@ -5,6 +5,7 @@
 #include <memory>
 #include <mutex>
 
+#include "app/lab/host_batch.h"
 #include "app/scene/mesh_topology.h"
 #include "labs/surface/subdivide.h"
 
@@ -28,7 +29,8 @@ void addNotes(std::vector<std::string>& to, const std::vector<std::string>& from
 // each vertex's UV scale. The work of a host's first frame at a level (a wall subdivided to a
 // vertex per texel is half a million triangles), and the same for every host a process makes of
 // one scene: a grading child draws the solution, each listed mistake and each slip with a host of
-// its own. So the last few are kept for the process, found by comparing the source mesh whole.
+// its own. So while a HostBatch is open the last few are kept, found by comparing the source mesh
+// whole; outside one (a window) the lab's work goes when the lab is left.
 struct PreparedMesh {
   MeshData source;
   SurfaceGeometryKey key;  // its revision aside: another host's build of the same scene matches
@@ -80,25 +82,46 @@ std::shared_ptr<const PreparedMesh> prepare(const MeshData& source, const Surfac
   return out;
 }
 
-std::shared_ptr<const PreparedMesh> prepared(const MeshData& source, SurfaceGeometryKey key) {
-  constexpr size_t kKeptMeshes = 3;  // a level and the truth's, of a scene or two
-  static std::mutex lock;
-  static std::deque<std::shared_ptr<const PreparedMesh>> kept;  // most recent first
-  key.revision = -1;
-  {
-    const std::lock_guard<std::mutex> held(lock);
-    for (auto it = kept.begin(); it != kept.end(); ++it)
+// The meshes an open batch keeps, most recent first: a level and the truth's, of a scene or two.
+class KeptMeshes {
+ public:
+  KeptMeshes() {
+    HostBatch::onClose([this] {
+      const std::lock_guard<std::mutex> held(lock_);
+      list_.clear();
+    });
+  }
+
+  std::shared_ptr<const PreparedMesh> find(const MeshData& source, const SurfaceGeometryKey& key) {
+    const std::lock_guard<std::mutex> held(lock_);
+    for (auto it = list_.begin(); it != list_.end(); ++it)
       if ((*it)->key == key && sameMesh((*it)->source, source)) {
         std::shared_ptr<const PreparedMesh> found = *it;
-        kept.erase(it);
-        kept.push_front(found);
+        list_.erase(it);
+        list_.push_front(found);
         return found;
       }
+    return nullptr;
   }
+
+  void keep(std::shared_ptr<const PreparedMesh> made) {
+    const std::lock_guard<std::mutex> held(lock_);
+    list_.push_front(std::move(made));
+    while (list_.size() > 3) list_.pop_back();
+  }
+
+ private:
+  std::mutex lock_;
+  std::deque<std::shared_ptr<const PreparedMesh>> list_;
+};
+
+std::shared_ptr<const PreparedMesh> prepared(const MeshData& source, SurfaceGeometryKey key) {
+  static KeptMeshes kept;
+  key.revision = -1;
+  if (!HostBatch::open()) return prepare(source, key);
+  if (auto found = kept.find(source, key)) return found;
   std::shared_ptr<const PreparedMesh> made = prepare(source, key);
-  const std::lock_guard<std::mutex> held(lock);
-  kept.push_front(made);
-  while (kept.size() > kKeptMeshes) kept.pop_back();
+  kept.keep(made);
   return made;
 }
 
