@@ -78,6 +78,7 @@ int run(int argc, char** argv) {
   if (o.command == "random") return runRandom(o);
   if (o.command == "soak") return runSoak(o);
   if (o.command == "exercise") return runExercise(o);
+  if (o.command == "inspect") return runInspect(o);
 
 #ifdef SHADELAB_HAS_WINDOW
   const int rc = runWindow(o, window);

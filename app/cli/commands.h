@@ -17,6 +17,8 @@ int runGradeClass(const Options& o);  // grade --class: every submission in a fo
 int runGradeMerge(const Options& o);  // grade merge: the outputs of --shard runs joined into one
 int runRandom(const Options& o);      // random configurations per lab: finite, no GL error, named when black
 int runSoak(const Options& o);        // minutes of random use; memory, GL objects and jobs over time
-int runExercise(const Options& o);    // exercise check [ID | DIR]: an exercise checked before it goes out
+int runExercise(const Options& o);
+int runInspect(const Options& o);  // the exercised function traced at one pixel, yours beside the solution's    //
+                                   // exercise check [ID | DIR]: an exercise checked before it goes out
 
 }  // namespace shadelab

@@ -31,6 +31,10 @@ commands:
                   a class:  --class DIR (each subfolder or .zip one student) [--jobs N] [--shard i/n]:
                   gradebook.csv, a class page and every student's report; exit 0 when all were graded
   grade merge     join the outputs of --shard runs:  grade merge DIR... --out DIR
+  inspect         the exercised function at one pixel of a configuration's frame, traced in the lab's own
+                  draw:  --exercise LAB/NAME --shaders DIR --pixel X,Y [--config N] [--json FILE]
+                  each line's values there (arguments, variables, a loop's every iteration), yours with
+                  whether the solution computes them, and the line where yours leave the solution's
   exercise new LAB/NAME --function FILE:NAME --exercises DIR
                   a new exercise in the course folder DIR on one function of the lab's FILE: the
                   starter (a part file holding the function, its body cut to a TODO region), a
@@ -111,8 +115,8 @@ std::string parseSize(const std::string& option, const std::string& text, glm::i
 }
 
 std::string parseOptions(int argc, char** argv, Options& o) {
-  static const char* kCommands[] = {"render",  "sweep", "stress", "list", "check-shaders",
-                                    "compare", "grade", "random", "soak", "exercise"};
+  static const char* kCommands[] = {"render", "sweep",  "stress", "list",     "check-shaders", "compare",
+                                    "grade",  "random", "soak",   "exercise", "inspect"};
   int i = 1;
   if (i < argc && argv[i][0] != '-') {
     o.command = argv[i++];
@@ -120,7 +124,8 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     for (auto c : kCommands) known |= o.command == c;
     if (!known)
       return "unknown command '" + o.command +
-             "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak, exercise)";
+             "' (valid: render, sweep, stress, list, check-shaders, compare, grade, random, soak, exercise, "
+             "inspect)";
   }
   for (; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -176,7 +181,20 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.out = v;
     else if (arg == "--exercise")
       o.exercise = v;
-    else if (arg == "--exercises") {
+    else if (arg == "--json")
+      o.json = v;
+    else if (arg == "--pixel") {
+      int x = 0, y = 0;
+      char comma = 0, extra = 0;
+      if (std::sscanf(v.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',' || x < 0 || y < 0)
+        return "--pixel: '" + v + "' is not X,Y with X, Y >= 0 (from the frame's top-left, e.g. 160,120)";
+      o.pixel = {x, y};
+      o.pixelGiven = true;
+    } else if (arg == "--config") {
+      long n = 0;
+      if (!parseWholeNumber(v, 0, 1000, n)) return "--config: '" + v + "' is not a whole number in [0, 1000]";
+      o.config = int(n);
+    } else if (arg == "--exercises") {
       std::error_code ec;
       if (o.command != "exercise" && !std::filesystem::is_directory(v, ec))  // `exercise new` may make it
         return "--exercises: '" + v +
@@ -252,7 +270,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
              "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, "
              "--frames, --shaders, "
              "--backend, --dialect, --out, --measure, --exercise, --exercises, --function, --format, --all, "
-             "--watchdog, --class, "
+             "--watchdog, --class, --pixel, --config, --json, "
              "--jobs, "
              "--shard, "
              "--cache, --no-cache, --count, "

@@ -28,8 +28,12 @@ struct Options {
   float time = 0.0f;
   int frames = 5;  // timed frames per configuration (medians)
   int warmup = 2;
-  bool measure = false;                   // render: measure against the lab's truth too
-  std::string exercise;                   // grade: --exercise lab/name
+  bool measure = false;  // render: measure against the lab's truth too
+  std::string exercise;  // grade, inspect: --exercise lab/name
+  glm::ivec2 pixel{0};   // inspect: --pixel X,Y (from the frame's top-left)
+  bool pixelGiven = false;
+  int config = 0;                         // inspect: --config N, the rubric's configuration
+  std::string json;                       // inspect: --json FILE
   std::vector<std::string> exerciseDirs;  // --exercises DIR (repeatable): course folders, before exercises/
   std::vector<std::string>
       unlisted;  // exercise check: --unlisted DIR (repeatable), mistakes no rubric lists (DIR/LAB/NAME.json)

@@ -44,10 +44,9 @@ std::vector<std::string> tracedFunctions(const Exercise& ex) {
   return names;
 }
 
-std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block,
-                      const std::vector<std::string>& functions, const std::string& source,
-                      const std::vector<fs::path>& roots, TraceValues& out) {
-  const std::string& file = ex.files.front();
+std::string instrumentAndDraw(const std::string& file, const std::vector<std::string>& functions,
+                              const std::string& source, const TraceDraw& draw, InstrumentedSource& built,
+                              bool derivativesAllowed) {
   if (functions.empty()) return "no function of " + file + " holds the exercise's TODO region";
   std::vector<int> quiet;
   std::string lastError;
@@ -55,22 +54,12 @@ std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block,
   constexpr int kRounds = 4;
   for (int round = 0; round < kRounds; ++round) {
     const bool sub = round + 1 < kRounds;
-    const InstrumentedSource inst = instrumentFunctions(source, functions, quiet, sub);
+    InstrumentedSource inst = instrumentFunctions(source, functions, quiet, sub, derivativesAllowed);
     if (!inst.error.empty()) return inst.error;
-    ImageF image;
     std::vector<std::string> errors;
-    if (auto e = drawFunctionTrace(probe, roots, {file, inst.text, int(inst.points.size()), block}, image, errors);
-        !e.empty())
-      return e;
+    if (auto e = draw(inst, errors); !e.empty()) return e;
     if (errors.empty()) {
-      out.points = inst.points;
-      out.literals = inst.literals;
-      out.values.assign(inst.points.size(), {});
-      for (size_t k = 0; k < inst.points.size(); ++k)
-        for (int row = 0; row < image.size.x; ++row) {
-          const float* px = image.at(row, int(k));
-          out.values[k].push_back({px[0], px[1], px[2], px[3]});
-        }
+      built = std::move(inst);
       return {};
     }
     lastError = errors.front().substr(0, errors.front().find('\n'));
@@ -79,6 +68,27 @@ std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block,
     quiet.insert(quiet.end(), lines.begin(), lines.end());
   }
   return "the instrumented function does not build (" + lastError + ")";
+}
+
+std::string traceSide(const Exercise& ex, const FunctionProbe& probe, int block,
+                      const std::vector<std::string>& functions, const std::string& source,
+                      const std::vector<fs::path>& roots, TraceValues& out) {
+  const std::string& file = ex.files.front();
+  ImageF image;
+  InstrumentedSource inst;
+  const auto draw = [&](const InstrumentedSource& i, std::vector<std::string>& errors) {
+    return drawFunctionTrace(probe, roots, {file, i.text, int(i.points.size()), block}, image, errors);
+  };
+  if (auto e = instrumentAndDraw(file, functions, source, draw, inst); !e.empty()) return e;
+  out.points = inst.points;
+  out.literals = inst.literals;
+  out.values.assign(inst.points.size(), {});
+  for (size_t k = 0; k < inst.points.size(); ++k)
+    for (int row = 0; row < image.size.x; ++row) {
+      const float* px = image.at(row, int(k));
+      out.values[k].push_back({px[0], px[1], px[2], px[3]});
+    }
+  return {};
 }
 
 std::string traceOnProbe(const Exercise& ex, const FunctionProbe& probe, const std::vector<fs::path>& studentRoots,

@@ -3,6 +3,7 @@
 // probe runs (the grading child, the window's Check, the page), in the GL context current there.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,16 @@ namespace shadelab {
 // The functions a trace follows: those of the exercise's first file that its starter's TODO region
 // lies in (every function of the file for a whole-file starter).
 std::vector<std::string> tracedFunctions(const Exercise& ex);
+
+// The rounds a trace is built in: `functions` of `source` (the text of `file`) instrumented and
+// handed to `draw`, which builds and draws it and returns "" with the build's errors in `errors`,
+// or why it cannot draw at all. A tap the compiler refuses is dropped with the rest of its line's
+// and the build tried again; then the variables alone. `built` receives what built.
+// `derivativesAllowed`: as instrumentFunctions.
+using TraceDraw = std::function<std::string(const InstrumentedSource&, std::vector<std::string>& errors)>;
+std::string instrumentAndDraw(const std::string& file, const std::vector<std::string>& functions,
+                              const std::string& source, const TraceDraw& draw, InstrumentedSource& built,
+                              bool derivativesAllowed = false);
 
 // One side traced: `functions` (tracedFunctions) of `source` (the text of the exercise's first
 // file) instrumented and drawn with

@@ -382,31 +382,42 @@ class Instrumenter {
 
 }  // namespace
 
-const char* tracePrelude() {
-  return R"(// The trace's taps (grade/trace.h): each returns its value and writes it out when it is the point traced.
-uniform int shadelab_trace;
-vec4 shadelab_traced = vec4(0.0);
-float shadelab_tap(int k, float v) { if (k == shadelab_trace) shadelab_traced = vec4(v, 0.0, 0.0, 1.0); return v; }
-vec2 shadelab_tap(int k, vec2 v) { if (k == shadelab_trace) shadelab_traced = vec4(v, 0.0, 2.0); return v; }
-vec3 shadelab_tap(int k, vec3 v) { if (k == shadelab_trace) shadelab_traced = vec4(v, 3.0); return v; }
-vec4 shadelab_tap(int k, vec4 v) { if (k == shadelab_trace) shadelab_traced = vec4(v.xyz, 4.0); return v; }
-int shadelab_tap(int k, int v) { if (k == shadelab_trace) shadelab_traced = vec4(float(v), 0.0, 0.0, 1.0); return v; }
-ivec2 shadelab_tap(int k, ivec2 v) { if (k == shadelab_trace) shadelab_traced = vec4(vec2(v), 0.0, 2.0); return v; }
-ivec3 shadelab_tap(int k, ivec3 v) { if (k == shadelab_trace) shadelab_traced = vec4(vec3(v), 3.0); return v; }
-ivec4 shadelab_tap(int k, ivec4 v) { if (k == shadelab_trace) shadelab_traced = vec4(vec3(v.xyz), 4.0); return v; }
-uint shadelab_tap(int k, uint v) { if (k == shadelab_trace) shadelab_traced = vec4(float(v), 0.0, 0.0, 1.0); return v; }
-bool shadelab_tap(int k, bool v) { if (k == shadelab_trace) shadelab_traced = vec4(v ? 1.0 : 0.0, 0.0, 0.0, 1.0); return v; }
-bvec2 shadelab_tap(int k, bvec2 v) { if (k == shadelab_trace) shadelab_traced = vec4(vec2(v), 0.0, 2.0); return v; }
-bvec3 shadelab_tap(int k, bvec3 v) { if (k == shadelab_trace) shadelab_traced = vec4(vec3(v), 3.0); return v; }
-bvec4 shadelab_tap(int k, bvec4 v) { if (k == shadelab_trace) shadelab_traced = vec4(vec3(v.xyz), 4.0); return v; }
-mat2 shadelab_tap(int k, mat2 v) { return v; }
-mat3 shadelab_tap(int k, mat3 v) { return v; }
-mat4 shadelab_tap(int k, mat4 v) { return v; }
-)";
+std::string tapOverloads(const std::string& write) {
+  // Each type's value as the vec4 written: xyz and, in w, the component count.
+  static const std::pair<const char*, const char*> kTypes[] = {{"float", "vec4(v, 0.0, 0.0, 1.0)"},
+                                                               {"vec2", "vec4(v, 0.0, 2.0)"},
+                                                               {"vec3", "vec4(v, 3.0)"},
+                                                               {"vec4", "vec4(v.xyz, 4.0)"},
+                                                               {"int", "vec4(float(v), 0.0, 0.0, 1.0)"},
+                                                               {"ivec2", "vec4(vec2(v), 0.0, 2.0)"},
+                                                               {"ivec3", "vec4(vec3(v), 3.0)"},
+                                                               {"ivec4", "vec4(vec3(v.xyz), 4.0)"},
+                                                               {"uint", "vec4(float(v), 0.0, 0.0, 1.0)"},
+                                                               {"bool", "vec4(v ? 1.0 : 0.0, 0.0, 0.0, 1.0)"},
+                                                               {"bvec2", "vec4(vec2(v), 0.0, 2.0)"},
+                                                               {"bvec3", "vec4(vec3(v), 3.0)"},
+                                                               {"bvec4", "vec4(vec3(v.xyz), 4.0)"}};
+  std::string out;
+  for (auto& [type, value] : kTypes)
+    out += std::string(type) + " shadelab_tap(int k, " + type + " v) { " + write + "(k, " + value + "); return v; }\n";
+  for (const char* type : {"mat2", "mat3", "mat4"})  // not written out: a tap that only passes the value on
+    out += std::string(type) + " shadelab_tap(int k, " + type + " v) { return v; }\n";
+  return out;
+}
+
+const std::string& tracePrelude() {
+  static const std::string prelude =
+      "// The trace's taps (grade/trace.h): each returns its value and writes it out when it is the point traced.\n"
+      "uniform int shadelab_trace;\n"
+      "vec4 shadelab_traced = vec4(0.0);\n"
+      "void shadelab_write(int k, vec4 v) { if (k == shadelab_trace) shadelab_traced = v; }\n" +
+      tapOverloads("shadelab_write");
+  return prelude;
 }
 
 InstrumentedSource instrumentFunctions(const std::string& source, const std::vector<std::string>& functions,
-                                       const std::vector<int>& quietLines, bool subExpressions) {
+                                       const std::vector<int>& quietLines, bool subExpressions,
+                                       bool derivativesAllowed) {
   InstrumentedSource out;
   const std::map<std::string, std::string> types = functionTypes(source);
   const std::set<int> quiet(quietLines.begin(), quietLines.end());
@@ -419,7 +430,8 @@ InstrumentedSource instrumentFunctions(const std::string& source, const std::vec
       return out;
     }
     for (auto& x : f.exprs)
-      if (x.kind == Expr::Kind::Call && (x.text == "dFdx" || x.text == "dFdy" || x.text == "fwidth")) {
+      if (!derivativesAllowed && x.kind == Expr::Kind::Call &&
+          (x.text == "dFdx" || x.text == "dFdy" || x.text == "fwidth")) {
         out.error = name + "() takes derivatives (" + x.text + "): its values mean something only in the lab's draw";
         return out;
       }

@@ -44,14 +44,20 @@ struct InstrumentedSource {
 };
 
 // The source with `functions` instrumented. Sub-expressions on `quietLines` are not tapped (the
-// lines where the compiler refused a tap), and none at all with `subExpressions` false.
+// lines where the compiler refused a tap), and none at all with `subExpressions` false. A function
+// that takes derivatives is refused unless `derivativesAllowed` (traced in the lab's own draw,
+// grade/pixel_trace.h, rather than on a probe's table, where neighbouring pixels are other rows).
 InstrumentedSource instrumentFunctions(const std::string& source, const std::vector<std::string>& functions,
-                                       const std::vector<int>& quietLines = {}, bool subExpressions = true);
+                                       const std::vector<int>& quietLines = {}, bool subExpressions = true,
+                                       bool derivativesAllowed = false);
 
 // The GLSL the instrumented source needs before it: the tap overloads, `uniform int shadelab_trace`
 // (the point written out, -1 for none) and `vec4 shadelab_traced` (the value: xyz and, in w, its
 // component count; w = 0 where the point was not reached).
-const char* tracePrelude();
+const std::string& tracePrelude();
+// The taps' overloads for GLSL's basic types, each handing its value as a vec4 (xyz, and the
+// component count in w) to `write(int k, vec4 v)`, which the including text defines first.
+std::string tapOverloads(const std::string& write);
 
 // One side's trace: each point's value on each row of the probe's table.
 struct TraceValues {
@@ -81,6 +87,14 @@ struct TraceFinding {
 // the parameter's name.
 TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution,
                          const std::vector<std::pair<std::string, std::string>>& inputs, const std::string& file);
+
+// Each of the student's points as alignTraces judges it: reached on enough rows, and its values ones
+// the solution computes (the inspector marks each line so).
+struct PointAgreement {
+  bool reached = false;
+  bool matches = false;
+};
+std::vector<PointAgreement> pointAgreement(const TraceValues& student, const TraceValues& solution);
 
 nlohmann::json toJson(const TraceFinding& f);
 TraceFinding traceFindingFromJson(const nlohmann::json& j);

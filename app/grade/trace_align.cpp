@@ -319,6 +319,16 @@ TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution
   return out;
 }
 
+std::vector<PointAgreement> pointAgreement(const TraceValues& student, const TraceValues& solution) {
+  Aligner align(student, solution);
+  std::vector<PointAgreement> out(student.points.size());
+  for (size_t k = 0; k < out.size(); ++k) {
+    out[k].reached = align.reachedPoint(int(k));
+    out[k].matches = out[k].reached && align.matches(int(k));
+  }
+  return out;
+}
+
 nlohmann::json toJson(const TraceFinding& f) {
   return {{"found", f.found},
           {"line", f.line},

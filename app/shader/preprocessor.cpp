@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cctype>
 #include <cstdio>
+#include <map>
 #include <regex>
 
 #include "app/shader/function_parts.h"
@@ -301,6 +302,35 @@ std::string flattenInterfaceBlocks(const std::string& source) {
   return out;
 }
 
+std::string hoistExtensions(const std::string& source) {
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(source);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  std::string hoisted;
+  // #if depth per source string (`#line N K`: the lines that follow are file K's): an extension
+  // under its own file's #if stays with its condition; the #if an include sits in is the
+  // including file's, and the extension is the included file's whenever it is included.
+  std::map<int, int> depth;
+  int file = 0;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    const size_t first = lines[i].find_first_not_of(" \t");
+    if (first == std::string::npos || lines[i][first] != '#') continue;
+    const std::string_view directive = std::string_view(lines[i]).substr(first);
+    if (int line = 0, k = 0; std::sscanf(lines[i].c_str() + first, "#line %d %d", &line, &k) == 2) file = k;
+    if (directive.starts_with("#if")) ++depth[file];
+    if (directive.starts_with("#endif")) --depth[file];
+    if (depth[file] != 0 || !directive.starts_with("#extension")) continue;
+    hoisted += std::string(directive) + "\n";
+    lines[i].clear();  // an empty line in its place: the lines after it keep their numbers
+  }
+  if (hoisted.empty()) return source;
+  std::string out = lines.front() + "\n" + hoisted;
+  for (size_t i = 1; i < lines.size(); ++i) out += lines[i] + "\n";
+  return out;
+}
+
 PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath, const Defines& defines) {
   PreprocessedSource out;
   const ShaderSearchPath::Lookup found = path.find(relPath);
@@ -331,12 +361,16 @@ PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::str
     }
   out.text = versionPreamble(version, glslDialect());
   for (auto& [name, value] : defines) out.text += "#define " + name + " " + value + "\n";
+  // A file included by several stages can tell the fragment stage (gl_FragCoord, derivatives) apart.
+  if (relPath.ends_with(".frag")) out.text += "#define SHADELAB_FRAGMENT_STAGE 1\n";
   out.text += "#line 1 0\n";
   Expander ex{path, out, {relPath}};
-  if (!ex.expand(relPath, text, 0, true))
+  if (!ex.expand(relPath, text, 0, true)) {
     out.text.clear();
-  else if (glslDialect() == GlslDialect::Es300)
-    out.text = flattenInterfaceBlocks(out.text);
+    return out;
+  }
+  out.text = hoistExtensions(out.text);
+  if (glslDialect() == GlslDialect::Es300) out.text = flattenInterfaceBlocks(out.text);
   return out;
 }
 

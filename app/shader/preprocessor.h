@@ -92,6 +92,11 @@ std::string versionPreamble(const std::string& fileVersionLine, GlslDialect dial
 // heads and the closing line are left empty) and preprocessor lines inside the block stay.
 std::string flattenInterfaceBlocks(const std::string& source);
 
+// GLSL allows #extension only before the first declaration; an included file's (outside any #if)
+// is moved up to follow the #version line, an empty line left in its place so that every line
+// keeps its number.
+std::string hoistExtensions(const std::string& source);
+
 PreprocessedSource preprocessShader(const ShaderSearchPath& path, const std::string& relPath, const Defines& defines);
 
 }  // namespace shadelab

@@ -126,6 +126,24 @@ TEST(EsFlattening, SurvivesAHugeLine) {
   EXPECT_EQ(out.find("out S"), std::string::npos);
 }
 
+// An included file's #extension follows #version, as GLSL requires; one under its own file's #if
+// stays with its condition, and every other line keeps its number.
+TEST(Preprocessor, ExtensionsOfIncludedFilesFollowTheVersion) {
+  const std::string source =
+      "#version 330 core\n#line 1 0\nuniform float a;\n#line 1 1\n  #extension GL_ARB_x : require\n"
+      "#ifdef FOO\n#extension GL_ARB_y : enable\n#endif\nfloat b;\n";
+  const std::string out = hoistExtensions(source);
+  EXPECT_EQ(out,
+            "#version 330 core\n#extension GL_ARB_x : require\n#line 1 0\nuniform float a;\n#line 1 1\n\n"
+            "#ifdef FOO\n#extension GL_ARB_y : enable\n#endif\nfloat b;\n");
+  EXPECT_EQ(hoistExtensions("#version 330 core\nfloat c;\n"), "#version 330 core\nfloat c;\n");
+  // The #if an include sits in is the including file's: the included file's extension still moves.
+  EXPECT_EQ(
+      hoistExtensions("#version 330 core\n#line 1 0\n#ifdef BAR\n#line 1 1\n#extension GL_ARB_z : require\n"
+                      "#line 3 0\n#endif\n"),
+      "#version 330 core\n#extension GL_ARB_z : require\n#line 1 0\n#ifdef BAR\n#line 1 1\n\n#line 3 0\n#endif\n");
+}
+
 TEST(CompileLog, MesaNvidiaAmdAndRawLines) {
   const std::vector<fs::path> files = {"shaders/lab/a.frag", "shaders/common/light.glsl"};
   const auto d = parseCompileLog(

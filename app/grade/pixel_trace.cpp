@@ -1,0 +1,445 @@
+#include "app/grade/pixel_trace.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <nlohmann/json.hpp>
+
+#include "app/gl/gl.h"
+#include "app/gl/handle.h"
+#include "app/grade/configuration_frames.h"
+#include "app/grade/probe_trace.h"
+#include "app/shader/function_parts.h"
+#include "app/util/format.h"
+#include "app/util/output_files.h"
+#include "app/util/read_file.h"
+
+namespace shadelab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kBlockRadius = 3;  // a 7 x 7 block: rows enough for the alignment's 8, at an edge too
+constexpr int kBlockSide = 2 * kBlockRadius + 1;
+constexpr int kSlots = 4 * kBlockSide * kBlockSide;  // fragments kept: four layers of the block
+constexpr int kCentres = 4;                          // fragments at the pixel whose iterations are kept
+constexpr int kIterations = PixelSide::kIterations;
+constexpr GLuint kBinding = 0;  // every storage block's default binding; no lab uses one
+
+// The buffer's layout (std430): two counters and two spare words, then vec4s: each slot's
+// gl_FragCoord and, per point, {times reached} and the last value; then each centre's slot index
+// and, per point, its iterations.
+struct Layout {
+  int points;
+  int slotStride() const { return 1 + 2 * points; }
+  int centreBase() const { return kSlots * slotStride(); }
+  int centreStride() const { return 1 + points * kIterations; }
+  int vec4s() const { return centreBase() + kCentres * centreStride(); }
+  size_t bytes() const { return 16 + size_t(vec4s()) * 16; }
+};
+
+// The taps of grade/trace.h writing into the buffer, for fragments of the block around
+// `fragment` (window coordinates, from the bottom).
+std::string pixelPrelude(const Layout& layout, glm::ivec2 fragment) {
+  const auto n = [](long v) { return std::to_string(v); };
+  return "#extension GL_ARB_shader_storage_buffer_object : require\n"
+         "// The pixel trace's taps (grade/pixel_trace.h): each fragment of the block around the pixel takes a\n"
+         "// slot of the buffer and writes each point's last value there; at the pixel, every iteration too.\n"
+         "// In another stage (a vertex shader that includes the file too) the taps write nothing.\n"
+         "#ifdef SHADELAB_FRAGMENT_STAGE\n"
+         "layout(std430) buffer shadelab_pixel_trace {\n"
+         "  uint shadelab_fragments;\n"
+         "  uint shadelab_centres;\n"
+         "  uint shadelab_spare[2];\n"
+         "  vec4 shadelab_data[];\n"
+         "};\n"
+         "const int shadelab_slotStride = " +
+         n(layout.slotStride()) + ";\nconst int shadelab_centreBase = " + n(layout.centreBase()) +
+         ";\nconst int shadelab_centreStride = " + n(layout.centreStride()) +
+         ";\nconst int shadelab_iterations = " + n(kIterations) + ";\nconst ivec2 shadelab_pixel = ivec2(" +
+         n(fragment.x) + ", " + n(fragment.y) +
+         ");\n"
+         "int shadelab_slot = -2;  // -2: not asked yet; -1: outside the block, or no room\n"
+         "int shadelab_centre = -1;\n"
+         "bool shadelab_here() {\n"
+         "  if (shadelab_slot != -2) return shadelab_slot >= 0;\n"
+         "  shadelab_slot = -1;\n"
+         "  atomicAdd(shadelab_spare[0], 1u);  // fragments of the whole frame that ran the function\n"
+         "  ivec2 d = ivec2(gl_FragCoord.xy) - shadelab_pixel;\n"
+         "  if (any(greaterThan(abs(d), ivec2(" +
+         n(kBlockRadius) +
+         ")))) return false;\n"
+         "  uint s = atomicAdd(shadelab_fragments, 1u);\n"
+         "  if (s >= " +
+         n(kSlots) +
+         "u) return false;\n"
+         "  shadelab_slot = int(s);\n"
+         "  shadelab_data[shadelab_slot * shadelab_slotStride] = vec4(gl_FragCoord.xyz, 1.0);\n"
+         "  if (d == ivec2(0)) {\n"
+         "    uint c = atomicAdd(shadelab_centres, 1u);\n"
+         "    if (c < " +
+         n(kCentres) +
+         "u) {\n"
+         "      shadelab_centre = int(c);\n"
+         "      shadelab_data[shadelab_centreBase + shadelab_centre * shadelab_centreStride] = vec4(float(s), 0.0, "
+         "0.0, "
+         "1.0);\n"
+         "    }\n"
+         "  }\n"
+         "  return true;\n"
+         "}\n"
+         "void shadelab_put(int k, vec4 v) {\n"
+         "  if (!shadelab_here()) return;\n"
+         "  int at = shadelab_slot * shadelab_slotStride + 1 + 2 * k;\n"
+         "  int times = int(shadelab_data[at].x);\n"
+         "  shadelab_data[at] = vec4(float(times + 1), 0.0, 0.0, 0.0);\n"
+         "  shadelab_data[at + 1] = v;\n"
+         "  if (shadelab_centre >= 0 && times < shadelab_iterations)\n"
+         "    shadelab_data[shadelab_centreBase + shadelab_centre * shadelab_centreStride + 1 + k * "
+         "shadelab_iterations + "
+         "times] = v;\n"
+         "}\n"
+         "#else\n"
+         "void shadelab_put(int k, vec4 v) {}\n"
+         "#endif\n" +
+         tapOverloads("shadelab_put");
+}
+
+// A folder removed however the drawing ends.
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("shadelab-pixel-" + std::to_string(getpid()));
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+// The buffer read back into one side: per block pixel the nearest fragment's values.
+void readSide(const std::vector<float>& data, const Layout& layout, glm::ivec2 fragment, PixelSide& side) {
+  uint32_t fragments = 0;
+  std::memcpy(&fragments, data.data(), sizeof fragments);
+  const float* v = data.data() + 4;  // past the counters
+  const auto at = [&](int i) { return glm::vec4(v[i * 4], v[i * 4 + 1], v[i * 4 + 2], v[i * 4 + 3]); };
+  const int slots = std::min(int(fragments), kSlots);
+  const size_t points = size_t(layout.points);
+  side.values.values.assign(points, std::vector<glm::vec4>(size_t(kBlockSide * kBlockSide), glm::vec4(0.0f)));
+  std::vector<float> nearest(size_t(kBlockSide * kBlockSide), 2.0f);
+  std::vector<int> chosen(nearest.size(), -1);
+  for (int s = 0; s < slots; ++s) {
+    const glm::vec4 coord = at(s * layout.slotStride());
+    const glm::ivec2 d = glm::ivec2(int(std::floor(coord.x)), int(std::floor(coord.y))) - fragment;
+    const int row = (kBlockRadius - d.y) * kBlockSide + (d.x + kBlockRadius);  // the block's top row first
+    if (row < 0 || row >= int(nearest.size()) || coord.z >= nearest[size_t(row)]) continue;
+    nearest[size_t(row)] = coord.z;
+    chosen[size_t(row)] = s;
+  }
+  side.centreRow = kBlockRadius * kBlockSide + kBlockRadius;
+  for (size_t row = 0; row < chosen.size(); ++row) {
+    if (chosen[row] < 0) continue;
+    for (size_t k = 0; k < points; ++k) {
+      const int base = chosen[row] * layout.slotStride() + 1 + 2 * int(k);
+      if (at(base).x > 0.0f) side.values.values[k][row] = at(base + 1);
+    }
+  }
+  side.iterations.assign(points, {});
+  side.reached.assign(points, 0);
+  uint32_t centres = 0, anywhere = 0;
+  std::memcpy(&centres, data.data() + 1, sizeof centres);
+  std::memcpy(&anywhere, data.data() + 2, sizeof anywhere);
+  side.fragmentsInFrame = int(anywhere);
+  side.fragments = int(centres);
+  const int centreSlot = chosen[size_t(side.centreRow)];
+  for (int c = 0; c < std::min(int(centres), kCentres) && centreSlot >= 0; ++c) {
+    const int base = layout.centreBase() + c * layout.centreStride();
+    if (int(at(base).x) != centreSlot) continue;  // another layer's fragment
+    for (size_t k = 0; k < points; ++k) {
+      side.reached[k] = int(at(centreSlot * layout.slotStride() + 1 + 2 * int(k)).x);
+      for (int i = 0; i < std::min(side.reached[k], kIterations); ++i)
+        side.iterations[k].push_back(at(base + 1 + int(k) * kIterations + i));
+    }
+  }
+}
+
+// One side: `source` instrumented in the place of the exercise's first file, drawn with `roots`
+// behind it.
+std::string drawSide(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
+                     const std::string& source, const std::vector<fs::path>& roots, glm::ivec2 pixel, PixelSide& out) {
+  const std::string& file = ex.files.front();
+  const glm::ivec2 fragment{pixel.x, ex.size.y - 1 - pixel.y};
+  Scratch scratch;
+  std::vector<fs::path> searched{scratch.dir};
+  searched.insert(searched.end(), roots.begin(), roots.end());
+  std::vector<float> data;
+  Layout layout{0};
+  const auto draw = [&](const InstrumentedSource& inst, std::vector<std::string>& errors) -> std::string {
+    layout.points = int(inst.points.size());
+    if (auto e = writeTextFile((scratch.dir / file).string(), pixelPrelude(layout, fragment) + inst.text); !e.empty())
+      return e;
+    std::string configError;
+    const auto host = configuredHost(searched, ex, c, configError);
+    if (!configError.empty()) return configError;
+    host->settle();
+    const gl::Buffer buffer = gl::Buffer::make();
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.get());
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(layout.bytes()), nullptr, GL_STREAM_READ);
+    const std::vector<float> zeros(layout.bytes() / sizeof(float), 0.0f);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(layout.bytes()), zeros.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, buffer.get());
+    host->renderFrame(ex.size);
+    errors = buildErrors(*host);
+    const ImageF frame = host->readImage();
+    if (pixel.x < frame.size.x && pixel.y < frame.size.y) {
+      const float* px = frame.at(pixel.x, pixel.y);
+      out.colour = {px[0], px[1], px[2], px[3]};
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    data.assign(layout.bytes() / sizeof(float), 0.0f);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.get());
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(layout.bytes()), data.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, 0);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return {};
+  };
+  InstrumentedSource built;
+  if (auto e = instrumentAndDraw(file, functions, source, draw, built, true); !e.empty()) return e;
+  out.values.points = built.points;
+  out.values.literals = built.literals;
+  readSide(data, layout, fragment, out);
+  return {};
+}
+
+std::string vectorText(const glm::vec4& v) {
+  const int n = std::clamp(int(v.w), 1, 3);
+  std::string out;
+  for (int c = 0; c < n; ++c) out += (c ? " " : "") + formatSignificant(v[c], 4);
+  return n > 1 ? "(" + out + ")" : out;
+}
+
+// A point's values at the pixel: one value, or a loop's iterations folded ("25 times: 0 0 1 ...",
+// as a grid where the count is a square).
+std::string valuesText(const PixelSide& side, size_t k) {
+  const std::vector<glm::vec4>& it = side.iterations[k];
+  if (side.reached[k] == 0 || it.empty()) return "not reached";
+  if (side.reached[k] == 1) return vectorText(it.front());
+  std::string out = std::to_string(side.reached[k]) + " times";
+  const int side2 = int(std::lround(std::sqrt(double(it.size()))));
+  const bool grid = side2 > 1 && side2 * side2 == int(it.size()) && it.front().w <= 1.0f && side2 <= 8;
+  if (grid) {
+    out += ", as a " + std::to_string(side2) + " x " + std::to_string(side2) + " grid:";
+    for (int r = 0; r < side2; ++r) {
+      out += "\n      ";
+      for (int col = 0; col < side2; ++col) out += " " + formatSignificant(it[size_t(r * side2 + col)].x, 3);
+    }
+    return out;
+  }
+  out += ":";
+  constexpr size_t kShown = 8;
+  for (size_t i = 0; i < it.size() && i < kShown; ++i) out += " " + vectorText(it[i]);
+  if (it.size() > kShown) out += " ... last " + vectorText(it.back());
+  return out;
+}
+
+std::string kindText(TracePoint::Kind kind) {
+  switch (kind) {
+    case TracePoint::Kind::Param:
+      return "argument";
+    case TracePoint::Kind::Declared:
+      return "declared";
+    case TracePoint::Kind::Assigned:
+      return "assigned";
+    case TracePoint::Kind::Returned:
+      return "returned";
+    case TracePoint::Kind::OutParam:
+      return "out";
+    default:
+      return "part";
+  }
+}
+
+// What a side returns at the pixel: the last value of its last return reached there.
+bool returnedAtPixel(const PixelSide& side, glm::vec4& value) {
+  bool found = false;
+  for (size_t k = 0; k < side.values.points.size(); ++k)
+    if (side.values.points[k].kind == TracePoint::Kind::Returned && !side.iterations[k].empty()) {
+      value = side.iterations[k].back();
+      found = true;
+    }
+  return found;
+}
+
+}  // namespace
+
+bool PixelInspection::returnsDiffer() const {
+  if (!bothReturned) return false;
+  for (int c = 0; c < std::clamp(int(returns.w), 1, 3); ++c)
+    if (!(std::abs(returns[c] - solutionReturns[c]) <= 1e-5f + 3e-4f * std::abs(solutionReturns[c]))) return true;
+  return false;
+}
+
+bool pixelTraceSupported(std::string& why) {
+  if (gl::esContext()) {
+    why = "WebGL 2 has no shader storage buffers, which the pixel trace writes into";
+    return false;
+  }
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  bool storage = false;
+  for (GLint i = 0; i < count && !storage; ++i)
+    storage = std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))),
+                          "GL_ARB_shader_storage_buffer_object") == 0;
+  if (!storage || !glMemoryBarrier) {
+    why = "this driver has no shader storage buffers (GL 4.3 or GL_ARB_shader_storage_buffer_object)";
+    return false;
+  }
+  return true;
+}
+
+std::string inspectPixel(const Exercise& ex, size_t configuration, const std::vector<fs::path>& studentDirs,
+                         glm::ivec2 pixel, PixelInspection& out) {
+  if (configuration >= ex.configurations.size())
+    return "--config " + std::to_string(configuration) + ": the exercise has " +
+           std::to_string(ex.configurations.size()) + " configurations (0 to " +
+           std::to_string(ex.configurations.size() - 1) + ")";
+  const Configuration& c = ex.configurations[configuration];
+  out = {};
+  out.exercise = ex.id;
+  out.configuration = c.name;
+  out.file = ex.files.front();
+  out.pixel = pixel;
+  out.frameSize = ex.size;
+  if (c.function >= 0) return "configuration '" + c.name + "' is the function by itself: it draws no frame";
+  if (pixel.x < 0 || pixel.y < 0 || pixel.x >= ex.size.x || pixel.y >= ex.size.y)
+    return "--pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) + " is outside the " +
+           std::to_string(ex.size.x) + "x" + std::to_string(ex.size.y) + " frame";
+  if (std::string why; !pixelTraceSupported(why)) return why;
+  const std::string& file = out.file;
+  if (file.ends_with(kPartSuffix)) return "a part file is not traced yet";
+  const ShaderSearchPath::Lookup found = ShaderSearchPath(studentDirs).find(file);
+  if (found.file.empty()) return file + " is not in the student's folders";
+  const std::vector<std::string> functions = tracedFunctions(ex);
+  std::vector<fs::path> roots = studentDirs;
+  roots.push_back(builtinShaderDir());
+  if (auto e = drawSide(ex, c, functions, readWholeFile(found.file), roots, pixel, out.student); !e.empty())
+    return "your " + file + ": " + e;
+  if (auto e = drawSide(ex, c, functions, labText(ex, file), {builtinShaderDir()}, pixel, out.solution); !e.empty())
+    return "the solution's " + file + ": " + e;
+  out.agreement = pointAgreement(out.student.values, out.solution.values);
+  const bool ranHere = std::any_of(out.student.reached.begin(), out.student.reached.end(), [](int n) { return n > 0; });
+  if (!ranHere) {
+    out.note = out.student.fragmentsInFrame == 0
+                   ? "your function runs in no fragment of this frame: the lab calls it in another stage (per vertex), "
+                     "so no pixel holds its values; `shadelab grade` traces it on its probe"
+                   : "your function did not run at this pixel (the background, or a pass this pixel is not drawn by)";
+    return {};
+  }
+  // The alignment's rows: the block's pixels where both sides ran.
+  std::vector<std::pair<std::string, std::string>> inputs;
+  for (auto& p : out.solution.values.points)
+    if (p.kind == TracePoint::Kind::Param) inputs.push_back({p.name, "the argument `" + p.name + "`"});
+  out.departure = alignTraces(out.student.values, out.solution.values, inputs, file);
+  out.bothReturned = returnedAtPixel(out.student, out.returns) && returnedAtPixel(out.solution, out.solutionReturns);
+  for (size_t k = 0; k < out.student.values.points.size() && out.firstUnmatched < 0; ++k)
+    if (out.student.values.points[k].kind != TracePoint::Kind::Sub && out.agreement[k].reached &&
+        !out.agreement[k].matches)
+      out.firstUnmatched = int(k);
+  return {};
+}
+
+std::string formatInspection(const PixelInspection& in) {
+  const auto colour = [](const glm::vec4& c) {
+    return formatSignificant(c.r, 3) + " " + formatSignificant(c.g, 3) + " " + formatSignificant(c.b, 3);
+  };
+  std::string t = "pixel " + std::to_string(in.pixel.x) + ", " + std::to_string(in.pixel.y) + " of " +
+                  quoted(in.configuration) + " (" + in.exercise + ", " + std::to_string(in.frameSize.x) + "x" +
+                  std::to_string(in.frameSize.y) + "): your frame " + colour(in.student.colour) + ", the solution's " +
+                  colour(in.solution.colour) + "\n";
+  if (!in.note.empty()) return t + in.note + "\n";
+  if (in.student.fragments > 1)
+    t += std::to_string(in.student.fragments) + " fragments ran your function here; the nearest one's values\n";
+  const TracePoint* previous = nullptr;
+  for (size_t k = 0; k < in.student.values.points.size(); ++k) {
+    const TracePoint& p = in.student.values.points[k];
+    // A statement's parts only where they vary at the pixel (a loop's offsets, its taps): once,
+    // its variable says what they made; a literal says itself.
+    const bool part = p.kind == TracePoint::Kind::Sub;
+    const bool departs = in.departure.found && p.line == in.departure.line && p.name == in.departure.name;
+    if (part && !departs && (p.constant || in.student.reached[k] < 2)) continue;
+    if (!previous || previous->function != p.function) t += in.file + ", " + p.function + "():\n";
+    previous = &p;
+    // A return against the solution's at the pixel; any other value against every value the
+    // solution computes around it.
+    std::string verdict;
+    if (p.kind == TracePoint::Kind::Returned && in.bothReturned && in.student.reached[k] > 0)
+      verdict = in.returnsDiffer() ? "  the solution returns " + vectorText(in.solutionReturns) : "  as the solution's";
+    else if (in.student.reached[k] > 0 && !in.agreement[k].reached)
+      verdict = "  (too few pixels around to compare)";
+    else if (in.student.reached[k] > 0)
+      verdict = in.agreement[k].matches ? "  a value the solution computes" : "  none of the solution's values";
+    const TracePoint::Kind kind = p.kind;
+    const bool named = kind == TracePoint::Kind::Param || kind == TracePoint::Kind::Returned ||
+                       kind == TracePoint::Kind::OutParam || part;
+    std::string values = valuesText(in.student, k);
+    const size_t grid = values.find('\n');  // the verdict before a folded loop's grid
+    values.insert(grid == std::string::npos ? values.size() : grid, verdict);
+    t += std::string(departs ? "> " : "  ") + "line " + std::to_string(p.line) + (part ? "    " : "  ") + p.name +
+         (named ? " (" + kindText(kind) + ")" : "") + " = " + values + "\n";
+  }
+  if (in.departure.found) return t + in.departure.text + "\n";
+  if (!in.returnsDiffer())
+    return t + "no value of yours around this pixel leaves the solution's: look where the frames differ\n";
+  // The returns differ, yet no line stands out as where the values part: say what the marks show.
+  if (in.firstUnmatched >= 0) {
+    const TracePoint& p = in.student.values.points[size_t(in.firstUnmatched)];
+    return t +
+           "the trace cannot single out the line where your values part from the solution's; the first line whose "
+           "values around this pixel are none of the solution's is line " +
+           std::to_string(p.line) + " (`" + p.name + "`)\n";
+  }
+  return t +
+         "every value of yours around this pixel is one the solution computes, in some other place: the trace "
+         "cannot single out a line\n";
+}
+
+nlohmann::json toJson(const PixelInspection& in) {
+  const auto vec = [](const glm::vec4& v) {
+    nlohmann::json a = nlohmann::json::array();
+    for (int c = 0; c < std::clamp(int(v.w), 1, 3); ++c)
+      a.push_back(std::isfinite(v[c]) ? nlohmann::json(v[c]) : nullptr);
+    return a;
+  };
+  nlohmann::json lines = nlohmann::json::array();
+  for (size_t k = 0; k < in.student.values.points.size(); ++k) {
+    const TracePoint& p = in.student.values.points[k];
+    nlohmann::json values = nlohmann::json::array();
+    for (auto& v : in.student.iterations[k]) values.push_back(vec(v));
+    lines.push_back({{"line", p.line},
+                     {"function", p.function},
+                     {"name", p.name},
+                     {"kind", kindText(p.kind)},
+                     {"reached", in.student.reached[k]},
+                     {"values", values},
+                     {"compared", in.agreement[k].reached},
+                     {"solutions", in.agreement[k].matches}});
+  }
+  const nlohmann::json solutionResult = in.bothReturned ? vec(in.solutionReturns) : nlohmann::json();
+  return {{"exercise", in.exercise},
+          {"configuration", in.configuration},
+          {"file", in.file},
+          {"pixel", {in.pixel.x, in.pixel.y}},
+          {"colour",
+           {{"yours", vec({glm::vec3(in.student.colour), 3.0f})},
+            {"solution", vec({glm::vec3(in.solution.colour), 3.0f})}}},
+          {"fragments", in.student.fragments},
+          {"lines", lines},
+          {"solution_returns", solutionResult},
+          {"departure", toJson(in.departure)},
+          {"first_unmatched_line",
+           in.firstUnmatched >= 0 ? nlohmann::json(in.student.values.points[size_t(in.firstUnmatched)].line) : nullptr},
+          {"note", in.note}};
+}
+
+}  // namespace shadelab

@@ -1,0 +1,181 @@
+// The inspector's trace (grade/pixel_trace.h): the exercised function traced in the lab's own
+// draw at one pixel, the student's beside the solution's.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/grade/configuration_frames.h"
+#include "app/grade/pixel_trace.h"
+#include "app/util/read_file.h"
+#include "gl_test.h"
+
+using namespace shadelab;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> linesOf(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// The lines of `changed` (1-based, inclusive) that differ from `original`: the rest is their
+// common head and tail.
+std::pair<int, int> changedLines(const std::string& original, const std::string& changed) {
+  const std::vector<std::string> a = linesOf(original), b = linesOf(changed);
+  size_t head = 0, tail = 0;
+  while (head < a.size() && head < b.size() && a[head] == b[head]) ++head;
+  while (tail < a.size() - head && tail < b.size() - head && a[a.size() - 1 - tail] == b[b.size() - 1 - tail]) ++tail;
+  return {int(head) + 1, int(b.size() - tail)};
+}
+
+// The pixel where two frames differ most (the sum of the colour's differences).
+glm::ivec2 mostDifferent(const ImageF& a, const ImageF& b) {
+  glm::ivec2 best{0};
+  float most = -1.0f;
+  for (int y = 0; y < a.size.y; ++y)
+    for (int x = 0; x < a.size.x; ++x) {
+      float d = 0.0f;
+      for (int c = 0; c < 3; ++c) d += std::abs(a.at(x, y)[c] - b.at(x, y)[c]);
+      if (d > most) {
+        most = d;
+        best = {x, y};
+      }
+    }
+  return best;
+}
+
+ImageF frameOf(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& roots) {
+  std::string error;
+  const auto host = configuredHost(roots, ex, c, error);
+  EXPECT_EQ(error, "");
+  host->settle();
+  host->renderFrame(ex.size);
+  return host->readImage();
+}
+
+// Whether the departure is on a changed line or made, through the values it reads, of one set on
+// a changed line: a value the mistake makes may still be one the solution computes elsewhere (a
+// coordinate without its half-texel shift is the solution's before it shifts), and then the first
+// value that is no longer the solution's lies after it.
+bool departsFromTheChange(const PixelInspection& in, std::pair<int, int> changed) {
+  const std::vector<TracePoint>& points = in.student.values.points;
+  std::vector<int> open;
+  for (size_t k = 0; k < points.size(); ++k)
+    if (points[k].line == in.departure.line &&
+        (points[k].name == in.departure.name || points[k].statement == in.departure.name))
+      open.push_back(int(k));
+  std::vector<bool> seen(points.size(), false);
+  while (!open.empty()) {
+    const int k = open.back();
+    open.pop_back();
+    if (seen[size_t(k)]) continue;
+    seen[size_t(k)] = true;
+    if (points[size_t(k)].line >= changed.first && points[size_t(k)].line <= changed.second) return true;
+    for (int q : points[size_t(k)].from) open.push_back(q);
+  }
+  return false;
+}
+
+struct Case {
+  const char* exercise;
+  const char* mistake;
+};
+
+class PixelTrace : public ::testing::TestWithParam<Case> {};
+
+// A listed mistake, inspected at the pixel where its frame differs most from the solution's: the
+// line the inspector marks is never before the mistake and is made of what it changed; the
+// solution's own file, inspected at the same pixel, departs nowhere.
+TEST_P(PixelTrace, AListedMistakeDepartsOnALineItChanged) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise(GetParam().exercise, ex), "");
+  const auto m = std::find_if(ex.mistakes.begin(), ex.mistakes.end(),
+                              [](const Mistake& m) { return m.name == GetParam().mistake; });
+  ASSERT_NE(m, ex.mistakes.end()) << GetParam().mistake;
+  size_t config = 0;
+  while (config < ex.configurations.size() && ex.configurations[config].function >= 0) ++config;
+  ASSERT_LT(config, ex.configurations.size());
+  const Configuration& c = ex.configurations[config];
+  const fs::path dir = fs::temp_directory_path() / ("shadelab_pixel_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  ASSERT_EQ(writeMistakeFolder(ex, *m, dir), "");
+  const std::string file = ex.files.front();
+  const std::pair<int, int> changed = changedLines(labText(ex, file), readWholeFile(dir / file));
+  const glm::ivec2 pixel =
+      mostDifferent(frameOf(ex, c, {dir, builtinShaderDir()}), frameOf(ex, c, {builtinShaderDir()}));
+
+  PixelInspection mine;
+  ASSERT_EQ(inspectPixel(ex, config, {dir}, pixel, mine), "");
+  const std::string text = formatInspection(mine);
+  std::printf("%s", text.c_str());  // the table as a student reads it, in the test's log
+  EXPECT_TRUE(mine.note.empty()) << text;
+  EXPECT_TRUE(mine.returnsDiffer()) << text;
+  if (mine.departure.found) {
+    EXPECT_GE(mine.departure.line, changed.first) << text;
+    EXPECT_TRUE(departsFromTheChange(mine, changed))
+        << "lines " << changed.first << "-" << changed.second << " changed:\n"
+        << text;
+    EXPECT_NE(text.find("> line " + std::to_string(mine.departure.line)), std::string::npos)
+        << "the departure is marked in the table:\n"
+        << text;
+  } else {
+    // No line singled out: the first whose values are none of the solution's is the mistake's.
+    ASSERT_GE(mine.firstUnmatched, 0) << text;
+    const int line = mine.student.values.points[size_t(mine.firstUnmatched)].line;
+    EXPECT_GE(line, changed.first) << text;
+    EXPECT_LE(line, changed.second) << text;
+  }
+
+  fs::remove_all(dir);
+  fs::create_directories((dir / file).parent_path());
+  { std::ofstream(dir / file) << labText(ex, file); }
+  PixelInspection theirs;
+  ASSERT_EQ(inspectPixel(ex, config, {dir}, pixel, theirs), "");
+  EXPECT_FALSE(theirs.departure.found) << formatInspection(theirs);
+  EXPECT_EQ(toJson(theirs)["lines"].size(), theirs.student.values.points.size());
+  fs::remove_all(dir);
+}
+
+// The denoise lab applies its map per vertex: no pixel holds the function's values, and the
+// inspector says so rather than showing a table of nothing.
+TEST(PixelTraceStages, AFunctionOfAnotherStageIsNamedSo) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise("denoise/apply-map", ex), "");
+  const fs::path dir = fs::temp_directory_path() / ("shadelab_pixel_stage_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  ASSERT_EQ(writeMistakeFolder(ex, ex.mistakes.front(), dir), "");
+  PixelInspection in;
+  ASSERT_EQ(inspectPixel(ex, 0, {dir}, ex.size / 2, in), "");
+  EXPECT_NE(in.note.find("another stage"), std::string::npos) << formatInspection(in);
+  EXPECT_FALSE(in.departure.found);
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryLab, PixelTrace,
+                         ::testing::Values(Case{"shadows/pcf", "grid-not-centred"},
+                                           Case{"shading/blinn-phong", "half-vector-from-difference"},
+                                           Case{"filtering/bilinear", "no-half-texel-shift"},
+                                           Case{"surface/bump", "slope-sign"},
+                                           Case{"surface/normal-map", "not-decoded"},
+                                           Case{"shadows/shadow-lookup", "texture-origin-flipped"},
+                                           Case{"filtering/mip-level", "natural-log"},
+                                           Case{"surface/pom", "march-direction"}),
+                         [](const auto& info) {
+                           std::string name = std::string(info.param.exercise) + "_" + info.param.mistake;
+                           for (char& ch : name)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return name;
+                         });
+
+}  // namespace
