@@ -5,11 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 
 #include <nlohmann/json.hpp>
 
-#include "app/gl/gl.h"
-#include "app/gl/handle.h"
 #include "app/grade/configuration_frames.h"
 #include "app/grade/probe_trace.h"
 #include "app/shader/function_parts.h"
@@ -28,7 +27,7 @@ constexpr int kBlockSide = 2 * kBlockRadius + 1;
 constexpr int kSlots = 4 * kBlockSide * kBlockSide;  // fragments kept: four layers of the block
 constexpr int kCentres = 4;                          // fragments at the pixel whose iterations are kept
 constexpr int kIterations = PixelSide::kIterations;
-constexpr GLuint kBinding = 0;  // every storage block's default binding; no lab uses one
+constexpr unsigned kBinding = 0;  // every storage block's default binding; no lab uses one
 
 // The buffer's layout (std430): two counters and two spare words, then vec4s: each slot's
 // gl_FragCoord and, per point, {times reached} and the last value; then each centre's slot index
@@ -183,25 +182,14 @@ std::string drawSide(const Exercise& ex, const Configuration& c, const std::vect
     const auto host = configuredHost(searched, ex, c, configError);
     if (!configError.empty()) return configError;
     host->settle();
-    const gl::Buffer buffer = gl::Buffer::make();
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.get());
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(layout.bytes()), nullptr, GL_STREAM_READ);
-    const std::vector<float> zeros(layout.bytes() / sizeof(float), 0.0f);
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(layout.bytes()), zeros.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, buffer.get());
-    host->renderFrame(ex.size);
+    data.assign(layout.bytes() / sizeof(float), 0.0f);
+    if (auto e = drawIntoStorageBuffer(kBinding, data, [&] { host->renderFrame(ex.size); }); !e.empty()) return e;
     errors = buildErrors(*host);
     const ImageF frame = host->readImage();
     if (pixel.x < frame.size.x && pixel.y < frame.size.y) {
       const float* px = frame.at(pixel.x, pixel.y);
       out.colour = {px[0], px[1], px[2], px[3]};
     }
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    data.assign(layout.bytes() / sizeof(float), 0.0f);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.get());
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(layout.bytes()), data.data());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinding, 0);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return {};
   };
   InstrumentedSource built;
@@ -215,8 +203,11 @@ std::string drawSide(const Exercise& ex, const Configuration& c, const std::vect
 std::string vectorText(const glm::vec4& v) {
   const int n = std::clamp(int(v.w), 1, 3);
   std::string out;
-  for (int c = 0; c < n; ++c) out += (c ? " " : "") + formatSignificant(v[c], 4);
-  return n > 1 ? "(" + out + ")" : out;
+  for (int c = 0; c < n; ++c) {
+    if (c > 0) out += ' ';
+    out += formatSignificant(v[c], 4);
+  }
+  return n > 1 ? '(' + out + ')' : out;
 }
 
 // A point's values at the pixel: one value, or a loop's iterations folded ("25 times: 0 0 1 ...",
@@ -278,24 +269,6 @@ bool PixelInspection::returnsDiffer() const {
   for (int c = 0; c < std::clamp(int(returns.w), 1, 3); ++c)
     if (!(std::abs(returns[c] - solutionReturns[c]) <= 1e-5f + 3e-4f * std::abs(solutionReturns[c]))) return true;
   return false;
-}
-
-bool pixelTraceSupported(std::string& why) {
-  if (gl::esContext()) {
-    why = "WebGL 2 has no shader storage buffers, which the pixel trace writes into";
-    return false;
-  }
-  GLint count = 0;
-  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-  bool storage = false;
-  for (GLint i = 0; i < count && !storage; ++i)
-    storage = std::strcmp(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i))),
-                          "GL_ARB_shader_storage_buffer_object") == 0;
-  if (!storage || !glMemoryBarrier) {
-    why = "this driver has no shader storage buffers (GL 4.3 or GL_ARB_shader_storage_buffer_object)";
-    return false;
-  }
-  return true;
 }
 
 std::string inspectPixel(const Exercise& ex, size_t configuration, const std::vector<fs::path>& studentDirs,

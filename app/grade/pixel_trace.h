@@ -11,6 +11,7 @@
 // another stage (a displacement in the tessellation stage) reaches no pixel: the result says so.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,10 @@ namespace shadelab {
 
 // Whether the current context can trace a pixel; `why` receives why not.
 bool pixelTraceSupported(std::string& why);
+// `data` (zeros, its size the buffer's) put in a shader storage buffer bound at `binding`, `draw`
+// run, and what the shaders wrote read back into it. "" or why not. (pixel_trace_desktop.cpp; the
+// page has none: pixel_trace_web.cpp.)
+std::string drawIntoStorageBuffer(unsigned binding, std::vector<float>& data, const std::function<void()>& draw);
 
 // One side at the pixel.
 struct PixelSide {

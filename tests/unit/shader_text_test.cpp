@@ -30,7 +30,10 @@ TEST_F(ShaderText, VersionFirstThenDefinesThenLineMappedSource) {
   write("lab/a.frag", "// header comment\n#version 410 core\nvoid main() {}\n");
   auto out = preprocessShader(ShaderSearchPath({root}), "lab/a.frag", {{"MODE_FLAT", "1"}});
   ASSERT_TRUE(out.ok()) << out.error;
-  EXPECT_EQ(out.text.rfind("#version 410 core\n#define MODE_FLAT 1\n#line 1 0\n", 0), 0u) << out.text;
+  // A fragment stage says so (SHADELAB_FRAGMENT_STAGE), for the files it shares with other stages.
+  EXPECT_EQ(out.text.rfind("#version 410 core\n#define MODE_FLAT 1\n#define SHADELAB_FRAGMENT_STAGE 1\n#line 1 0\n", 0),
+            0u)
+      << out.text;
   // Line 3 of the file ("void main") must still be line 3 after #line 1 0.
   const auto body = out.text.substr(out.text.find("#line 1 0\n") + 10);
   EXPECT_EQ(body, "// header comment\n\nvoid main() {}\n");
