@@ -40,6 +40,7 @@ struct AppState {
   PixelProbe probe;  // the viewport's readout under the cursor
   Responsiveness responsiveness;
   bool screenshotRequested = false;
+  bool inspectKey = false;  // I pressed since the viewport last looked
   // The layout: side panels the user widens or narrows by their inner edge, or presentation mode
   // (F11) with the viewport filling the window for a projector; everything scaled by uiScale.
   float leftW = 380, rightW = 380;

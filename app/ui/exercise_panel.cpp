@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <tuple>
 
+#include "app/grade/pixel_trace.h"
 #include "app/host/configure.h"
 #include "app/host/lab_host.h"
 #include "app/ui/platform.h"
@@ -25,6 +27,33 @@ std::vector<fs::path> studentFolders(LabHost& host) {
   for (auto& root : host.shaders().searchPath().roots())
     if (root != builtinShaderDir()) dirs.push_back(root);
   return dirs;
+}
+
+// The inspector at the requested pixel of the configuration on screen. The grader's frame is drawn
+// at the rubric's size: the same point of the view lies at the same offset from the centre in
+// units of the frame's height (the camera's field of view is vertical).
+StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
+  if (panel.selected.empty() || panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
+    return StatusLine::failed("Inspect: show one of the exercise's configurations first");
+  Exercise ex;
+  if (auto e = loadExercise(panel.selected, ex); !e.empty()) return StatusLine::failed("Inspect: " + e);
+  size_t index = 0;
+  while (index < ex.configurations.size() && ex.configurations[index].name != panel.configurations[size_t(panel.shown)])
+    ++index;
+  const glm::vec2 view(panel.inspectViewport), frame(ex.size);
+  const glm::vec2 at = frame * 0.5f + (glm::vec2(panel.inspectPixel) + 0.5f - view * 0.5f) * (frame.y / view.y);
+  const glm::ivec2 pixel(glm::floor(at));
+  if (pixel.x < 0 || pixel.y < 0 || pixel.x >= ex.size.x || pixel.y >= ex.size.y)
+    return StatusLine::failed("Inspect: that point of the view is outside the grader's frame (" +
+                              std::to_string(ex.size.x) + "x" + std::to_string(ex.size.y) + ")");
+  PixelInspection in;
+  if (auto e = inspectPixel(ex, index, studentFolders(host), pixel, in); !e.empty())
+    return StatusLine::failed("Inspect: " + e);
+  panel.inspection = formatInspection(in);
+  std::printf("%s", panel.inspection.c_str());  // on the terminal (the page's console) too, as Check's lines
+  std::fflush(stdout);
+  return StatusLine::done("inspected pixel " + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) +
+                          " of the grader's frame");
 }
 
 // The starter's files into the student's folder, never over a file already there (their work);
@@ -334,6 +363,19 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
     ImGui::EndChild();
   }
 
+  if (!panel.inspection.empty() &&
+      ImGui::CollapsingHeader("At the pixel (I over the view)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // The line where the values part, marked "> " in the table, stands out.
+    std::istringstream lines(panel.inspection);
+    ImGui::PushTextWrapPos(0);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind("> ", 0) == 0)
+        ImGui::TextColored({1.0f, 0.6f, 0.3f, 1.0f}, "%s", line.c_str());
+      else
+        ImGui::TextUnformatted(line.c_str());
+    ImGui::PopTextWrapPos();
+  }
+
   const ExerciseCheck& check = panel.check;
   if (check.id() != panel.selected) return;
   if (check.running()) {
@@ -387,7 +429,17 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   ImGui::PopTextWrapPos();
 }
 
+void requestInspection(ExercisePanel& panel, glm::ivec2 pixel, glm::ivec2 viewport) {
+  panel.inspectRequested = true;
+  panel.inspectPixel = pixel;
+  panel.inspectViewport = glm::max(viewport, glm::ivec2(1));
+}
+
 bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) {
+  if (panel.inspectRequested) {
+    panel.inspectRequested = false;
+    status = inspectShownPixel(panel, host);
+  }
   if (panel.checkRequested) {
     panel.checkRequested = false;
     if (panel.selected.empty()) {

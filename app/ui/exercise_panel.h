@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "app/gl/texture.h"
 #include "app/grade/exercise_check.h"
 #include "app/grade/progress.h"
@@ -36,6 +38,12 @@ struct ExercisePanel {
   std::vector<std::array<gl::Texture2D, 3>> pictures;
   std::vector<float> wipes;
   int picturesOf = -1;  // the check's generation they were made from
+  // The inspector (grade/pixel_trace.h): the exercised function traced at a pixel of the
+  // configuration on screen, asked for with I over the viewport (requestInspection) and traced
+  // between frames, in the grader's frame at the same point of the view.
+  bool inspectRequested = false;
+  glm::ivec2 inspectPixel{0}, inspectViewport{1};  // the viewport's pixel and the viewport's size then
+  std::string inspection;                          // the table, as `shadelab inspect` prints it
   // The student's progress (grade/progress.h), read from their folder once it is known.
   Progress progress;
   std::filesystem::path progressFolder;
@@ -57,7 +65,10 @@ StatusLine openCourseFolder(ExercisePanel& panel, const std::filesystem::path& f
 // The section's contents; `status` receives what happened (the starter copied, why not).
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, StatusLine& status);
 
-// Between the window's frames: starts a requested Check, or draws the next configuration of a
+// Asks for the inspector at `pixel` of a viewport of `viewport` pixels (traced between frames).
+void requestInspection(ExercisePanel& panel, glm::ivec2 pixel, glm::ivec2 viewport);
+
+// Between the window's frames: traces a requested pixel; starts a requested Check, or draws the next configuration of a
 // running one. Returns whether a Check is running (the window keeps drawing while it does).
 bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status);
 

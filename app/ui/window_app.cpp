@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include "app/cli/session.h"
 #include "app/gl/pixel_probe.h"
@@ -46,7 +47,7 @@ void onDrop(GLFWwindow* w, int count, const char** paths) {
   for (int i = 0; i < count; ++i) app->dropped.emplace_back(paths[i]);
 }
 
-// F12 (screenshot), F11 (presentation mode) and Esc (leave it) straight from GLFW: a press and
+// F12 (screenshot), F11 (presentation mode), Esc (leave it) and I (inspect) straight from GLFW: a press and
 // release that land in one poll (a busy frame) would slip past ImGui's per-frame key state.
 // Installed before ImGui's backend, which chains to it.
 void onKey(GLFWwindow* w, int key, int, int action, int) {
@@ -54,6 +55,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
   auto* app = static_cast<AppState*>(glfwGetWindowUserPointer(w));
   if (!app || action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F12) app->screenshotRequested = true;
+  if (key == GLFW_KEY_I) app->inspectKey = true;  // used (or dropped) by the viewport this frame
   if (key == GLFW_KEY_F11) app->presenting = !app->presenting;
   if (key == GLFW_KEY_ESCAPE) app->presenting = false;
 }
@@ -145,6 +147,11 @@ void viewportControls(AppState& app) {
       (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
     cam.pan(io.MouseDelta.x / float(app.viewport.y), io.MouseDelta.y / float(app.viewport.y));
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) cam.zoom(std::pow(0.9f, io.MouseWheel));
+  // I over the viewport: the exercised function traced at that pixel (the Exercises section shows it).
+  if (std::exchange(app.inspectKey, false) && ImGui::IsItemHovered() && !io.WantTextInput) {
+    const ImVec2 origin = ImGui::GetItemRectMin();
+    requestInspection(app.exercises, {int(io.MousePos.x - origin.x), int(io.MousePos.y - origin.y)}, app.viewport);
+  }
   // Pixel readout: the float value under the cursor (depth maps, visibility, NaN hunting).
   // Read back without waiting for the frame (PixelProbe): the value shown is a frame or two old.
   if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
@@ -322,7 +329,7 @@ bool WindowSession::quiet() {
   for (auto& mode : modes)
     if (mode->keepsDrawing(app)) return false;
   if (windowEvents() != seenEvents || !app.dropped.empty() || host.jobs().busy() || host.lab().animating() ||
-      app.exercises.check.running() || app.exercises.checkRequested)
+      app.exercises.check.running() || app.exercises.checkRequested || app.exercises.inspectRequested)
     return false;
   const auto still = std::max(lastActivity, app.costs.since);  // the settings, camera and viewport last changed
   return framesSinceActivity >= kSettleFrames &&

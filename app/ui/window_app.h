@@ -18,6 +18,7 @@ struct WindowOptions {
   bool present = false;              // --present: start in presentation mode (F11)
   glm::ivec2 size{1280, 800};        // --window-size WxH: the window's size at start
   bool check = false;                // --check: press Check for --exercise once the first frames are drawn
+  glm::ivec2 inspect{-1};            // --inspect X,Y: press I over that viewport pixel once the first frames are drawn
   std::string editFolder;            // where the editor saves when it is not a searched folder (the page's "builtin")
   std::string message;               // shown in the Messages panel from the start (the page: what its link got wrong)
   LinkCourse linkCourse;             // the page: the course zip its link opened (Copy link carries it on)

@@ -35,6 +35,21 @@ class CheckOnStart final : public WindowMode {
   bool done_ = false;
 };
 
+// --inspect X,Y: presses I over that pixel of the viewport once the first frames are drawn.
+class InspectOnStart final : public WindowMode {
+ public:
+  explicit InspectOnStart(glm::ivec2 pixel) : pixel_(pixel) {}
+  void beforeLabFrame(FrameEvent& e) override {
+    if (e.frame == 2) requestInspection(e.app.exercises, pixel_, e.app.viewport);
+    done_ = e.frame >= 2;
+  }
+  bool keepsDrawing(const AppState&) const override { return !done_; }
+
+ private:
+  glm::ivec2 pixel_;
+  bool done_ = false;
+};
+
 // --cycle-labs: every lab in turn, one every three frames.
 class CycleLabs final : public WindowMode {
  public:
@@ -106,6 +121,7 @@ std::vector<std::unique_ptr<WindowMode>> windowModes(const WindowOptions& wopt, 
   std::vector<std::unique_ptr<WindowMode>> modes;
   modes.push_back(std::make_unique<ScreenshotKey>());
   if (wopt.check) modes.push_back(std::make_unique<CheckOnStart>());
+  if (wopt.inspect.x >= 0) modes.push_back(std::make_unique<InspectOnStart>(wopt.inspect));
   if (wopt.cycleLabs) modes.push_back(std::make_unique<CycleLabs>(std::move(labs)));
   if (soak) modes.push_back(std::make_unique<Soak>(*soak, wopt.soakMinutes));
   if (wopt.exitAfterFrames > 0) modes.push_back(std::make_unique<ExitAfter>(wopt.exitAfterFrames, wopt.screenshot));

@@ -52,6 +52,17 @@ if grep -qE "PRETTY_NAME|VERSION_ID" "$out/escape.log"; then echo "the window pr
 "$check" "$out/window_escape.png" --min-stddev 0.05 --min-colors 50
 echo "include escape in the window passed"
 
+# The inspector in the window: I (--inspect) over the PCF exercise's penumbra traces the student's
+# loop at that point of the view; the section shows the table and the marked line, and the view
+# is drawn on.
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --shaders "$(dirname "$0")/../data/inspect_pcf" --exercise shadows/pcf \
+  --inspect 260,487 --exit-after 40 --screenshot "$out/window_inspect.png" >"$out/inspect.log" 2>&1 ||
+  { cat "$out/inspect.log"; echo "the window with the inspector failed"; exit 1; }
+grep -q "^> line 11  lit = 25 times" "$out/inspect.log" && grep -q "(returned) = .*the solution returns" "$out/inspect.log" ||
+  { cat "$out/inspect.log"; echo "the inspector did not mark the loop's line"; exit 1; }
+"$check" "$out/window_inspect.png" --min-stddev 0.05 --min-colors 200
+echo "inspector in the window passed"
+
 # A short soak in the real window: random labs, parameters, broken and fixed shaders, meshes and
 # Measure for 20 s; no bad frame, no GL error, GL objects back to their count on entering a lab.
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --soak 0.33 --soak-seed 5 >"$out/soak.log" 2>&1 ||
