@@ -34,7 +34,9 @@ commands:
   inspect         the exercised function at one pixel of a configuration's frame, traced in the lab's own
                   draw:  --exercise LAB/NAME --shaders DIR --pixel X,Y [--config N] [--json FILE]
                   each line's values there (arguments, variables, a loop's every iteration), yours with
-                  whether the solution computes them, and the line where yours leave the solution's
+                  whether the solution computes them, and the line where yours leave the solution's;
+                  --variable NAME [--line N] --out F.png instead: that variable (or "return") over the
+                  whole frame, yours, the solution's and their difference side by side
   exercise new LAB/NAME --function FILE:NAME --exercises DIR
                   a new exercise in the course folder DIR on one function of the lab's FILE: the
                   starter (a part file holding the function, its body cut to a TODO region), a
@@ -183,7 +185,13 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       o.exercise = v;
     else if (arg == "--json")
       o.json = v;
-    else if (arg == "--pixel") {
+    else if (arg == "--variable")
+      o.variable = v;
+    else if (arg == "--line") {
+      long n = 0;
+      if (!parseWholeNumber(v, 1, 100000, n)) return "--line: '" + v + "' is not a line number (1 or more)";
+      o.line = int(n);
+    } else if (arg == "--pixel") {
       int x = 0, y = 0;
       char comma = 0, extra = 0;
       if (std::sscanf(v.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',' || x < 0 || y < 0)
@@ -270,7 +278,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
              "' (valid: --lab, --scene, --height-map, --set, --do, --vary, --preset, --size, --camera, --time, "
              "--frames, --shaders, "
              "--backend, --dialect, --out, --measure, --exercise, --exercises, --function, --format, --all, "
-             "--watchdog, --class, --pixel, --config, --json, "
+             "--watchdog, --class, --pixel, --config, --json, --variable, --line, "
              "--jobs, "
              "--shard, "
              "--cache, --no-cache, --count, "

@@ -34,6 +34,8 @@ struct Options {
   bool pixelGiven = false;
   int config = 0;                         // inspect: --config N, the rubric's configuration
   std::string json;                       // inspect: --json FILE
+  std::string variable;                   // inspect: --variable NAME, drawn over the whole frame (with --out F.png)
+  int line = 0;                           // inspect: --line N, the variable's line (0: any)
   std::vector<std::string> exerciseDirs;  // --exercises DIR (repeatable): course folders, before exercises/
   std::vector<std::string>
       unlisted;  // exercise check: --unlisted DIR (repeatable), mistakes no rubric lists (DIR/LAB/NAME.json)

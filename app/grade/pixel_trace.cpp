@@ -163,40 +163,133 @@ void readSide(const std::vector<float>& data, const Layout& layout, glm::ivec2 f
   }
 }
 
-// One side: `source` instrumented in the place of the exercise's first file, drawn with `roots`
-// behind it.
-std::string drawSide(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
-                     const std::string& source, const std::vector<fs::path>& roots, glm::ivec2 pixel, PixelSide& out) {
+// Where the taps write: the GLSL before the instrumented text, and the buffer's contents before
+// the draw (its size the buffer's), both made for the instrumentation that is being built.
+struct TapSink {
+  std::function<std::string(const InstrumentedSource&)> prelude;
+  std::function<std::vector<float>(const InstrumentedSource&)> initial;
+};
+
+// `source` instrumented in the place of the exercise's first file and drawn in configuration `c`
+// with `roots` behind it; `data` receives what the taps wrote, `frame` the frame.
+std::string drawTraced(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
+                       const std::string& source, const std::vector<fs::path>& roots, const TapSink& sink,
+                       InstrumentedSource& built, std::vector<float>& data, ImageF& frame) {
   const std::string& file = ex.files.front();
-  const glm::ivec2 fragment{pixel.x, ex.size.y - 1 - pixel.y};
   Scratch scratch;
   std::vector<fs::path> searched{scratch.dir};
   searched.insert(searched.end(), roots.begin(), roots.end());
-  std::vector<float> data;
-  Layout layout{0};
   const auto draw = [&](const InstrumentedSource& inst, std::vector<std::string>& errors) -> std::string {
-    layout.points = int(inst.points.size());
-    if (auto e = writeTextFile((scratch.dir / file).string(), pixelPrelude(layout, fragment) + inst.text); !e.empty())
-      return e;
+    if (auto e = writeTextFile((scratch.dir / file).string(), sink.prelude(inst) + inst.text); !e.empty()) return e;
     std::string configError;
     const auto host = configuredHost(searched, ex, c, configError);
     if (!configError.empty()) return configError;
     host->settle();
-    data.assign(layout.bytes() / sizeof(float), 0.0f);
+    data = sink.initial(inst);
     if (auto e = drawIntoStorageBuffer(kBinding, data, [&] { host->renderFrame(ex.size); }); !e.empty()) return e;
     errors = buildErrors(*host);
-    const ImageF frame = host->readImage();
-    if (pixel.x < frame.size.x && pixel.y < frame.size.y) {
-      const float* px = frame.at(pixel.x, pixel.y);
-      out.colour = {px[0], px[1], px[2], px[3]};
-    }
+    frame = host->readImage();
     return {};
   };
+  return instrumentAndDraw(file, functions, source, draw, built, true);
+}
+
+// One side at the pixel.
+std::string drawSide(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
+                     const std::string& source, const std::vector<fs::path>& roots, glm::ivec2 pixel, PixelSide& out) {
+  const glm::ivec2 fragment{pixel.x, ex.size.y - 1 - pixel.y};
+  const auto layoutOf = [](const InstrumentedSource& inst) { return Layout{int(inst.points.size())}; };
+  const TapSink sink{
+      [&](const InstrumentedSource& inst) { return pixelPrelude(layoutOf(inst), fragment); },
+      [&](const InstrumentedSource& inst) { return std::vector<float>(layoutOf(inst).bytes() / sizeof(float), 0.0f); }};
   InstrumentedSource built;
-  if (auto e = instrumentAndDraw(file, functions, source, draw, built, true); !e.empty()) return e;
+  std::vector<float> data;
+  ImageF frame;
+  if (auto e = drawTraced(ex, c, functions, source, roots, sink, built, data, frame); !e.empty()) return e;
+  if (pixel.x < frame.size.x && pixel.y < frame.size.y) {
+    const float* px = frame.at(pixel.x, pixel.y);
+    out.colour = {px[0], px[1], px[2], px[3]};
+  }
   out.values.points = built.points;
   out.values.literals = built.literals;
-  readSide(data, layout, fragment, out);
+  readSide(data, layoutOf(built), fragment, out);
+  return {};
+}
+
+// The points a picture follows: `name`'s (on `line` if > 0), or every return for "return".
+std::vector<int> pointsNamed(const std::vector<TracePoint>& points, const std::string& name, int line) {
+  std::vector<int> out;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const TracePoint& p = points[k];
+    const bool matches =
+        name == "return" ? p.kind == TracePoint::Kind::Returned : p.kind != TracePoint::Kind::Sub && p.name == name;
+    if (matches && (line <= 0 || p.line == line)) out.push_back(int(k));
+  }
+  return out;
+}
+
+// The picture's depth words: one a pixel, rounded up to whole vec4s (std430 starts the pixels'
+// vec4 array on 16 bytes).
+size_t depthWords(glm::ivec2 size) { return (size_t(size.x) * size_t(size.y) + 3) / 4 * 4; }
+
+// The taps of `wanted` writing each fragment's last value into its pixel of a `size` frame, the
+// nearest fragment's kept (an atomic minimum of the depth's bits).
+std::string picturePrelude(glm::ivec2 size, const std::vector<int>& wanted) {
+  std::string test = "false";
+  for (int k : wanted) test += " || k == " + std::to_string(k);
+  const std::string w = std::to_string(size.x), h = std::to_string(size.y);
+  return "#extension GL_ARB_shader_storage_buffer_object : require\n"
+         "// The pixel trace's taps for a picture (grade/pixel_trace.h): the chosen value in every pixel.\n"
+         "#ifdef SHADELAB_FRAGMENT_STAGE\n"
+         "layout(std430) buffer shadelab_picture {\n"
+         "  uint shadelab_depth[" +
+         std::to_string(depthWords(size)) +
+         "];\n"
+         "  vec4 shadelab_pixels[];\n"
+         "};\n"
+         "void shadelab_put(int k, vec4 v) {\n"
+         "  if (!(" +
+         test +
+         ")) return;\n"
+         "  ivec2 p = ivec2(gl_FragCoord.xy);\n"
+         "  if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(" +
+         w + ", " + h +
+         ")))) return;\n"
+         "  int i = p.y * " +
+         w +
+         " + p.x;\n"
+         "  uint z = floatBitsToUint(gl_FragCoord.z);\n"
+         "  if (z <= atomicMin(shadelab_depth[i], z)) shadelab_pixels[i] = v;\n"
+         "}\n"
+         "#else\n"
+         "void shadelab_put(int k, vec4 v) {}\n"
+         "#endif\n" +
+         tapOverloads("shadelab_put");
+}
+
+// One side's picture of the points `choose` picks; "" or why not (no such point).
+std::string drawPicture(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
+                        const std::string& source, const std::vector<fs::path>& roots,
+                        const std::function<std::vector<int>(const std::vector<TracePoint>&)>& choose, ImageF& out,
+                        std::vector<TracePoint>& points) {
+  const size_t pixels = size_t(ex.size.x) * size_t(ex.size.y);
+  const size_t depths = depthWords(ex.size);
+  const TapSink sink{[&](const InstrumentedSource& inst) { return picturePrelude(ex.size, choose(inst.points)); },
+                     [&](const InstrumentedSource&) {
+                       std::vector<float> data(depths + pixels * 4, 0.0f);
+                       const uint32_t far = 0xffffffffu;  // each depth's bits: nothing drawn yet
+                       for (size_t i = 0; i < pixels; ++i) std::memcpy(&data[i], &far, sizeof far);
+                       return data;
+                     }};
+  InstrumentedSource built;
+  std::vector<float> data;
+  ImageF frame;
+  if (auto e = drawTraced(ex, c, functions, source, roots, sink, built, data, frame); !e.empty()) return e;
+  points = built.points;
+  out = ImageF{ex.size, std::vector<float>(pixels * 4, 0.0f)};
+  for (int y = 0; y < ex.size.y; ++y)  // the buffer's rows from the bottom, the image's from the top
+    std::memcpy(out.at(0, ex.size.y - 1 - y), &data[depths + size_t(y) * size_t(ex.size.x) * 4],
+                size_t(ex.size.x) * 4 * sizeof(float));
   return {};
 }
 
@@ -322,17 +415,161 @@ std::string inspectPixel(const Exercise& ex, size_t configuration, const std::ve
   return {};
 }
 
-std::string formatInspection(const PixelInspection& in) {
+std::string drawVariable(const Exercise& ex, size_t configuration, const std::vector<fs::path>& studentDirs,
+                         const std::string& name, int line, VariablePicture& out) {
+  if (configuration >= ex.configurations.size())
+    return "--config " + std::to_string(configuration) + ": the exercise has " +
+           std::to_string(ex.configurations.size()) + " configurations";
+  const Configuration& c = ex.configurations[configuration];
+  if (c.function >= 0) return "configuration '" + c.name + "' is the function by itself: it draws no frame";
+  if (std::string why; !pixelTraceSupported(why)) return why;
+  const std::string& file = ex.files.front();
+  const ShaderSearchPath::Lookup found = ShaderSearchPath(studentDirs).find(file);
+  if (found.file.empty()) return file + " is not in the student's folders";
+  out = {};
+  out.name = name;
+  const std::vector<std::string> functions = tracedFunctions(ex);
+  std::vector<fs::path> roots = studentDirs;
+  roots.push_back(builtinShaderDir());
+  std::vector<TracePoint> points;
+  const auto mine = [&](const std::vector<TracePoint>& p) { return pointsNamed(p, name, line); };
+  if (auto e = drawPicture(ex, c, functions, readWholeFile(found.file), roots, mine, out.yours, points); !e.empty())
+    return "your " + file + ": " + e;
+  if (mine(points).empty()) {
+    std::string names;
+    for (auto& p : points)
+      if (p.kind != TracePoint::Kind::Sub && p.kind != TracePoint::Kind::Returned &&
+          names.find("`" + p.name + "`") == std::string::npos)
+        names += (names.empty() ? "" : ", ") + ("`" + p.name + "`");
+    return "no value named '" + name + "'" + (line > 0 ? " on line " + std::to_string(line) : "") + " in your " + file +
+           " (valid: " + names + ", return)";
+  }
+  // The solution's value of the same name, anywhere in its function: its lines are its own.
+  const auto theirs = [&](const std::vector<TracePoint>& p) { return pointsNamed(p, name, 0); };
+  if (auto e = drawPicture(ex, c, functions, labText(ex, file), {builtinShaderDir()}, theirs, out.solutions, points);
+      !e.empty())
+    return "the solution's " + file + ": " + e;
+  out.solutionHas = !theirs(points).empty();
+  return {};
+}
+
+namespace {
+
+// What a picture's values span, over both sides: their component count, whether they take both
+// signs, and the largest magnitude.
+struct PictureRange {
+  int components = 1;
+  bool signedValues = false;
+  float largest = 0.0f;
+};
+
+PictureRange rangeOf(const std::vector<const ImageF*>& images) {
+  PictureRange r;
+  for (const ImageF* image : images)
+    for (size_t i = 0; i + 3 < image->rgba.size(); i += 4) {
+      const int n = int(image->rgba[i + 3]);
+      if (n <= 0) continue;
+      r.components = std::max(r.components, std::min(n, 3));
+      for (int c = 0; c < std::min(n, 3); ++c) {
+        const float v = image->rgba[i + size_t(c)];
+        if (!std::isfinite(v)) continue;
+        r.signedValues |= v < 0.0f;
+        r.largest = std::max(r.largest, std::abs(v));
+      }
+    }
+  return r;
+}
+
+constexpr glm::vec3 kNotReached{0.12f, 0.12f, 0.14f};
+constexpr glm::vec3 kNonFinite{1.0f, 0.0f, 1.0f};
+
+// One value through the picture's map: a signed scalar blue (negative) to white to red, any other
+// scalar black to white, a vector's components as red, green and blue (around mid-grey if signed).
+glm::vec3 mapped(const float* v, const PictureRange& r) {
+  const int n = int(v[3]);
+  if (n <= 0) return kNotReached;
+  for (int c = 0; c < std::min(n, 3); ++c)
+    if (!std::isfinite(v[c])) return kNonFinite;
+  const float scale = r.largest > 0.0f ? 1.0f / r.largest : 1.0f;
+  if (r.components == 1) {
+    const float t = v[0] * scale;
+    if (!r.signedValues) return glm::vec3(t);
+    return t >= 0.0f ? glm::mix(glm::vec3(1.0f), glm::vec3(0.85f, 0.1f, 0.1f), t)
+                     : glm::mix(glm::vec3(1.0f), glm::vec3(0.1f, 0.25f, 0.85f), -t);
+  }
+  glm::vec3 out(0.0f);
+  for (int c = 0; c < std::min(n, 3); ++c) out[c] = r.signedValues ? 0.5f + 0.5f * v[c] * scale : v[c] * scale;
+  return out;
+}
+
+}  // namespace
+
+ImageF variableImage(const VariablePicture& p) {
+  const glm::ivec2 size = p.yours.size;
+  constexpr int kGap = 4;
+  const int panels = p.solutionHas ? 3 : 1;
+  ImageF out{{size.x * panels + kGap * (panels - 1), size.y}, {}};
+  out.rgba.assign(size_t(out.size.x) * size_t(out.size.y) * 4, 1.0f);
+  const PictureRange range = p.solutionHas ? rangeOf({&p.yours, &p.solutions}) : rangeOf({&p.yours});
+  // The difference: the largest component's, black (none) to white (the largest anywhere).
+  float largestDifference = 0.0f;
+  std::vector<float> difference(size_t(size.x) * size_t(size.y), -1.0f);
+  for (int y = 0; p.solutionHas && y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const float *a = p.yours.at(x, y), *b = p.solutions.at(x, y);
+      if (a[3] <= 0.0f || b[3] <= 0.0f) continue;
+      float d = 0.0f;
+      for (int c = 0; c < std::clamp(int(a[3]), 1, 3); ++c) d = std::max(d, std::abs(a[c] - b[c]));
+      if (!std::isfinite(d)) d = 0.0f;
+      difference[size_t(y) * size_t(size.x) + size_t(x)] = d;
+      largestDifference = std::max(largestDifference, d);
+    }
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const auto put = [&](int panel, glm::vec3 colour) {
+        float* o = out.at(panel * (size.x + kGap) + x, y);
+        o[0] = colour.r;
+        o[1] = colour.g;
+        o[2] = colour.b;
+      };
+      put(0, mapped(p.yours.at(x, y), range));
+      if (!p.solutionHas) continue;
+      put(1, mapped(p.solutions.at(x, y), range));
+      const float d = difference[size_t(y) * size_t(size.x) + size_t(x)];
+      put(2, d < 0.0f ? kNotReached : glm::vec3(largestDifference > 0.0f ? d / largestDifference : 0.0f));
+    }
+  return out;
+}
+
+std::string describeVariableImage(const VariablePicture& p) {
+  const PictureRange r = p.solutionHas ? rangeOf({&p.yours, &p.solutions}) : rangeOf({&p.yours});
+  const std::string largest = formatSignificant(r.largest, 3);
+  std::string map = r.components > 1
+                        ? (r.signedValues ? "x, y, z as red, green, blue, mid-grey at 0, full at +-" + largest
+                                          : "x, y, z as red, green, blue, full at " + largest)
+                        : (r.signedValues ? "blue at -" + largest + ", white at 0, red at " + largest
+                                          : "black at 0, white at " + largest);
+  return "`" + p.name + "` over the frame, " +
+         (p.solutionHas ? "yours, the solution's and their difference (white: the largest)"
+                        : "yours (the solution has no value of that name)") +
+         ": " + map + "; dark grey where it was not computed, magenta where it is not finite";
+}
+
+std::vector<InspectionRow> inspectionRows(const PixelInspection& in) {
+  std::vector<InspectionRow> rows;
+  const auto say = [&](std::string text) { rows.push_back({std::move(text), -1, false}); };
   const auto colour = [](const glm::vec4& c) {
     return formatSignificant(c.r, 3) + " " + formatSignificant(c.g, 3) + " " + formatSignificant(c.b, 3);
   };
-  std::string t = "pixel " + std::to_string(in.pixel.x) + ", " + std::to_string(in.pixel.y) + " of " +
-                  quoted(in.configuration) + " (" + in.exercise + ", " + std::to_string(in.frameSize.x) + "x" +
-                  std::to_string(in.frameSize.y) + "): your frame " + colour(in.student.colour) + ", the solution's " +
-                  colour(in.solution.colour) + "\n";
-  if (!in.note.empty()) return t + in.note + "\n";
+  say("pixel " + std::to_string(in.pixel.x) + ", " + std::to_string(in.pixel.y) + " of " + quoted(in.configuration) +
+      " (" + in.exercise + ", " + std::to_string(in.frameSize.x) + "x" + std::to_string(in.frameSize.y) +
+      "): your frame " + colour(in.student.colour) + ", the solution's " + colour(in.solution.colour));
+  if (!in.note.empty()) {
+    say(in.note);
+    return rows;
+  }
   if (in.student.fragments > 1)
-    t += std::to_string(in.student.fragments) + " fragments ran your function here; the nearest one's values\n";
+    say(std::to_string(in.student.fragments) + " fragments ran your function here; the nearest one's values");
   const TracePoint* previous = nullptr;
   for (size_t k = 0; k < in.student.values.points.size(); ++k) {
     const TracePoint& p = in.student.values.points[k];
@@ -341,7 +578,7 @@ std::string formatInspection(const PixelInspection& in) {
     const bool part = p.kind == TracePoint::Kind::Sub;
     const bool departs = in.departure.found && p.line == in.departure.line && p.name == in.departure.name;
     if (part && !departs && (p.constant || in.student.reached[k] < 2)) continue;
-    if (!previous || previous->function != p.function) t += in.file + ", " + p.function + "():\n";
+    if (!previous || previous->function != p.function) say(in.file + ", " + p.function + "():");
     previous = &p;
     // A return against the solution's at the pixel; any other value against every value the
     // solution computes around it.
@@ -358,23 +595,31 @@ std::string formatInspection(const PixelInspection& in) {
     std::string values = valuesText(in.student, k);
     const size_t grid = values.find('\n');  // the verdict before a folded loop's grid
     values.insert(grid == std::string::npos ? values.size() : grid, verdict);
-    t += std::string(departs ? "> " : "  ") + "line " + std::to_string(p.line) + (part ? "    " : "  ") + p.name +
-         (named ? " (" + kindText(kind) + ")" : "") + " = " + values + "\n";
+    rows.push_back({std::string(departs ? "> " : "  ") + "line " + std::to_string(p.line) + (part ? "    " : "  ") +
+                        p.name + (named ? " (" + kindText(kind) + ")" : "") + " = " + values,
+                    int(k), departs});
   }
-  if (in.departure.found) return t + in.departure.text + "\n";
-  if (!in.returnsDiffer())
-    return t + "no value of yours around this pixel leaves the solution's: look where the frames differ\n";
-  // The returns differ, yet no line stands out as where the values part: say what the marks show.
-  if (in.firstUnmatched >= 0) {
+  if (in.departure.found) {
+    say(in.departure.text);
+  } else if (!in.returnsDiffer()) {
+    say("no value of yours around this pixel leaves the solution's: look where the frames differ");
+  } else if (in.firstUnmatched >= 0) {
+    // The returns differ, yet no line stands out as where the values part: say what the marks show.
     const TracePoint& p = in.student.values.points[size_t(in.firstUnmatched)];
-    return t +
-           "the trace cannot single out the line where your values part from the solution's; the first line whose "
-           "values around this pixel are none of the solution's is line " +
-           std::to_string(p.line) + " (`" + p.name + "`)\n";
+    say("the trace cannot single out the line where your values part from the solution's; the first line whose "
+        "values around this pixel are none of the solution's is line " +
+        std::to_string(p.line) + " (`" + p.name + "`)");
+  } else {
+    say("every value of yours around this pixel is one the solution computes, in some other place: the trace "
+        "cannot single out a line");
   }
-  return t +
-         "every value of yours around this pixel is one the solution computes, in some other place: the trace "
-         "cannot single out a line\n";
+  return rows;
+}
+
+std::string formatInspection(const PixelInspection& in) {
+  std::string t;
+  for (auto& row : inspectionRows(in)) t += row.text + "\n";
+  return t;
 }
 
 nlohmann::json toJson(const PixelInspection& in) {

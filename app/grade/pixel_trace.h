@@ -21,6 +21,7 @@
 
 #include "app/grade/rubric.h"
 #include "app/grade/trace.h"
+#include "app/measure/image.h"
 
 namespace shadelab {
 
@@ -67,6 +68,33 @@ struct PixelInspection {
 std::string inspectPixel(const Exercise& ex, size_t configuration,
                          const std::vector<std::filesystem::path>& studentDirs, glm::ivec2 pixel, PixelInspection& out);
 
+// One variable over the whole frame: each pixel's value of `name` (a variable or parameter of the
+// traced function, or "return": what it returns) on `line` (any line if 0), the student's, and the
+// solution's where it has a value of that name (its names are its own: where it has none, the
+// picture is the student's alone and says so). Each pixel keeps the nearest fragment's last value;
+// rgba: xyz, the component count in w (0: not computed there).
+struct VariablePicture {
+  std::string name;
+  ImageF yours, solutions;
+  bool solutionHas = false;
+};
+std::string drawVariable(const Exercise& ex, size_t configuration,
+                         const std::vector<std::filesystem::path>& studentDirs, const std::string& name, int line,
+                         VariablePicture& out);
+// Yours, the solution's and their difference side by side through one colour map (a signed
+// scalar diverging around 0, any other scalar black to white, a vector as colours); the sentence
+// says which map and its scale.
+ImageF variableImage(const VariablePicture& picture);
+std::string describeVariableImage(const VariablePicture& picture);
+
+// The inspection's lines: a header, then per traced value its line (`point` its index in
+// student.values.points; -1 for the others), the one where the values part marked "> ".
+struct InspectionRow {
+  std::string text;  // may hold a folded loop's grid on further lines
+  int point = -1;
+  bool departs = false;
+};
+std::vector<InspectionRow> inspectionRows(const PixelInspection& inspection);
 // The inspection as the terminal prints it: the pixel's colours, then each traced line's values,
 // yours, with whether the solution computes them there, and the line where they part.
 std::string formatInspection(const PixelInspection& inspection);

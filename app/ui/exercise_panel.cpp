@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <tuple>
 
 #include "app/grade/pixel_trace.h"
@@ -27,33 +26,6 @@ std::vector<fs::path> studentFolders(LabHost& host) {
   for (auto& root : host.shaders().searchPath().roots())
     if (root != builtinShaderDir()) dirs.push_back(root);
   return dirs;
-}
-
-// The inspector at the requested pixel of the configuration on screen. The grader's frame is drawn
-// at the rubric's size: the same point of the view lies at the same offset from the centre in
-// units of the frame's height (the camera's field of view is vertical).
-StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
-  if (panel.selected.empty() || panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
-    return StatusLine::failed("Inspect: show one of the exercise's configurations first");
-  Exercise ex;
-  if (auto e = loadExercise(panel.selected, ex); !e.empty()) return StatusLine::failed("Inspect: " + e);
-  size_t index = 0;
-  while (index < ex.configurations.size() && ex.configurations[index].name != panel.configurations[size_t(panel.shown)])
-    ++index;
-  const glm::vec2 view(panel.inspectViewport), frame(ex.size);
-  const glm::vec2 at = frame * 0.5f + (glm::vec2(panel.inspectPixel) + 0.5f - view * 0.5f) * (frame.y / view.y);
-  const glm::ivec2 pixel(glm::floor(at));
-  if (pixel.x < 0 || pixel.y < 0 || pixel.x >= ex.size.x || pixel.y >= ex.size.y)
-    return StatusLine::failed("Inspect: that point of the view is outside the grader's frame (" +
-                              std::to_string(ex.size.x) + "x" + std::to_string(ex.size.y) + ")");
-  PixelInspection in;
-  if (auto e = inspectPixel(ex, index, studentFolders(host), pixel, in); !e.empty())
-    return StatusLine::failed("Inspect: " + e);
-  panel.inspection = formatInspection(in);
-  std::printf("%s", panel.inspection.c_str());  // on the terminal (the page's console) too, as Check's lines
-  std::fflush(stdout);
-  return StatusLine::done("inspected pixel " + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) +
-                          " of the grader's frame");
 }
 
 // The starter's files into the student's folder, never over a file already there (their work);
@@ -112,6 +84,51 @@ gl::Texture2D textureOf(const ImageF& image) {
 }
 
 ImTextureID imguiTexture(const gl::Texture2D& t) { return reinterpret_cast<ImTextureID>(intptr_t(t.id())); }
+
+// The inspector at the requested pixel of the configuration on screen. The grader's frame is drawn
+// at the rubric's size: the same point of the view lies at the same offset from the centre in
+// units of the frame's height (the camera's field of view is vertical).
+StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
+  if (panel.selected.empty() || panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
+    return StatusLine::failed("Inspect: show one of the exercise's configurations first");
+  Exercise ex;
+  if (auto e = loadExercise(panel.selected, ex); !e.empty()) return StatusLine::failed("Inspect: " + e);
+  size_t index = 0;
+  while (index < ex.configurations.size() && ex.configurations[index].name != panel.configurations[size_t(panel.shown)])
+    ++index;
+  const glm::vec2 view(panel.inspectViewport), frame(ex.size);
+  const glm::vec2 at = frame * 0.5f + (glm::vec2(panel.inspectPixel) + 0.5f - view * 0.5f) * (frame.y / view.y);
+  const glm::ivec2 pixel(glm::floor(at));
+  if (pixel.x < 0 || pixel.y < 0 || pixel.x >= ex.size.x || pixel.y >= ex.size.y)
+    return StatusLine::failed("Inspect: that point of the view is outside the grader's frame (" +
+                              std::to_string(ex.size.x) + "x" + std::to_string(ex.size.y) + ")");
+  PixelInspection in;
+  if (auto e = inspectPixel(ex, index, studentFolders(host), pixel, in); !e.empty())
+    return StatusLine::failed("Inspect: " + e);
+  panel.inspection = inspectionRows(in);
+  panel.inspected = std::move(in);
+  panel.inspectedConfiguration = index;
+  panel.picture = {};
+  panel.pictureSays.clear();
+  std::printf("%s", formatInspection(panel.inspected).c_str());  // on the terminal too, as Check's lines
+  std::fflush(stdout);
+  return StatusLine::done("inspected pixel " + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) +
+                          " of the grader's frame");
+}
+
+// The clicked variable over the whole frame of the inspected configuration.
+StatusLine drawClickedVariable(ExercisePanel& panel, LabHost& host) {
+  Exercise ex;
+  if (auto e = loadExercise(panel.inspected.exercise, ex); !e.empty()) return StatusLine::failed("Inspect: " + e);
+  VariablePicture picture;
+  if (auto e = drawVariable(ex, panel.inspectedConfiguration, studentFolders(host), panel.pictureName,
+                            panel.pictureLine, picture);
+      !e.empty())
+    return StatusLine::failed("Inspect: " + e);
+  panel.picture = textureOf(variableImage(picture));
+  panel.pictureSays = describeVariableImage(picture);
+  return StatusLine::done("drew `" + panel.pictureName + "` over the frame");
+}
 
 // The last Check's pictures as textures, made once per Check.
 void makePictures(ExercisePanel& panel) {
@@ -365,14 +382,40 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
 
   if (!panel.inspection.empty() &&
       ImGui::CollapsingHeader("At the pixel (I over the view)", ImGuiTreeNodeFlags_DefaultOpen)) {
-    // The line where the values part, marked "> " in the table, stands out.
-    std::istringstream lines(panel.inspection);
+    // The line where the values part stands out; a click on a value's line draws it over the frame.
     ImGui::PushTextWrapPos(0);
-    for (std::string line; std::getline(lines, line);)
-      if (line.rfind("> ", 0) == 0)
-        ImGui::TextColored({1.0f, 0.6f, 0.3f, 1.0f}, "%s", line.c_str());
-      else
-        ImGui::TextUnformatted(line.c_str());
+    const std::vector<TracePoint>& points = panel.inspected.student.values.points;
+    for (size_t r = 0; r < panel.inspection.size(); ++r) {
+      const InspectionRow& row = panel.inspection[r];
+      const bool clickable = row.point >= 0 && points[size_t(row.point)].kind != TracePoint::Kind::Sub;
+      if (row.departs) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+      if (clickable) {
+        // A selectable the size of the wrapped text, the text drawn over it.
+        ImGui::PushID(int(r));
+        const ImVec2 at = ImGui::GetCursorPos();
+        const ImVec2 size = ImGui::CalcTextSize(row.text.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x);
+        if (ImGui::Selectable("##row", false, ImGuiSelectableFlags_AllowItemOverlap, size)) {
+          const TracePoint& p = points[size_t(row.point)];
+          panel.pictureRequested = true;
+          panel.pictureName = p.kind == TracePoint::Kind::Returned ? "return" : p.name;
+          panel.pictureLine = p.kind == TracePoint::Kind::Returned ? 0 : p.line;
+        }
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("Draw this value over the whole frame, yours beside the solution's");
+        ImGui::SetCursorPos(at);
+        ImGui::TextUnformatted(row.text.c_str());
+        ImGui::PopID();
+      } else {
+        ImGui::TextUnformatted(row.text.c_str());
+      }
+      if (row.departs) ImGui::PopStyleColor();
+    }
+    if (panel.picture) {
+      const float width = ImGui::GetContentRegionAvail().x;
+      const float aspect = float(panel.picture.size().y) / float(std::max(panel.picture.size().x, 1));
+      ImGui::Image(imguiTexture(panel.picture), {width, width * aspect}, {0, 1}, {1, 0});
+      ImGui::TextDisabled("%s", panel.pictureSays.c_str());
+    }
     ImGui::PopTextWrapPos();
   }
 
@@ -439,6 +482,10 @@ bool stepExerciseCheck(ExercisePanel& panel, LabHost& host, StatusLine& status) 
   if (panel.inspectRequested) {
     panel.inspectRequested = false;
     status = inspectShownPixel(panel, host);
+  }
+  if (panel.pictureRequested) {
+    panel.pictureRequested = false;
+    status = drawClickedVariable(panel, host);
   }
   if (panel.checkRequested) {
     panel.checkRequested = false;

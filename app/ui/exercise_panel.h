@@ -12,6 +12,7 @@
 
 #include "app/gl/texture.h"
 #include "app/grade/exercise_check.h"
+#include "app/grade/pixel_trace.h"
 #include "app/grade/progress.h"
 #include "app/ui/status_line.h"
 
@@ -43,7 +44,16 @@ struct ExercisePanel {
   // between frames, in the grader's frame at the same point of the view.
   bool inspectRequested = false;
   glm::ivec2 inspectPixel{0}, inspectViewport{1};  // the viewport's pixel and the viewport's size then
-  std::string inspection;                          // the table, as `shadelab inspect` prints it
+  std::vector<InspectionRow> inspection;           // the table, as `shadelab inspect` prints it
+  PixelInspection inspected;
+  size_t inspectedConfiguration = 0;  // the rubric's index
+  // A row of the table clicked: that variable over the whole frame, yours, the solution's and
+  // their difference (grade/pixel_trace.h: drawVariable), drawn between frames.
+  bool pictureRequested = false;
+  std::string pictureName;
+  int pictureLine = 0;
+  gl::Texture2D picture;
+  std::string pictureSays;
   // The student's progress (grade/progress.h), read from their folder once it is known.
   Progress progress;
   std::filesystem::path progressFolder;

@@ -162,6 +162,51 @@ TEST(PixelTraceStages, AFunctionOfAnotherStageIsNamedSo) {
   fs::remove_all(dir);
 }
 
+// Pixels of a picture's two sides that both computed, and those of them that differ.
+std::pair<int, int> reachedAndDiffering(const VariablePicture& p) {
+  int reached = 0, differing = 0;
+  for (int y = 0; y < p.yours.size.y; ++y)
+    for (int x = 0; x < p.yours.size.x; ++x) {
+      const float *a = p.yours.at(x, y), *b = p.solutions.at(x, y);
+      if (a[3] <= 0.0f || b[3] <= 0.0f) continue;
+      ++reached;
+      differing += std::abs(a[0] - b[0]) > 1e-4f;
+    }
+  return {reached, differing};
+}
+
+// A variable over the whole frame: the uncentred PCF grid's running sum differs from the
+// solution's along the shadows' edges alone (a thin share of the floor); the solution's own file
+// differs nowhere; a name the function does not use is refused with the names it does.
+TEST(PixelTracePicture, AVariableDiffersFromTheSolutionsOnlyWhereTheMistakeActs) {
+  Exercise ex;
+  ASSERT_EQ(loadExercise("shadows/pcf", ex), "");
+  const fs::path mistake = fs::path(SHADELAB_SOURCE_DIR) / "tests/data/inspect_pcf";
+  VariablePicture lit;
+  ASSERT_EQ(drawVariable(ex, 0, {mistake}, "lit", 0, lit), "");
+  ASSERT_TRUE(lit.solutionHas);
+  const auto [reached, differing] = reachedAndDiffering(lit);
+  const int pixels = ex.size.x * ex.size.y;
+  EXPECT_GT(reached, pixels / 3) << "the floor and the posts run the loop";
+  EXPECT_GT(differing, 50);
+  EXPECT_LT(differing, reached / 5) << "only along the edges";
+  EXPECT_EQ(variableImage(lit).size, glm::ivec2(3 * ex.size.x + 8, ex.size.y));
+
+  const fs::path dir = fs::temp_directory_path() / ("shadelab_picture_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "shadows");
+  { std::ofstream(dir / "shadows/pcf.glsl") << labText(ex, "shadows/pcf.glsl"); }
+  VariablePicture same;
+  ASSERT_EQ(drawVariable(ex, 0, {dir}, "return", 0, same), "");
+  EXPECT_GT(reachedAndDiffering(same).first, pixels / 3);
+  EXPECT_EQ(reachedAndDiffering(same).second, 0);
+  VariablePicture none;
+  const std::string e = drawVariable(ex, 0, {dir}, "nowhere", 0, none);
+  EXPECT_NE(e.find("no value named 'nowhere'"), std::string::npos) << e;
+  EXPECT_NE(e.find("`lit`"), std::string::npos) << e;
+  fs::remove_all(dir);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryLab, PixelTrace,
                          ::testing::Values(Case{"shadows/pcf", "grid-not-centred"},
                                            Case{"shading/blinn-phong", "half-vector-from-difference"},
