@@ -40,14 +40,11 @@ int run(int argc, char** argv) {
     else if (a == "--check")
       window.check = true;
     else if (a == "--inspect" && i + 1 < argc) {
-      int x = -1, y = -1;
-      char comma = 0, extra = 0;
-      if (std::sscanf(argv[++i], "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',' || x < 0 || y < 0) {
+      if (!parsePixel(argv[++i], window.inspect)) {
         std::fprintf(stderr, "shadelab: --inspect: '%s' is not X,Y with X, Y >= 0 (a pixel of the viewport)\n",
                      argv[i]);
         return 1;
       }
-      window.inspect = {x, y};
     } else if (a == "--window-size" && i + 1 < argc) {
       if (auto err = parseSize("--window-size", argv[++i], window.size, 240); !err.empty()) {
         std::fprintf(stderr, "shadelab: %s\n", err.c_str());

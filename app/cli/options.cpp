@@ -116,6 +116,15 @@ std::string parseSize(const std::string& option, const std::string& text, glm::i
   return {};
 }
 
+bool parsePixel(const std::string& text, glm::ivec2& pixel) {
+  int x = 0, y = 0;
+  char comma = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',' || x < 0 || y < 0)
+    return false;
+  pixel = {x, y};
+  return true;
+}
+
 std::string parseOptions(int argc, char** argv, Options& o) {
   static const char* kCommands[] = {"render", "sweep",  "stress", "list",     "check-shaders", "compare",
                                     "grade",  "random", "soak",   "exercise", "inspect"};
@@ -192,11 +201,8 @@ std::string parseOptions(int argc, char** argv, Options& o) {
       if (!parseWholeNumber(v, 1, 100000, n)) return "--line: '" + v + "' is not a line number (1 or more)";
       o.line = int(n);
     } else if (arg == "--pixel") {
-      int x = 0, y = 0;
-      char comma = 0, extra = 0;
-      if (std::sscanf(v.c_str(), "%d%c%d%c", &x, &comma, &y, &extra) != 3 || comma != ',' || x < 0 || y < 0)
+      if (!parsePixel(v, o.pixel))
         return "--pixel: '" + v + "' is not X,Y with X, Y >= 0 (from the frame's top-left, e.g. 160,120)";
-      o.pixel = {x, y};
       o.pixelGiven = true;
     } else if (arg == "--config") {
       long n = 0;

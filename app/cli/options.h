@@ -62,5 +62,7 @@ std::string parseOptions(int argc, char** argv, Options& out);
 // "WxH" into `size`, each side in [minSide, 16384]; returns "" or an error naming `option`.
 std::string parseSize(const std::string& option, const std::string& text, glm::ivec2& size, int minSide = 16);
 std::string usage();
+// "X,Y" with X, Y >= 0 (a pixel) into `pixel`; false when it is not that.
+bool parsePixel(const std::string& text, glm::ivec2& pixel);
 
 }  // namespace shadelab
