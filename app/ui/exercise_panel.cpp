@@ -86,8 +86,9 @@ gl::Texture2D textureOf(const ImageF& image) {
 ImTextureID imguiTexture(const gl::Texture2D& t) { return reinterpret_cast<ImTextureID>(intptr_t(t.id())); }
 
 // The inspector at the requested pixel of the configuration on screen. The grader's frame is drawn
-// at the rubric's size: the same point of the view lies at the same offset from the centre in
-// units of the frame's height (the camera's field of view is vertical).
+// at the rubric's size: the same point of the view lies in the same direction from the camera,
+// its offset from the centre scaled by the two projections' vertical extents (a portrait view
+// widens its vertical field to keep the horizontal one: OrbitCamera::projection).
 StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
   if (panel.selected.empty() || panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
     return StatusLine::failed("Inspect: show one of the exercise's configurations first");
@@ -97,7 +98,9 @@ StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
   while (index < ex.configurations.size() && ex.configurations[index].name != panel.configurations[size_t(panel.shown)])
     ++index;
   const glm::vec2 view(panel.inspectViewport), frame(ex.size);
-  const glm::vec2 at = frame * 0.5f + (glm::vec2(panel.inspectPixel) + 0.5f - view * 0.5f) * (frame.y / view.y);
+  const auto halfTan = [&](glm::vec2 size) { return 1.0f / host.camera().projection(size.x / size.y)[1][1]; };
+  const float scale = (halfTan(view) / view.y) / (halfTan(frame) / frame.y);  // frame pixels per view pixel
+  const glm::vec2 at = frame * 0.5f + (glm::vec2(panel.inspectPixel) + 0.5f - view * 0.5f) * scale;
   const glm::ivec2 pixel(glm::floor(at));
   if (pixel.x < 0 || pixel.y < 0 || pixel.x >= ex.size.x || pixel.y >= ex.size.y)
     return StatusLine::failed("Inspect: that point of the view is outside the grader's frame (" +
@@ -108,6 +111,7 @@ StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
   panel.inspection = inspectionRows(in);
   panel.inspected = std::move(in);
   panel.inspectedConfiguration = index;
+  panel.inspectedView = host.camera().view();
   panel.picture = {};
   panel.pictureSays.clear();
   std::printf("%s", formatInspection(panel.inspected).c_str());  // on the terminal too, as Check's lines

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include "app/gl/texture.h"
@@ -44,6 +45,7 @@ struct ExercisePanel {
   // between frames, in the grader's frame at the same point of the view.
   bool inspectRequested = false;
   glm::ivec2 inspectPixel{0}, inspectViewport{1};  // the viewport's pixel and the viewport's size then
+  glm::mat4 inspectedView{0.0f};                   // the camera then: the mark stays while it does
   std::vector<InspectionRow> inspection;           // the table, as `shadelab inspect` prints it
   PixelInspection inspected;
   size_t inspectedConfiguration = 0;  // the rubric's index

@@ -181,6 +181,13 @@ void viewportImage(AppState& app) {
   drawList->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
   ImGui::Image(reinterpret_cast<ImTextureID>(intptr_t(app.host->target()->color().id())), avail, {0, 1}, {1, 0});
   drawList->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+  // The inspected point, while the view is the one it was pressed in.
+  const ExercisePanel& ex = app.exercises;
+  if (!ex.inspection.empty() && ex.inspectViewport == app.viewport && ex.inspectedView == app.host->camera().view()) {
+    const ImVec2 at{origin.x + float(ex.inspectPixel.x) + 0.5f, origin.y + float(ex.inspectPixel.y) + 0.5f};
+    drawList->AddCircle(at, 7.0f, IM_COL32(0, 0, 0, 255), 16, 3.0f);
+    drawList->AddCircle(at, 7.0f, IM_COL32(255, 153, 77, 255), 16, 1.5f);
+  }
   ImGui::SetCursorScreenPos(origin);
   ImGui::InvisibleButton(
       "viewport", avail,

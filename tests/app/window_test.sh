@@ -56,7 +56,7 @@ echo "include escape in the window passed"
 # loop at that point of the view; the section shows the table and the marked line, and the view
 # is drawn on.
 xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --shaders "$(dirname "$0")/../data/inspect_pcf" --exercise shadows/pcf \
-  --inspect 260,487 --exit-after 40 --screenshot "$out/window_inspect.png" >"$out/inspect.log" 2>&1 ||
+  --inspect 260,457 --exit-after 40 --screenshot "$out/window_inspect.png" >"$out/inspect.log" 2>&1 ||
   { cat "$out/inspect.log"; echo "the window with the inspector failed"; exit 1; }
 grep -q "^> line 11  lit = 25 times" "$out/inspect.log" && grep -q "(returned) = .*the solution returns" "$out/inspect.log" ||
   { cat "$out/inspect.log"; echo "the inspector did not mark the loop's line"; exit 1; }
