@@ -599,19 +599,23 @@ std::vector<InspectionRow> inspectionRows(const PixelInspection& in) {
                         p.name + (named ? " (" + kindText(kind) + ")" : "") + " = " + values,
                     int(k), departs});
   }
+  // Where no line stands out, only what the marks show.
   if (in.departure.found) {
     say(in.departure.text);
-  } else if (!in.returnsDiffer()) {
-    say("no value of yours around this pixel leaves the solution's: look where the frames differ");
   } else if (in.firstUnmatched >= 0) {
-    // The returns differ, yet no line stands out as where the values part: say what the marks show.
     const TracePoint& p = in.student.values.points[size_t(in.firstUnmatched)];
     say("the trace cannot single out the line where your values part from the solution's; the first line whose "
         "values around this pixel are none of the solution's is line " +
         std::to_string(p.line) + " (`" + p.name + "`)");
-  } else {
+  } else if (in.returnsDiffer()) {
     say("every value of yours around this pixel is one the solution computes, in some other place: the trace "
         "cannot single out a line");
+  } else if (!in.bothReturned) {
+    say("every value traced around this pixel is one the solution computes; what your function returns is not "
+        "traced (a matrix or a structure), so this does not say that it is the solution's");
+  } else {
+    say("your values around this pixel are the solution's, and so is what you return here: look where the "
+        "frames differ");
   }
   return rows;
 }
