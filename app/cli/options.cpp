@@ -36,7 +36,9 @@ commands:
                   each line's values there (arguments, variables, a loop's every iteration), yours with
                   whether the solution computes them, and the line where yours leave the solution's;
                   --variable NAME [--line N] --out F.png instead: that variable (or "return") over the
-                  whole frame, yours, the solution's and their difference side by side
+                  whole frame, yours, the solution's and their difference side by side;
+                  --lab L [--scene S] [--set ...] [--size WxH] --pixel X,Y [--function FILE:NAME]: the
+                  lab's own pass there (its camera pass's main() by default), its values alone
   exercise new LAB/NAME --function FILE:NAME --exercises DIR
                   a new exercise in the course folder DIR on one function of the lab's FILE: the
                   starter (a part file holding the function, its body cut to a TODO region), a

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -11,6 +12,8 @@
 
 #include "app/grade/configuration_frames.h"
 #include "app/grade/probe_trace.h"
+#include "app/host/configure.h"
+#include "app/lab/lab.h"
 #include "app/shader/function_parts.h"
 #include "app/util/format.h"
 #include "app/util/output_files.h"
@@ -170,34 +173,64 @@ struct TapSink {
   std::function<std::vector<float>(const InstrumentedSource&)> initial;
 };
 
-// `source` instrumented in the place of the exercise's first file and drawn in configuration `c`
-// with `roots` behind it; `data` receives what the taps wrote, `frame` the frame.
-std::string drawTraced(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
-                       const std::string& source, const std::vector<fs::path>& roots, const TapSink& sink,
-                       InstrumentedSource& built, std::vector<float>& data, ImageF& frame) {
-  const std::string& file = ex.files.front();
+// `errors` with every "FILE:LINE:" of `file` moved by `by` lines.
+std::vector<std::string> shiftedLines(std::vector<std::string> errors, const std::string& file, int by) {
+  const std::string marker = file + ":";
+  for (std::string& e : errors)
+    for (size_t at = e.find(marker); at != std::string::npos; at = e.find(marker, at + 1)) {
+      const size_t digits = at + marker.size();
+      size_t end = digits;
+      while (end < e.size() && std::isdigit(static_cast<unsigned char>(e[end]))) ++end;
+      if (end == digits || end >= e.size() || e[end] != ':') continue;
+      e.replace(digits, end - digits, std::to_string(std::max(1, std::stoi(e.substr(digits, end - digits)) + by)));
+    }
+  return errors;
+}
+
+// What a traced draw draws: `file` (the traced one) in a host that `host` makes with the search
+// path it is given (an exercise's configuration, or the lab's settings), at `size`.
+struct TracedScene {
+  std::string file;
+  glm::ivec2 size{0};
+  std::function<std::unique_ptr<LabHost>(const std::vector<fs::path>& roots, std::string& error)> host;
+};
+
+TracedScene exerciseScene(const Exercise& ex, const Configuration& c) {
+  return {ex.files.front(), ex.size, [&ex, &c](const std::vector<fs::path>& roots, std::string& error) {
+            return configuredHost(roots, ex, c, error);
+          }};
+}
+
+// `source` instrumented in the place of the scene's file and drawn with `roots` behind it; `data`
+// receives what the taps wrote, `frame` the frame.
+std::string drawTraced(const TracedScene& scene, const std::vector<std::string>& functions, const std::string& source,
+                       const std::vector<fs::path>& roots, const TapSink& sink, InstrumentedSource& built,
+                       std::vector<float>& data, ImageF& frame) {
   Scratch scratch;
   std::vector<fs::path> searched{scratch.dir};
   searched.insert(searched.end(), roots.begin(), roots.end());
   const auto draw = [&](const InstrumentedSource& inst, std::vector<std::string>& errors) -> std::string {
-    if (auto e = writeTextFile((scratch.dir / file).string(), sink.prelude(inst) + inst.text); !e.empty()) return e;
+    const std::string prelude = sink.prelude(inst);
+    if (auto e = writeTextFile((scratch.dir / scene.file).string(), prelude + inst.text); !e.empty()) return e;
     std::string configError;
-    const auto host = configuredHost(searched, ex, c, configError);
+    const auto host = scene.host(searched, configError);
     if (!configError.empty()) return configError;
+    host->shaders().onDiagnostic = [](const Diagnostic&) {};  // the rounds' refused taps are no one's errors
     host->settle();
     data = sink.initial(inst);
-    if (auto e = drawIntoStorageBuffer(kBinding, data, [&] { host->renderFrame(ex.size); }); !e.empty()) return e;
-    errors = buildErrors(*host);
+    if (auto e = drawIntoStorageBuffer(kBinding, data, [&] { host->renderFrame(scene.size); }); !e.empty()) return e;
+    // The errors at the instrumented text's own lines, as the rounds drop taps by them.
+    errors = shiftedLines(buildErrors(*host), scene.file, -int(std::count(prelude.begin(), prelude.end(), '\n')));
     frame = host->readImage();
     return {};
   };
-  return instrumentAndDraw(file, functions, source, draw, built, true);
+  return instrumentAndDraw(scene.file, functions, source, draw, built, true);
 }
 
 // One side at the pixel.
-std::string drawSide(const Exercise& ex, const Configuration& c, const std::vector<std::string>& functions,
-                     const std::string& source, const std::vector<fs::path>& roots, glm::ivec2 pixel, PixelSide& out) {
-  const glm::ivec2 fragment{pixel.x, ex.size.y - 1 - pixel.y};
+std::string drawSide(const TracedScene& scene, const std::vector<std::string>& functions, const std::string& source,
+                     const std::vector<fs::path>& roots, glm::ivec2 pixel, PixelSide& out) {
+  const glm::ivec2 fragment{pixel.x, scene.size.y - 1 - pixel.y};
   const auto layoutOf = [](const InstrumentedSource& inst) { return Layout{int(inst.points.size())}; };
   const TapSink sink{
       [&](const InstrumentedSource& inst) { return pixelPrelude(layoutOf(inst), fragment); },
@@ -205,7 +238,7 @@ std::string drawSide(const Exercise& ex, const Configuration& c, const std::vect
   InstrumentedSource built;
   std::vector<float> data;
   ImageF frame;
-  if (auto e = drawTraced(ex, c, functions, source, roots, sink, built, data, frame); !e.empty()) return e;
+  if (auto e = drawTraced(scene, functions, source, roots, sink, built, data, frame); !e.empty()) return e;
   if (pixel.x < frame.size.x && pixel.y < frame.size.y) {
     const float* px = frame.at(pixel.x, pixel.y);
     out.colour = {px[0], px[1], px[2], px[3]};
@@ -284,7 +317,8 @@ std::string drawPicture(const Exercise& ex, const Configuration& c, const std::v
   InstrumentedSource built;
   std::vector<float> data;
   ImageF frame;
-  if (auto e = drawTraced(ex, c, functions, source, roots, sink, built, data, frame); !e.empty()) return e;
+  if (auto e = drawTraced(exerciseScene(ex, c), functions, source, roots, sink, built, data, frame); !e.empty())
+    return e;
   points = built.points;
   out = ImageF{ex.size, std::vector<float>(pixels * 4, 0.0f)};
   for (int y = 0; y < ex.size.y; ++y)  // the buffer's rows from the bottom, the image's from the top
@@ -310,13 +344,15 @@ std::string valuesText(const PixelSide& side, size_t k) {
   if (side.reached[k] == 0 || it.empty()) return "not reached";
   if (side.reached[k] == 1) return vectorText(it.front());
   std::string out = std::to_string(side.reached[k]) + " times";
+  if (std::all_of(it.begin(), it.end(), [&](const glm::vec4& v) { return v == it.front(); }))
+    return out + ", each " + vectorText(it.front());
   const int side2 = int(std::lround(std::sqrt(double(it.size()))));
   const bool grid = side2 > 1 && side2 * side2 == int(it.size()) && it.front().w <= 1.0f && side2 <= 8;
   if (grid) {
     out += ", as a " + std::to_string(side2) + " x " + std::to_string(side2) + " grid:";
     for (int r = 0; r < side2; ++r) {
       out += "\n      ";
-      for (int col = 0; col < side2; ++col) out += " " + formatSignificant(it[size_t(r * side2 + col)].x, 3);
+      for (int col = 0; col < side2; ++col) out += " " + formatSignificant(it[size_t(r * side2 + col)].x, 4);
     }
     return out;
   }
@@ -389,9 +425,10 @@ std::string inspectPixel(const Exercise& ex, size_t configuration, const std::ve
   const std::vector<std::string> functions = tracedFunctions(ex);
   std::vector<fs::path> roots = studentDirs;
   roots.push_back(builtinShaderDir());
-  if (auto e = drawSide(ex, c, functions, readWholeFile(found.file), roots, pixel, out.student); !e.empty())
+  const TracedScene scene = exerciseScene(ex, c);
+  if (auto e = drawSide(scene, functions, readWholeFile(found.file), roots, pixel, out.student); !e.empty())
     return "your " + file + ": " + e;
-  if (auto e = drawSide(ex, c, functions, labText(ex, file), {builtinShaderDir()}, pixel, out.solution); !e.empty())
+  if (auto e = drawSide(scene, functions, labText(ex, file), {builtinShaderDir()}, pixel, out.solution); !e.empty())
     return "the solution's " + file + ": " + e;
   out.agreement = pointAgreement(out.student.values, out.solution.values);
   const bool ranHere = std::any_of(out.student.reached.begin(), out.student.reached.end(), [](int n) { return n > 0; });
@@ -413,6 +450,66 @@ std::string inspectPixel(const Exercise& ex, size_t configuration, const std::ve
         !out.agreement[k].matches)
       out.firstUnmatched = int(k);
   return {};
+}
+
+std::string inspectLabPixel(const LabPixelRequest& request, const std::vector<fs::path>& shaderDirs,
+                            LabInspection& out) {
+  out = {};
+  out.request = request;
+  LabPixelRequest& r = out.request;
+  const std::unique_ptr<Lab> lab = makeLab(r.lab);
+  if (!lab) {
+    std::string valid;
+    for (auto& id : labIds()) valid += (valid.empty() ? "" : ", ") + id;
+    return "unknown lab '" + r.lab + "' (valid: " + valid + ")";
+  }
+  if (r.file.empty()) {
+    const Lab::InspectedPass pass = lab->inspectedPass();
+    if (pass.file.empty()) return "the " + r.lab + " lab names no pass to inspect";
+    r.file = pass.file;
+    r.function = pass.function;
+  }
+  if (r.pixel.x < 0 || r.pixel.y < 0 || r.pixel.x >= r.size.x || r.pixel.y >= r.size.y)
+    return "--pixel " + std::to_string(r.pixel.x) + "," + std::to_string(r.pixel.y) + " is outside the " +
+           std::to_string(r.size.x) + "x" + std::to_string(r.size.y) + " frame";
+  if (std::string why; !pixelTraceSupported(why)) return why;
+  std::vector<fs::path> roots = shaderDirs;
+  roots.push_back(builtinShaderDir());
+  const ShaderSearchPath::Lookup found = ShaderSearchPath(roots).find(r.file);
+  if (found.file.empty()) return r.file + " is not in the shader folders";
+  const TracedScene scene{r.file, r.size, [&r](const std::vector<fs::path>& searched, std::string& error) {
+                            auto host = std::make_unique<LabHost>(ShaderSearchPath(searched), r.lab, r.scene);
+                            error = configureHost(*host, r.lab, {}, r.sets, {}, r.camera);
+                            return host;
+                          }};
+  if (auto e = drawSide(scene, {r.function}, readWholeFile(found.file), roots, r.pixel, out.side); !e.empty())
+    return r.file + ": " + e;
+  if (std::none_of(out.side.reached.begin(), out.side.reached.end(), [](int n) { return n > 0; }))
+    out.note = r.function + "() of " + r.file + " did not run at this pixel (the background, or another pass)";
+  return {};
+}
+
+std::string formatLabInspection(const LabInspection& in) {
+  const LabPixelRequest& r = in.request;
+  const glm::vec4& c = in.side.colour;
+  std::string t = "pixel " + std::to_string(r.pixel.x) + ", " + std::to_string(r.pixel.y) + " of the " + r.lab +
+                  " lab (" + std::to_string(r.size.x) + "x" + std::to_string(r.size.y) + "): the frame " +
+                  formatSignificant(c.r, 3) + " " + formatSignificant(c.g, 3) + " " + formatSignificant(c.b, 3) + "\n";
+  if (!in.note.empty()) return t + in.note + "\n";
+  if (in.side.fragments > 1)
+    t += std::to_string(in.side.fragments) + " fragments ran it here; the nearest one's values\n";
+  t += r.file + ", " + r.function + "():\n";
+  for (size_t k = 0; k < in.side.values.points.size(); ++k) {
+    const TracePoint& p = in.side.values.points[k];
+    // The named values: each variable, argument and return; a statement's parts where they vary.
+    if (in.side.reached[k] == 0 || p.constant || !p.initialised) continue;
+    if (p.kind == TracePoint::Kind::Sub && in.side.reached[k] < 2) continue;
+    const bool named = p.kind == TracePoint::Kind::Param || p.kind == TracePoint::Kind::Returned ||
+                       p.kind == TracePoint::Kind::OutParam || p.kind == TracePoint::Kind::Sub;
+    t += "  line " + std::to_string(p.line) + (p.kind == TracePoint::Kind::Sub ? "    " : "  ") + p.name +
+         (named ? " (" + kindText(p.kind) + ")" : "") + " = " + valuesText(in.side, k) + "\n";
+  }
+  return t;
 }
 
 std::string drawVariable(const Exercise& ex, size_t configuration, const std::vector<fs::path>& studentDirs,
@@ -578,6 +675,7 @@ std::vector<InspectionRow> inspectionRows(const PixelInspection& in) {
     const bool part = p.kind == TracePoint::Kind::Sub;
     const bool departs = in.departure.found && p.line == in.departure.line && p.name == in.departure.name;
     if (part && !departs && (p.constant || in.student.reached[k] < 2)) continue;
+    if (!p.initialised && !departs) continue;  // a declaration without a value says nothing
     if (!previous || previous->function != p.function) say(in.file + ", " + p.function + "():");
     previous = &p;
     // A return against the solution's at the pixel; any other value against every value the

@@ -87,6 +87,26 @@ std::string drawVariable(const Exercise& ex, size_t configuration,
 ImageF variableImage(const VariablePicture& picture);
 std::string describeVariableImage(const VariablePicture& picture);
 
+// The lab's own pass at a pixel, with no exercise open: `function` of `file` (by default the lab's
+// camera pass, Lab::inspectedPass) traced in the lab's draw on `scene` with `sets` and `camera`
+// (as configureHost takes them) at `size`, the shader folders searched first. Its values alone:
+// there is no solution to hold them against.
+struct LabPixelRequest {
+  std::string lab, scene, camera;
+  std::vector<std::string> sets;
+  std::string file, function;  // "" = the lab's camera pass
+  glm::ivec2 size{960, 540};
+  glm::ivec2 pixel{0};
+};
+struct LabInspection {
+  LabPixelRequest request;  // with the file and function filled in
+  PixelSide side;
+  std::string note;
+};
+std::string inspectLabPixel(const LabPixelRequest& request, const std::vector<std::filesystem::path>& shaderDirs,
+                            LabInspection& out);
+std::string formatLabInspection(const LabInspection& inspection);
+
 // The inspection's lines: a header, then per traced value its line (`point` its index in
 // student.values.points; -1 for the others), the one where the values part marked "> ".
 struct InspectionRow {

@@ -306,6 +306,7 @@ class Instrumenter {
           if (!glsl::isBasicType(d.type)) continue;
           const int k = point(TracePoint::Kind::Declared, st.line, d.name, from, d.name);
           out_.points[k].constant = d.init >= 0 && literalOnly(d.init);
+          out_.points[k].initialised = d.init >= 0;
           defs_[d.name] = k;
           taps += tap(k, d.name);
         }

@@ -28,12 +28,13 @@ namespace shadelab {
 struct TracePoint {
   enum class Kind { Param, Declared, Assigned, Returned, OutParam, Sub };
   Kind kind = Kind::Sub;
-  int line = 0;           // 1-based, in the traced file
-  std::string function;   // the function it lies in
-  std::string name;       // the variable, or the expression as written
-  std::string statement;  // Declared / Assigned: the variable; Sub: the variable its statement sets, if any
-  std::vector<int> from;  // the points its value is made of (sub-expressions, variables read)
-  bool constant = false;  // an expression of literals alone
+  int line = 0;             // 1-based, in the traced file
+  std::string function;     // the function it lies in
+  std::string name;         // the variable, or the expression as written
+  std::string statement;    // Declared / Assigned: the variable; Sub: the variable its statement sets, if any
+  std::vector<int> from;    // the points its value is made of (sub-expressions, variables read)
+  bool constant = false;    // an expression of literals alone
+  bool initialised = true;  // Declared: with a value (`float x;` has none until a call or line sets it)
 };
 
 struct InstrumentedSource {

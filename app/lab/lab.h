@@ -154,6 +154,13 @@ class Lab {
   // Views of the lab's own beside the parameters (app/lab/lab_panel.h): tables, plots, images.
   virtual std::vector<LabPanel> panels() const { return {}; }
 
+  // The camera pass the inspector traces at a pixel when no exercise is open (grade/pixel_trace.h):
+  // the fragment shader's file and the function whose values make the frame; empty: none.
+  struct InspectedPass {
+    std::string file, function;
+  };
+  virtual InspectedPass inspectedPass() const { return {}; }
+
   // How the lab is judged, or null: a lab without a truth, metrics or stress cases has no Judge
   // and implements nothing below. A lab that judges usually is its own Judge (returns this).
   virtual Judge* judge() { return nullptr; }

@@ -66,6 +66,7 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   void visitParams(ParamVisitor& v) override;
   SceneNeeds needs() const override;
   std::vector<ProgramSpec> allPrograms() const override;
+  InspectedPass inspectedPass() const override { return {"denoise/mesh.frag", "main"}; }
 
   std::string setup(LabContext& ctx) override;
   void update(const Scene& scene, float dt) override;

@@ -63,6 +63,7 @@ class FilteringLab final : public LabWithParams<FilteringParams>, public Judge {
   void visitParams(ParamVisitor& v) override;
   SceneNeeds needs() const override;
   std::vector<ProgramSpec> allPrograms() const override;
+  InspectedPass inspectedPass() const override { return {"filtering/filtering.frag", "main"}; }
 
   std::string setup(LabContext& ctx) override;
   void render(Frame& frame) override;

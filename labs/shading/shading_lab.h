@@ -45,6 +45,7 @@ class ShadingLab final : public LabWithParams<ShadingParams>, public Judge {
   void visitParams(ParamVisitor& v) override;
   SceneNeeds needs() const override;
   std::vector<ProgramSpec> allPrograms() const override;
+  InspectedPass inspectedPass() const override { return {"shading/shade.frag", "main"}; }
 
   std::string setup(LabContext& ctx) override;
   void render(Frame& frame) override;

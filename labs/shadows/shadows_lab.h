@@ -130,6 +130,7 @@ class ShadowsLab final : public LabWithParams<ShadowsParams>, public Judge {
   void visitParams(ParamVisitor& v) override;
   SceneNeeds needs() const override;
   std::vector<ProgramSpec> allPrograms() const override;
+  InspectedPass inspectedPass() const override { return {"shadows/lit.frag", "main"}; }
 
   std::string setup(LabContext& ctx) override;
   void render(Frame& frame) override;

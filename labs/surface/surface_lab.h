@@ -113,6 +113,7 @@ class SurfaceLab final : public LabWithParams<SurfaceParams>, public Judge {
   void visitParams(ParamVisitor& v) override;
   SceneNeeds needs() const override;
   std::vector<ProgramSpec> allPrograms() const override;
+  InspectedPass inspectedPass() const override { return {"surface/surface.frag", "main"}; }
 
   std::string setup(LabContext& ctx) override;
   void render(Frame& frame) override;

@@ -234,6 +234,46 @@ TEST(PixelTracePicture, AVariableDiffersFromTheSolutionsOnlyWhereTheMistakeActs)
   fs::remove_all(dir);
 }
 
+// With no exercise open: the lab's own pass at a pixel. The shadows lab's PCF taps at 3 x 3 are
+// nine comparisons, each lit or not, with the offsets of a centred grid; its camera pass's main()
+// shows the normal and the position it shades.
+TEST(PixelTraceLab, TheLabsOwnPassShowsItsNamedValues) {
+  LabPixelRequest taps{"shadows",
+                       "shadow-test",
+                       "",
+                       {"shadows.filter=pcf", "shadows.pcf_size=3"},
+                       "shadows/shadow_filters.glsl",
+                       "tapCompare",
+                       {320, 240},
+                       {160, 150}};
+  LabInspection in;
+  ASSERT_EQ(inspectLabPixel(taps, {}, in), "");
+  const std::string text = formatLabInspection(in);
+  std::printf("%s", text.c_str());
+  ASSERT_TRUE(in.note.empty()) << text;
+  int returns = 0;
+  for (size_t k = 0; k < in.side.values.points.size(); ++k) {
+    const TracePoint& p = in.side.values.points[k];
+    if (p.kind == TracePoint::Kind::Param && p.name == "offsetTexels") {
+      ASSERT_EQ(in.side.iterations[k].size(), 9u) << text;
+      EXPECT_EQ(glm::vec2(in.side.iterations[k].front()), glm::vec2(-1.0f, -1.0f)) << text;
+      EXPECT_EQ(glm::vec2(in.side.iterations[k].back()), glm::vec2(1.0f, 1.0f)) << text;
+    }
+    if (p.kind != TracePoint::Kind::Returned) continue;
+    for (auto& v : in.side.iterations[k]) EXPECT_TRUE(v.x == 0.0f || v.x == 1.0f) << text;
+    returns += int(in.side.iterations[k].size());
+  }
+  EXPECT_EQ(returns, 9) << text;
+
+  LabInspection pass;
+  ASSERT_EQ(inspectLabPixel({"shadows", "shadow-test", "", {}, "", "", {320, 240}, {160, 150}}, {}, pass), "");
+  EXPECT_EQ(pass.request.file, "shadows/lit.frag");
+  EXPECT_NE(formatLabInspection(pass).find("  N = (0 1 0)"), std::string::npos) << formatLabInspection(pass);
+  LabInspection none;
+  EXPECT_NE(inspectLabPixel({"nowhere", "", "", {}, "", "", {32, 32}, {1, 1}}, {}, none).find("valid: "),
+            std::string::npos);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     EveryLab, PixelTrace,
     ::testing::Values(
