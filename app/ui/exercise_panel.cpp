@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <tuple>
 
 #include "app/grade/pixel_trace.h"
 #include "app/host/configure.h"
 #include "app/host/lab_host.h"
+#include "app/host/share_link.h"
 #include "app/ui/platform.h"
 #include "app/ui/shader_editor.h"
 #include "app/util/read_file.h"
@@ -89,8 +91,32 @@ ImTextureID imguiTexture(const gl::Texture2D& t) { return reinterpret_cast<ImTex
 // at the rubric's size: the same point of the view lies in the same direction from the camera,
 // its offset from the centre scaled by the two projections' vertical extents (a portrait view
 // widens its vertical field to keep the horizontal one: OrbitCamera::projection).
+// With no exercise open, the lab's own pass at the pixel, drawn as the view is (its settings and
+// camera as a shared link carries them, at the view's size): its values alone.
+StatusLine inspectViewPixel(ExercisePanel& panel, LabHost& host) {
+  const OpenedLink view = openLink(shareLink(host).fragment);
+  LabInspection in;
+  if (auto e = inspectLabPixel(
+          {view.lab, view.scene, view.camera, view.sets, {}, {}, panel.inspectViewport, panel.inspectPixel},
+          studentFolders(host), in);
+      !e.empty())
+    return StatusLine::failed("Inspect: " + e);
+  const std::string text = formatLabInspection(in);
+  panel.inspection.clear();
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) panel.inspection.push_back({line, -1, false});
+  panel.inspected = {};
+  panel.inspectedView = host.camera().view();
+  panel.picture = {};
+  std::printf("%s", text.c_str());
+  std::fflush(stdout);
+  return StatusLine::done("inspected pixel " + std::to_string(panel.inspectPixel.x) + ", " +
+                          std::to_string(panel.inspectPixel.y) + " of the view");
+}
+
 StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
-  if (panel.selected.empty() || panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
+  if (panel.selected.empty()) return inspectViewPixel(panel, host);
+  if (panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
     return StatusLine::failed("Inspect: show one of the exercise's configurations first");
   Exercise ex;
   if (auto e = loadExercise(panel.selected, ex); !e.empty()) return StatusLine::failed("Inspect: " + e);
@@ -256,6 +282,44 @@ StatusLine openCourseFolder(ExercisePanel& panel, const fs::path& folder) {
   return StatusLine::failed(opened + "; these do not load, `shadelab exercise check` says why: " + problems);
 }
 
+void drawInspection(ExercisePanel& panel) {
+  // The line where the values part stands out; a click on a value's line draws it over the frame.
+  ImGui::PushTextWrapPos(0);
+  const std::vector<TracePoint>& points = panel.inspected.student.values.points;
+  for (size_t r = 0; r < panel.inspection.size(); ++r) {
+    const InspectionRow& row = panel.inspection[r];
+    const bool clickable = row.point >= 0 && points[size_t(row.point)].kind != TracePoint::Kind::Sub;
+    if (row.departs) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+    if (clickable) {
+      // A selectable the size of the wrapped text, the text drawn over it.
+      ImGui::PushID(int(r));
+      const ImVec2 at = ImGui::GetCursorPos();
+      const ImVec2 size = ImGui::CalcTextSize(row.text.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x);
+      if (ImGui::Selectable("##row", false, ImGuiSelectableFlags_AllowItemOverlap, size)) {
+        const TracePoint& p = points[size_t(row.point)];
+        panel.pictureRequested = true;
+        panel.pictureName = p.kind == TracePoint::Kind::Returned ? "return" : p.name;
+        panel.pictureLine = p.kind == TracePoint::Kind::Returned ? 0 : p.line;
+      }
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Draw this value over the whole frame, yours beside the solution's");
+      ImGui::SetCursorPos(at);
+      ImGui::TextUnformatted(row.text.c_str());
+      ImGui::PopID();
+    } else {
+      ImGui::TextUnformatted(row.text.c_str());
+    }
+    if (row.departs) ImGui::PopStyleColor();
+  }
+  if (panel.picture) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float aspect = float(panel.picture.size().y) / float(std::max(panel.picture.size().x, 1));
+    ImGui::Image(imguiTexture(panel.picture), {width, width * aspect}, {0, 1}, {1, 0});
+    ImGui::TextDisabled("%s", panel.pictureSays.c_str());
+  }
+  ImGui::PopTextWrapPos();
+}
+
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, StatusLine& status) {
   if (!panel.listed) {  // once: the exercises ship with the program
     // A course's exercises first, under its folder's name; then as exercises/README.md lists
@@ -385,43 +449,8 @@ void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor
   }
 
   if (!panel.inspection.empty() &&
-      ImGui::CollapsingHeader("At the pixel (I over the view)", ImGuiTreeNodeFlags_DefaultOpen)) {
-    // The line where the values part stands out; a click on a value's line draws it over the frame.
-    ImGui::PushTextWrapPos(0);
-    const std::vector<TracePoint>& points = panel.inspected.student.values.points;
-    for (size_t r = 0; r < panel.inspection.size(); ++r) {
-      const InspectionRow& row = panel.inspection[r];
-      const bool clickable = row.point >= 0 && points[size_t(row.point)].kind != TracePoint::Kind::Sub;
-      if (row.departs) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
-      if (clickable) {
-        // A selectable the size of the wrapped text, the text drawn over it.
-        ImGui::PushID(int(r));
-        const ImVec2 at = ImGui::GetCursorPos();
-        const ImVec2 size = ImGui::CalcTextSize(row.text.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x);
-        if (ImGui::Selectable("##row", false, ImGuiSelectableFlags_AllowItemOverlap, size)) {
-          const TracePoint& p = points[size_t(row.point)];
-          panel.pictureRequested = true;
-          panel.pictureName = p.kind == TracePoint::Kind::Returned ? "return" : p.name;
-          panel.pictureLine = p.kind == TracePoint::Kind::Returned ? 0 : p.line;
-        }
-        if (ImGui::IsItemHovered())
-          ImGui::SetTooltip("Draw this value over the whole frame, yours beside the solution's");
-        ImGui::SetCursorPos(at);
-        ImGui::TextUnformatted(row.text.c_str());
-        ImGui::PopID();
-      } else {
-        ImGui::TextUnformatted(row.text.c_str());
-      }
-      if (row.departs) ImGui::PopStyleColor();
-    }
-    if (panel.picture) {
-      const float width = ImGui::GetContentRegionAvail().x;
-      const float aspect = float(panel.picture.size().y) / float(std::max(panel.picture.size().x, 1));
-      ImGui::Image(imguiTexture(panel.picture), {width, width * aspect}, {0, 1}, {1, 0});
-      ImGui::TextDisabled("%s", panel.pictureSays.c_str());
-    }
-    ImGui::PopTextWrapPos();
-  }
+      ImGui::CollapsingHeader("At the pixel (I over the view)", ImGuiTreeNodeFlags_DefaultOpen))
+    drawInspection(panel);
 
   const ExerciseCheck& check = panel.check;
   if (check.id() != panel.selected) return;

@@ -77,6 +77,10 @@ StatusLine openCourseFolder(ExercisePanel& panel, const std::filesystem::path& f
 // The section's contents; `status` receives what happened (the starter copied, why not).
 void drawExercisePanel(ExercisePanel& panel, LabHost& host, ShaderEditor& editor, StatusLine& status);
 
+// The inspector's table (and the picture of a clicked value), as the section shows it; with no
+// exercise open the window's Inspect panel shows it for the lab's own pass.
+void drawInspection(ExercisePanel& panel);
+
 // Asks for the inspector at `pixel` of a viewport of `viewport` pixels (traced between frames).
 void requestInspection(ExercisePanel& panel, glm::ivec2 pixel, glm::ivec2 viewport);
 

@@ -452,6 +452,9 @@ void WindowSession::layoutWindows(glm::ivec2 framebuffer, const std::vector<gl::
       drawMeasurePanel(host, measurer, app.measure, now, app.message);
     }
     drawLabPanels(host.lab());
+    if (app.exercises.selected.empty() && !app.exercises.inspection.empty() &&
+        ImGui::CollapsingHeader("At the pixel (I over the view)", ImGuiTreeNodeFlags_DefaultOpen))
+      drawInspection(app.exercises);
     if (ImGui::CollapsingHeader("Messages", ImGuiTreeNodeFlags_DefaultOpen)) drawWarnings(host, app.message);
     if (ImGui::CollapsingHeader("Shaders", ImGuiTreeNodeFlags_DefaultOpen)) {
       drawShaderPanel(host, app.message);

@@ -61,6 +61,12 @@ xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --shaders "$(dirname "$0")/..
 grep -q "^> line 11  lit = 25 times" "$out/inspect.log" && grep -q "(returned) = .*the solution returns" "$out/inspect.log" ||
   { cat "$out/inspect.log"; echo "the inspector did not mark the loop's line"; exit 1; }
 "$check" "$out/window_inspect.png" --min-stddev 0.05 --min-colors 200
+# With no exercise open, I traces the lab's own pass: the surface lab's main() at the view's pixel.
+xvfb-run -a -s "-screen 0 1280x800x24" "$shadelab" --lab surface --inspect 260,400 --exit-after 30 \
+  --screenshot "$out/window_inspect_lab.png" >"$out/inspect_lab.log" 2>&1 ||
+  { cat "$out/inspect_lab.log"; echo "the window with the lab's inspector failed"; exit 1; }
+grep -q "^surface/surface.frag, main():" "$out/inspect_lab.log" && grep -q "^  line [0-9]*  uv = (" "$out/inspect_lab.log" ||
+  { cat "$out/inspect_lab.log"; echo "the lab's inspector did not show the pass's values"; exit 1; }
 echo "inspector in the window passed"
 
 # A short soak in the real window: random labs, parameters, broken and fixed shaders, meshes and
