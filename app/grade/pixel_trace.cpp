@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -599,6 +600,27 @@ glm::vec3 mapped(const float* v, const PictureRange& r) {
   return out;
 }
 
+// Per pixel, the largest component's difference between the two sides (-1 where either did not
+// compute it), and its range.
+std::vector<float> differenceOf(const VariablePicture& p, float& lowest, float& largest) {
+  const glm::ivec2 size = p.yours.size;
+  std::vector<float> out(size_t(size.x) * size_t(size.y), -1.0f);
+  lowest = std::numeric_limits<float>::max();
+  largest = 0.0f;
+  for (int y = 0; p.solutionHas && y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const float *a = p.yours.at(x, y), *b = p.solutions.at(x, y);
+      if (a[3] <= 0.0f || b[3] <= 0.0f) continue;
+      float d = 0.0f;
+      for (int c = 0; c < std::clamp(int(a[3]), 1, 3); ++c) d = std::max(d, std::abs(a[c] - b[c]));
+      if (!std::isfinite(d)) d = 0.0f;
+      out[size_t(y) * size_t(size.x) + size_t(x)] = d;
+      lowest = std::min(lowest, d);
+      largest = std::max(largest, d);
+    }
+  return out;
+}
+
 }  // namespace
 
 ImageF variableImage(const VariablePicture& p) {
@@ -609,18 +631,8 @@ ImageF variableImage(const VariablePicture& p) {
   out.rgba.assign(size_t(out.size.x) * size_t(out.size.y) * 4, 1.0f);
   const PictureRange range = p.solutionHas ? rangeOf({&p.yours, &p.solutions}) : rangeOf({&p.yours});
   // The difference: the largest component's, black (none) to white (the largest anywhere).
-  float largestDifference = 0.0f;
-  std::vector<float> difference(size_t(size.x) * size_t(size.y), -1.0f);
-  for (int y = 0; p.solutionHas && y < size.y; ++y)
-    for (int x = 0; x < size.x; ++x) {
-      const float *a = p.yours.at(x, y), *b = p.solutions.at(x, y);
-      if (a[3] <= 0.0f || b[3] <= 0.0f) continue;
-      float d = 0.0f;
-      for (int c = 0; c < std::clamp(int(a[3]), 1, 3); ++c) d = std::max(d, std::abs(a[c] - b[c]));
-      if (!std::isfinite(d)) d = 0.0f;
-      difference[size_t(y) * size_t(size.x) + size_t(x)] = d;
-      largestDifference = std::max(largestDifference, d);
-    }
+  float lowestDifference = 0.0f, largestDifference = 0.0f;
+  const std::vector<float> difference = differenceOf(p, lowestDifference, largestDifference);
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
       const auto put = [&](int panel, glm::vec3 colour) {
@@ -646,8 +658,17 @@ std::string describeVariableImage(const VariablePicture& p) {
                                           : "x, y, z as red, green, blue, full at " + largest)
                         : (r.signedValues ? "blue at -" + largest + ", white at 0, red at " + largest
                                           : "black at 0, white at " + largest);
+  std::string difference;
+  if (p.solutionHas) {
+    float lowest = 0.0f, most = 0.0f;
+    differenceOf(p, lowest, most);
+    difference = most <= 0.0f ? "their difference (none: black)"
+                 : most - lowest <= 1e-4f * most
+                     ? "their difference (" + formatSignificant(most, 3) + " wherever both computed it: white)"
+                     : "their difference (black at 0, white at " + formatSignificant(most, 3) + ")";
+  }
   return "`" + p.name + "` over the frame, " +
-         (p.solutionHas ? "yours, the solution's and their difference (white: the largest)"
+         (p.solutionHas ? "yours, the solution's and " + difference
                         : "yours (the solution has no value of that name)") +
          ": " + map + "; dark grey where it was not computed, magenta where it is not finite";
 }
