@@ -33,7 +33,8 @@ constexpr int kCentres = 4;                          // fragments at the pixel w
 constexpr int kIterations = PixelSide::kIterations;
 constexpr unsigned kBinding = 0;  // every storage block's default binding; no lab uses one
 
-// The buffer's layout (std430): two counters and two spare words, then vec4s: each slot's
+// The buffer's layout (std430): three counters (the block's fragments, the pixel's, the whole
+// frame's that ran the function) and a spare word, then vec4s: each slot's
 // gl_FragCoord and, per point, {times reached} and the last value; then each centre's slot index
 // and, per point, its iterations.
 struct Layout {
@@ -57,7 +58,8 @@ std::string pixelPrelude(const Layout& layout, glm::ivec2 fragment) {
          "layout(std430) buffer shadelab_pixel_trace {\n"
          "  uint shadelab_fragments;\n"
          "  uint shadelab_centres;\n"
-         "  uint shadelab_spare[2];\n"
+         "  uint shadelab_inFrame;\n"
+         "  uint shadelab_spare;\n"
          "  vec4 shadelab_data[];\n"
          "};\n"
          "const int shadelab_slotStride = " +
@@ -71,7 +73,7 @@ std::string pixelPrelude(const Layout& layout, glm::ivec2 fragment) {
          "bool shadelab_here() {\n"
          "  if (shadelab_slot != -2) return shadelab_slot >= 0;\n"
          "  shadelab_slot = -1;\n"
-         "  atomicAdd(shadelab_spare[0], 1u);  // fragments of the whole frame that ran the function\n"
+         "  atomicAdd(shadelab_inFrame, 1u);\n"
          "  ivec2 d = ivec2(gl_FragCoord.xy) - shadelab_pixel;\n"
          "  if (any(greaterThan(abs(d), ivec2(" +
          n(kBlockRadius) +
@@ -135,8 +137,9 @@ void readSide(const std::vector<float>& data, const Layout& layout, glm::ivec2 f
   for (int s = 0; s < slots; ++s) {
     const glm::vec4 coord = at(s * layout.slotStride());
     const glm::ivec2 d = glm::ivec2(int(std::floor(coord.x)), int(std::floor(coord.y))) - fragment;
+    if (std::abs(d.x) > kBlockRadius || std::abs(d.y) > kBlockRadius) continue;
     const int row = (kBlockRadius - d.y) * kBlockSide + (d.x + kBlockRadius);  // the block's top row first
-    if (row < 0 || row >= int(nearest.size()) || coord.z >= nearest[size_t(row)]) continue;
+    if (coord.z >= nearest[size_t(row)]) continue;
     nearest[size_t(row)] = coord.z;
     chosen[size_t(row)] = s;
   }
@@ -182,7 +185,7 @@ std::vector<std::string> shiftedLines(std::vector<std::string> errors, const std
       const size_t digits = at + marker.size();
       size_t end = digits;
       while (end < e.size() && std::isdigit(static_cast<unsigned char>(e[end]))) ++end;
-      if (end == digits || end >= e.size() || e[end] != ':') continue;
+      if (end == digits || end - digits > 9 || end >= e.size() || e[end] != ':') continue;
       e.replace(digits, end - digits, std::to_string(std::max(1, std::stoi(e.substr(digits, end - digits)) + by)));
     }
   return errors;
@@ -435,8 +438,10 @@ std::string inspectPixel(const Exercise& ex, size_t configuration, const std::ve
   const bool ranHere = std::any_of(out.student.reached.begin(), out.student.reached.end(), [](int n) { return n > 0; });
   if (!ranHere) {
     out.note = out.student.fragmentsInFrame == 0
-                   ? "your function runs in no fragment of this frame: the lab calls it in another stage (per vertex), "
-                     "so no pixel holds its values; `shadelab grade` traces it on its probe"
+                   ? std::string(
+                         "your function runs in no fragment of this frame: the lab calls it in another stage "
+                         "(per vertex), so no pixel holds its values") +
+                         (ex.probes.empty() ? "" : "; `shadelab grade` traces it on its probe")
                    : "your function did not run at this pixel (the background, or a pass this pixel is not drawn by)";
     return {};
   }

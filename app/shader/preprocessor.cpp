@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <map>
 #include <regex>
@@ -318,7 +319,13 @@ std::string hoistExtensions(const std::string& source) {
     const size_t first = lines[i].find_first_not_of(" \t");
     if (first == std::string::npos || lines[i][first] != '#') continue;
     const std::string_view directive = std::string_view(lines[i]).substr(first);
-    if (int line = 0, k = 0; std::sscanf(lines[i].c_str() + first, "#line %d %d", &line, &k) == 2) file = k;
+    if (directive.starts_with("#line ")) {  // "#line N K": the second number, when there is one
+      const size_t space = directive.find(' ', 6);
+      int k = 0;
+      if (space != std::string_view::npos &&
+          std::from_chars(directive.data() + space + 1, directive.data() + directive.size(), k).ec == std::errc())
+        file = k;
+    }
     if (directive.starts_with("#if")) ++depth[file];
     if (directive.starts_with("#endif")) --depth[file];
     if (depth[file] != 0 || !directive.starts_with("#extension")) continue;
