@@ -769,7 +769,7 @@ nlohmann::json toJson(const PixelInspection& in) {
                      {"reached", in.student.reached[k]},
                      {"values", values},
                      {"compared", in.agreement[k].reached},
-                     {"solutions", in.agreement[k].matches}});
+                     {"solution_computes", in.agreement[k].matches}});
   }
   const nlohmann::json solutionResult = in.bothReturned ? vec(in.solutionReturns) : nlohmann::json();
   return {{"exercise", in.exercise},
