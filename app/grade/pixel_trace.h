@@ -115,6 +115,7 @@ struct InspectionRow {
   bool departs = false;
 };
 std::vector<InspectionRow> inspectionRows(const PixelInspection& inspection);
+std::vector<InspectionRow> labInspectionRows(const LabInspection& inspection);
 // The inspection as the terminal prints it: the pixel's colours, then each traced line's values,
 // yours, with whether the solution computes them there, and the line where they part.
 std::string formatInspection(const PixelInspection& inspection);

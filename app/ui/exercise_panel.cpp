@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <tuple>
 
 #include "app/grade/pixel_trace.h"
@@ -87,10 +86,17 @@ gl::Texture2D textureOf(const ImageF& image) {
 
 ImTextureID imguiTexture(const gl::Texture2D& t) { return reinterpret_cast<ImTextureID>(intptr_t(t.id())); }
 
-// The inspector at the requested pixel of the configuration on screen. The grader's frame is drawn
-// at the rubric's size: the same point of the view lies in the same direction from the camera,
-// its offset from the centre scaled by the two projections' vertical extents (a portrait view
-// widens its vertical field to keep the horizontal one: OrbitCamera::projection).
+// An inspection's table into the section, and onto the terminal (the page's console) as Check's
+// lines go; the point stays marked while the camera is the one it was pressed with.
+void showInspection(ExercisePanel& panel, LabHost& host, std::vector<InspectionRow> rows) {
+  panel.inspection = std::move(rows);
+  panel.inspectedView = host.camera().view();
+  panel.picture = {};
+  panel.pictureSays.clear();
+  for (auto& row : panel.inspection) std::printf("%s\n", row.text.c_str());
+  std::fflush(stdout);
+}
+
 // With no exercise open, the lab's own pass at the pixel, drawn as the view is (its settings and
 // camera as a shared link carries them, at the view's size): its values alone.
 StatusLine inspectViewPixel(ExercisePanel& panel, LabHost& host) {
@@ -101,19 +107,16 @@ StatusLine inspectViewPixel(ExercisePanel& panel, LabHost& host) {
           studentFolders(host), in);
       !e.empty())
     return StatusLine::failed("Inspect: " + e);
-  const std::string text = formatLabInspection(in);
-  panel.inspection.clear();
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) panel.inspection.push_back({line, -1, false});
   panel.inspected = {};
-  panel.inspectedView = host.camera().view();
-  panel.picture = {};
-  std::printf("%s", text.c_str());
-  std::fflush(stdout);
+  showInspection(panel, host, labInspectionRows(in));
   return StatusLine::done("inspected pixel " + std::to_string(panel.inspectPixel.x) + ", " +
                           std::to_string(panel.inspectPixel.y) + " of the view");
 }
 
+// The inspector at the requested pixel of the configuration on screen. The grader's frame is drawn
+// at the rubric's size: the same point of the view lies in the same direction from the camera,
+// its offset from the centre scaled by the two projections' vertical extents (a portrait view
+// widens its vertical field to keep the horizontal one: OrbitCamera::projection).
 StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
   if (panel.selected.empty()) return inspectViewPixel(panel, host);
   if (panel.shown < 0 || panel.shown >= int(panel.configurations.size()))
@@ -134,14 +137,9 @@ StatusLine inspectShownPixel(ExercisePanel& panel, LabHost& host) {
   PixelInspection in;
   if (auto e = inspectPixel(ex, index, studentFolders(host), pixel, in); !e.empty())
     return StatusLine::failed("Inspect: " + e);
-  panel.inspection = inspectionRows(in);
   panel.inspected = std::move(in);
   panel.inspectedConfiguration = index;
-  panel.inspectedView = host.camera().view();
-  panel.picture = {};
-  panel.pictureSays.clear();
-  std::printf("%s", formatInspection(panel.inspected).c_str());  // on the terminal too, as Check's lines
-  std::fflush(stdout);
+  showInspection(panel, host, inspectionRows(panel.inspected));
   return StatusLine::done("inspected pixel " + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) +
                           " of the grader's frame");
 }
@@ -288,7 +286,9 @@ void drawInspection(ExercisePanel& panel) {
   const std::vector<TracePoint>& points = panel.inspected.student.values.points;
   for (size_t r = 0; r < panel.inspection.size(); ++r) {
     const InspectionRow& row = panel.inspection[r];
-    const bool clickable = row.point >= 0 && points[size_t(row.point)].kind != TracePoint::Kind::Sub;
+    // An exercise's values only (the lab's own pass has no solution to draw beside).
+    const bool clickable =
+        row.point >= 0 && size_t(row.point) < points.size() && points[size_t(row.point)].kind != TracePoint::Kind::Sub;
     if (row.departs) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
     if (clickable) {
       // A selectable the size of the wrapped text, the text drawn over it.
