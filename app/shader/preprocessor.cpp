@@ -304,6 +304,7 @@ std::string flattenInterfaceBlocks(const std::string& source) {
 }
 
 std::string hoistExtensions(const std::string& source) {
+  if (source.find("#extension") == std::string::npos) return source;  // every program is preprocessed: most have none
   std::vector<std::string> lines;
   {
     std::istringstream in(source);
