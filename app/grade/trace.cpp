@@ -349,7 +349,7 @@ class Instrumenter {
           if (glsl::isBasicType(f_.returnType))
             expr(st.expr, 0, true, "return", TracePoint::Kind::Returned);
           else
-            expr(st.expr, 0, true);
+            for (int k : expr(st.expr, 0, true)) out_.points[size_t(k)].partOfResult = true;
         }
         if (!outs.empty()) {
           inserts_.push_back({st.begin, 1, kStatementDepth, "{" + outs + " "});

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <nlohmann/json_fwd.hpp>
 
@@ -35,6 +36,9 @@ struct TracePoint {
   std::vector<int> from;    // the points its value is made of (sub-expressions, variables read)
   bool constant = false;    // an expression of literals alone
   bool initialised = true;  // Declared: with a value (`float x;` has none until a call or line sets it)
+  // Read straight by a return whose value has no tap (a matrix): a part of the function's result,
+  // where the alignment starts as it does at a return.
+  bool partOfResult = false;
 };
 
 struct InstrumentedSource {
@@ -72,6 +76,11 @@ struct TraceValues {
   std::vector<std::vector<float>> quantities;
 };
 
+// The lab's own draw is traced in a block of pixels this far each way from the pixel asked for
+// (grade/pixel_trace.h): 7 x 7, rows enough for the alignment's 8, at an edge too.
+constexpr int kTraceBlockRadius = 3;
+constexpr int kTraceBlockSide = 2 * kTraceBlockRadius + 1;
+
 // Where the student's values leave the solution's.
 struct TraceFinding {
   bool found = false;
@@ -81,7 +90,16 @@ struct TraceFinding {
   std::vector<std::string> matching;  // what it is made of, all matching the solution's values
   std::string relation;               // "" or how it relates ("the solution's result, negated")
   int matchedBefore = 0;              // the student's points before it whose values match
+  bool upToHere = false;              // every value on the lines before it matches (and there are some)
   std::string text;                   // the sentence for the student
+  // Where the rows came from: the block of the lab's own draw around this pixel (grade/
+  // pixel_trace.h), or the probe's table (-1, -1).
+  glm::ivec2 pixel{-1};
+  bool inDraw() const { return pixel.x >= 0; }
+  // Whether the line stands out: what it is made of matches, or everything before it does. A
+  // value wrong for a reason none of its operands shows (a count a changed branch grows less
+  // often) is where the walk stopped, not where the values part.
+  bool isolated() const { return found && (!matching.empty() || upToHere); }
   std::string tag() const { return "line:" + std::to_string(line); }
 };
 // `inputs` names the function's parameters for the student ("the direction to the light L"), by

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <set>
 
@@ -18,10 +19,13 @@ namespace {
 constexpr int kFewestRows = 8;          // rows both sides must reach before their values say anything
 constexpr double kMatchingRows = 0.98;  // the share of those rows that must agree (a kink's neighbours may not)
 
+// Two values one computation apart in rounding: relative, with a floor small beside the values a
+// draw's derivatives take (a texel's worth of position across one pixel is around 1e-3, products
+// of two such around 1e-5, so a floor there would make them all one value).
 bool close(float a, float b) {
   if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
   if (std::isinf(a) || std::isinf(b)) return a == b;
-  return std::abs(a - b) <= 1e-5 + 3e-4 * std::max(std::abs(a), std::abs(b));
+  return std::abs(a - b) <= 1e-7 + 3e-4 * std::max(std::abs(a), std::abs(b));
 }
 
 int componentsAt(const std::vector<glm::vec4>& v) {
@@ -66,9 +70,49 @@ bool constantValue(const std::vector<glm::vec4>& v, int c, float& value) {
   return !first;
 }
 
+// What a point is called when its role is looked for on the other side: a variable by its name,
+// an expression by its text, a result as the result.
+std::string roleOf(const TracePoint& p) {
+  switch (p.kind) {
+    case TracePoint::Kind::Returned:
+      return "return " + p.function;
+    case TracePoint::Kind::OutParam:
+      return "out " + p.function + " " + p.name;
+    case TracePoint::Kind::Param:
+      return "in " + p.function + " " + p.name;
+    default:
+      return p.function + " " + p.name;
+  }
+}
+
 class Aligner {
  public:
-  Aligner(const TraceValues& student, const TraceValues& solution) : st_(student), so_(solution) {}
+  Aligner(const TraceValues& student, const TraceValues& solution) : st_(student), so_(solution) {
+    for (size_t q = 0; q < so_.points.size(); ++q) roles_[roleOf(so_.points[q])].push_back(&so_.values[q]);
+    // A function with several returns returns, on each row, what the one reached there returns.
+    for (auto& [role, values] : roles_) {
+      if (values.size() < 2 || !role.starts_with("return ")) continue;
+      std::vector<glm::vec4> merged(values.front()->size(), glm::vec4(0.0f));
+      for (auto* v : values)
+        for (size_t r = 0; r < merged.size() && r < v->size(); ++r)
+          if ((*v)[r].w > 0.0f) merged[r] = (*v)[r];
+      values.push_back(&merged_.emplace_back(std::move(merged)));
+    }
+  }
+
+  // Whether the student's point k holds its role's values: where the solution has a point in the
+  // same role (its result, a variable of the same name, an expression written the same way) that
+  // is reached where k is, k must hold that point's values, component for component; a value that
+  // is some other of the solution's values there has left the solution's path (an index one texel
+  // on is the solution's next index, not its index). Elsewhere, any value the solution computes.
+  bool holdsRole(int k) {
+    if (auto it = roleMemo_.find(k); it != roleMemo_.end()) return it->second;
+    const int role = namesakeState(k);
+    return roleMemo_[k] = role == kNoNamesake ? matches(k) : role == kNamesakeHeld;
+  }
+  // Whether k has a namesake whose values it does not hold, though they are values the solution
+  // computes: the sentence says it does not hold its namesake's values, not "none of its steps".
+  bool leftItsRole(int k) { return namesakeState(k) == kNamesakeLeft && matches(k); }
 
   // Whether the student's point k is a value the solution computes: a scalar, any of its values'
   // components; a vector, one of its vectors whole, component for component (x and y exchanged
@@ -121,6 +165,36 @@ class Aligner {
   bool reachedPoint(int k) const { return reached(st_.values[k]); }
 
  private:
+  static constexpr int kNoNamesake = 0, kNamesakeHeld = 1, kNamesakeLeft = 2;
+  int namesakeState(int k) {
+    const TracePoint& p = st_.points[size_t(k)];
+    const auto it = roles_.find(roleOf(p));
+    // A value no input reaches is told wrong against the solution's own such values (matches).
+    if (it == roles_.end() || !readsInputs(k)) return kNoNamesake;
+    const auto& a = st_.values[size_t(k)];
+    const int n = componentsAt(a);
+    bool any = false;
+    for (const auto* v : it->second) {
+      const auto& b = *v;
+      if (componentsAt(b) != n || !coReached(a, b)) continue;
+      any = true;
+      bool all = n > 0;
+      for (int c = 0; c < n && all; ++c) all = follows(a, c, b, c, [](float x) { return x; });
+      if (all) return kNamesakeHeld;
+    }
+    return any ? kNamesakeLeft : kNoNamesake;
+  }
+  // Whether `b` was reached on (almost) every row `a` was: only then do its values stand for a's role.
+  static bool coReached(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
+    size_t mine = 0, both = 0;
+    for (size_t r = 0; r < a.size() && r < b.size(); ++r) {
+      if (a[r].w <= 0.0f) continue;
+      ++mine;
+      both += b[r].w > 0.0f;
+    }
+    return both >= size_t(kFewestRows) && double(both) >= kMatchingRows * double(mine);
+  }
+
   // A component constant over every row reached, at 0, 1 or a number the solution writes.
   bool constantMatches(const std::vector<glm::vec4>& a, int c) const {
     float value = 0.0f;
@@ -158,7 +232,9 @@ class Aligner {
 
   const TraceValues& st_;
   const TraceValues& so_;
-  std::map<int, bool> memo_;
+  std::map<int, bool> memo_, roleMemo_;
+  std::map<std::string, std::vector<const std::vector<glm::vec4>*>> roles_;
+  std::deque<std::vector<glm::vec4>> merged_;  // results merged over returns (stable addresses)
   std::map<size_t, bool> reads_;
   mutable std::map<size_t, bool> solutionReads_;
 };
@@ -235,16 +311,24 @@ TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution
                          const std::vector<std::pair<std::string, std::string>>& inputs, const std::string& file) {
   TraceFinding out;
   Aligner align(student, solution);
-  const auto wrong = [&](int k) { return align.reachedPoint(k) && !align.matches(k); };
+  const auto wrong = [&](int k) { return align.reachedPoint(k) && !align.holdsRole(k); };
   // Where to start: the student's results that differ from the solution's result.
   int solutionResult = -1;
   for (size_t k = 0; k < solution.points.size(); ++k)
     if (solution.points[k].kind == TracePoint::Kind::Returned && reached(solution.values[k])) solutionResult = int(k);
-  int departure = -1;
+  // The student's results: what it returns and its out-parameters; where the result has no tap of
+  // its own (a matrix), the parts it is built of.
+  std::vector<int> results;
   for (size_t k = 0; k < student.points.size(); ++k) {
-    const TracePoint::Kind kind = student.points[k].kind;
-    if (kind != TracePoint::Kind::Returned && kind != TracePoint::Kind::OutParam) continue;
-    if (!wrong(int(k))) continue;
+    const TracePoint& p = student.points[k];
+    if (p.kind == TracePoint::Kind::Returned || p.kind == TracePoint::Kind::OutParam)
+      results.push_back(int(k));
+    else if (p.partOfResult)
+      for (int part : align.reachedPoint(int(k)) ? std::vector<int>{int(k)} : p.from) results.push_back(part);
+  }
+  int departure = -1;
+  for (int k : results) {
+    if (!wrong(k)) continue;
     // Down through what it is made of, always into the earliest value that is wrong.
     int at = int(k);
     std::set<int> seen;
@@ -277,7 +361,7 @@ TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution
       (p.kind == TracePoint::Kind::Sub && !p.statement.empty() && p.statement != "return") ? p.statement : p.name;
   for (int q : p.from) {
     const TracePoint& o = student.points[q];
-    if (align.reachedPoint(q) && !o.constant && align.matches(q)) out.matching.push_back(o.name);
+    if (align.reachedPoint(q) && !o.constant && align.holdsRole(q)) out.matching.push_back(o.name);
   }
   std::sort(out.matching.begin(), out.matching.end());
   out.matching.erase(std::unique(out.matching.begin(), out.matching.end()), out.matching.end());
@@ -286,7 +370,7 @@ TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution
   for (size_t k = 0; k < student.points.size(); ++k) {
     const TracePoint& o = student.points[k];
     if (o.function != p.function || o.line >= p.line || !align.reachedPoint(int(k)) || o.constant) continue;
-    if (align.matches(int(k)))
+    if (align.holdsRole(int(k)))
       ++out.matchedBefore;
     else
       earlierMatch = false;
@@ -307,9 +391,18 @@ TraceFinding alignTraces(const TraceValues& student, const TraceValues& solution
       out.relation = "one of the solution's values with its components in another order (" + moves + ")";
   // The sentence: the line, what matches up to it, and what its value is; never the solution's code.
   std::string t = "Line " + std::to_string(p.line) + " of " + file + " (`" + out.name + "`): ";
-  if (earlierMatch && out.matchedBefore > 0) t += "your values up to this line match the solution's; here ";
-  t += (p.kind == TracePoint::Kind::Returned ? "what " + p.function + "() returns" : "`" + out.name + "`") +
-       " takes values that none of the solution's steps take";
+  out.upToHere = earlierMatch && out.matchedBefore > 0;
+  if (out.upToHere) t += "your values up to this line match the solution's; here ";
+  const std::string what =
+      p.kind == TracePoint::Kind::Returned ? "what " + p.function + "() returns" : "`" + out.name + "`";
+  if (!align.leftItsRole(departure))
+    t += what + " takes values that none of the solution's steps take";
+  else if (p.kind == TracePoint::Kind::Returned)
+    t += what + " is not what the solution returns (the solution computes these values on its way)";
+  else
+    t += what + " does not hold the values of the solution's " +
+         (p.kind == TracePoint::Kind::Sub ? "expression written the same way" : "`" + p.name + "`") +
+         " (the solution computes them elsewhere)";
   if (!out.matching.empty())
     t += ", though " + englishList(out.matching, "`") + ", which it is made of, " +
          (out.matching.size() == 1 ? "matches" : "match") + " the solution's values";
@@ -324,7 +417,7 @@ std::vector<PointAgreement> pointAgreement(const TraceValues& student, const Tra
   std::vector<PointAgreement> out(student.points.size());
   for (size_t k = 0; k < out.size(); ++k) {
     out[k].reached = align.reachedPoint(int(k));
-    out[k].matches = out[k].reached && align.matches(int(k));
+    out[k].matches = out[k].reached && align.holdsRole(int(k));
   }
   return out;
 }
@@ -337,7 +430,9 @@ nlohmann::json toJson(const TraceFinding& f) {
           {"matching", f.matching},
           {"relation", f.relation},
           {"matched_before", f.matchedBefore},
-          {"text", f.text}};
+          {"up_to_here", f.upToHere},
+          {"text", f.text},
+          {"pixel", {f.pixel.x, f.pixel.y}}};
 }
 
 TraceFinding traceFindingFromJson(const nlohmann::json& j) {
@@ -352,7 +447,11 @@ TraceFinding traceFindingFromJson(const nlohmann::json& j) {
       if (m.is_string()) f.matching.push_back(m.get<std::string>());
   f.relation = j.value("relation", std::string());
   f.matchedBefore = j.value("matched_before", 0);
+  f.upToHere = j.value("up_to_here", false);
   f.text = j.value("text", std::string());
+  if (j.contains("pixel") && j["pixel"].is_array() && j["pixel"].size() == 2 && j["pixel"][0].is_number_integer() &&
+      j["pixel"][1].is_number_integer())
+    f.pixel = {j["pixel"][0].get<int>(), j["pixel"][1].get<int>()};
   return f;
 }
 

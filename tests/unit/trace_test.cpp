@@ -264,5 +264,55 @@ TEST(Trace, AVectorWithItsComponentsExchangedIsWhereTheValuesPart) {
   EXPECT_NE(f.relation.find("x and y exchanged"), std::string::npos) << f.relation;
 }
 
+// A variable the solution also has must hold the solution's values of that name: a value that is
+// another of the solution's (the student's p is the solution's q, one step on) has left its role,
+// and the line that set it is where the values part, not the first line whose values are no one's.
+TEST(Trace, AValueInARoleTheSolutionHasMustHoldThatRolesValues) {
+  using K = TracePoint::Kind;
+  // The solution: p = x - 0.5, q = p + 1, returns p q.
+  const TraceValues solution =
+      side({at(K::Param, 1, "x", {}), at(K::Declared, 2, "p", {0}, "p"), at(K::Declared, 3, "q", {1}, "q"),
+            at(K::Returned, 4, "p * q", {1, 2}, "return")},
+           {[](float x) { return x; }, [](float x) { return x - 0.5f; }, [](float x) { return x + 0.5f; },
+            [](float x) { return (x - 0.5f) * (x + 0.5f); }});
+  // The student's p = x + 0.5: the solution's q.
+  const TraceValues student = side({at(K::Param, 1, "x", {}), at(K::Declared, 2, "p", {0}, "p"),
+                                    at(K::Declared, 3, "q", {1}, "q"), at(K::Returned, 4, "p * q", {1, 2}, "return")},
+                                   {[](float x) { return x; }, [](float x) { return x + 0.5f; },
+                                    [](float x) { return x + 1.5f; }, [](float x) { return (x + 0.5f) * (x + 1.5f); }});
+  const TraceFinding f = alignTraces(student, solution, {}, "f.glsl");
+  ASSERT_TRUE(f.found);
+  EXPECT_EQ(f.line, 2);
+  EXPECT_TRUE(f.isolated());
+  EXPECT_NE(f.text.find("`p` does not hold the values of the solution's `p` (the solution computes them "
+                        "elsewhere), though `x`, which it is made of, matches"),
+            std::string::npos)
+      << f.text;
+  // A name the solution does not have is matched against all its values, as before: the same
+  // function with its p called r is not wrong at r.
+  TraceValues renamed = student;
+  renamed.points[1].name = renamed.points[1].statement = "r";
+  EXPECT_EQ(alignTraces(renamed, solution, {}, "f.glsl").line, 3);
+}
+
+// A result with no tap of its own (a matrix) is aligned from the parts it is built of.
+TEST(Trace, AMatrixResultIsAlignedFromItsColumns) {
+  using K = TracePoint::Kind;
+  auto built = [](std::function<float(float)> column) {
+    TraceValues t =
+        side({at(K::Param, 1, "x", {}), at(K::Declared, 2, "t", {0}, "t"), at(K::Sub, 3, "mat2(t, x)", {1, 0})},
+             {[](float x) { return x; }, column, [](float) { return 0.0f; }});
+    t.points[2].partOfResult = true;
+    for (auto& v : t.values[2]) v.w = 0.0f;  // the matrix's tap writes nothing
+    return t;
+  };
+  const TraceValues solution = built([](float x) { return 2 * x; });
+  const TraceFinding f = alignTraces(built([](float x) { return 3 * x; }), solution, {}, "f.glsl");
+  ASSERT_TRUE(f.found);
+  EXPECT_EQ(f.line, 2);
+  EXPECT_EQ(f.name, "t");
+  EXPECT_FALSE(alignTraces(solution, solution, {}, "f.glsl").found);
+}
+
 }  // namespace
 }  // namespace shadelab
