@@ -87,13 +87,24 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
     if (!out.missingFiles.empty()) {
       notSubmitted(c, out.missingFiles.front() + " is in none of the --shaders folders", result);
     } else {
-      const ConfigurationJob job = jobOf(i);
-      const WatchedRun run =
+      ConfigurationJob job = jobOf(i);
+      job.traceInDraw = traceInDrawNext(ex, out.configurations);
+      WatchedRun run =
           runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
-                     [&](const std::string& phase) { return phase == "student" ? g.watchdog : kSolutionSeconds; },
+                     [&](const std::string& phase) { return phase == "solution" ? kSolutionSeconds : g.watchdog; },
                      (g.dir / "logs" / (job.stem + ".log")).string());
-      const nlohmann::json solution = readResult(job, "solution"), student = readResult(job, "student");
-      for (const char* phase : {"solution", "student"}) fs::remove(g.dir / (job.stem + "-" + phase + ".json"));
+      const nlohmann::json solution = readResult(job, "solution");
+      nlohmann::json student = readResult(job, "student");
+      const nlohmann::json trace = readResult(job, "trace");
+      for (const char* phase : {"solution", "student", "trace"}) fs::remove(g.dir / (job.stem + "-" + phase + ".json"));
+      if (job.traceInDraw && student.is_object()) {
+        // The trace comes after the frame was scored: stopped or crashed there, the frame still counts.
+        if (trace.is_object())
+          student.update(trace);
+        else if (run.phase == "trace" && (run.end != WatchedRun::End::Exited || run.status != 0))
+          student["trace_unavailable"] = "tracing your function in the lab's draw " + run.describe();
+        if (run.phase == "trace") run = {};
+      }
       if (auto e = scoreConfiguration(job, run, g.watchdog, solution, student, result); !e.empty()) return e;
       if (renderer.empty()) renderer = solution.value("renderer", "");
       ++(solution.value("from_cache", false) ? cache.fromCache : cache.rendered);

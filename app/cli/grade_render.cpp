@@ -103,6 +103,11 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
     writePng((job.dir / (job.stem + "-diff.png")).string(), diffImage(image, solution));
   }
   writeResult(job, "student", student);
+  if (job.traceInDraw) {
+    enter("trace");
+    if (const nlohmann::json trace = traceStudentFrame(ex, c, job.studentDirs, student, image, built); !trace.is_null())
+      writeResult(job, "trace", trace);
+  }
   return 0;
 }
 

@@ -6,6 +6,7 @@
 //   <stem>-solution.png, <stem>-student.png, <stem>-diff.png      images for the report
 //   <stem>-solution.json, <stem>-student.json                    numbers and build errors
 //   <stem>-slips.json                                            the student's frame against the slips
+//   <stem>-trace.json                                            their function traced in the draw
 #pragma once
 #include <filesystem>
 #include <functional>
@@ -35,13 +36,17 @@ struct ConfigurationJob {
   // slipsNeeded): draw them unless the cache holds them (and keep them there), draw the student's
   // frame again and write its distances to them, <stem>-slips.json (slipDistances).
   bool slips = false;
+  // After the student's frame, the phase "trace": where it differs from the solution's, their
+  // function traced in the lab's draw (grade/configuration_frames.h: traceStudentFrame), written
+  // to <stem>-trace.json.
+  bool traceInDraw = false;
 };
 
 // The part of a configuration's cache key known before a context exists: the built-in shaders,
 // the rubric, the starter (drawn as a mistake), the configuration's index and the executable.
 std::string solutionKeyBase(const Exercise& ex, size_t configuration);
 
-// Runs in the child. `enter` announces the phases "solution" and "student". Exit code 0, or 2
+// Runs in the child. `enter` announces the phases "solution", "student" and "trace". Exit code 0, or 2
 // when the rubric or the built-in solution is at fault (the message is in <stem>-solution.json,
 // whose "from_cache" says whether the built-in side was rendered or read back).
 int renderConfiguration(const ConfigurationJob& job, const std::function<void(const std::string&)>& enter);

@@ -12,6 +12,7 @@
 #include "app/grade/frame_relations.h"
 #include "app/grade/function_probe.h"
 #include "app/grade/mutants.h"
+#include "app/grade/pixel_trace.h"
 #include "app/grade/probe_trace.h"
 #include "app/host/configure.h"
 #include "app/host/measurer.h"
@@ -329,6 +330,18 @@ std::string studentSlipDistances(const Exercise& ex, const Configuration& c, con
   return {};
 }
 
+bool traceInDrawNext(const Exercise& ex, const std::vector<ConfigurationResult>& before) {
+  if (std::any_of(ex.configurations.begin(), ex.configurations.end(),
+                  [](const Configuration& c) { return c.function >= 0; }))
+    return false;
+  int traced = 0;
+  for (auto& c : before) {
+    if (c.trace.found) return false;
+    traced += c.traceTried;
+  }
+  return traced < kMostDrawTraces;
+}
+
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,
                            const CachedSolution& solution, ImageF& image, std::string& error) {
   std::vector<fs::path> roots = studentDirs;
@@ -408,6 +421,18 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
     }
   }
   return student;
+}
+
+nlohmann::json traceStudentFrame(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,
+                                 const nlohmann::json& student, const ImageF& image, const CachedSolution& solution) {
+  if (!student.is_object() || !student.value("errors", nlohmann::json::array()).empty() ||
+      !(student.value("distance", 0.0) > kFramesDiffer))
+    return nullptr;
+  TraceFinding finding;
+  const size_t index = size_t(&c - ex.configurations.data());
+  if (auto why = traceWhereFramesDiffer(ex, index, studentDirs, image, solution.frame, finding); !why.empty())
+    return {{"trace_unavailable", why}};
+  return {{"trace", toJson(finding)}};
 }
 
 }  // namespace shadelab

@@ -66,4 +66,19 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c,
                            const std::vector<std::filesystem::path>& studentDirs, const CachedSolution& solution,
                            ImageF& image, std::string& error);
 
+// The student's function traced in the lab's draw where their frame (`image`, whose numbers
+// drawStudent gave as `student`) differs most from the solution's (grade/pixel_trace.h:
+// traceWhereFramesDiffer): {"trace": the finding} or {"trace_unavailable": why}; null where the
+// frame did not build or does not differ.
+nlohmann::json traceStudentFrame(const Exercise& ex, const Configuration& c,
+                                 const std::vector<std::filesystem::path>& studentDirs, const nlohmann::json& student,
+                                 const ImageF& image, const CachedSolution& solution);
+
+// Whether the next configuration's frame is traced so (traceStudentFrame), given the
+// configurations graded before it: for an exercise whose function no probe holds (its
+// trace is the probe's, grade/probe_trace.h), until a trace finds where the values part or
+// kMostDrawTraces frames were traced. A frame that does not differ is not traced.
+constexpr int kMostDrawTraces = 2;
+bool traceInDrawNext(const Exercise& ex, const std::vector<ConfigurationResult>& before);
+
 }  // namespace shadelab

@@ -405,16 +405,33 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
   double relationResidual = 0.0, relationMisfit = 0.0;  // summed where it must hold; over the distance
   const bool related = commonRelation(ev, relation, relationResidual, relationMisfit);
   const SlipFinding slip = findSlip(ex, e);
-  // The student's own code traced beside the solution's (the function probed by itself): the line
-  // where their values part. It states only what the values show, so it stands before any cause
-  // read from frames that are merely close to a mistake's, a slip's or a relation's.
-  const ConfigurationResult* traced = nullptr;
+  // The student's own code traced beside the solution's (the function probed by itself, else in the
+  // lab's draw where the frames differ most): the line where their values part. It states only
+  // what the values show, so it stands before any cause read from frames that are merely close to
+  // a mistake's, a slip's or a relation's.
+  // A trace whose line does not stand out (TraceFinding::isolated) is said only where nothing
+  // but a guess would be.
+  const ConfigurationResult *traced = nullptr, *loose = nullptr;
   for (auto* c : ev.functions)
-    if (!traced && c->trace.found) traced = c;
+    if (!traced && c->trace.isolated()) traced = c;
+  for (auto& c : e.configurations)
+    if (!traced && c.trace.isolated()) traced = &c;
+  for (auto& c : e.configurations)
+    if (!loose && c.trace.found) loose = &c;
+  const auto traceEvidence = [&] {
+    const TraceFinding& t = traced->trace;  // (sayTrace may be given the loose one)
+    return t.inDraw() ? "every value your function computes in the lab's own draw, traced beside the solution's "
+                        "at the " +
+                            std::to_string(kTraceBlockSide) + " x " + std::to_string(kTraceBlockSide) +
+                            " pixels around pixel " + std::to_string(t.pixel.x) + ", " + std::to_string(t.pixel.y) +
+                            " of " + quoted(traced->name) + ", where your frame differs most"
+                      : "every value your function computes, traced beside the solution's on the same table of "
+                        "inputs, " +
+                            quoted(traced->name);
+  };
   const auto sayTrace = [&] {
     e.explanation = traced->trace.tag();
-    e.diagnosis = traced->trace.text + " (Evidence: every value your function computes, traced beside the " +
-                  "solution's on the same table of inputs, " + quoted(traced->name) + ".)";
+    e.diagnosis = traced->trace.text + " (Evidence: " + traceEvidence() + ".)";
   };
 
   if (!agreeing.empty()) {
@@ -490,7 +507,9 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
       return;
     }
   }
-  if (agreeing.empty())
+  // Two listed mistakes together are a likeness of frames: where the student's own code is traced,
+  // its line is what the evidence shows.
+  if (agreeing.empty() && !traced)
     for (size_t k = 1; k < ex.mistakes.size(); ++k)
       for (size_t j = k + 1; j < ex.mistakes.size(); ++j)
         if (double misfit; agreeTogether(ev, k, j, misfit)) {
@@ -522,7 +541,9 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     }
     // A slip that draws the student's frames exactly is one edit from the solution: its kind
     // names the cause. The trace adds where the student's own values part.
-    if (traced) e.diagnosis += " Traced line by line: " + traced->trace.text;
+    if (traced)
+      e.diagnosis += " Traced line by line" + std::string(traced->trace.inDraw() ? " in the lab's draw" : "") + ": " +
+                     traced->trace.text;
     return;
   }
   if (traced) {
@@ -577,6 +598,11 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
         e.diagnosis += " " + seen;
         break;
       }
+    return;
+  }
+  if (loose) {  // what the student's values show, before a property's usual cause
+    traced = loose;
+    sayTrace();
     return;
   }
   for (auto* c : ev.losing)

@@ -132,8 +132,12 @@ void ExerciseCheck::step() {
     }
     ImageF image;
     std::string configError;
-    const nlohmann::json student = drawStudent(exercise_, c, studentDirs_, kept->second, image, configError);
+    nlohmann::json student = drawStudent(exercise_, c, studentDirs_, kept->second, image, configError);
     if (!configError.empty()) return stop(configError);
+    if (traceInDrawNext(exercise_, result_.configurations))
+      if (const nlohmann::json trace = traceStudentFrame(exercise_, c, studentDirs_, student, image, kept->second);
+          !trace.is_null())
+        student.update(trace);
     if (auto e = scoreChecks(exercise_, c, kept->second.numbers, student, {}, out); !e.empty()) return stop(e);
     if (std::any_of(out.checks.begin(), out.checks.end(),
                     [](const CheckResult& r) { return r.grade != Grade::Full; }) &&

@@ -172,6 +172,7 @@ std::string scoreChecks(const Exercise& ex, const Configuration& c, const nlohma
     addSlipEvidence(solution, student.value("slips", nlohmann::json()), out);
     if (student.contains("trace")) out.trace = traceFindingFromJson(student["trace"]);
     out.traceUnavailable = student.value("trace_unavailable", std::string());
+    out.traceTried = student.contains("trace") || student.contains("trace_unavailable");
   }
   out.function = c.function >= 0;
   for (auto& check : c.checks) {

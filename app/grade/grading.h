@@ -87,10 +87,12 @@ struct ConfigurationResult {
   // A function probe's configuration (grade/function_probe.h): no checks, and what its table says.
   bool function = false;
   std::vector<ProbeFinding> probeFindings;
-  // The student's function traced beside the solution's on the probe's table (grade/trace.h): where
-  // their values part, or why there is no trace ("" when it was not asked for).
+  // The student's function traced beside the solution's (grade/trace.h), on the probe's table or in
+  // the lab's draw (trace.pixel): where their values part, or why there is no trace ("" when it was
+  // not asked for); traceTried when it was.
   TraceFinding trace;
   std::string traceUnavailable;
+  bool traceTried = false;
   // Image files beside the report ("" when not made).
   std::string studentImage, solutionImage, diffImage;
   std::vector<CheckResult> checks;

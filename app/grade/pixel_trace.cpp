@@ -23,8 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kBlockRadius = 3;  // a 7 x 7 block: rows enough for the alignment's 8, at an edge too
-constexpr int kBlockSide = 2 * kBlockRadius + 1;
+constexpr int kBlockRadius = kTraceBlockRadius;
+constexpr int kBlockSide = kTraceBlockSide;
 constexpr int kSlots = 4 * kBlockSide * kBlockSide;  // fragments kept: four layers of the block
 constexpr int kCentres = 4;                          // fragments at the pixel whose iterations are kept
 constexpr int kIterations = PixelSide::kIterations;
@@ -323,6 +323,34 @@ std::string inspectPixel(const Exercise& ex, size_t configuration, const std::ve
     if (out.student.values.points[k].kind != TracePoint::Kind::Sub && out.agreement[k].reached &&
         !out.agreement[k].matches)
       out.firstUnmatched = int(k);
+  return {};
+}
+
+glm::ivec2 mostDifferentPixel(const ImageF& a, const ImageF& b) {
+  glm::ivec2 best{0};
+  float most = -1.0f;
+  for (int y = 0; y < a.size.y && y < b.size.y; ++y)
+    for (int x = 0; x < a.size.x && x < b.size.x; ++x) {
+      float d = 0.0f;
+      for (int c = 0; c < 3; ++c) d += std::abs(a.at(x, y)[c] - b.at(x, y)[c]);
+      if (d > most) {
+        most = d;
+        best = {x, y};
+      }
+    }
+  return best;
+}
+
+std::string traceWhereFramesDiffer(const Exercise& ex, size_t configuration, const std::vector<fs::path>& studentDirs,
+                                   const ImageF& student, const ImageF& solution, TraceFinding& out) {
+  out = {};
+  if (student.rgba.empty() || student.size != solution.size) return "your frame was not drawn at the solution's size";
+  const glm::ivec2 pixel = mostDifferentPixel(student, solution);
+  PixelInspection inspection;
+  if (auto e = inspectPixel(ex, configuration, studentDirs, pixel, inspection); !e.empty()) return e;
+  if (!inspection.note.empty()) return inspection.note;
+  out = inspection.departure;
+  out.pixel = pixel;
   return {};
 }
 

@@ -68,6 +68,18 @@ struct PixelInspection {
 std::string inspectPixel(const Exercise& ex, size_t configuration,
                          const std::vector<std::filesystem::path>& studentDirs, glm::ivec2 pixel, PixelInspection& out);
 
+// The pixel where two frames of one size differ most (the sum of their colours' differences).
+glm::ivec2 mostDifferentPixel(const ImageF& a, const ImageF& b);
+
+// What the grader traces where no probe holds the function: the student's function traced in the
+// lab's draw of configuration `configuration` at the pixel where `student` (their frame) differs
+// most from `solution`, and the line where their values part (`out.pixel` that pixel; not found
+// where nothing parts). Returns "" or why that pixel cannot be traced (the function ran in no
+// fragment there, a context without storage buffers, ...).
+std::string traceWhereFramesDiffer(const Exercise& ex, size_t configuration,
+                                   const std::vector<std::filesystem::path>& studentDirs, const ImageF& student,
+                                   const ImageF& solution, TraceFinding& out);
+
 // One variable over the whole frame: each pixel's value of `name` (a variable or parameter of the
 // traced function, or "return": what it returns) on `line` (any line if 0), the student's, and the
 // solution's where it has a value of that name (its names are its own: where it has none, the

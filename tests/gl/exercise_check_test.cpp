@@ -174,6 +174,27 @@ TEST_F(Check, ASlipNoRubricListsIsNamedAfterTheSlipsAreDrawn) {
   EXPECT_EQ(check.result().explanation, "slip:constant");
 }
 
+// A function no probe holds (PCF takes the lab's maps and structs) is traced in the lab's own draw
+// by the Check as by `shadelab grade` (tests/grade/grade_test.cpp makes the same change): the slip
+// it is, and the line of the change traced at the pixel where the frames differ most.
+TEST_F(Check, AFunctionNoProbeHoldsIsTracedInTheLabsDraw) {
+  std::string text = readWholeFile(kShaders / "shadows/pcf.glsl");
+  const std::string centred = "vec2(i, j) - 0.5 * float(PCF_SIZE - 1));";
+  const size_t at = text.find(centred);
+  ASSERT_NE(at, std::string::npos) << "the solution's taps are written differently now";
+  text.replace(at, centred.size(), "vec2(i, j) - float(PCF_SIZE - 1));");
+  fs::create_directories(student / "shadows");
+  std::ofstream(student / "shadows/pcf.glsl") << text;
+  ExerciseCheck check;
+  ASSERT_EQ(check.start("shadows/pcf", {student}), "");
+  for (int steps = 0; check.running() && steps < 200; ++steps) check.step();
+  ASSERT_EQ(check.error(), "");
+  const ExerciseResult& r = check.result();
+  EXPECT_EQ(r.explanation, "slip:constant") << r.diagnosis;
+  EXPECT_NE(r.diagnosis.find("Traced line by line in the lab's draw: Line 9 of shadows/pcf.glsl"), std::string::npos)
+      << r.diagnosis;
+}
+
 TEST_F(Check, AMissingFileIsNotSubmitted) {
   ExerciseCheck check;
   const ExerciseResult& r = run(check);

@@ -39,22 +39,6 @@ std::pair<int, int> changedLines(const std::string& original, const std::string&
   return {int(head) + 1, int(b.size() - tail)};
 }
 
-// The pixel where two frames differ most (the sum of the colour's differences).
-glm::ivec2 mostDifferent(const ImageF& a, const ImageF& b) {
-  glm::ivec2 best{0};
-  float most = -1.0f;
-  for (int y = 0; y < a.size.y; ++y)
-    for (int x = 0; x < a.size.x; ++x) {
-      float d = 0.0f;
-      for (int c = 0; c < 3; ++c) d += std::abs(a.at(x, y)[c] - b.at(x, y)[c]);
-      if (d > most) {
-        most = d;
-        best = {x, y};
-      }
-    }
-  return best;
-}
-
 ImageF frameOf(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& roots) {
   std::string error;
   const auto host = configuredHost(roots, ex, c, error);
@@ -101,7 +85,7 @@ std::pair<size_t, glm::ivec2> whereItShows(const Exercise& ex, const fs::path& m
     const Configuration& c = ex.configurations[i];
     if (c.function >= 0) continue;
     const ImageF a = frameOf(ex, c, {mistake, builtinShaderDir()}), b = frameOf(ex, c, {builtinShaderDir()});
-    const glm::ivec2 p = mostDifferent(a, b);
+    const glm::ivec2 p = mostDifferentPixel(a, b);
     float d = 0.0f;
     for (int k = 0; k < 3; ++k) d += std::abs(a.at(p.x, p.y)[k] - b.at(p.x, p.y)[k]);
     if (d > most) {

@@ -117,6 +117,24 @@ TEST(GradeMistakes, TheLineWhereAStudentsValuesPartIsNamedFromTheirOwnCode) {
   EXPECT_TRUE(traced) << g.exercise()["frames"].dump();
 }
 
+// A function no probe holds (PCF takes the lab's maps and structs) is traced in the lab's own draw,
+// at the pixel where the student's frame differs most: the grid centred a whole kernel off is one
+// slip of the solution (a constant changed), named first, with the line of the change traced after
+// it, and the trace travels in the report's frame with its pixel.
+TEST(GradeMistakes, AFunctionNoProbeHoldsIsTracedInTheLabsDraw) {
+  const fs::path student = seeded("traced-in-draw", "shadows/pcf.glsl", "vec2(i, j) - 0.5 * float(PCF_SIZE - 1));",
+                                  "vec2(i, j) - float(PCF_SIZE - 1));");
+  const Graded g = grade("shadows/pcf", student, reportDir("traced-in-draw"));
+  ASSERT_TRUE(g.report.is_object()) << g.output;
+  EXPECT_EQ(g.exercise()["explanation"], "slip:constant") << g.output;
+  const std::string said = g.exercise()["diagnosis"].get<std::string>();
+  EXPECT_NE(said.find("Traced line by line in the lab's draw: Line 9 of shadows/pcf.glsl"), std::string::npos) << said;
+  bool traced = false;
+  for (auto& f : g.exercise()["frames"])
+    if (f.contains("trace") && f["trace"]["line"] == 9) traced = f["trace"]["pixel"][0].get<int>() >= 0;
+  EXPECT_TRUE(traced) << g.exercise()["frames"].dump();
+}
+
 TEST(GradeMistakes, ABiasWithTheWrongSignFailsTheAcneCheckOnly) {
   const fs::path student = seeded(
       "bias-sign", "shadows/pcf.glsl",
