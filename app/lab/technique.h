@@ -19,6 +19,13 @@
 
 namespace shadelab {
 
+// The row of a table whose values need only a name (an input, a device).
+template <typename E>
+struct Named {
+  E value;
+  std::string_view name;  // as --set and presets spell it
+};
+
 // The row of a table whose values need only a name and a #define (views, mip modes).
 template <typename E>
 struct NamedDefine {

@@ -5,8 +5,7 @@
 namespace shadelab {
 
 bool DenoiseLab::smoothsOnGpu(const DenoiseConfig& c) const {
-  return c.device == SmoothingDevice::Gpu && gpuUnavailable_.empty() &&
-         (c.smoothing.method == SmoothingMethod::Explicit || c.smoothing.method == SmoothingMethod::Taubin);
+  return c.device == SmoothingDevice::Gpu && gpuUnavailable_.empty() && methodRow(c.smoothing.method).onGpu;
 }
 
 SmoothedElsewhere DenoiseLab::smoothOnGpu(const DenoiseConfig& c) {

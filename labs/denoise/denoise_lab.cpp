@@ -15,17 +15,11 @@
 namespace shadelab {
 namespace {
 
-constexpr std::string_view kInputs[] = {"published", "generated"};
+// The files a clean reference may be, and the map's sizes (64 << index): lists of values, not
+// names of an enum's values (those are the technique tables beside each enum).
 constexpr std::string_view kMeshFiles[] = {".obj", ".off", ".ply"};
-constexpr std::string_view kNoiseKinds[] = {"gaussian", "impulsive"};
-constexpr std::string_view kMethods[] = {"explicit", "taubin", "implicit", "bilateral"};
-constexpr std::string_view kWeights[] = {"uniform", "cotangent"};
-constexpr std::string_view kDevices[] = {"cpu", "gpu"};
 constexpr std::string_view kMapSizes[] = {"64", "128", "256", "512", "1024", "2048", "4096"};
-constexpr std::string_view kBakeMethods[] = {"nearest-exact", "nearest-approx", "raster"};
-constexpr std::string_view kFormats[] = {"8", "16", "float"};
-constexpr std::string_view kShows[] = {"smoothed", "noisy", "clean", "map", "attribute", "compare"};
-constexpr std::string_view kViews[] = {"shaded", "error", "offset", "seam-gap"};
+static_assert(std::size(kMapSizes) == size_t(DenoiseParams::Map::sizeIndexOf(4096)) + 1);
 
 // One mesh of every instance, in world space: the lab denoises what the scene shows.
 MeshData mergeInstances(const Scene& scene) {
@@ -74,7 +68,7 @@ void visitInput(ParamVisitor& v, DenoiseParams::Input& input) {
                "published: the mesh's own noise (the data set's noisy twin, or the scene's file "
                "when a clean reference is given); generated: noise added to the clean mesh here with the settings "
                "below."},
-              input.source, kInputs);
+              input.source, namesOf<kNoiseSources>());
   v.fileParam({"clean", "Clean reference", "",
                "Your own pair: the scene (--scene NOISY) is the noisy mesh and this file "
                "its clean reference, with the same vertices in the same order or the same faces in the same order. "
@@ -83,7 +77,7 @@ void visitInput(ParamVisitor& v, DenoiseParams::Input& input) {
   v.enumParam({"noise", "Noise", "",
                "gaussian: every vertex moves along its normal; impulsive: only a random "
                "fraction does."},
-              input.noise.kind, kNoiseKinds);
+              input.noise.kind, namesOf<kNoiseKinds>());
   v.floatParam({"noise_level", "Noise level", "edges",
                 "Standard deviation of the move, in mean edge lengths of the "
                 "clean mesh."},
@@ -104,11 +98,11 @@ void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
                "explicit: p' = p - lambda <delta,n> n, stable only for small steps; taubin: a "
                "lambda step then a shrink-undoing mu step; implicit: (D + lambda L) x' = D x, stable for any lambda; "
                "bilateral: filters face normals, keeping sharp edges (Zheng et al. 2011)."},
-              smoothing.settings.method, kMethods);
+              smoothing.settings.method, namesOf<kSmoothingMethods>());
   v.enumParam({"weights", "Laplacian weights", "",
                "uniform: every neighbour alike; cotangent: by the angles opposite "
                "each edge, following the geometry rather than the triangulation."},
-              smoothing.settings.weights, kWeights);
+              smoothing.settings.weights, namesOf<kLaplacianWeights>());
   v.floatParam({"lambda", "Lambda", "",
                 "Step size. Explicit and Taubin: stable up to 2 / mu_max (the panel shows it, "
                 "about 1); implicit: any value, larger = smoother."},
@@ -125,13 +119,13 @@ void visitSmoothing(ParamVisitor& v, DenoiseParams::Smoothing& smoothing) {
               smoothing.settings.clampNegative);
   v.floatParam({"pass_band", "Taubin pass band", "", "k_pb: mu = 1 / (k_pb - 1 / lambda)."},
                smoothing.settings.passBand, 0.01f, 0.3f);
-  if (smoothing.settings.method == SmoothingMethod::Implicit || smoothing.settings.method == SmoothingMethod::Bilateral)
-    v.unavailable("implicit and bilateral smoothing run on the CPU");
+  if (const SmoothingMethodRow& method = methodRow(smoothing.settings.method); !method.onGpu)
+    v.unavailable(std::string(method.name) + " smoothing runs on the CPU");
   v.enumParam({"device", "Device", "",
                "Where explicit and Taubin steps run. gpu: one fragment per vertex, "
                "shaders/denoise/smooth_step.frag with your laplacian_step.glsl, positions in float textures; "
                "the same weights, normals and divergence checks as the CPU, in float rather than double."},
-              smoothing.device, kDevices);
+              smoothing.device, namesOf<kSmoothingDevices>());
   if (smoothing.device != SmoothingDevice::Gpu) v.unavailable("only with device gpu");
   v.boolParam({"cpu_reference", "CPU reference", "",
                "With device gpu, smooth on the CPU too and report how far the GPU's mesh lies from it "
@@ -166,7 +160,7 @@ void visitMap(ParamVisitor& v, DenoiseParams::Map& map, const std::function<void
        "of checks; raster: interpolated inside each UV triangle and dilated into the gutter: smooth between "
        "vertices (what tessellation or a per-fragment read wants), but a bilinear read at a vertex blends it "
        "with its neighbours."},
-      map.bake.method, kBakeMethods);
+      map.bake.method, namesOf<kBakeMethods>());
   v.intParam({"checks", "FLANN checks", "",
               "nearest-approx: leaves visited per query. Fewer: faster, more often "
               "not the nearest."},
@@ -176,7 +170,7 @@ void visitMap(ParamVisitor& v, DenoiseParams::Map& map, const std::function<void
               "near a seam read their own chart."},
              map.bake.gutter, 0, 16);
   v.enumParam({"map_format", "Map format", "bits", "8 or 16-bit normalised with a bias and scale, or float."},
-              map.bake.format, kFormats);
+              map.bake.format, namesOf<kMapFormats>());
   v.boolParam({"bilinear", "Bilinear lookup", "",
                "The vertex shader samples the map bilinearly (off: nearest "
                "texel)."},
@@ -192,11 +186,11 @@ void visitView(ParamVisitor& v, DenoiseParams::View& view) {
                "smoothed: the method's mesh; noisy; clean; map: the noisy mesh displaced by the map "
                "in the vertex shader; attribute: displaced by the same offsets as a vertex attribute; compare: map, "
                "attribute and smoothed side by side."},
-              view.show, kShows);
+              view.show, namesOf<kDenoiseShows>());
   v.enumParam({"view", "View", "",
                "shaded (flat, so noise shows); error: distance to the clean mesh; offset: the "
                "signed offset along the normal; seam-gap: how far copies of a position moved apart."},
-              view.mode, kViews);
+              view.mode, namesOf<kDenoiseViews>());
   v.floatParam({"heat_scale", "Heat scale", "edges",
                 "Mean edge lengths at full colour in the error and seam-gap views "
                 "(offsets: +-2x this)."},
@@ -243,11 +237,9 @@ DenoiseConfig DenoiseLab::config() const {
 ProgramSpec DenoiseLab::programSpec(DenoiseView view, Path path) {
   ProgramSpec spec;
   spec.stages = {{GL_VERTEX_SHADER, "denoise/mesh.vert"}, {GL_FRAGMENT_SHADER, "denoise/mesh.frag"}};
-  static const char* pathNames[] = {"plain", "map", "attribute", "smoothed-on-gpu"};
-  spec.name = std::string("denoise/") + pathNames[int(path)];
-  if (path == Path::Map) spec.defines.emplace_back("DISPLACE_MAP", "1");
-  if (path == Path::SmoothedOnGpu) spec.defines.emplace_back("SMOOTHED_ON_GPU", "1");
-  if (path == Path::Attribute) spec.defines.emplace_back("DISPLACE_ATTRIBUTE", "1");
+  const NamedDefine<Path>& row = rowOf(kPaths, path);
+  spec.name = "denoise/" + std::string(row.name);
+  if (!row.define.empty()) spec.defines.emplace_back(std::string(row.define), "1");
   if (view == DenoiseView::Offset)
     spec.defines.emplace_back("VIEW_SIGNED", "1");
   else if (view != DenoiseView::Shaded)
@@ -350,7 +342,7 @@ void DenoiseLab::update(const Scene& scene, float) {
 }
 
 void DenoiseLab::submit(const DenoiseConfig& want, std::shared_ptr<const SmoothedElsewhere> smoothed) {
-  const std::string label = std::string(kMethods[int(want.smoothing.method)]) + " on " + modelScene_ + " (" +
+  const std::string label = std::string(methodRow(want.smoothing.method).name) + " on " + modelScene_ + " (" +
                             std::to_string(model_->statistics.logicalVertices) + " vertices)" +
                             (smoothed ? ", smoothed on the GPU" : "");
   // The job owns what it reads: the model (shared, const), the settings (a copy), the GPU's result.
@@ -529,10 +521,9 @@ void DenoiseLab::render(Frame& frame) {
     glViewport(0, 0, size.x, size.y);
     return;
   }
-  static const char* names[] = {"draw: smoothed", "draw: noisy", "draw: clean", "draw: map path",
-                                "draw: attribute path"};
   const bool collapsed = show == DenoiseShow::Smoothed && result_->collapsed;
-  auto pass = frame.pass(collapsed ? "draw: noisy input (ghost) and the point it collapsed to" : names[int(show)]);
+  auto pass = frame.pass(collapsed ? "draw: noisy input (ghost) and the point it collapsed to"
+                                   : std::string(rowOf(kDenoiseShows, show).pass));
   if (show == DenoiseShow::Map) {
     drawPanel(frame, Path::Map, mapMesh_, {0, 0, size.x, size.y});
   } else if (show == DenoiseShow::Attribute) {
@@ -553,8 +544,8 @@ std::vector<ProgramRef> DenoiseLab::activePrograms() const { return heldPrograms
 std::string DenoiseLab::saveMap() {
   if (!result_ || !result_->map) return "no map to save: the mesh has no UVs, or no result yet";
   const DisplacementMap& m = *result_->map;
-  const std::string stem =
-      modelScene_ + "-" + std::to_string(m.size.x) + "-" + std::string(kBakeMethods[int(params.map.bake.method)]);
+  const std::string stem = modelScene_ + "-" + std::to_string(m.size.x) + "-" +
+                           std::string(rowOf(kBakeMethods, params.map.bake.method).name);
   const auto png = freshName("bakes", stem, ".png");
   ImageF preview;
   preview.size = m.size;
@@ -573,12 +564,12 @@ std::string DenoiseLab::saveMap() {
   if (auto err = writeTextFile(rawPath.string(), std::string(raw.begin(), raw.end())); !err.empty()) return err;
   nlohmann::json meta = {{"width", m.size.x},
                          {"height", m.size.y},
-                         {"format", std::string(kFormats[int(m.format)])},
+                         {"format", std::string(rowOf(kMapFormats, m.format).name)},
                          {"bias", m.bias},
                          {"scale", m.scale},
                          {"offset", "stored * scale + bias, along the vertex normal"},
                          {"rows", "top-down in .png and .raw"},
-                         {"bake", std::string(kBakeMethods[int(params.map.bake.method)])},
+                         {"bake", std::string(rowOf(kBakeMethods, params.map.bake.method).name)},
                          {"raw", m.format == MapFormat::Unorm8    ? "uint8"
                                  : m.format == MapFormat::Unorm16 ? "uint16 little-endian"
                                                                   : "float32 little-endian"}};

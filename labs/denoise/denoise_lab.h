@@ -16,9 +16,31 @@
 
 namespace shadelab {
 
-enum class NoiseSource { Published, Generated };
-enum class DenoiseShow { Smoothed, Noisy, Clean, Map, Attribute, Compare };
-enum class DenoiseView { Shaded, Error, Offset, SeamGap };
+enum class NoiseSource { Published, Generated, Count };
+inline constexpr Named<NoiseSource> kNoiseSources[] = {{NoiseSource::Published, "published"},
+                                                       {NoiseSource::Generated, "generated"}};
+static_assert(coversEnum<NoiseSource>(kNoiseSources));
+// What the view shows, with the pass that draws it (compare draws four panels of its own).
+enum class DenoiseShow { Smoothed, Noisy, Clean, Map, Attribute, Compare, Count };
+struct DenoiseShowRow {
+  DenoiseShow value;
+  std::string_view name;
+  std::string_view pass;
+};
+inline constexpr DenoiseShowRow kDenoiseShows[] = {
+    {DenoiseShow::Smoothed, "smoothed", "draw: smoothed"},
+    {DenoiseShow::Noisy, "noisy", "draw: noisy"},
+    {DenoiseShow::Clean, "clean", "draw: clean"},
+    {DenoiseShow::Map, "map", "draw: map path"},
+    {DenoiseShow::Attribute, "attribute", "draw: attribute path"},
+    {DenoiseShow::Compare, "compare", ""}};  // compare: four panels, each its own pass
+static_assert(coversEnum<DenoiseShow>(kDenoiseShows));
+enum class DenoiseView { Shaded, Error, Offset, SeamGap, Count };
+inline constexpr Named<DenoiseView> kDenoiseViews[] = {{DenoiseView::Shaded, "shaded"},
+                                                       {DenoiseView::Error, "error"},
+                                                       {DenoiseView::Offset, "offset"},
+                                                       {DenoiseView::SeamGap, "seam-gap"}};
+static_assert(coversEnum<DenoiseView>(kDenoiseViews));
 
 // One nested struct per section of the panel, each visited by its own function (denoise_lab.cpp).
 // The pipeline's own settings structs (noise, smoothing, bilateral, bake) live in the sections and
@@ -84,7 +106,13 @@ class DenoiseLab final : public LabWithParams<DenoiseParams>, public Judge {
   std::vector<SweepAxis> standardSweep() const override;
 
  private:
-  enum class Path { Plain, Map, Attribute, SmoothedOnGpu };
+  // How the mesh program takes its positions: each path a program of its own, named and defined here.
+  enum class Path { Plain, Map, Attribute, SmoothedOnGpu, Count };
+  static constexpr NamedDefine<Path> kPaths[] = {{Path::Plain, "plain", ""},
+                                                 {Path::Map, "map", "DISPLACE_MAP"},
+                                                 {Path::Attribute, "attribute", "DISPLACE_ATTRIBUTE"},
+                                                 {Path::SmoothedOnGpu, "smoothed-on-gpu", "SMOOTHED_ON_GPU"}};
+  static_assert(coversEnum<Path>(kPaths));
   DenoiseConfig config() const;
   static ProgramSpec programSpec(DenoiseView view, Path path);
   void rebuildModel(const Scene& scene);

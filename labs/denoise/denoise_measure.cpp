@@ -40,8 +40,9 @@ Metrics DenoiseLab::meshMetrics() const {
                {"noisy_angle_deg", r.noisyError.angleDeg},
                {"attribute_angle_deg", r.attributeError.angleDeg},
                {"solve_ms", r.solveMs}};
-  if (r.config.smoothing.method == SmoothingMethod::Implicit) m.push_back({"factor_ms", r.factorMs});
-  if (r.config.smoothing.method != SmoothingMethod::Bilateral) {
+  const SmoothingMethodRow& method = methodRow(r.config.smoothing.method);
+  if (method.anyLambda) m.push_back({"factor_ms", r.factorMs});
+  if (method.laplacian) {
     m.push_back({"grew_at", double(r.grewAt)});
     m.push_back({"stability_limit", r.stabilityLimit});
   }
@@ -96,13 +97,12 @@ std::vector<std::string> DenoiseLab::warnings() const {
     w.push_back("the paired vertices lie " + formatFixed(pairMoveEdges_, 1) +
                 " mean edges apart on average (noise "
                 "is usually well under one): check that the clean file is this mesh's reference");
-  const bool laplacian = p.smoothing.settings.method != SmoothingMethod::Bilateral &&
-                         p.smoothing.settings.method != SmoothingMethod::Implicit;
-  if (laplacian && p.smoothing.device == SmoothingDevice::Gpu && !gpuUnavailable_.empty())
+  const SmoothingMethodRow& method = methodRow(p.smoothing.settings.method);
+  if (method.onGpu && p.smoothing.device == SmoothingDevice::Gpu && !gpuUnavailable_.empty())
     w.push_back("smoothing on the CPU: " + gpuUnavailable_);
   if (result_) {
     for (auto& n : result_->notes) w.push_back(n);
-    if (laplacian && result_->stabilityLimit > 0 && p.smoothing.settings.lambda > result_->stabilityLimit &&
+    if (method.explicitSteps && result_->stabilityLimit > 0 && p.smoothing.settings.lambda > result_->stabilityLimit &&
         result_->grewAt == 0)
       w.push_back("lambda is above the stable explicit step (about " + formatFixed(result_->stabilityLimit, 2) +
                   "): expect the energy to grow with more iterations");
@@ -111,8 +111,9 @@ std::vector<std::string> DenoiseLab::warnings() const {
     w.push_back(
         "this mesh has no UVs: no map can be baked, so the offsets go in as a vertex attribute (the "
         "attribute path) instead");
-  if (p.smoothing.settings.method == SmoothingMethod::Implicit && !p.smoothing.settings.alongNormal)
-    w.push_back("implicit smoothing moves all three coordinates; along_normal applies to explicit and Taubin only");
+  if (method.laplacian && !method.explicitSteps && !p.smoothing.settings.alongNormal)
+    w.push_back(std::string(method.name) +
+                " smoothing moves all three coordinates; along_normal applies to explicit steps only");
   if (p.smoothing.settings.weights == LaplacianWeights::Cotangent && !p.smoothing.settings.clampNegative)
     w.push_back(
         "negative cotangent weights are not clamped: updates are no longer convex combinations and may diverge");
@@ -154,18 +155,16 @@ std::vector<LabPanel> DenoiseLab::panels() const {
   errors.rows.push_back(errorRow("attribute path", r.attributeError));
   if (r.map) errors.rows.push_back(errorRow("map path", r.mappedError));
   result.items.push_back(std::move(errors));
-  const bool gpu = r.config.device == SmoothingDevice::Gpu && (r.config.smoothing.method == SmoothingMethod::Explicit ||
-                                                               r.config.smoothing.method == SmoothingMethod::Taubin);
+  const SmoothingMethodRow& method = methodRow(r.config.smoothing.method);
+  const bool gpu = r.config.device == SmoothingDevice::Gpu && method.onGpu;
   PanelTable cost{{"", "value"}, {{gpu ? "smoothing ms (GPU)" : "smoothing ms", formatFixed(r.solveMs, 1)}}};
   if (r.referenceDistance) {
     cost.rows.push_back({"GPU vs CPU, RMS (edges)", formatNumber(*r.referenceDistance)});
     cost.rows.push_back({"GPU vs CPU, verdict steps apart", std::to_string(r.verdictStepsOff)});
     cost.rows.push_back({"GPU vs CPU, energy (largest relative difference)", formatNumber(r.energyDifference)});
   }
-  if (r.config.smoothing.method == SmoothingMethod::Implicit)
-    cost.rows.push_back({"  of which factorisation ms", formatFixed(r.factorMs, 1)});
-  if (r.config.smoothing.method != SmoothingMethod::Bilateral)
-    cost.rows.push_back({"stable explicit lambda (about)", formatFixed(r.stabilityLimit, 3)});
+  if (method.anyLambda) cost.rows.push_back({"  of which factorisation ms", formatFixed(r.factorMs, 1)});
+  if (method.laplacian) cost.rows.push_back({"stable explicit lambda (about)", formatFixed(r.stabilityLimit, 3)});
   if (r.map) {
     cost.rows.push_back({"bake ms", formatFixed(r.bakeMs, 1)});
     cost.rows.push_back({"bake RMS / max (edges)", formatFixed(r.bakeRms, 4) + " / " + formatFixed(r.bakeMax, 4)});

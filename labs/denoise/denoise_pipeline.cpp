@@ -221,18 +221,20 @@ void noteWhatHappened(const DenoiseModel& m, const DenoiseConfig& c, DenoiseResu
                       number(r.volumeScale) + " about its centroid to restore it (preserve_volume)");
   else if (r.collapsed)
     r.notes.push_back(
-        std::string(c.smoothing.method == SmoothingMethod::Implicit ? "implicit smoothing is stable but shrinks: "
-                                                                    : "") +
+        (methodRow(c.smoothing.method).anyLambda
+             ? std::string(methodRow(c.smoothing.method).name) + " smoothing is stable but shrinks: "
+             : std::string()) +
         "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
         "rescale; drawn: the noisy input as a ghost and, in orange, the point it collapsed to. Lower lambda or "
         "the iterations");
   else if (shrinkPct >= 10.0)
-    r.notes.push_back(
-        std::string(c.smoothing.method == SmoothingMethod::Implicit ? "implicit smoothing is stable but shrinks: "
-                                                                    : "the smoothing shrank the mesh: ") +
-        "it lost " + number(shrinkPct) + "% of its volume, pulled towards its centroid (" +
-        (c.preserveVolume ? "an open mesh has no volume to restore" : "preserve_volume rescales it") + ")");
-  if (r.grewAt > 0 && c.smoothing.method != SmoothingMethod::Implicit)  // implicit steps are stable for any lambda
+    r.notes.push_back((methodRow(c.smoothing.method).anyLambda
+                           ? std::string(methodRow(c.smoothing.method).name) + " smoothing is stable but shrinks: "
+                           : std::string("the smoothing shrank the mesh: ")) +
+                      "it lost " + number(shrinkPct) + "% of its volume, pulled towards its centroid (" +
+                      (c.preserveVolume ? "an open mesh has no volume to restore" : "preserve_volume rescales it") +
+                      ")");
+  if (r.grewAt > 0 && methodRow(c.smoothing.method).explicitSteps)  // a solve per step is stable for any lambda
     r.notes.push_back("diverging: the smoothing energy grew at iteration " + std::to_string(r.grewAt) + " (lambda " +
                       number(c.smoothing.lambda) + " is beyond the stable explicit step, about " +
                       number(r.stabilityLimit) + " for these weights)");
@@ -320,7 +322,7 @@ DenoiseResult runDenoise(const DenoiseModel& m, const DenoiseConfig& c, JobConte
   measureVolume(m, c, start, indices, result, r);
   r.solveMs = smoothed ? smoothed->ms : msSince(t0);
   if (job && job->cancelled()) return r;
-  if (c.smoothing.method != SmoothingMethod::Bilateral)
+  if (methodRow(c.smoothing.method).laplacian)
     r.stabilityLimit =
         stabilityLimit(adjacency, r.weights, 200);  // the weights of the start, as the smoothing had them
 

@@ -39,7 +39,10 @@ struct DenoiseModel {
 std::shared_ptr<const DenoiseModel> buildDenoiseModel(const MeshData& clean, const MeshData* published,
                                                       std::string& error);
 
-enum class SmoothingDevice { Cpu, Gpu };
+enum class SmoothingDevice { Cpu, Gpu, Count };
+inline constexpr Named<SmoothingDevice> kSmoothingDevices[] = {{SmoothingDevice::Cpu, "cpu"},
+                                                               {SmoothingDevice::Gpu, "gpu"}};
+static_assert(coversEnum<SmoothingDevice>(kSmoothingDevices));
 
 struct DenoiseConfig {
   bool publishedInput = false;  // the published noisy twin instead of generated noise

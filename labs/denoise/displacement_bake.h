@@ -20,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/lab/technique.h"
 #include "app/util/job_runner.h"
 
 namespace shadelab {
@@ -28,8 +29,16 @@ enum class BakeMethod {
   NearestExact,   // FLANN's single kd-tree: the true nearest vertex
   NearestApprox,  // FLANN's randomised kd-trees with a bounded number of checks
   Raster,         // barycentric interpolation inside each UV triangle, then gutter dilation
+  Count
 };
-enum class MapFormat { Unorm8, Unorm16, Float32 };
+inline constexpr Named<BakeMethod> kBakeMethods[] = {{BakeMethod::NearestExact, "nearest-exact"},
+                                                     {BakeMethod::NearestApprox, "nearest-approx"},
+                                                     {BakeMethod::Raster, "raster"}};
+static_assert(coversEnum<BakeMethod>(kBakeMethods));
+enum class MapFormat { Unorm8, Unorm16, Float32, Count };
+inline constexpr Named<MapFormat> kMapFormats[] = {
+    {MapFormat::Unorm8, "8"}, {MapFormat::Unorm16, "16"}, {MapFormat::Float32, "float"}};
+static_assert(coversEnum<MapFormat>(kMapFormats));
 
 struct BakeSettings {
   BakeMethod method = BakeMethod::Raster;

@@ -261,11 +261,12 @@ SmoothingResult smooth(std::span<const glm::dvec3> start, std::span<const uint32
   SmoothingResult r;
   r.positions.assign(start.begin(), start.end());
   r.weightsUsed = edgeWeights(start, indices, adjacency, settings.weights, settings.clampNegative);
-  if (settings.method == SmoothingMethod::Bilateral) {
-    r.error = "bilateral filtering is not a Laplacian step: bilateralNormalFilter runs it";
+  const SmoothingMethodRow& method = methodRow(settings.method);
+  if (!method.laplacian) {
+    r.error = std::string(method.name) + " is not a Laplacian step: it has a filter of its own";
     return r;
   }
-  if (settings.method == SmoothingMethod::Implicit)
+  if (method.anyLambda)
     runImplicit(r, adjacency, settings, job);
   else
     runExplicit(r, indices, adjacency, settings, job);

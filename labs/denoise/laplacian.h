@@ -29,12 +29,16 @@
 
 #include <glm/glm.hpp>
 
+#include "app/lab/technique.h"
 #include "app/scene/mesh_topology.h"
 #include "app/util/job_runner.h"
 
 namespace shadelab {
 
-enum class LaplacianWeights { Uniform, Cotangent };
+enum class LaplacianWeights { Uniform, Cotangent, Count };
+inline constexpr Named<LaplacianWeights> kLaplacianWeights[] = {{LaplacianWeights::Uniform, "uniform"},
+                                                                {LaplacianWeights::Cotangent, "cotangent"}};
+static_assert(coversEnum<LaplacianWeights>(kLaplacianWeights));
 
 // Symmetric edge weights in the layout of an Adjacency (weight[k] belongs to ring[k]).
 struct EdgeWeights {
@@ -51,10 +55,27 @@ EdgeWeights edgeWeights(std::span<const glm::dvec3> positions, std::span<const u
 std::vector<glm::dvec3> umbrella(std::span<const glm::dvec3> positions, const Adjacency& adjacency,
                                  const EdgeWeights& weights);
 
-// The lab's smoothing methods, one list for the panel, the CPU and the GPU. smooth() steps the
-// first three; bilateral filters the face normals instead (bilateral_normal.h) and only shares
-// the iteration count.
-enum class SmoothingMethod { Explicit, Taubin, Implicit, Bilateral };
+// The lab's smoothing methods, one table for the panel, the CPU, the GPU and the lab's numbers.
+// smooth() steps the Laplacian ones; bilateral filters the face normals instead
+// (bilateral_normal.h) and only shares the iteration count. A method is its row here, its code
+// (smooth(), or its own filter) and its test.
+enum class SmoothingMethod { Explicit, Taubin, Implicit, Bilateral, Count };
+struct SmoothingMethodRow {
+  SmoothingMethod value;
+  std::string_view name;  // as --set denoise.method= spells it
+  bool laplacian;         // moves vertices by the Laplacian: has weights, an energy and a stable step to report
+  bool explicitSteps;     // steps p - lambda L p: stable only for lambda under about 2 / mu_max; along_normal applies
+  bool anyLambda;         // each step a linear solve (a factorisation first): stable for any lambda
+  bool onGpu;             // the GPU smoother runs it (gpu_smoother.h)
+};
+inline constexpr SmoothingMethodRow kSmoothingMethods[] = {
+    {SmoothingMethod::Explicit, "explicit", true, true, false, true},
+    {SmoothingMethod::Taubin, "taubin", true, true, false, true},
+    {SmoothingMethod::Implicit, "implicit", true, false, true, false},
+    {SmoothingMethod::Bilateral, "bilateral", false, false, false, false},
+};
+static_assert(coversEnum<SmoothingMethod>(kSmoothingMethods));
+constexpr const SmoothingMethodRow& methodRow(SmoothingMethod m) { return rowOf(kSmoothingMethods, m); }
 
 struct SmoothingSettings {
   SmoothingMethod method = SmoothingMethod::Explicit;

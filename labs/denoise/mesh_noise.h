@@ -9,9 +9,14 @@
 
 #include <glm/glm.hpp>
 
+#include "app/lab/technique.h"
+
 namespace shadelab {
 
-enum class NoiseKind { Gaussian, Impulsive };
+enum class NoiseKind { Gaussian, Impulsive, Count };
+inline constexpr Named<NoiseKind> kNoiseKinds[] = {{NoiseKind::Gaussian, "gaussian"},
+                                                   {NoiseKind::Impulsive, "impulsive"}};
+static_assert(coversEnum<NoiseKind>(kNoiseKinds));
 
 struct NoiseSettings {
   NoiseKind kind = NoiseKind::Gaussian;
