@@ -6,6 +6,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/lab/technique.h"
 #include "labs/shadows/shadows_lab.h"
@@ -15,7 +16,59 @@ namespace shadelab {
 inline constexpr std::string_view kLightTypes[] = {"directional", "spot", "point"};
 
 // A filter's own parameters: each shapes its program, so check-shaders walks their values.
-enum class FilterSettings { None, PcfSize, PoissonDisk, PcssSamples };
+enum class FilterSettings { None, PcfSize, PoissonDisk, PcssSamples, Count };
+
+// One value of a filter's own settings, as the variant space walks them: two numbers that the
+// settings' row reads (N for pcf; a tap count's index and whether the disk turns; ...).
+struct FilterVariant {
+  int a = 0, b = 0;
+};
+// A kind of settings: the #defines they put in the lit program, every value of theirs the variant
+// space covers, and how one of those is set. A filter with settings of its own is a row here
+// and its row in kShadowFilters naming it.
+struct FilterSettingsRow {
+  FilterSettings value;
+  void (*defines)(const ShadowsParams::Filter& f, Defines& out);
+  std::vector<FilterVariant> (*variants)();
+  void (*apply)(FilterVariant v, ShadowsParams::Filter& f);
+};
+inline constexpr FilterSettingsRow kFilterSettings[] = {
+    {FilterSettings::None, [](const ShadowsParams::Filter&, Defines&) {}, [] { return std::vector<FilterVariant>{{}}; },
+     [](FilterVariant, ShadowsParams::Filter&) {}},
+    {FilterSettings::PcfSize,  // N x N taps
+     [](const ShadowsParams::Filter& f, Defines& out) { out.emplace_back("PCF_SIZE", std::to_string(f.pcfSize)); },
+     [] {
+       std::vector<FilterVariant> out;
+       for (int n = 1; n <= 15; ++n) out.push_back({n});
+       return out;
+     },
+     [](FilterVariant v, ShadowsParams::Filter& f) { f.pcfSize = v.a; }},
+    {FilterSettings::PoissonDisk,  // 8 << i taps, rotated or not
+     [](const ShadowsParams::Filter& f, Defines& out) {
+       out.emplace_back("POISSON_COUNT", std::to_string(8 << f.poissonIndex));
+       if (f.rotateSamples) out.emplace_back("ROTATE_SAMPLES", "1");
+     },
+     [] {
+       std::vector<FilterVariant> out;
+       for (int i = 0; i < 4; ++i)
+         for (int rotate = 0; rotate < 2; ++rotate) out.push_back({i, rotate});
+       return out;
+     },
+     [](FilterVariant v, ShadowsParams::Filter& f) { f.poissonIndex = v.a, f.rotateSamples = v.b == 1; }},
+    {FilterSettings::PcssSamples,  // 8 << i blocker-search and 8 << j filter taps
+     [](const ShadowsParams::Filter& f, Defines& out) {
+       out.emplace_back("BLOCKER_COUNT", std::to_string(8 << f.blockerIndex));
+       out.emplace_back("PCSS_COUNT", std::to_string(8 << f.pcssIndex));
+     },
+     [] {
+       std::vector<FilterVariant> out;
+       for (int i = 0; i < 4; ++i)
+         for (int j = 0; j < 4; ++j) out.push_back({i, j});
+       return out;
+     },
+     [](FilterVariant v, ShadowsParams::Filter& f) { f.blockerIndex = v.a, f.pcssIndex = v.b; }},
+};
+static_assert(coversEnum<FilterSettings>(kFilterSettings));
 
 // The shadow filters: a new filter is its row here, its branch in shadow_filters.glsl (under its
 // define) and its test.

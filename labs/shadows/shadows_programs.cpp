@@ -23,21 +23,7 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) {
   if (p.bias.receiverPlane) spec.defines.emplace_back("RECEIVER_PLANE", "1");
   const ShadowFilter filter = effectiveFilterOf(p);
   spec.defines.emplace_back(rowOf(kShadowFilters, filter).define, "1");
-  switch (rowOf(kShadowFilters, filter).settings) {
-    case FilterSettings::None:
-      break;
-    case FilterSettings::PcfSize:
-      spec.defines.emplace_back("PCF_SIZE", std::to_string(p.filter.pcfSize));
-      break;
-    case FilterSettings::PoissonDisk:
-      spec.defines.emplace_back("POISSON_COUNT", std::to_string(8 << p.filter.poissonIndex));
-      if (p.filter.rotateSamples) spec.defines.emplace_back("ROTATE_SAMPLES", "1");
-      break;
-    case FilterSettings::PcssSamples:
-      spec.defines.emplace_back("BLOCKER_COUNT", std::to_string(8 << p.filter.blockerIndex));
-      spec.defines.emplace_back("PCSS_COUNT", std::to_string(8 << p.filter.pcssIndex));
-      break;
-  }
+  rowOf(kFilterSettings, rowOf(kShadowFilters, filter).settings).defines(p.filter, spec.defines);
   if (const int cascades = cascadeCountOf(p); cascades >= 2 && p.key.casts && !gbuffer)
     spec.defines.emplace_back("CASCADE_COUNT", std::to_string(cascades));
   spec.defines.emplace_back(internal == InternalView::Position ? "VIEW_POSITION"
@@ -114,68 +100,59 @@ std::vector<ProgramSpec> ShadowsLab::allPrograms() const {
   all.push_back(depthViewSpec(p));
 
   // The lit program: every value of every parameter that shapes it, and every pair of values of
-  // any two of them (app/lab/variants.h). A filter and its own settings form one dimension: pcf_size
-  // means nothing to pcss.
-  struct FilterVariant {
+  // any two of them (app/lab/variants.h), each a named dimension that sets its parameter. A filter
+  // and its own settings form one dimension: pcf_size means nothing to pcss.
+  struct Filtered {
     ShadowFilter filter;
-    int a = 0, b = 0;
+    FilterVariant settings;
   };
-  std::vector<FilterVariant> filters;  // the filters without settings of their own first
+  std::vector<Filtered> filters;  // the filters without settings of their own first
   for (const ShadowFilterRow& row : kShadowFilters)
-    if (row.settings == FilterSettings::None) filters.push_back({row.value});
-  for (const ShadowFilterRow& row : kShadowFilters) {
-    const ShadowFilter f = row.value;
-    switch (row.settings) {
-      case FilterSettings::None:
-        break;
-      case FilterSettings::PcfSize:  // N x N taps
-        for (int n = 1; n <= 15; ++n) filters.push_back({f, n});
-        break;
-      case FilterSettings::PoissonDisk:  // 8 << i taps, rotated or not
-        for (int i = 0; i < 4; ++i)
-          for (int rotate = 0; rotate < 2; ++rotate) filters.push_back({f, i, rotate});
-        break;
-      case FilterSettings::PcssSamples:  // 8 << i blocker-search and 8 << j filter taps
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j) filters.push_back({f, i, j});
-        break;
-    }
-  }
-  const ShadowView views[] = {ShadowView::Shaded,       ShadowView::Visibility,  ShadowView::BiasHeat,
-                              ShadowView::TexelDensity, ShadowView::PcssBlocker, ShadowView::PcssPenumbra,
-                              ShadowView::Cascades};
-  const int viewCount = int(std::size(views)) + 2;  // + the reference's g-buffer views
-  const int fits = 5;                               // scene, view, cascades x 2, 3, 4
-  for (const auto& row : pairwiseCover({3, int(filters.size()), viewCount, 3, 2, 2, 2, fits})) {
+    if (row.settings == FilterSettings::None) filters.push_back({row.value, {}});
+  for (const ShadowFilterRow& row : kShadowFilters)
+    if (row.settings != FilterSettings::None)
+      for (FilterVariant v : rowOf(kFilterSettings, row.settings).variants()) filters.push_back({row.value, v});
+  constexpr ShadowView kLitViews[] = {ShadowView::Shaded,       ShadowView::Visibility,  ShadowView::BiasHeat,
+                                      ShadowView::TexelDensity, ShadowView::PcssBlocker, ShadowView::PcssPenumbra,
+                                      ShadowView::Cascades};
+  constexpr int kViewCount = int(std::size(kLitViews));
+  struct Dimension {
+    const char* name;
+    int size;
+    std::function<void(int value, ShadowsParams& q, InternalView& internal)> set;
+  };
+  const Dimension dimensions[] = {
+      {"light type", 3, [](int v, ShadowsParams& q, InternalView&) { q.key.type = LightType(v); }},
+      {"filter and its settings", int(filters.size()),
+       [&](int v, ShadowsParams& q, InternalView&) {
+         const Filtered& f = filters[size_t(v)];
+         q.filter.type = f.filter;
+         rowOf(kFilterSettings, rowOf(kShadowFilters, f.filter).settings).apply(f.settings, q.filter);
+       }},
+      {"view, and the reference's g-buffer views", kViewCount + 2,
+       [&](int v, ShadowsParams& q, InternalView& internal) {
+         if (v < kViewCount)
+           q.view.mode = kLitViews[v];
+         else
+           internal = v == kViewCount ? InternalView::Position : InternalView::Normal;
+       }},
+      {"fill light: off, on, casting", 3,
+       [](int v, ShadowsParams& q, InternalView&) { q.fill.on = v > 0, q.fill.casts = v == 2; }},
+      {"key light casts", 2, [](int v, ShadowsParams& q, InternalView&) { q.key.casts = v == 1; }},
+      {"far-plane fix", 2, [](int v, ShadowsParams& q, InternalView&) { q.map.farFix = v == 1; }},
+      {"receiver-plane bias", 2, [](int v, ShadowsParams& q, InternalView&) { q.bias.receiverPlane = v == 1; }},
+      {"map fit: scene, view, cascades x 2, 3, 4", 5,
+       [](int v, ShadowsParams& q, InternalView&) {
+         q.map.fit = v == 0 ? MapFit::Scene : v == 1 ? MapFit::View : MapFit::Cascades;
+         q.map.cascadeCount = std::max(v, 2);
+       }},
+  };
+  std::vector<int> sizes;
+  for (const Dimension& d : dimensions) sizes.push_back(d.size);
+  for (const auto& row : pairwiseCover(sizes)) {
     ShadowsParams q;
-    q.key.type = LightType(row[0]);
-    const FilterVariant& f = filters[size_t(row[1])];
-    q.filter.type = f.filter;
-    switch (rowOf(kShadowFilters, f.filter).settings) {
-      case FilterSettings::None:
-        break;
-      case FilterSettings::PcfSize:
-        q.filter.pcfSize = f.a;
-        break;
-      case FilterSettings::PoissonDisk:
-        q.filter.poissonIndex = f.a, q.filter.rotateSamples = f.b == 1;
-        break;
-      case FilterSettings::PcssSamples:
-        q.filter.blockerIndex = f.a, q.filter.pcssIndex = f.b;
-        break;
-    }
     InternalView internal = InternalView::None;
-    if (row[2] < int(std::size(views)))
-      q.view.mode = views[row[2]];
-    else
-      internal = row[2] == int(std::size(views)) ? InternalView::Position : InternalView::Normal;
-    q.fill.on = row[3] > 0;
-    q.fill.casts = row[3] == 2;
-    q.key.casts = row[4] == 1;
-    q.map.farFix = row[5] == 1;
-    q.bias.receiverPlane = row[6] == 1;
-    q.map.fit = row[7] == 0 ? MapFit::Scene : row[7] == 1 ? MapFit::View : MapFit::Cascades;
-    q.map.cascadeCount = std::max(row[7], 2);
+    for (size_t d = 0; d < std::size(dimensions); ++d) dimensions[d].set(row[d], q, internal);
     all.push_back(litSpec(q, internal));
   }
 
