@@ -89,10 +89,11 @@ std::string gradeExercise(const std::string& id, const StudentGrading& g, Exerci
     } else {
       ConfigurationJob job = jobOf(i);
       job.traceInDraw = traceInDrawNext(ex, out.configurations);
-      WatchedRun run =
-          runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
-                     [&](const std::string& phase) { return phase == "solution" ? kSolutionSeconds : g.watchdog; },
-                     (g.dir / "logs" / (job.stem + ".log")).string());
+      WatchedRun run = runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
+                                  [&](const std::string& phase) {
+                                    return phase == "student" || phase == "trace" ? g.watchdog : kSolutionSeconds;
+                                  },
+                                  (g.dir / "logs" / (job.stem + ".log")).string());
       const nlohmann::json solution = readResult(job, "solution");
       nlohmann::json student = readResult(job, "student");
       const nlohmann::json trace = readResult(job, "trace");

@@ -418,20 +418,9 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     if (!traced && c.trace.isolated()) traced = &c;
   for (auto& c : e.configurations)
     if (!loose && c.trace.found) loose = &c;
-  const auto traceEvidence = [&] {
-    const TraceFinding& t = traced->trace;  // (sayTrace may be given the loose one)
-    return t.inDraw() ? "every value your function computes in the lab's own draw, traced beside the solution's "
-                        "at the " +
-                            std::to_string(kTraceBlockSide) + " x " + std::to_string(kTraceBlockSide) +
-                            " pixels around pixel " + std::to_string(t.pixel.x) + ", " + std::to_string(t.pixel.y) +
-                            " of " + quoted(traced->name) + ", where your frame differs most"
-                      : "every value your function computes, traced beside the solution's on the same table of "
-                        "inputs, " +
-                            quoted(traced->name);
-  };
-  const auto sayTrace = [&] {
-    e.explanation = traced->trace.tag();
-    e.diagnosis = traced->trace.text + " (Evidence: " + traceEvidence() + ".)";
+  const auto sayTrace = [&](const ConfigurationResult& c) {
+    e.explanation = c.trace.tag();
+    e.diagnosis = c.trace.text + " (Evidence: " + c.trace.evidence(c.name) + ".)";
   };
 
   if (!agreeing.empty()) {
@@ -457,7 +446,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
                                          "draws exactly what the placeholder draws.";
       if (!e.starterUnchanged && traced) {
         const std::string seen = e.diagnosis;
-        sayTrace();
+        sayTrace(*traced);
         e.diagnosis = seen + " " + e.diagnosis;
       }
       return;
@@ -488,7 +477,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
       // student's code is traced, its own line says more than a likeness.
       const bool exact = exactly(e, k);
       if (!exact && traced) {
-        sayTrace();
+        sayTrace(*traced);
         return;
       }
       e.mistake = m.name;
@@ -547,7 +536,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     return;
   }
   if (traced) {
-    sayTrace();
+    sayTrace(*traced);
     return;
   }
   // The function probed by itself: what its table says, before what the pictures made of it say.
@@ -601,8 +590,7 @@ void diagnoseFromEvidence(const Exercise& ex, ExerciseResult& e) {
     return;
   }
   if (loose) {  // what the student's values show, before a property's usual cause
-    traced = loose;
-    sayTrace();
+    sayTrace(*loose);
     return;
   }
   for (auto* c : ev.losing)

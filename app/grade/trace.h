@@ -101,6 +101,8 @@ struct TraceFinding {
   // often) is where the walk stopped, not where the values part.
   bool isolated() const { return found && (!matching.empty() || upToHere); }
   std::string tag() const { return "line:" + std::to_string(line); }
+  // What the rows were, for the sentence's evidence, `configuration` naming where they were drawn.
+  std::string evidence(const std::string& configuration) const;
 };
 // `inputs` names the function's parameters for the student ("the direction to the light L"), by
 // the parameter's name.

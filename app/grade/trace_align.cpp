@@ -422,6 +422,15 @@ std::vector<PointAgreement> pointAgreement(const TraceValues& student, const Tra
   return out;
 }
 
+std::string TraceFinding::evidence(const std::string& configuration) const {
+  const std::string side = std::to_string(kTraceBlockSide);
+  return inDraw() ? "every value your function computes in the lab's own draw, traced beside the solution's at the " +
+                        side + " x " + side + " pixels around pixel " + std::to_string(pixel.x) + ", " +
+                        std::to_string(pixel.y) + " of " + quoted(configuration) + ", where your frame differs most"
+                  : "every value your function computes, traced beside the solution's on the same table of inputs, " +
+                        quoted(configuration);
+}
+
 nlohmann::json toJson(const TraceFinding& f) {
   return {{"found", f.found},
           {"line", f.line},

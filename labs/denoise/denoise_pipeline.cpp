@@ -216,25 +216,25 @@ void bakeAndReadBack(const DenoiseModel& m, const DenoiseConfig& c, const Render
 // What the student should know about this result, in the order it matters.
 void noteWhatHappened(const DenoiseModel& m, const DenoiseConfig& c, DenoiseResult& r) {
   const double shrinkPct = -r.smoothingVolumeChangePct;
+  const SmoothingMethodRow& method = methodRow(c.smoothing.method);
+  // A method stable for any lambda still shrinks: said before what the shrinking did.
+  const std::string stableButShrinks =
+      method.anyLambda ? std::string(method.name) + " smoothing is stable but shrinks: " : "";
   if (r.volumeScale != 1.0)
     r.notes.push_back("the smoothed mesh had lost " + number(shrinkPct) + "% of its volume: scaled by " +
                       number(r.volumeScale) + " about its centroid to restore it (preserve_volume)");
   else if (r.collapsed)
     r.notes.push_back(
-        (methodRow(c.smoothing.method).anyLambda
-             ? std::string(methodRow(c.smoothing.method).name) + " smoothing is stable but shrinks: "
-             : std::string()) +
+        stableButShrinks +
         "the mesh collapsed to a point (under a millionth of its volume left), so nothing is left to "
         "rescale; drawn: the noisy input as a ghost and, in orange, the point it collapsed to. Lower lambda or "
         "the iterations");
   else if (shrinkPct >= 10.0)
-    r.notes.push_back((methodRow(c.smoothing.method).anyLambda
-                           ? std::string(methodRow(c.smoothing.method).name) + " smoothing is stable but shrinks: "
-                           : std::string("the smoothing shrank the mesh: ")) +
+    r.notes.push_back((method.anyLambda ? stableButShrinks : std::string("the smoothing shrank the mesh: ")) +
                       "it lost " + number(shrinkPct) + "% of its volume, pulled towards its centroid (" +
                       (c.preserveVolume ? "an open mesh has no volume to restore" : "preserve_volume rescales it") +
                       ")");
-  if (r.grewAt > 0 && methodRow(c.smoothing.method).explicitSteps)  // a solve per step is stable for any lambda
+  if (r.grewAt > 0 && method.explicitSteps)  // a solve per step is stable for any lambda
     r.notes.push_back("diverging: the smoothing energy grew at iteration " + std::to_string(r.grewAt) + " (lambda " +
                       number(c.smoothing.lambda) + " is beyond the stable explicit step, about " +
                       number(r.stabilityLimit) + " for these weights)");
