@@ -1,5 +1,7 @@
 // shadelab grade: renders every configuration of an exercise's rubric with the student's shaders
 // (each in a child process under a watchdog), scores the checks and writes the reports.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -184,7 +186,7 @@ std::string gradeStudent(const std::vector<std::string>& ids, const StudentGradi
 }
 
 std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend,
-                             const SolutionCache& cache, const fs::path& scratch, CacheCount& count) {
+                             const SolutionCache& cache, const fs::path& scratch, CacheCount& count, bool slips) {
   for (auto& id : ids) {
     Exercise ex;
     if (auto e = loadExercise(id, ex); !e.empty()) return e;
@@ -194,7 +196,7 @@ std::string prepareSolutions(const std::vector<std::string>& ids, const std::str
           {},      backend,
           scratch, gradeSlug(ex.id) + "-" + std::to_string(i + 1) + "-" + gradeSlug(ex.configurations[i].name),
           cache,   solutionKeyBase(ex, i),
-          true};
+          true,    slips};
       const WatchedRun run =
           runWatched([&](const auto& enter) { return renderConfiguration(job, enter); },
                      [](const std::string&) { return kSolutionSeconds; }, (scratch / (job.stem + ".log")).string());
@@ -210,7 +212,30 @@ std::string prepareSolutions(const std::vector<std::string>& ids, const std::str
   return {};
 }
 
+int runGradePrepare(const Options& o) {
+  if (o.exercise.empty() == !o.allExercises)
+    return cannotGrade("--prepare: name one exercise (--exercise LAB/NAME) or --all");
+  if (!o.shaderDirs.empty() || !o.classDir.empty() || !o.format.empty())
+    return cannotGrade("--prepare fills the solution cache only: it takes no --shaders, --class or --format");
+  const SolutionCache cache = solutionCacheFor(o);
+  if (!cache.enabled()) return cannotGrade("--prepare fills the solution cache: not with --no-cache");
+  const std::vector<std::string> ids = o.allExercises ? listExercises() : std::vector<std::string>{o.exercise};
+  std::error_code ec;
+  const fs::path scratch = fs::temp_directory_path(ec) / ("shadelab-prepare-" + std::to_string(getpid()));
+  fs::create_directories(scratch, ec);
+  if (ec) return cannotGrade(scratch.string() + ": " + ec.message());
+  CacheCount count;
+  const std::string e = prepareSolutions(ids, o.backend, cache, scratch, count, true);
+  fs::remove_all(scratch, ec);
+  if (!e.empty()) return cannotGrade(e);
+  std::printf("solutions: %d configurations of %zu exercise%s, %d already in the cache, %d rendered (%s)\n",
+              count.fromCache + count.rendered, ids.size(), ids.size() == 1 ? "" : "s", count.fromCache, count.rendered,
+              cache.dir().c_str());
+  return 0;
+}
+
 int runGrade(const Options& o) {
+  if (o.prepare) return runGradePrepare(o);
   if (!o.classDir.empty()) return runGradeClass(o);
   if (!o.positional.empty()) return runGradeMerge(o);
   if (o.exercise.empty() == !o.allExercises)
@@ -256,7 +281,7 @@ int runGrade(const Options& o) {
   if (auto e = gradeStudent(ids, g, report, cache); !e.empty()) return cannotGrade(e);
   if (!o.format.empty()) {
     const nlohmann::json j = nlohmann::json::parse(gradeJson(report));
-    const nlohmann::json results = o.format == "gradescope"    ? gradescopeResults(j)
+    const nlohmann::json results = o.format == "gradescope"    ? gradescopeResults(j, "visible", dir)
                                    : o.format == "classroom50" ? classroom50Result(j, identity)
                                                                : prairieLearnResults(j, dir);
     const char* file = o.format == "classroom50" ? "result.json" : "results.json";

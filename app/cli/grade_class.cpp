@@ -31,6 +31,7 @@
 #include "app/grade/gradebooks.h"
 #include "app/grade/rubric.h"
 #include "app/measure/report.h"
+#include "app/util/format.h"
 #include "app/util/output_files.h"
 #include "app/util/read_file.h"
 
@@ -55,11 +56,23 @@ struct ClassRun {
 std::string writeStudentResults(const ClassRun& run, const GradeReport& report, const fs::path& dir) {
   if (run.format != "gradescope" && run.format != "classroom50" && run.format != "prairielearn") return {};
   const nlohmann::json j = nlohmann::json::parse(gradeJson(report));
-  const nlohmann::json results = run.format == "gradescope"    ? gradescopeResults(j)
+  const nlohmann::json results = run.format == "gradescope"    ? gradescopeResults(j, "visible", dir)
                                  : run.format == "classroom50" ? classroom50Result(j, run.identity, run.wholeScale)
                                                                : prairieLearnResults(j, dir);
   return writeTextFile((dir / (run.format == "classroom50" ? "result.json" : "results.json")).string(),
                        results.dump(2) + "\n");
+}
+
+// The entries of a platform's download that hold a student's files (their folders, or the loose
+// files themselves), as the report names what it graded.
+std::vector<std::string> downloadEntries(const Submission& sub, const fs::path& classDir) {
+  std::vector<std::string> entries;
+  for (auto& [path, name] : sub.files) {
+    const fs::path relative = path.lexically_relative(classDir);
+    const std::string top = (classDir / *relative.begin()).string();
+    if (std::find(entries.begin(), entries.end(), top) == entries.end()) entries.push_back(top);
+  }
+  return entries;
 }
 
 // Runs in a worker process: grades one submission into out/students/<name>/. Exit 0 when its
@@ -77,7 +90,12 @@ int gradeSubmission(const Submission& sub, const ClassRun& run, const Options& o
   if (FILE* log = std::freopen((g.dir / "grade.log").c_str(), "w", stdout)) dup2(fileno(log), STDERR_FILENO);
 
   fs::path upload = sub.source, unpacked;
-  if (sub.zip) {
+  if (!sub.files.empty()) {  // a platform's download: the student's loose files, gathered into a folder
+    unpacked = upload = out / "unpacked" / sub.name;
+    removeUnpacked(unpacked);
+    if (auto e = stageFiles(sub, unpacked); !e.empty()) return cannotGrade(e);
+    g.notes.insert(g.notes.end(), sub.notes.begin(), sub.notes.end());
+  } else if (sub.zip) {
     unpacked = upload = out / "unpacked" / sub.name;
     removeUnpacked(unpacked);  // what an earlier, interrupted run left
     if (auto e = unpackZip(sub.source, unpacked); !e.empty()) {
@@ -91,13 +109,14 @@ int gradeSubmission(const Submission& sub, const ClassRun& run, const Options& o
   const fs::path placed = out / "placed" / sub.name;
   removeUnpacked(placed);
   Placement placement;
-  if (auto e = placeUpload(upload, run.files, placed, sub.source.filename().string(), placement); !e.empty())
-    return cannotGrade(e);
+  const std::string shown = sub.files.empty() ? sub.source.filename().string() : sub.name;
+  if (auto e = placeUpload(upload, run.files, placed, shown, placement); !e.empty()) return cannotGrade(e);
   for (auto& n : placement.notes) std::printf("%s: %s\n", sub.name.c_str(), n.c_str());
   g.notes.insert(g.notes.end(), placement.notes.begin(), placement.notes.end());
   g.shaderDirs = {placed};
   GradeReport report;
   report.studentDirs = {sub.source.string()};
+  if (!sub.files.empty()) report.studentDirs = downloadEntries(sub, o.classDir);
   report.date = gradeDate();
   report.command = "shadelab grade --class " + o.classDir.string() + " (submission " + sub.name + ")";
   CacheCount count;
@@ -112,13 +131,51 @@ int gradeSubmission(const Submission& sub, const ClassRun& run, const Options& o
 struct Summary {
   int submissions = 0;
   std::map<std::string, int> statuses;
+  std::string gradebook;             // the platform's file, where --format names one
+  std::vector<std::string> leftOut;  // the students it leaves out, and why
 };
+
+// What the gradebooks need of the class folder besides the reports: its layout and, in a
+// platform's download, who each submission is. Kept in class.json, so a merge of shards has it.
+struct ClassIdentity {
+  ClassLayout layout = ClassLayout::Named;
+  PlatformIdentities identities;
+};
+
+constexpr std::pair<ClassLayout, const char*> kLayoutKeys[] = {
+    {ClassLayout::Named, "named"}, {ClassLayout::Moodle, "moodle"}, {ClassLayout::Canvas, "canvas"}};
+
+const char* layoutKey(ClassLayout layout) {
+  for (auto& [l, key] : kLayoutKeys)
+    if (l == layout) return key;
+  return "named";
+}
+
+nlohmann::json identityJson(const ClassIdentity& who) {
+  nlohmann::json ids = nlohmann::json::object();
+  for (auto& [name, id] : who.identities) ids[name] = {{"id", id.id}, {"person", id.person}};
+  return {{"layout", layoutKey(who.layout)}, {"identities", ids}};
+}
+
+// class.json's layout and identities; "" or what is wrong with them. A record without them (an
+// older run's) is a class of named folders.
+std::string readIdentity(const nlohmann::json& j, ClassIdentity& who) {
+  const std::string key = j.value("layout", "named");
+  bool known = false;
+  for (auto& [l, k] : kLayoutKeys)
+    if (key == k) who.layout = l, known = true;
+  if (!known) return "layout '" + key + "' is none of named, moodle, canvas";
+  for (auto& [name, id] : j.value("identities", nlohmann::json::object()).items())
+    if (id.is_object()) who.identities[name] = {id.value("id", ""), id.value("person", "")};
+  return {};
+}
 
 // Reads every student's report under out/students into the gradebook and the class page. A
 // student whose report is missing (the grader itself failed on it) gets a "crashed" row per
 // exercise. "" or why the outputs could not be written.
 std::string writeClassOutputs(const fs::path& out, const std::vector<std::string>& ids,
-                              const std::vector<std::string>& students, const std::string& format, Summary& summary) {
+                              const std::vector<std::string>& students, const std::string& format,
+                              const ClassIdentity& who, Summary& summary) {
   std::vector<ClassRow> rows;
   for (auto& s : students) {
     const fs::path report = out / "students" / s / "report.json";
@@ -139,14 +196,28 @@ std::string writeClassOutputs(const fs::path& out, const std::vector<std::string
   for (auto& [name, text] :
        {std::pair{"gradebook.csv", gradebookCsv(rows)}, std::pair{"class.html", classHtml(rows, out / "students")}})
     if (auto e = writeTextFile((out / name).string(), text); !e.empty()) return e;
-  if (format == "moodle") return writeTextFile((out / "moodle.csv").string(), moodleCsv(rows));
-  if (format == "canvas") return writeTextFile((out / "canvas.csv").string(), canvasCsv(rows));
-  return {};
+  GradebookFile file;
+  if (format == "moodle" && who.layout == ClassLayout::Moodle) {
+    summary.gradebook = "moodle-worksheet.csv";
+    file = moodleWorksheetCsv(rows, who.identities, utcTimeNow("%Y-%m-%dT%H:%M:%SZ"));
+  } else if (format == "moodle") {
+    summary.gradebook = "moodle.csv";
+    file = moodleCsv(rows);
+  } else if (format == "canvas") {
+    summary.gradebook = "canvas.csv";
+    file = canvasCsv(rows, who.identities);
+  } else {
+    return {};
+  }
+  summary.leftOut = file.leftOut;
+  return writeTextFile((out / summary.gradebook).string(), file.text);
 }
 
 nlohmann::json classJson(const std::vector<std::string>& ids, int shard, int shards,
-                         const std::vector<std::string>& students) {
-  return {{"exercises", ids}, {"shard", shard}, {"shards", shards}, {"students", students}};
+                         const std::vector<std::string>& students, const ClassIdentity& who) {
+  nlohmann::json j = {{"exercises", ids}, {"shard", shard}, {"shards", shards}, {"students", students}};
+  j.update(identityJson(who));
+  return j;
 }
 
 void printSummary(const fs::path& out, const Summary& s) {
@@ -156,6 +227,16 @@ void printSummary(const fs::path& out, const Summary& s) {
       line += (line.empty() ? "" : ", ") + std::to_string(n->second) + " " + n->first;
   std::printf("class: %d submissions (%s)\ngradebook: %s\nclass page: %s\n", s.submissions, line.c_str(),
               (out / "gradebook.csv").c_str(), (out / "class.html").c_str());
+  if (s.gradebook.empty()) return;
+  std::printf("%s: %s\n", s.gradebook.c_str(), (out / s.gradebook).c_str());
+  if (!s.leftOut.empty()) {
+    std::string who;
+    for (auto& l : s.leftOut) who += (who.empty() ? "" : "; ") + l;
+    std::printf(
+        "%s leaves out %zu student%s, so the platform keeps the grade each has now (%s): grade again, or "
+        "enter those grades by hand\n",
+        s.gradebook.c_str(), s.leftOut.size(), s.leftOut.size() == 1 ? "" : "s", who.c_str());
+  }
 }
 
 // A fresh output folder outside what is graded; "" or why not.
@@ -188,8 +269,15 @@ int runGradeClass(const Options& o) {
       if (std::find(run.files.begin(), run.files.end(), f) == run.files.end()) run.files.push_back(f);
     exercises.push_back(std::move(ex));
   }
-  std::vector<Submission> all;
-  if (auto e = listSubmissions(o.classDir, all); !e.empty()) return cannotGrade(e);
+  ClassFolder folder;
+  if (auto e = readClassFolder(o.classDir, folder); !e.empty()) return cannotGrade(e);
+  const std::vector<Submission>& all = folder.submissions;
+  ClassIdentity who{folder.layout, {}};
+  for (auto& sub : all)
+    if (!sub.id.empty()) who.identities[sub.name] = {sub.id, sub.person};
+  if (folder.layout != ClassLayout::Named)
+    std::printf("%s: read as %s (%zu students)\n", o.classDir.c_str(), layoutName(folder.layout), all.size());
+  for (auto& i : folder.ignored) std::printf("  ignored: %s\n", i.c_str());
   if (all.empty())
     return cannotGrade("--class " + o.classDir.string() + " holds no submissions (a folder or a .zip per student)");
   if (o.format == "gradescope" || o.format == "classroom50" || o.format == "prairielearn") {
@@ -264,8 +352,9 @@ int runGradeClass(const Options& o) {
   std::vector<std::string> names;
   for (auto& s : mine) names.push_back(s.name);
   Summary summary;
-  if (auto e = writeClassOutputs(out, ids, names, o.format, summary); !e.empty()) return cannotGrade(e);
-  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, o.shard, o.shards, names).dump(2) + "\n");
+  if (auto e = writeClassOutputs(out, ids, names, o.format, who, summary); !e.empty()) return cannotGrade(e);
+  if (auto e =
+          writeTextFile((out / "class.json").string(), classJson(ids, o.shard, o.shards, names, who).dump(2) + "\n");
       !e.empty())
     return cannotGrade(e);
   printSummary(out, summary);
@@ -282,6 +371,7 @@ int runGradeMerge(const Options& o) {
   if (o.out.empty()) return cannotGrade("merge: --out DIR is required: where the joined gradebook and class page go");
 
   std::vector<std::string> ids, students;
+  ClassIdentity who;
   std::map<int, std::string> shardDirs;
   int shards = 0;
   std::map<std::string, fs::path> from;  // student -> the shard folder holding their report
@@ -300,6 +390,13 @@ int runGradeMerge(const Options& o) {
     for (auto& e : j["exercises"])
       if (e.is_string()) theirs.push_back(e.get<std::string>());
     const int shard = j["shard"].get<int>(), of = j["shards"].get<int>();
+    ClassIdentity theirWho;
+    if (auto e = readIdentity(j, theirWho); !e.empty()) return cannotGrade("merge: " + file.string() + ": " + e);
+    if (!shardDirs.empty() && theirWho.layout != who.layout)
+      return cannotGrade("merge: " + d + " read its class folder as " + layoutName(theirWho.layout) + ", " +
+                         dirs.front() + " as " + layoutName(who.layout));
+    who.layout = theirWho.layout;
+    who.identities.insert(theirWho.identities.begin(), theirWho.identities.end());
     if (ids.empty()) {
       ids = theirs;
       shards = of;
@@ -339,8 +436,9 @@ int runGradeMerge(const Options& o) {
     if (ec) return cannotGrade("merge: " + (from[s] / "students" / s).string() + ": " + ec.message());
   }
   Summary summary;
-  if (auto e = writeClassOutputs(out, ids, students, o.format, summary); !e.empty()) return cannotGrade(e);
-  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, 1, 1, students).dump(2) + "\n"); !e.empty())
+  if (auto e = writeClassOutputs(out, ids, students, o.format, who, summary); !e.empty()) return cannotGrade(e);
+  if (auto e = writeTextFile((out / "class.json").string(), classJson(ids, 1, 1, students, who).dump(2) + "\n");
+      !e.empty())
     return cannotGrade(e);
   printSummary(out, summary);
   return 0;

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <regex>
 #include <set>
 
 #include "app/shader/preprocessor.h"
@@ -51,9 +53,40 @@ void makeReadOnly(const fs::path& dir) {
 
 }  // namespace
 
-std::string listSubmissions(const fs::path& classDir, std::vector<Submission>& out) {
+const char* layoutName(ClassLayout layout) {
+  switch (layout) {
+    case ClassLayout::Named:
+      return "a folder or zip per student, named by the student";
+    case ClassLayout::Moodle:
+      return "Moodle's \"Download all submissions\"";
+    case ClassLayout::Canvas:
+      return "Canvas's \"Download Submissions\"";
+  }
+  return "";
+}
+
+namespace {
+
+// The student's part of a Moodle download's name: "Ada Lovelace_123_assignsubmission_file_" and
+// what follows it (a loose file's own name). Moodle writes the name with its underscores made
+// spaces, so the first "_" ends it; a group's name comes first ("Team A-Ada Lovelace").
+const std::regex kMoodleName(R"(^([^_]+)_([0-9]+)_assignsubmission_([a-z0-9]+)_?(.*)$)");
+// Canvas: the sortable name lower-cased with all but letters, digits and "_" dropped, "_late" when
+// late, the user id, the file's id, the file's name as uploaded.
+const std::regex kCanvasName(R"(^(?:(.*?)_)?(?:late_)?([0-9]+)_([0-9]+)_(.+)$)");
+
+// Canvas numbers a file a student uploads again under the same name: "pcf-1.glsl". The name the
+// student gave it, where no other of their files has it.
+std::string canvasUploadName(const std::string& name, const std::set<std::string>& theirs) {
+  static const std::regex numbered(R"(^(.+)-[0-9]+(\.[^.]+)$)");
+  std::smatch m;
+  if (!std::regex_match(name, m, numbered)) return name;
+  const std::string plain = m[1].str() + m[2].str();
+  return theirs.count(plain) ? name : plain;
+}
+
+std::string readNamed(const fs::path& classDir, std::vector<Submission>& found) {
   std::error_code ec;
-  std::vector<Submission> found;
   for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.empty() || name[0] == '.') continue;
@@ -62,13 +95,106 @@ std::string listSubmissions(const fs::path& classDir, std::vector<Submission>& o
     else if (it->is_regular_file(ec) && endsWith(name, ".zip") && name.size() > 4)
       found.push_back({name.substr(0, name.size() - 4), it->path(), true});
   }
+  return ec ? classDir.string() + ": " + ec.message() : "";
+}
+
+// Every plain file under `dir`, with its path below it.
+void filesUnder(const fs::path& dir, std::vector<std::pair<fs::path, std::string>>& files) {
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec) && !it->is_symlink(ec))
+      files.emplace_back(it->path(), it->path().lexically_relative(dir).generic_string());
+}
+
+std::string readDownload(const fs::path& classDir, ClassFolder& out) {
+  std::map<std::string, Submission> byId;
+  std::map<std::string, std::set<std::string>> names;  // Canvas: each student's upload names
+  std::vector<fs::directory_entry> entries;
+  std::error_code ec;
+  for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec))
+    if (const std::string n = it->path().filename().string(); !n.empty() && n[0] != '.') entries.push_back(*it);
   if (ec) return classDir.string() + ": " + ec.message();
+  std::sort(entries.begin(), entries.end(), [](auto& a, auto& b) { return a.path() < b.path(); });
+  const bool moodle = out.layout == ClassLayout::Moodle;
+  for (auto& entry : entries) {
+    const std::string n = entry.path().filename().string();
+    std::smatch m;
+    const bool folder = entry.is_directory(ec);
+    if (!std::regex_match(n, m, moodle ? kMoodleName : kCanvasName) || (folder && (!moodle || !m[4].str().empty())) ||
+        (!folder && !entry.is_regular_file(ec))) {
+      out.ignored.push_back(n + " (not named as " + std::string(layoutName(out.layout)) + " names a student's files)");
+      continue;
+    }
+    const std::string person = moodle ? m[1].str() : m[1].str() == "late" ? "" : m[1].str();
+    const std::string id = m[2].str();
+    Submission& sub = byId[id];
+    if (sub.id.empty()) {
+      sub.id = id;
+      sub.person = person;
+      sub.name = (person.empty() ? std::string(moodle ? "Participant" : "user") : person) + "_" + id;
+    }
+    if (folder) {
+      filesUnder(entry.path(), sub.files);
+    } else if (moodle) {
+      sub.files.emplace_back(entry.path(), m[4].str());
+    } else {
+      sub.files.emplace_back(entry.path(), m[4].str());
+      names[id].insert(m[4].str());
+    }
+  }
+  for (auto& [id, sub] : byId) {
+    for (auto& [path, name] : sub.files) {
+      if (moodle) continue;
+      const std::string given = canvasUploadName(name, names[id]);
+      if (given != name) {
+        sub.notes.push_back(name + " read as " + given + " (Canvas numbers a file uploaded again under its name)");
+        name = given;
+      }
+    }
+    out.submissions.push_back(std::move(sub));
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string readClassFolder(const fs::path& classDir, ClassFolder& out) {
+  out = ClassFolder{};
+  std::error_code ec;
+  bool folders = false, canvasNames = false;
+  for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string n = it->path().filename().string();
+    if (n.empty() || n[0] == '.') continue;
+    if (n.find("_assignsubmission_") != std::string::npos) out.layout = ClassLayout::Moodle;
+    if (it->is_directory(ec)) folders = true;
+    if (std::regex_match(n, kCanvasName)) canvasNames = true;
+  }
+  if (ec) return classDir.string() + ": " + ec.message();
+  if (out.layout == ClassLayout::Named && canvasNames && !folders) out.layout = ClassLayout::Canvas;
+  std::vector<Submission>& found = out.submissions;
+  if (auto e = out.layout == ClassLayout::Named ? readNamed(classDir, found) : readDownload(classDir, out); !e.empty())
+    return e;
   std::sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.name < b.name; });
   for (size_t i = 1; i < found.size(); ++i)
     if (found[i].name == found[i - 1].name)
       return classDir.string() + ": two submissions are named '" + found[i].name + "' (" +
              found[i - 1].source.filename().string() + " and " + found[i].source.filename().string() + "); rename one";
-  out = std::move(found);
+  return {};
+}
+
+std::string stageFiles(const Submission& sub, const fs::path& dest) {
+  std::error_code ec;
+  if (fs::exists(dest, ec)) return dest.string() + ": already exists; files are only staged into a new folder";
+  fs::create_directories(dest, ec);
+  for (auto& [path, name] : sub.files) {
+    const fs::path relative = safeEntryPath(name);
+    if (relative.empty()) continue;  // Moodle's and Canvas's names stay inside; anything else is not taken
+    const fs::path target = dest / relative;
+    if (fs::exists(target, ec)) continue;  // the first of two with one name, in the download's order
+    fs::create_directories(target.parent_path(), ec);
+    if (!ec) fs::copy_file(path, target, ec);
+    if (ec) return target.string() + ": " + ec.message();
+  }
   return {};
 }
 

@@ -1,9 +1,10 @@
 // A class's submissions: each subfolder of the class folder, or each .zip in it, is one student's,
-// named by the folder or the file; then each upload's files put where the rubric expects them
-// (placeUpload), for `grade --class` and every platform's entry point alike. A zip is unpacked into a private folder
-// first; what is in it is untrusted, so unpacking refuses any entry that would land outside that folder (an absolute
-// name, a "..", a symbolic link), and stops at limits on entries and bytes (a zip bomb costs its
-// own submission only).
+// named by the folder or the file, or each student's files in Moodle's or Canvas's download of an
+// assignment; then each upload's files put where the rubric expects them (placeUpload), for
+// `grade --class` and every platform's entry point alike. A zip is unpacked into a private folder
+// first; what is in it is untrusted, so unpacking refuses any entry that would land outside that
+// folder (an absolute name, a "..", a symbolic link), and stops at limits on entries and bytes (a
+// zip bomb costs its own submission only).
 #pragma once
 #include <filesystem>
 #include <string>
@@ -11,10 +12,28 @@
 
 namespace shadelab {
 
+// How a class folder is laid out: a folder or zip per student named by the student, or the
+// download a platform makes of one assignment's submissions, read as it comes (unzipped).
+enum class ClassLayout {
+  Named,   // ana/, ana.zip: the name is the student's username or login
+  Moodle,  // "Download all submissions": a folder "Ada Lovelace_123_assignsubmission_file_/" per
+           // student and submission plugin, or ("in folders" off) loose files
+           // "Ada Lovelace_123_assignsubmission_file_pcf.glsl"; 123 is the participant id
+  Canvas,  // "Download Submissions": loose files "lovelaceada_4567_8910_pcf.glsl" ("_late" after the
+           // name when late); 4567 is the student's Canvas user id, 8910 the file's
+};
+const char* layoutName(ClassLayout layout);  // "folders named by the students", "Moodle's download", ...
+
 struct Submission {
-  std::string name;              // the folder's name, or the zip's without ".zip"
-  std::filesystem::path source;  // the folder or the zip
+  std::string name;              // the folder's name, or the zip's without ".zip"; in a platform's
+                                 // download, the student's part of the names ("Ada Lovelace_123")
+  std::filesystem::path source;  // the folder or the zip; "" where `files` lists the upload instead
   bool zip = false;
+  // A platform's download: the student's files, each with the name it had in their upload
+  // ("shaders/pcf.glsl" under a Moodle folder, "pcf.glsl" for Canvas's "..._8910_pcf.glsl").
+  std::vector<std::pair<std::filesystem::path, std::string>> files;
+  std::string id, person;          // the platform's identity for them and how it names them
+  std::vector<std::string> notes;  // how the download's names were read, for the report
 };
 
 struct ZipLimits {
@@ -23,9 +42,23 @@ struct ZipLimits {
   size_t totalBytes = size_t(64) << 20;  // all files, unpacked
 };
 
-// The submissions in `classDir`, sorted by name. Hidden entries and other files are skipped. ""
-// or why the folder cannot be graded (two submissions with one name, e.g. ana/ and ana.zip).
-std::string listSubmissions(const std::filesystem::path& classDir, std::vector<Submission>& out);
+// A class folder as read: its layout, its submissions sorted by name, and the entries of a
+// platform's download that belong to no student (each with why).
+struct ClassFolder {
+  ClassLayout layout = ClassLayout::Named;
+  std::vector<Submission> submissions;
+  std::vector<std::string> ignored;
+};
+
+// Reads `classDir`. A platform's download is recognised by its names: any entry holding
+// "_assignsubmission_" is Moodle's; loose files only, named "name_USERID_FILEID_file", Canvas's.
+// Otherwise every subfolder and every .zip is one student's; hidden entries and other files are
+// skipped. "" or why the folder cannot be graded (two submissions with one name, e.g. ana/ and ana.zip).
+std::string readClassFolder(const std::filesystem::path& classDir, ClassFolder& out);
+
+// Copies a download's `files` into `dest` (made afresh) under their upload names, so the upload
+// is placed as a folder would be. "" or why not.
+std::string stageFiles(const Submission& sub, const std::filesystem::path& dest);
 
 // Unpacks `zip` into `dest` (created; must not exist yet). The files are left read-only. "" or
 // one line naming the zip and the entry at fault.

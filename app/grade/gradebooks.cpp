@@ -82,18 +82,108 @@ std::string exerciseSummary(const nlohmann::json& e) {
   return text;
 }
 
+// The pictures of a configuration that lost points, shown with one test of a platform's results
+// (its first check not passed in full): the student's frame, the solution's, their difference.
+struct Pictures {
+  size_t test;
+  std::string configuration;
+  std::vector<std::pair<std::string, std::string>> files;  // label, file in the report's folder
+};
+
+// Adds the pictures of `c`'s configuration for test `test`, the first time a check of it lost points.
+void collectPictures(const nlohmann::json& c, size_t test, std::set<std::string>& seen, std::vector<Pictures>& out) {
+  const std::string configuration = c.value("configuration", "");
+  const auto images = c.value("images", nlohmann::json::object());
+  if (c.value("result", "") == "PASS" || !seen.insert(configuration).second) return;
+  Pictures p{test, configuration, {}};
+  for (auto [key, label] : {std::pair<const char*, const char*>{"student", "your frame"},
+                            {"solution", "the solution's"},
+                            {"diff", "the difference, amplified"}})
+    if (images.value(key, "") != "") p.files.emplace_back(configuration + ": " + label, images.value(key, ""));
+  if (!p.files.empty()) out.push_back(std::move(p));
+}
+
+// The pictures as PNG data URLs ({label, url} per picture, a list per entry of `pictures`), at full
+// size, then halved until all fit in `budget` bytes as they are written in a file indented by two;
+// where they still do not fit at 32 pixels, the last configuration is left out and the rest tried
+// at full size again. Returns the lists kept (the first `kept` of `pictures`).
+std::vector<nlohmann::json> fitPictures(const std::vector<Pictures>& pictures, const std::filesystem::path& reportDir,
+                                        size_t budget) {
+  std::vector<std::vector<std::pair<std::string, ImageF>>> loaded;  // label, image
+  for (auto& p : pictures) {
+    loaded.emplace_back();
+    for (auto& [label, file] : p.files) {
+      ImageF image;
+      if (readImage((reportDir / file).string(), image).empty()) loaded.back().emplace_back(label, std::move(image));
+    }
+  }
+  size_t kept = pictures.size();
+  for (int factor = 1;;) {
+    std::vector<nlohmann::json> lists(kept, nlohmann::json::array());
+    size_t bytes = 0;
+    int smallest = 1 << 30;
+    for (size_t i = 0; i < kept; ++i)
+      for (const auto& [label, image] : loaded[i]) {
+        const ImageF small = factor == 1 ? image : downsample(image, factor);
+        smallest = std::min({smallest, small.size.x, small.size.y});
+        lists[i].push_back({{"label", label}, {"url", pngDataUri(small)}});
+        bytes += lists[i].back().dump(2).size() + 16;  // + its indentation inside the test
+      }
+    if (bytes <= budget || kept == 0) return lists;
+    if (smallest > 32) {
+      factor *= 2;
+    } else {  // one configuration fewer, from full size again
+      --kept;
+      factor = 1;
+    }
+  }
+}
+
+// "(The pictures of N configurations are left out ...)", or "" when all were kept.
+std::string leftOutNote(size_t all, size_t kept) {
+  if (kept == all) return {};
+  return "\n(The pictures of " + std::to_string(all - kept) +
+         " configurations are left out to keep the results within their size limit: the full report has them.)";
+}
+
+std::string htmlEscaped(const std::string& text) {
+  std::string out;
+  for (char ch : text) {
+    switch (ch) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += ch;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 bool validGradescopeVisibility(const std::string& v) { return validVisibility(v); }
 
-nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string& visibility) {
+nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string& visibility,
+                                 const std::filesystem::path& reportDir, size_t pictureBytes) {
   nlohmann::json tests = nlohmann::json::array();
   std::string output;
   double score = 0.0;
+  std::vector<Pictures> pictures;
   for (auto& e : report.value("exercises", nlohmann::json::array())) {
     const std::string id = e.value("id", ""), title = e.value("title", id);
     score += e.value("score", 0.0);
     output += exerciseSummary(e);
+    std::set<std::string> seen;
     for (auto& c : e.value("checks", nlohmann::json::array())) {
       std::string text = checkOutcome(c);
       if (!c.value("message", "").empty()) text += "\n\n" + c["message"].get<std::string>();
@@ -108,10 +198,24 @@ nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string
                        {"output_format", "md"},
                        {"tags", {id}},
                        {"visibility", own != "visible" && validGradescopeVisibility(own) ? own : visibility}});
+      if (!reportDir.empty()) collectPictures(c, tests.size() - 1, seen, pictures);
     }
   }
+  // Gradescope shows an image only inline, as a data URL in an HTML output (a path is not served),
+  // so a test with pictures is written as HTML: its text as it was, then the pictures.
+  const std::vector<nlohmann::json> lists = fitPictures(pictures, reportDir, pictureBytes);
+  for (size_t i = 0; i < lists.size(); ++i) {
+    nlohmann::json& t = tests[pictures[i].test];
+    std::string html = "<pre style=\"white-space: pre-wrap\">" + htmlEscaped(t["output"].get<std::string>()) + "</pre>";
+    for (auto& picture : lists[i])
+      html += "<figure style=\"display: inline-block; margin: 0 8px 8px 0\"><img src=\"" +
+              picture["url"].get<std::string>() + "\" alt=\"" + htmlEscaped(picture["label"]) + "\"><figcaption>" +
+              htmlEscaped(picture["label"]) + "</figcaption></figure>";
+    t["output"] = html;
+    t["output_format"] = "html";
+  }
   return {{"score", score},
-          {"output", output},
+          {"output", output + leftOutNote(pictures.size(), lists.size())},
           {"output_format", "md"},
           {"test_output_format", "md"},
           {"visibility", visibility},
@@ -251,13 +355,7 @@ nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::file
   std::string message, output;
   std::vector<std::string> formatErrors;
   nlohmann::json tests = nlohmann::json::array();
-  // The pictures of each configuration that lost points, in the order the checks come: a
-  // configuration's three images go to its first check not passed in full.
-  struct Pictures {
-    size_t test;
-    std::string configuration;
-    std::vector<std::pair<std::string, std::string>> files;  // label, file in reportDir
-  };
+  // The pictures of each configuration that lost points, with its first check not passed in full.
   std::vector<Pictures> pictures;
   for (auto& e : report.value("exercises", nlohmann::json::array())) {
     earned += e.value("score", 0.0);
@@ -279,15 +377,7 @@ nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::file
                        {"max_points", c.value("max_points", 0.0)},
                        {"message", c.value("message", "")},
                        {"output", checkOutcome(c)}});
-      const std::string configuration = c.value("configuration", "");
-      const auto images = c.value("images", nlohmann::json::object());
-      if (c.value("result", "") == "PASS" || !seen.insert(configuration).second) continue;
-      Pictures p{tests.size() - 1, configuration, {}};
-      for (auto [key, label] : {std::pair<const char*, const char*>{"student", "your frame"},
-                                {"solution", "the solution's"},
-                                {"diff", "the difference, amplified"}})
-        if (images.value(key, "") != "") p.files.emplace_back(configuration + ": " + label, images.value(key, ""));
-      if (!p.files.empty()) pictures.push_back(std::move(p));
+      collectPictures(c, tests.size() - 1, seen, pictures);
     }
   }
   nlohmann::json results = {{"message", message}, {"output", output}};
@@ -300,83 +390,107 @@ nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::file
   results["score"] = total > 0.0 ? std::clamp(earned / total, 0.0, 1.0) : 0.0;
   results["tests"] = tests;
 
-  // The pictures at full size, then halved until they fit beside the text; a configuration whose
-  // pictures still do not fit at 32 pixels is left out (from the last), and the message says so.
-  std::vector<std::vector<std::pair<std::string, ImageF>>> loaded;  // label, image
-  for (auto& p : pictures) {
-    loaded.emplace_back();
-    for (auto& [label, file] : p.files) {
-      ImageF image;
-      if (readImage((reportDir / file).string(), image).empty()) loaded.back().emplace_back(label, std::move(image));
-    }
-  }
   // Measured as the file is written (indented by two), where PrairieLearn counts its bytes.
   const size_t text = results.dump(2).size() + 256;  // + the note's own bytes
-  const size_t budget = byteLimit > text ? byteLimit - text : 0;
-  size_t kept = pictures.size();
-  for (int factor = 1;;) {
-    std::vector<nlohmann::json> lists(kept, nlohmann::json::array());
-    size_t bytes = 0;
-    int smallest = 1 << 30;
-    for (size_t i = 0; i < kept; ++i)
-      for (const auto& [label, image] : loaded[i]) {
-        const ImageF small = factor == 1 ? image : downsample(image, factor);
-        smallest = std::min({smallest, small.size.x, small.size.y});
-        lists[i].push_back({{"label", label}, {"url", pngDataUri(small)}});
-        bytes += lists[i].back().dump(2).size() + 16;  // + its indentation inside the test
-      }
-    if (bytes <= budget) {
-      for (size_t i = 0; i < kept; ++i) results["tests"][pictures[i].test]["images"] = lists[i];
-      if (kept < pictures.size())
-        results["message"] =
-            results["message"].get<std::string>() + "\n(The pictures of " + std::to_string(pictures.size() - kept) +
-            " configurations are left out to keep the results within their size limit: the full report has them.)";
-      break;
-    }
-    if (smallest > 32) {
-      factor *= 2;
-    } else {  // one configuration fewer, from full size again
-      --kept;
-      factor = 1;
-    }
-  }
+  const std::vector<nlohmann::json> lists = fitPictures(pictures, reportDir, byteLimit > text ? byteLimit - text : 0);
+  for (size_t i = 0; i < lists.size(); ++i) results["tests"][pictures[i].test]["images"] = lists[i];
+  results["message"] = results["message"].get<std::string>() + leftOutNote(pictures.size(), lists.size());
   return results;
 }
 
-std::string moodleCsv(const std::vector<ClassRow>& rows) {
-  const std::vector<Column> columns = exerciseColumns(rows);
-  std::string csv = "Username";
+namespace {
+
+// Whether a row is a result a gradebook may take: the grader reached a verdict (a shader that does
+// not build or runs away is the student's, and scores what it scores); a crash is the grader's.
+bool isResult(const ClassRow* r) { return r && r->status != "crashed"; }
+
+// "" when `student` has a result for every exercise of `columns`, else why they are left out.
+std::string withoutResult(const std::vector<ClassRow>& rows, const std::string& student,
+                          const std::vector<Column>& columns) {
+  std::vector<std::string> missing;
   for (auto& c : columns)
-    csv += "," + csvField(c.title + " (" + c.id + ")") + "," + csvField("Feedback: " + c.title + " (" + c.id + ")");
-  csv += "\n";
-  for (auto& student : studentsOf(rows)) {
-    csv += csvField(student);
-    for (auto& c : columns) {
-      const ClassRow* r = rowOf(rows, student, c.id);
-      csv.append(",").append(r ? formatPoints(r->score) : "").append(",").append(r ? csvField(feedbackOf(*r)) : "");
-    }
-    csv += "\n";
-  }
-  return csv;
+    if (!isResult(rowOf(rows, student, c.id))) missing.push_back(c.id);
+  return missing.empty() ? "" : student + ": no result for " + englishList(missing, "");
 }
 
-std::string canvasCsv(const std::vector<ClassRow>& rows) {
+}  // namespace
+
+GradebookFile moodleCsv(const std::vector<ClassRow>& rows) {
   const std::vector<Column> columns = exerciseColumns(rows);
-  std::string csv = "Student,ID,SIS User ID,SIS Login ID,Section";
-  // A name ending in "(digits)" would be taken for an existing assignment's id: none here.
-  for (auto& c : columns) csv += "," + csvField("ShadeLab: " + c.title + " [" + c.id + "]");
-  csv += "\n    Points Possible,,,,";
-  for (auto& c : columns) csv += "," + formatPoints(c.total);
-  csv += "\n";
+  GradebookFile file;
+  file.text = "Username";
+  for (auto& c : columns)
+    file.text +=
+        "," + csvField(c.title + " (" + c.id + ")") + "," + csvField("Feedback: " + c.title + " (" + c.id + ")");
+  file.text += "\n";
   for (auto& student : studentsOf(rows)) {
-    csv += csvField(student) + ",,," + csvField(student) + ",";
-    for (auto& c : columns) {
-      const ClassRow* r = rowOf(rows, student, c.id);
-      csv.append(",").append(r ? formatPoints(r->score) : "");
+    if (auto why = withoutResult(rows, student, columns); !why.empty()) {
+      file.leftOut.push_back(why);
+      continue;
     }
-    csv += "\n";
+    file.text += csvField(student);
+    for (auto& c : columns) {
+      const ClassRow& r = *rowOf(rows, student, c.id);
+      file.text += "," + formatPoints(r.score) + "," + csvField(feedbackOf(r));
+    }
+    file.text += "\n";
   }
-  return csv;
+  return file;
+}
+
+GradebookFile moodleWorksheetCsv(const std::vector<ClassRow>& rows, const PlatformIdentities& identities,
+                                 const std::string& gradedAt) {
+  const std::vector<Column> columns = exerciseColumns(rows);
+  double maximum = 0.0;
+  for (auto& c : columns) maximum += c.total;
+  GradebookFile file;
+  file.text = "Identifier,Full name,Grade,Maximum Grade,Last modified (grade),Feedback comments\n";
+  for (auto& student : studentsOf(rows)) {
+    const auto who = identities.find(student);
+    if (who == identities.end() || who->second.id.empty()) {
+      file.leftOut.push_back(student + ": not a folder of Moodle's download, so no participant to match");
+      continue;
+    }
+    if (auto why = withoutResult(rows, student, columns); !why.empty()) {
+      file.leftOut.push_back(why);
+      continue;
+    }
+    double points = 0.0;
+    std::string feedback;
+    for (auto& c : columns) {
+      const ClassRow& r = *rowOf(rows, student, c.id);
+      points += r.score;
+      feedback += (feedback.empty() ? "" : "\n") + (columns.size() > 1 ? c.title + ": " : "") + feedbackOf(r);
+    }
+    file.text += csvField("Participant " + who->second.id) + "," + csvField(who->second.person) + "," +
+                 formatPoints(points) + "," + formatPoints(maximum) + "," + gradedAt + "," + csvField(feedback) + "\n";
+  }
+  return file;
+}
+
+GradebookFile canvasCsv(const std::vector<ClassRow>& rows, const PlatformIdentities& identities) {
+  const std::vector<Column> columns = exerciseColumns(rows);
+  GradebookFile file;
+  file.text = "Student,ID,SIS User ID,SIS Login ID,Section";
+  // A name ending in "(digits)" would be taken for an existing assignment's id: none here.
+  for (auto& c : columns) file.text += "," + csvField("ShadeLab: " + c.title + " [" + c.id + "]");
+  file.text += "\n    Points Possible,,,,";
+  for (auto& c : columns) file.text += "," + formatPoints(c.total);
+  file.text += "\n";
+  for (auto& student : studentsOf(rows)) {
+    if (auto why = withoutResult(rows, student, columns); !why.empty()) {
+      file.leftOut.push_back(why);
+      continue;
+    }
+    const auto who = identities.find(student);
+    if (who != identities.end() && !who->second.id.empty())
+      file.text += csvField(who->second.person.empty() ? student : who->second.person) + "," + who->second.id + ",,,";
+    else
+      file.text += csvField(student) + ",,," + csvField(student) + ",";
+    for (auto& c : columns) file.text += "," + formatPoints(rowOf(rows, student, c.id)->score);
+    file.text += "\n";
+  }
+  return file;
 }
 
 }  // namespace shadelab

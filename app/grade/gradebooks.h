@@ -3,6 +3,7 @@
 // class's rows (class_report.h) as the CSV files that Moodle's and Canvas's gradebooks import.
 #pragma once
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,13 @@ namespace shadelab {
 // max_score, passed or failed, and in its output the value against its thresholds and the hint
 // the grader showed; the submission's output (Markdown) holds each exercise's score, diagnosis and
 // notes. A test's visibility is its configuration's in the rubric where that is not "visible",
-// else `visibility`: visible, hidden, after_due_date or after_published.
-nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string& visibility = "visible");
+// else `visibility`: visible, hidden, after_due_date or after_published. With `reportDir` (the
+// report's folder), the first check of each configuration that lost points carries that
+// configuration's three pictures: Gradescope shows images only inline, so that test's output is
+// HTML (its text, then each picture as a PNG data URL), the pictures halved until all fit in
+// `pictureBytes`, and left out from the last configuration where even 32 pixels do not fit.
+nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string& visibility = "visible",
+                                 const std::filesystem::path& reportDir = {}, size_t pictureBytes = size_t(1) << 20);
 bool validGradescopeVisibility(const std::string& visibility);
 
 // Classroom 50's result.json (schema classroom50/result/v1, published in foundation50/classroom50's
@@ -59,17 +65,46 @@ nlohmann::json classroom50Result(const nlohmann::json& report, const Classroom50
 nlohmann::json prairieLearnResults(const nlohmann::json& report, const std::filesystem::path& reportDir,
                                    size_t byteLimit = 1048576);
 
-// Moodle's "Import grades: CSV file": a header row, a Username column to map to the user's
-// username, then per exercise its points and its feedback (the diagnosis), each mapped to a grade
-// item and to "Feedback for" that item at import. A feedback column never comes without its grade
-// column beside it (imported alone, Moodle's feedback overwrites the linked grade), and an
-// exercise a student has no result for leaves both cells empty.
-std::string moodleCsv(const std::vector<ClassRow>& rows);
+// How a platform knows the student behind a submission, where the class folder is that
+// platform's own download of an assignment (submissions.h's readClassFolder): Moodle's participant
+// id, Canvas's user id, and the name the platform gave them. A class of folders named by the
+// students has none: the name is the username or login.
+struct PlatformIdentity {
+  std::string id, person;
+};
+using PlatformIdentities = std::map<std::string, PlatformIdentity>;  // by the submission's name
 
-// Canvas's gradebook import: Student, ID, SIS User ID, SIS Login ID and Section first (the
-// submission's folder name as the student and their SIS login, which Canvas matches), then one
+// A gradebook file, and the students left out of it. A student without a result for every
+// exercise in it (their grading crashed, or they were not graded) is left out, so the platform
+// keeps the grade they have: an empty cell would clear it (Moodle's CSV import writes no grade for
+// an empty cell; Canvas's takes a blank for a removed score). Each left-out student is named with
+// why ("ada: no result for shadows/pcf").
+struct GradebookFile {
+  std::string text;
+  std::vector<std::string> leftOut;
+};
+
+// Moodle's "Import grades: CSV file" (the course gradebook): a header row, a Username column to
+// map to the user's username, then per exercise its points and its feedback (the diagnosis), each
+// mapped to a grade item and to "Feedback for" that item at import. Moodle stops the whole import
+// at a username it does not know: name each submission after the student's username.
+GradebookFile moodleCsv(const std::vector<ClassRow>& rows);
+
+// Moodle's assignment grading worksheet (the assignment's "Upload grading worksheet", which
+// matches a row by its Identifier, "Participant 123": the id Moodle's "Download all submissions"
+// puts in every folder's name). Identifier, Full name, Grade (the exercises' points summed),
+// Maximum Grade, Last modified (grade) (`gradedAt`, ISO 8601, so a grade a teacher changed later
+// is kept unless they tick Moodle's override) and Feedback comments. Moodle skips a row whose
+// identifier it does not know, and a grade above the assignment's maximum grade: the teacher sets
+// that maximum to the rubrics' total.
+GradebookFile moodleWorksheetCsv(const std::vector<ClassRow>& rows, const PlatformIdentities& identities,
+                                 const std::string& gradedAt);
+
+// Canvas's gradebook import: Student, ID, SIS User ID, SIS Login ID and Section first, then one
 // column per exercise, "Points Possible" as the second row; an unknown column name becomes a new
-// assignment.
-std::string canvasCsv(const std::vector<ClassRow>& rows);
+// assignment. Canvas matches a row by ID (its user id: from the file names of its "Download
+// Submissions", where the class folder is that download), else by SIS Login ID (the submission's
+// name, where the folders are named by the students); a row it cannot match it asks the teacher about.
+GradebookFile canvasCsv(const std::vector<ClassRow>& rows, const PlatformIdentities& identities = {});
 
 }  // namespace shadelab

@@ -272,11 +272,45 @@ TEST(Gradebooks, PrairieLearnResultsFitTheirLimitAndSayWhatCannotBeGraded) {
   std::filesystem::remove_all(dir);
 }
 
+// Gradescope shows a picture only inline: the failing configuration's first lost check becomes an
+// HTML output holding its text (escaped) and the three pictures as data URLs, within their budget;
+// without the report's folder, or with no room, the tests stay Markdown and the output says so.
+TEST(Gradebooks, GradescopeCarriesTheFailingConfigurationsPicturesInline) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "shadelab_gradescope_test";
+  std::filesystem::create_directories(dir);
+  ImageF grey;
+  grey.size = {64, 64};
+  grey.rgba.assign(size_t(64) * 64 * 4, 0.5f);
+  for (const char* name : {"s.png", "o.png", "d.png"}) ASSERT_EQ(writePng((dir / name).string(), grey), "");
+  nlohmann::json r = report();
+  r["exercises"][0]["checks"][1]["images"] = {{"student", "s.png"}, {"solution", "o.png"}, {"diff", "d.png"}};
+  r["exercises"][0]["checks"][1]["message"] = "Depths <compared> & kept.";
+
+  const nlohmann::json shown = gradescopeResults(r, "visible", dir);
+  EXPECT_EQ(shown["tests"][0]["output_format"], "md");  // passed: no pictures
+  const nlohmann::json& lost = shown["tests"][1];
+  ASSERT_EQ(lost["output_format"], "html");
+  const std::string html = lost["output"];
+  size_t images = 0;
+  for (size_t at = 0; (at = html.find("<img src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++images;
+  EXPECT_EQ(images, 3u);
+  EXPECT_NE(html.find("Depths &lt;compared&gt; &amp; kept."), std::string::npos) << "the text escaped, not lost";
+  EXPECT_NE(html.find("the solution's"), std::string::npos);
+
+  EXPECT_EQ(gradescopeResults(r)["tests"][1]["output_format"], "md");  // no folder: text only
+  const nlohmann::json none = gradescopeResults(r, "visible", dir, 100);
+  EXPECT_EQ(none["tests"][1]["output_format"], "md");
+  EXPECT_NE(none["output"].get<std::string>().find("left out"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 // Moodle: a header row, a user column to map (Username), a numeric grade per item and its
-// feedback column right after it; every row as long as the header; an exercise a student has no
-// result for leaves both its cells empty (a feedback without its grade would overwrite the grade).
+// feedback column right after it; every row as long as the header. A student without a result for
+// every exercise is left out and named: an empty cell would clear the grade Moodle has.
 TEST(Gradebooks, MoodleCsvIsOneUserPerRowWithAGradeAndFeedbackPerExercise) {
-  const auto rows = parseCsv(moodleCsv(classRows()));
+  const GradebookFile file = moodleCsv(classRows());
+  EXPECT_TRUE(file.leftOut.empty());
+  const auto rows = parseCsv(file.text);
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[0][0], "Username");
   ASSERT_EQ(rows[0].size(), 3u);
@@ -291,20 +325,50 @@ TEST(Gradebooks, MoodleCsvIsOneUserPerRowWithAGradeAndFeedbackPerExercise) {
   other.exercise = "shadows/pcss-blocker";
   other.title = "The blocker search";
   more.push_back(other);  // ada has it, grace does not
-  const auto wider = parseCsv(moodleCsv(more));
-  ASSERT_EQ(wider[0].size(), 5u);
-  for (size_t c = 1; c < wider[0].size(); c += 2)
-    EXPECT_EQ(wider[0][c + 1], "Feedback: " + wider[0][c]) << "each feedback column beside its grade column";
-  EXPECT_EQ(wider[2][3], "");
-  EXPECT_EQ(wider[2][4], "");
-  EXPECT_NE(wider[1][4], "");
+  const GradebookFile wider = moodleCsv(more);
+  const auto table = parseCsv(wider.text);
+  ASSERT_EQ(table[0].size(), 5u);
+  for (size_t c = 1; c < table[0].size(); c += 2)
+    EXPECT_EQ(table[0][c + 1], "Feedback: " + table[0][c]) << "each feedback column beside its grade column";
+  ASSERT_EQ(table.size(), 2u) << "grace has no result for the blocker search: her row would clear it";
+  EXPECT_EQ(table[1][0], "ada");
+  for (auto& cell : table[1]) EXPECT_NE(cell, "");
+  ASSERT_EQ(wider.leftOut.size(), 1u);
+  EXPECT_EQ(wider.leftOut[0], "grace, the second: no result for shadows/pcss-blocker");
+
+  more[0].status = "crashed";  // the grader's failure is no result either
+  EXPECT_EQ(moodleCsv(more).leftOut.size(), 2u);
+  more[0].status = "did not build";  // the student's: it scores what it scores
+  EXPECT_EQ(moodleCsv(more).leftOut.size(), 1u);
+}
+
+// Moodle's grading worksheet, for a class folder that is Moodle's own download: a row per
+// participant ("Participant 123", the id in the download's folder names), the exercises' points
+// summed under the maximum, the grading time in a form PHP's strtotime reads, and no row for a
+// submission Moodle would not know or a student without a result.
+TEST(Gradebooks, MoodleWorksheetMatchesTheDownloadsParticipants) {
+  std::vector<ClassRow> rows = classRows();
+  rows[0].student = "Ada Lovelace_123";
+  const PlatformIdentities ids = {{"Ada Lovelace_123", {"123", "Ada Lovelace"}}};
+  const GradebookFile file = moodleWorksheetCsv(rows, ids, "2026-12-02T10:00:00Z");
+  const auto table = parseCsv(file.text);
+  ASSERT_EQ(table.size(), 2u);
+  EXPECT_EQ(table[0], (std::vector<std::string>{"Identifier", "Full name", "Grade", "Maximum Grade",
+                                                "Last modified (grade)", "Feedback comments"}));
+  EXPECT_EQ(table[1][0], "Participant 123");
+  EXPECT_EQ(table[1][1], "Ada Lovelace");
+  EXPECT_EQ(table[1][2], "5");
+  EXPECT_EQ(table[1][3], "5");
+  EXPECT_EQ(table[1][4], "2026-12-02T10:00:00Z");
+  ASSERT_EQ(file.leftOut.size(), 1u);
+  EXPECT_NE(file.leftOut[0].find("grace, the second: not a folder of Moodle's download"), std::string::npos);
 }
 
 // Canvas: Student, ID, SIS User ID, SIS Login ID, Section first; "Points Possible" as the second
 // row; the login column filled, which Canvas matches students by; no new column's name ending in
 // "(digits)", which Canvas reads as an existing assignment's id.
 TEST(Gradebooks, CanvasCsvHasTheColumnsTheGradebookImportMatchesOn) {
-  const auto rows = parseCsv(canvasCsv(classRows()));
+  const auto rows = parseCsv(canvasCsv(classRows()).text);
   ASSERT_EQ(rows.size(), 4u);
   const std::vector<std::string> first(rows[0].begin(), rows[0].begin() + 5);
   EXPECT_EQ(first, (std::vector<std::string>{"Student", "ID", "SIS User ID", "SIS Login ID", "Section"}));
@@ -315,4 +379,17 @@ TEST(Gradebooks, CanvasCsvHasTheColumnsTheGradebookImportMatchesOn) {
   for (size_t c = 5; c < rows[0].size(); ++c)
     EXPECT_FALSE(std::regex_search(rows[0][c], std::regex("\\([0-9]+\\)$"))) << rows[0][c];
   for (auto& row : rows) EXPECT_EQ(row.size(), rows[0].size());
+}
+
+// A class folder that is Canvas's own download: the row carries the user id from the file names,
+// which Canvas matches before any login.
+TEST(Gradebooks, CanvasCsvCarriesTheDownloadsUserIds) {
+  std::vector<ClassRow> rows = classRows();
+  rows[0].student = "lovelaceada_4567";
+  const auto table = parseCsv(canvasCsv(rows, {{"lovelaceada_4567", {"4567", "lovelaceada"}}}).text);
+  ASSERT_EQ(table.size(), 4u);
+  EXPECT_EQ(table[2][0], "lovelaceada");
+  EXPECT_EQ(table[2][1], "4567");
+  EXPECT_EQ(table[2][3], "");
+  EXPECT_EQ(table[3][3], "grace, the second");  // no identity: the name as the login, as before
 }
