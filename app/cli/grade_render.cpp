@@ -66,6 +66,18 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
     if (auto e = drawSolution(ex, c, built); !e.empty()) return failSolution(e);
     if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
   }
+  if (job.solutionOnly) {
+    // Filling the cache ahead of a class (grade --prepare keeps the slips too, so that no student's
+    // diagnosis has to draw them).
+    if (job.slips && !built.numbers.contains("slips")) {
+      if (auto e = drawSlips(ex, c, built); !e.empty()) return failSolution(e);
+      if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
+    }
+    nlohmann::json numbers = built.numbers;
+    numbers["from_cache"] = cached;
+    writeResult(job, "solution", numbers);
+    return 0;
+  }
   if (job.slips) {
     // The slips, drawn once and kept with the solution's frames for the next student who needs
     // them, then the student's frame against them.
@@ -83,10 +95,6 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   const ImageF& solution = built.frame;
   nlohmann::json solutionJson = built.numbers;
   solutionJson["from_cache"] = cached;
-  if (job.solutionOnly) {
-    writeResult(job, "solution", solutionJson);
-    return 0;
-  }
   if (c.function < 0)
     if (auto e = writePng((job.dir / (job.stem + "-solution.png")).string(), solution); !e.empty())
       return failSolution(e);

@@ -31,7 +31,8 @@ struct ConfigurationJob {
   // holds an entry for `cacheKey` + the renderer, and stored there when it did not.
   SolutionCache cache;
   std::string cacheKey;       // solutionKeyBase(): everything but the renderer
-  bool solutionOnly = false;  // fill the cache and stop (a class run does this once per configuration)
+  bool solutionOnly = false;  // fill the cache and stop (a class run does this once per configuration;
+                              // with `slips`, grade --prepare, the slips as well)
   // The second pass, when the diagnosis asks for the solution's slips (grade/diagnosis.h:
   // slipsNeeded): draw them unless the cache holds them (and keep them there), draw the student's
   // frame again and write its distances to them, <stem>-slips.json (slipDistances).

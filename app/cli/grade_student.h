@@ -32,9 +32,15 @@ std::string gradeStudent(const std::vector<std::string>& ids, const StudentGradi
                          CacheCount& cache);
 
 // Renders (or finds in the cache) the solution side of every configuration of `ids`, once, so that
-// submissions graded after it only draw their own frames. "" or why it failed.
+// submissions graded after it only draw their own frames; with `slips`, the solution's slips too
+// (what a failing student's diagnosis would otherwise draw). "" or why it failed.
 std::string prepareSolutions(const std::vector<std::string>& ids, const std::string& backend,
-                             const SolutionCache& cache, const std::filesystem::path& scratch, CacheCount& count);
+                             const SolutionCache& cache, const std::filesystem::path& scratch, CacheCount& count,
+                             bool slips = false);
+
+// shadelab grade --prepare: fills the solution cache for the exercises (an autograder image does
+// this once, when it is built, so that each submission draws only the student's frames).
+int runGradePrepare(const Options& o);
 
 // "shadelab: grade: MESSAGE" on stderr; returns grade's exit code for "could not grade" (2).
 int cannotGrade(const std::string& message);

@@ -89,6 +89,8 @@ options:
   --shard i/n         grade --class: grade the i-th of n deterministic slices (1 <= i <= n), for array jobs
   --cache DIR         grade: keep the solution's frames and truths here (default $SHADELAB_CACHE/solutions
                       or ~/.cache/shadelab/solutions); --no-cache renders them every time
+  --prepare           grade: fill that cache for --exercise ID or --all (the solutions' frames, truths,
+                      listed mistakes and slips) and stop, as an autograder's image does when it is built
   --count N           random: configurations per lab (default 20)
   --seed N            random, soak: the seed (default 1); the same seed draws the same configurations
   --minutes M         soak: how long (default 1)
@@ -156,6 +158,10 @@ std::string parseOptions(int argc, char** argv, Options& o) {
     }
     if (arg == "--no-cache") {
       o.noCache = true;
+      continue;
+    }
+    if (arg == "--prepare") {
+      o.prepare = true;
       continue;
     }
     if (arg.rfind("--", 0) != 0) {
@@ -289,7 +295,7 @@ std::string parseOptions(int argc, char** argv, Options& o) {
              "--watchdog, --class, --pixel, --config, --json, --variable, --line, "
              "--jobs, "
              "--shard, "
-             "--cache, --no-cache, --count, "
+             "--cache, --no-cache, --prepare, --count, "
              "--seed, --minutes)";
     }
   }

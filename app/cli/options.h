@@ -50,6 +50,7 @@ struct Options {
   int shard = 1, shards = 1;       // grade --class: --shard i/n
   std::string cacheDir;            // grade: --cache DIR ("" = the default folder)
   bool noCache = false;            // grade: --no-cache
+  bool prepare = false;            // grade: --prepare, fill the solution cache and stop
   int count = 20;                  // random: configurations per lab
   unsigned seed = 1;               // random, soak
   double minutes = 1.0;            // soak

@@ -5,7 +5,10 @@ a missing file). Each platform's script runs as the platform runs it, on a fake 
 Gradescope's run_autograder on /autograder, Classroom 50's autograder.py in a git checkout with the
 runner's environment, PrairieLearn's run.sh on /grade. Each JSON file is validated against the
 schema of tests/grade/schemas/ (written from what the platform publishes) with jsonschema, plus the
-rules a schema cannot say; Moodle's and Canvas's CSV come from one `grade --class` of the three.
+rules a schema cannot say; Moodle's and Canvas's CSV come from one `grade --class` of the three, and
+again from the three laid out as each platform's own download of an assignment. Each platform's
+entry point also grades with the solutions its image prepares when it is built (`grade --prepare`),
+rendering none of them.
 
 usage: gradebooks_test.py SHADELAB_BINARY REPO OUT_DIR     prints "passed: ..." at the end
 """
@@ -64,6 +67,18 @@ def gradescope(name, text):
     return r['score']
 
 
+def classroom50_env(name):
+    """The environment Classroom 50's runner hands the autograder for `name`'s submission, and its release."""
+    tag = 'submit/2026-11-27T22-59-58Z-abc1234'
+    release = f'https://github.com/graphics/blinn-phong-{name}/releases/tag/{tag}'
+    env = dict(os.environ, SHADELAB=str(shadelab), CLASSROOM='graphics', ASSIGNMENT='blinn-phong',
+               ASSIGNMENT_TYPE='team' if name == 'failing' else 'individual', OWNER=name, SUBMISSION_TAG=tag,
+               COMMIT_URL='https://example.org/commit/abc1234', RELEASE_URL=release,
+               REVIEW_URL='https://example.org/compare/0...abc1234', GITHUB_ACTOR=name)
+    env.pop('COMMIT_DATE', None)
+    return env, release
+
+
 def classroom50(name, text):
     checkout = out / 'classroom50' / name
     (checkout / 'shaders' / FILE).parent.mkdir(parents=True)
@@ -77,13 +92,7 @@ def classroom50(name, text):
         grader.mkdir(parents=True)
         shutil.copy(repo / 'tools/classroom50/autograder.py', grader)
         (grader / 'autograder.json').write_text(json.dumps({'exercise': EXERCISE, 'shaders': 'shaders'}))
-    tag = 'submit/2026-11-27T22-59-58Z-abc1234'
-    release = f'https://github.com/graphics/blinn-phong-{name}/releases/tag/{tag}'
-    env = dict(os.environ, SHADELAB=str(shadelab), CLASSROOM='graphics', ASSIGNMENT='blinn-phong',
-               ASSIGNMENT_TYPE='team' if name == 'failing' else 'individual', OWNER=name, SUBMISSION_TAG=tag,
-               COMMIT_URL='https://example.org/commit/abc1234', RELEASE_URL=release,
-               REVIEW_URL='https://example.org/compare/0...abc1234', GITHUB_ACTOR=name)
-    env.pop('COMMIT_DATE', None)
+    env, release = classroom50_env(name)
     run([sys.executable, grader / 'autograder.py'], cwd=checkout, env=env)
     r = json.loads((checkout / 'result.json').read_text())
     schema('classroom50-result-v1.schema.json').validate(r)
@@ -152,6 +161,100 @@ def class_csvs(subs):
     assert canvas[1][0].strip() == 'Points Possible' and len(canvas) == 2 + len(subs)
 
 
+def platform_downloads(subs):
+    """Moodle's "Download all submissions" (a folder per participant, and loose files) and Canvas's
+    "Download Submissions" (loose files, a late one, a re-uploaded name, a zip), graded with --class as
+    they come: each gradebook row names the identity the platform matches (Moodle's participant,
+    Canvas's user id) and scores what the same file scores in a folder named by the student."""
+    named = {row[0]: row[1] for row in csv.reader(open(out / 'class-moodle/moodle.csv', newline=''))}
+    moodle = out / 'moodle-download'
+    (moodle / 'Ada Lovelace_101_assignsubmission_file_').mkdir(parents=True)
+    (moodle / 'Ada Lovelace_101_assignsubmission_file_/specular.glsl').write_text(subs['passing'])
+    (moodle / 'Grace Hopper_102_assignsubmission_file_/shaders/common').mkdir(parents=True)
+    (moodle / 'Grace Hopper_102_assignsubmission_file_/shaders/common/specular.glsl').write_text(subs['failing'])
+    (moodle / 'Grace Hopper_102_assignsubmission_onlinetext_').mkdir()
+    (moodle / 'Grace Hopper_102_assignsubmission_onlinetext_/onlinetext.html').write_text('<p>done</p>')
+    (moodle / 'Alan Turing_103_assignsubmission_file_specular.glsl').write_text(subs['broken'])
+    done = run([shadelab, 'grade', '--class', moodle, '--exercise', EXERCISE, '--format', 'moodle', '--out',
+                out / 'moodle-graded'])
+    assert "read as Moodle's" in done.stdout, done.stdout
+    sheet = list(csv.reader(open(out / 'moodle-graded/moodle-worksheet.csv', newline='')))
+    assert sheet[0][:3] == ['Identifier', 'Full name', 'Grade'] and 'Last modified (grade)' in sheet[0], sheet[0]
+    grades = {row[0]: row[2] for row in sheet[1:]}
+    assert grades == {'Participant 101': named['passing'], 'Participant 102': named['failing'],
+                      'Participant 103': named['broken']}, (grades, named)
+
+    canvas = out / 'canvas-download'
+    canvas.mkdir()
+    (canvas / 'lovelaceada_201_9001_specular.glsl').write_text(subs['passing'])
+    (canvas / 'hoppergrace_late_202_9002_specular-1.glsl').write_text(subs['failing'])
+    import zipfile
+    with zipfile.ZipFile(canvas / 'turingalan_203_9003_my_shaders.zip', 'w') as z:
+        z.writestr('my_shaders/common/specular.glsl', subs['broken'])
+    done = run([shadelab, 'grade', '--class', canvas, '--exercise', EXERCISE, '--format', 'canvas', '--out',
+                out / 'canvas-graded'])
+    assert "read as Canvas's" in done.stdout, done.stdout
+    table = list(csv.reader(open(out / 'canvas-graded/canvas.csv', newline='')))
+    scores = {row[1]: row[5] for row in table[2:]}
+    assert scores == {'201': named['passing'], '202': named['failing'], '203': named['broken']}, (scores, named)
+    report = (out / 'canvas-graded/students/hoppergrace_202/report.md').read_text()
+    assert 'specular-1.glsl read as specular.glsl' in report, report[:2000]
+
+
+def prepared_solutions(subs, seen):
+    """An autograder's image draws the exercise's solution side once, when it is built (`grade
+    --prepare`: Gradescope's setup.sh, the PrairieLearn and Classroom 50 Dockerfiles). A submission
+    graded there takes every configuration's solution from that cache, renders none, and scores what
+    it scores with the solution drawn for it."""
+    cache = out / 'prepared'
+    done = run([shadelab, 'grade', '--prepare', '--exercise', EXERCISE, '--cache', cache / 'solutions'])
+    assert re.search(r'solutions: \d+ configurations', done.stdout), done.stdout
+    only_cached = re.compile(r'solutions: (\d+) configurations, \1 from the cache, 0 rendered')
+
+    tree = out / 'gradescope-prepared'
+    (tree / 'source').mkdir(parents=True)
+    (tree / 'source/config.env').write_text(f'EXERCISE={EXERCISE}\n')
+    shutil.copytree(cache / 'solutions', tree / 'source/solution-cache')  # where setup.sh leaves it
+    (tree / 'submission' / FILE).parent.mkdir(parents=True)
+    (tree / 'submission' / FILE).write_text(subs['failing'])
+    done = run([repo / 'tools/gradescope/run_autograder'], env=dict(os.environ, AUTOGRADER=str(tree),
+                                                                     SHADELAB=str(shadelab)))
+    assert only_cached.search(done.stdout), done.stdout
+    assert json.loads((tree / 'results/results.json').read_text())['score'] == seen['failing'][0]
+
+    grade = out / 'prairielearn-prepared'
+    (grade / 'student').mkdir(parents=True)
+    (grade / 'student' / pathlib.Path(FILE).name).write_text(subs['failing'])
+    done = run([repo / 'tools/prairielearn/run.sh'],
+               env=dict(os.environ, GRADE_ROOT=str(grade), SHADELAB=str(shadelab), EXERCISE=EXERCISE,
+                        SOLUTION_CACHE=str(cache / 'solutions')))
+    assert only_cached.search(done.stdout), done.stdout
+    assert json.loads((grade / 'results/results.json').read_text())['score'] == seen['failing'][2]
+
+    # Classroom 50's runtime image: $SHADELAB_CACHE set (its solutions/ prepared), nothing built.
+    checkout = out / 'classroom50' / 'failing'
+    env, _ = classroom50_env('failing')
+    done = run([sys.executable, out / 'classroom50/autograders/blinn-phong/autograder.py'], cwd=checkout,
+               env=dict(env, SHADELAB_CACHE=str(cache)))
+    assert only_cached.search(done.stdout), done.stdout
+    r = json.loads((checkout / 'result.json').read_text())
+    assert r['score'] / r['max-score'] == seen['failing'][1][0], (r, seen['failing'])
+
+
+def classroom50_course_refused():
+    """A course folder in Classroom 50's autograder folder is published where the class reads it: the
+    autograder refuses it unless autograder.json says that is meant."""
+    grader = out / 'classroom50-course'
+    (grader / 'course').mkdir(parents=True)
+    shutil.copy(repo / 'tools/classroom50/autograder.py', grader)
+    (grader / 'autograder.json').write_text(json.dumps({'exercise': EXERCISE, 'course': 'course'}))
+    env, _ = classroom50_env('passing')
+    done = subprocess.run([sys.executable, grader / 'autograder.py'], capture_output=True, text=True, env=env,
+                          cwd=grader)
+    assert done.returncode != 0 and 'course_readable_by_class' in done.stderr, done.stderr
+    assert not (grader / 'result.json').exists()
+
+
 def hidden_configuration():
     """A rubric's configuration hidden until the due date (the test course's point-lights, "per
     vertex"): graded and counted, its tests carrying that visibility in Gradescope's results."""
@@ -175,7 +278,7 @@ def docker_context():
     another machine's paths and fails the image's configure step) and keeps what the image builds
     from. Docker's rule: a pattern excludes the paths it matches and everything under them."""
     import fnmatch
-    ignore = repo / 'tools/prairielearn/Dockerfile.dockerignore'
+    ignore = repo / '.dockerignore'
     patterns = [line.strip() for line in ignore.read_text().splitlines() if line.strip() and line[0] != '#']
 
     def excluded(path):
@@ -200,12 +303,16 @@ def main():
         seen[name] = (gradescope(name, text), classroom50(name, text), prairielearn(name, text))
     assert prairielearn('missing', None) is None
     class_csvs(subs)
+    platform_downloads(subs)
+    prepared_solutions(subs, seen)
+    classroom50_course_refused()
     hidden_configuration()
     assert seen['passing'][2] == 1.0 and seen['failing'][2] < 0.7, seen
     maxima = {name: scores[1][1] for name, scores in seen.items()}
     assert len(set(maxima.values())) == 1, ('one max-score for every student of the assignment', maxima)
     print('passed: gradescope, classroom50, prairielearn and moodle/canvas on a passing, a failing and an '
-          'ungradable submission, and a hidden configuration graded:', json.dumps(seen))
+          'ungradable submission; Moodle\'s and Canvas\'s own downloads; each image\'s prepared solutions; '
+          'a hidden configuration graded:', json.dumps(seen))
 
 
 if __name__ == '__main__':

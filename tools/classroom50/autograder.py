@@ -20,9 +20,16 @@ carries what its body links. Beside this file, autograder.json says what to grad
   {"exercise": "shading/blinn-phong",   the exercise, LAB/NAME
    "shaders": "shaders",                 the student's shader folder in their repository (else the
                                          checkout itself: a flat upload is placed as well)
-   "course": "course",                   optional: a course folder beside this file (--exercises)
+   "course": "course",                   optional: a course folder beside this file (--exercises),
+   "course_readable_by_class": true,     which the class can read (this folder is published): taken
+                                         only with this line, which says so
    "shadelab_git": URL, "shadelab_ref": REF}   optional: your course's copy of ShadeLab, cloned
                                          and built where $SHADELAB names no built binary
+
+Run in ShadeLab's runtime image (tools/classroom50/Dockerfile: $SHADELAB and $SHADELAB_CACHE set,
+the built-in exercises' solutions drawn when the image was built), a submission builds nothing and
+draws only the student's frames. `autograder.py --runtime IMAGE` prints the assignment's runtime
+block for that image.
 
 Exit 0 when a result was written, pass or fail; non-zero only when grading itself could not run
 (Classroom 50 then reports an error).
@@ -114,6 +121,14 @@ def main():
         fail(f'autograder.json beside the autograder: {e}')
     if 'exercise' not in config:
         fail('autograder.json: "exercise" is missing (LAB/NAME, e.g. shading/blinn-phong)')
+    if config.get('course') and config.get('course_readable_by_class') is not True:
+        fail('autograder.json names a course folder: everything beside autograder.py is published where the '
+             'class can read it, the rubrics\' solutions and right answers included. Add '
+             '"course_readable_by_class": true if that is meant, else grade that course elsewhere '
+             '(docs/courses.md, "Classroom 50")')
+    if len(sys.argv) == 3 and sys.argv[1] == '--runtime':
+        print(json.dumps({'runs-on': 'ubuntu-latest', 'container': {'image': sys.argv[2], 'user': 'root'}}, indent=2))
+        return 0
     if sys.argv[1:] == ['--release-assets']:
         print(json.dumps(release_assets(config, shadelab_binary(config))))
         return 0
@@ -130,8 +145,11 @@ def main():
     out = pathlib.Path(tempfile.mkdtemp(prefix='shadelab-'))
     (out / 'class').mkdir()
     (out / 'class' / 'submission').symlink_to(upload.resolve(), target_is_directory=True)
+    # In the runtime image the solutions were drawn when it was built ($SHADELAB_CACHE): the
+    # submission draws only the student's frames. Elsewhere they are drawn for this submission.
+    cache = [] if os.environ.get('SHADELAB_CACHE') else ['--no-cache']
     command = [shadelab_binary(config), 'grade', '--class', str(out / 'class'), '--exercise', config['exercise'],
-               '--format', 'classroom50', '--out', str(out / 'grades'), '--no-cache']
+               '--format', 'classroom50', '--out', str(out / 'grades')] + cache
     if config.get('course'):
         command += ['--exercises', str(HERE / config['course'])]
     graded = subprocess.run(command, env=env)

@@ -13,3 +13,10 @@ DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends cm
   libeigen3-dev libflann-dev liblz4-dev libopenmesh-dev libzip-dev
 cmake -S shadelab -B shadelab-build -G Ninja -DCMAKE_BUILD_TYPE=Release -DSHADELAB_BENCH=OFF > /dev/null
 cmake --build shadelab-build --target shadelab
+# The solution's side of the exercise (its frames, truths, listed mistakes and slips) drawn once,
+# here, into the image: each submission then draws only the student's frames (run_autograder).
+source /autograder/source/config.env
+course=()
+[ -d course ] && course=(--exercises course)
+LIBGL_ALWAYS_SOFTWARE=1 shadelab-build/shadelab grade --prepare --exercise "$EXERCISE" "${course[@]}" \
+  --cache solution-cache

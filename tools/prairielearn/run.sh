@@ -32,8 +32,12 @@ work=$(mktemp -d)
 # missing. From inside the work folder, so that an error names a short path, not a temporary one.
 mkdir "$work/class"
 ln -s "$root/student" "$work/class/student"
+# The solutions the image drew when it was built (SOLUTION_CACHE overrides where, for local tests).
+cache=(--no-cache)
+solutions=${SOLUTION_CACHE:-/opt/shadelab/solution-cache}
+[ -d "$solutions" ] && cache=(--cache "$solutions")
 (cd "$work" && "$shadelab" grade --class class --exercise "$EXERCISE" "${course[@]}" --format prairielearn \
-  --out report --no-cache)
+  --out report "${cache[@]}")
 status=$?
 [ -f "$work/report/students/student/grade.log" ] && cat "$work/report/students/student/grade.log"
 if [ -f "$work/report/students/student/results.json" ]; then
