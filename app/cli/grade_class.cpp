@@ -142,15 +142,6 @@ struct ClassIdentity {
   PlatformIdentities identities;
 };
 
-constexpr std::pair<ClassLayout, const char*> kLayoutKeys[] = {
-    {ClassLayout::Named, "named"}, {ClassLayout::Moodle, "moodle"}, {ClassLayout::Canvas, "canvas"}};
-
-const char* layoutKey(ClassLayout layout) {
-  for (auto& [l, key] : kLayoutKeys)
-    if (l == layout) return key;
-  return "named";
-}
-
 nlohmann::json identityJson(const ClassIdentity& who) {
   nlohmann::json ids = nlohmann::json::object();
   for (auto& [name, id] : who.identities) ids[name] = {{"id", id.id}, {"person", id.person}};
@@ -161,10 +152,7 @@ nlohmann::json identityJson(const ClassIdentity& who) {
 // older run's) is a class of named folders.
 std::string readIdentity(const nlohmann::json& j, ClassIdentity& who) {
   const std::string key = j.value("layout", "named");
-  bool known = false;
-  for (auto& [l, k] : kLayoutKeys)
-    if (key == k) who.layout = l, known = true;
-  if (!known) return "layout '" + key + "' is none of named, moodle, canvas";
+  if (!layoutFromKey(key, who.layout)) return "layout '" + key + "' is none of named, moodle, canvas";
   for (auto& [name, id] : j.value("identities", nlohmann::json::object()).items())
     if (id.is_object()) who.identities[name] = {id.value("id", ""), id.value("person", "")};
   return {};

@@ -53,16 +53,37 @@ void makeReadOnly(const fs::path& dir) {
 
 }  // namespace
 
-const char* layoutName(ClassLayout layout) {
-  switch (layout) {
-    case ClassLayout::Named:
-      return "a folder or zip per student, named by the student";
-    case ClassLayout::Moodle:
-      return "Moodle's \"Download all submissions\"";
-    case ClassLayout::Canvas:
-      return "Canvas's \"Download Submissions\"";
-  }
-  return "";
+namespace {
+
+struct LayoutRow {
+  ClassLayout layout;
+  const char* key;   // class.json's word for it
+  const char* name;  // how a sentence names it
+};
+constexpr LayoutRow kLayouts[] = {
+    {ClassLayout::Named, "named", "a folder or zip per student, named by the student"},
+    {ClassLayout::Moodle, "moodle", "Moodle's \"Download all submissions\""},
+    {ClassLayout::Canvas, "canvas", "Canvas's \"Download Submissions\""},
+};
+
+const LayoutRow& rowOf(ClassLayout layout) {
+  for (auto& row : kLayouts)
+    if (row.layout == layout) return row;
+  return kLayouts[0];
+}
+
+}  // namespace
+
+const char* layoutName(ClassLayout layout) { return rowOf(layout).name; }
+const char* layoutKey(ClassLayout layout) { return rowOf(layout).key; }
+
+bool layoutFromKey(const std::string& key, ClassLayout& out) {
+  for (auto& row : kLayouts)
+    if (key == row.key) {
+      out = row.layout;
+      return true;
+    }
+  return false;
 }
 
 namespace {

@@ -22,7 +22,9 @@ enum class ClassLayout {
   Canvas,  // "Download Submissions": loose files "lovelaceada_4567_8910_pcf.glsl" ("_late" after the
            // name when late); 4567 is the student's Canvas user id, 8910 the file's
 };
-const char* layoutName(ClassLayout layout);  // "folders named by the students", "Moodle's download", ...
+const char* layoutName(ClassLayout layout);                    // "Moodle's \"Download all submissions\"", ...
+const char* layoutKey(ClassLayout layout);                     // "named", "moodle", "canvas": class.json's word
+bool layoutFromKey(const std::string& key, ClassLayout& out);  // false for a word none of those
 
 struct Submission {
   std::string name;              // the folder's name, or the zip's without ".zip"; in a platform's
