@@ -17,6 +17,7 @@
 #include "app/host/configure.h"
 #include "app/host/measurer.h"
 #include "app/measure/report.h"
+#include "app/util/format.h"
 #include "app/util/read_file.h"
 
 namespace shadelab {
@@ -104,9 +105,8 @@ std::vector<std::string> otherValues(const Exercise& ex, const std::string& key,
   if (end == value.c_str() || *end != '\0' || !std::isfinite(v)) return out;
   for (double o : {0.0, 1.0, 0.5 * v, 2.0 * v, v != 0.0 ? 1.0 / v : 0.0})
     if (std::abs(o - v) > 1e-9 * std::max(1.0, std::abs(v))) {
-      char b[32];
-      std::snprintf(b, sizeof b, "%g", o);
-      if (std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+      const std::string text = formatSignificant(o);
+      if (std::find(out.begin(), out.end(), text) == out.end()) out.push_back(text);
     }
   return out;
 }
@@ -116,14 +116,13 @@ std::vector<std::string> otherValues(const Exercise& ex, const std::string& key,
 // lies far closer to the student's frame than the solution's does. Drawn only for a frame that
 // differs and that nothing else explains, so a class that makes the listed mistakes pays nothing.
 nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const ImageF& image, double distance) {
-  constexpr double kFits = 0.35;  // as relateFrames: the residual at most this share of the distance
   // A budget in frames keeps the result the same on a slow machine; the time is a safety net that
   // keeps the phase well inside the watchdog's (grade --watchdog, 20 s by default).
   constexpr int kMostFrames = 40;
   constexpr auto kMostTime = std::chrono::seconds(10);
   const auto start = std::chrono::steady_clock::now();
   int frames = 0;
-  std::vector<double> best(c.settings.size(), kFits * distance);
+  std::vector<double> best(c.settings.size(), kFrameFit * distance);
   std::vector<std::string> bestValue(c.settings.size());
   std::vector<bool> found(c.settings.size(), false);
   for (const bool likeliest : {true, false})

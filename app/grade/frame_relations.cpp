@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
 namespace shadelab {
 
@@ -18,9 +17,11 @@ bool usable(const float* p) {
 
 // RMS over RGB of student(x, y) against `transform` of the solution, sampled where `source` puts
 // (x, y) in the solution's frame; NaN when fewer than half the pixels both cover take part.
-double residualOf(const ImageF& student, const ImageF& solution, size_t pixels,
-                  const std::function<bool(int, int, int&, int&)>& source,
-                  const std::function<void(const float*, double*)>& transform) {
+// A template over both, so that the per-pixel calls inline: the shift search alone runs this over
+// the frame eighty times.
+template <class Source, class Transform>
+double residualOf(const ImageF& student, const ImageF& solution, size_t pixels, const Source& source,
+                  const Transform& transform) {
   double sum = 0.0;
   size_t n = 0;
   double t[3];
@@ -41,11 +42,11 @@ double residualOf(const ImageF& student, const ImageF& solution, size_t pixels,
   return 2 * n >= pixels && n ? std::sqrt(sum / double(3 * n)) : std::nan("");
 }
 
-bool inPlace(int x, int y, int& sx, int& sy) {
+constexpr auto inPlace = [](int x, int y, int& sx, int& sy) {
   sx = x;
   sy = y;
   return true;
-}
+};
 
 // How much simpler explanations are preferred: a fitted one must fit clearly better to win.
 double plainness(const std::string& kind) {
@@ -102,8 +103,7 @@ std::vector<FrameRelation> relateFrames(const ImageF& student, const ImageF& sol
   const double distance = std::sqrt(dd / double(3 * pixels));
   if (distance <= kFramesDiffer) return out;  // frames that agree relate trivially
 
-  const auto consider = [&](FrameRelation r, const std::function<bool(int, int, int&, int&)>& source,
-                            const std::function<void(const float*, double*)>& transform) {
+  const auto consider = [&](FrameRelation r, const auto& source, const auto& transform) {
     r.residual = residualOf(student, solution, pixels, source, transform);
     if (std::isfinite(r.residual) && r.residual <= fits * distance) out.push_back(r);
   };
@@ -136,8 +136,10 @@ std::vector<FrameRelation> relateFrames(const ImageF& student, const ImageF& sol
   }
   for (const char* set : {"r", "g", "b", "rg", "rb", "gb"}) {
     const std::string flipped = set;
+    bool turned[3];
+    for (int c = 0; c < 3; ++c) turned[c] = flipped.find("rgb"[c]) != std::string::npos;
     consider({"flipped-" + flipped}, inPlace, [&](const float* p, double* t) {
-      for (int c = 0; c < 3; ++c) t[c] = flipped.find("rgb"[c]) != std::string::npos ? sum - p[c] : p[c];
+      for (int c = 0; c < 3; ++c) t[c] = turned[c] ? sum - p[c] : p[c];
     });
   }
   consider({"squared"}, inPlace, [](const float* p, double* t) {

@@ -30,10 +30,14 @@ struct FrameRelation {
   double residual = 0.0;    // frameDistance-like RMS of the student's frame to the transformed solution's
 };
 
+// How well a frame must be explained to count: a relation (or another drawing of the solution)
+// fits the student's frame when what is left is at most this share of the frames' distance.
+constexpr double kFrameFit = 0.35;
+
 // The relations that hold between the frames, best first: those whose residual is at most
 // `fits` times the frames' distance (nothing when the frames already agree, within one 8-bit step).
 std::vector<FrameRelation> relateFrames(const ImageF& student, const ImageF& solution, const ViewRange& range,
-                                        double fits = 0.35);
+                                        double fits = kFrameFit);
 
 // The same relation, as the two agree (the same kind; an affine's or a shift's numbers close).
 bool sameRelation(const FrameRelation& x, const FrameRelation& y);

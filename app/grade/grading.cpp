@@ -222,11 +222,7 @@ std::vector<std::string> checkCells(const CheckResult& r) {
           r.check.isCondition() ? "condition" : points(r.earned) + " / " + points(r.check.points)};
 }
 
-std::string percent(double p) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f%%", p);
-  return b;
-}
+std::string percent(double p) { return formatFixed(p, 1) + "%"; }
 
 }  // namespace
 

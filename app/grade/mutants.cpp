@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include "app/util/format.h"
+
 namespace shadelab {
 
 namespace {
@@ -128,9 +130,7 @@ std::string doubled(const std::string& literal) {
   while (!digits.empty() && (digits.back() == 'f' || digits.back() == 'F')) digits.pop_back();
   const double v = std::strtod(digits.c_str(), nullptr);
   const double w = v == 0.0 ? 1.0 : 2.0 * v;
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", w);
-  std::string out = b;
+  std::string out = formatSignificant(w);
   if (out.find_first_of(".e") == std::string::npos) out += ".0";
   return out;
 }

@@ -16,8 +16,8 @@ namespace shadelab {
 namespace {
 
 // A finding must fit this well: its residual at most this share of the student's distance from the
-// solution (the relations of the frames use 0.35 over noisier pictures; a table is exact).
-constexpr double kFits = 0.1;
+// solution (a frame's relations allow kFrameFit over noisier pictures; a table is exact).
+constexpr double kTableFit = 0.1;
 
 std::string number(double v) { return formatSignificant(v, 3); }
 
@@ -152,7 +152,7 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
     }
     if (n == 0 || base <= 1e-8 * double(n)) continue;
     const double fit = std::sqrt(sum / base);
-    if (fit <= kFits)
+    if (fit <= kTableFit)
       out.push_back({"transform", probe.transforms[k].name,
                      "On every input probed, " + result + " is the solution's with " + probe.transforms[k].says +
                          ": your function reads that input turned round.",
@@ -229,7 +229,7 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
                                 return q;
                               }});
     const Candidate* best = nullptr;
-    double bestFit = kFits;
+    double bestFit = kTableFit;
     for (auto& c : candidates) {
       if (c.kind == "scaled" && (std::abs(a - 1.0f) < 0.02f || std::abs(a + 1.0f) < 0.02f || std::abs(a) < 0.02f))
         continue;
@@ -278,7 +278,7 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
         miss += (ratio[i] - predicted) * (ratio[i] - predicted);
       }
       const double fit = std::sqrt(miss / spread);
-      if (ok && fit <= kFits) {
+      if (ok && fit <= kTableFit) {
         out.push_back({"quantity", probe.quantities[k].name,
                        "On every input probed, " + result + " is the solution's " + pw.text + " " +
                            (pw.positivePart ? "the positive part of " : "") + probe.quantities[k].says + ".",

@@ -3,6 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <mutex>
+#include <utility>
+
+#include "app/lab/host_batch.h"
 
 namespace shadelab {
 namespace {
@@ -58,7 +63,9 @@ ImageSource normalMapFromHeight(const ImageSource& height, float depthPerUv) {
   return out;
 }
 
-BrickTextures makeBrickTextures(int size, float depthPerUv) {
+namespace {
+
+BrickTextures drawBrickTextures(int size, float depthPerUv) {
   BrickTextures t{blank("procedural brick colour", size), blank("procedural brick height", size), {}};
   // Running bond: 4 bricks across, 8 courses, every other course shifted half a brick.
   const float brickW = float(size) / 4.0f, brickH = float(size) / 8.0f, mortar = float(size) / 110.0f,
@@ -96,6 +103,37 @@ BrickTextures makeBrickTextures(int size, float depthPerUv) {
   t.normal = normalMapFromHeight(t.height, depthPerUv);
   t.normal.name = "procedural brick normal map";
   return t;
+}
+
+// The textures of each size and depth an open batch has made: a grading child builds its scene
+// once per host (the solution, each listed mistake, each slip, the trace's rounds), and the bricks
+// are the same every time. Let go when the last batch closes.
+class KeptBricks {
+ public:
+  KeptBricks() {
+    HostBatch::onClose([this] {
+      const std::lock_guard<std::mutex> held(lock_);
+      kept_.clear();
+    });
+  }
+  BrickTextures get(int size, float depthPerUv) {
+    const std::lock_guard<std::mutex> held(lock_);
+    auto [it, made] = kept_.try_emplace({size, depthPerUv});
+    if (made) it->second = drawBrickTextures(size, depthPerUv);
+    return it->second;
+  }
+
+ private:
+  std::mutex lock_;
+  std::map<std::pair<int, float>, BrickTextures> kept_;
+};
+
+}  // namespace
+
+BrickTextures makeBrickTextures(int size, float depthPerUv) {
+  if (!HostBatch::open()) return drawBrickTextures(size, depthPerUv);
+  static KeptBricks kept;
+  return kept.get(size, depthPerUv);
 }
 
 }  // namespace shadelab
