@@ -16,6 +16,22 @@ namespace shadelab {
 
 namespace {
 constexpr rlim_t kMaxChildFileBytes = rlim_t(256) << 20;
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SHADELAB_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define SHADELAB_SANITIZED 1
+#endif
+#endif
+}  // namespace
+
+double watchdogTimeScale() {
+#ifdef SHADELAB_SANITIZED
+  return 4.0;
+#else
+  return 1.0;
+#endif
 }
 
 std::string WatchedRun::describe() const {
@@ -69,7 +85,7 @@ WatchedRun runWatched(const WatchedWork& work, const std::function<double(const 
   bool open = true;
   while (open) {
     const double elapsed = std::chrono::duration<double>(Clock::now() - phaseStart).count();
-    const double left = limitFor(run.phase) - elapsed;
+    const double left = limitFor(run.phase) * watchdogTimeScale() - elapsed;
     if (left <= 0.0) {
       kill(pid, SIGKILL);
       run.end = WatchedRun::End::TimedOut;

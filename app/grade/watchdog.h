@@ -25,7 +25,13 @@ struct WatchedRun {
 using WatchedWork = std::function<int(const std::function<void(const std::string&)>& enter)>;
 
 // Forks; the child runs `work` with stdout and stderr going to `logPath` and exits with its
-// result. `limitFor(phase)` gives each phase's limit in seconds ("" = before the first phase).
+// result. `limitFor(phase)` gives each phase's limit in seconds ("" = before the first phase),
+// times watchdogTimeScale().
+// How much longer than its limit a phase may run in this build: 4 in a sanitized build (./test.sh
+// --sanitize), whose own code in the child runs several times slower than a release build's, so
+// that a limit means the same work in both; else 1.
+double watchdogTimeScale();
+
 WatchedRun runWatched(const WatchedWork& work, const std::function<double(const std::string&)>& limitFor,
                       const std::string& logPath);
 
