@@ -90,7 +90,7 @@ int gradeSubmission(const Submission& sub, const ClassRun& run, const Options& o
   if (FILE* log = std::freopen((g.dir / "grade.log").c_str(), "w", stdout)) dup2(fileno(log), STDERR_FILENO);
 
   fs::path upload = sub.source, unpacked;
-  if (!sub.files.empty()) {  // a platform's download: the student's loose files, gathered into a folder
+  if (!sub.id.empty()) {  // a platform's download: the student's files gathered into a folder (maybe none)
     unpacked = upload = out / "unpacked" / sub.name;
     removeUnpacked(unpacked);
     if (auto e = stageFiles(sub, unpacked); !e.empty()) return cannotGrade(e);
@@ -109,14 +109,14 @@ int gradeSubmission(const Submission& sub, const ClassRun& run, const Options& o
   const fs::path placed = out / "placed" / sub.name;
   removeUnpacked(placed);
   Placement placement;
-  const std::string shown = sub.files.empty() ? sub.source.filename().string() : sub.name;
+  const std::string shown = sub.id.empty() ? sub.source.filename().string() : sub.name;
   if (auto e = placeUpload(upload, run.files, placed, shown, placement); !e.empty()) return cannotGrade(e);
   for (auto& n : placement.notes) std::printf("%s: %s\n", sub.name.c_str(), n.c_str());
   g.notes.insert(g.notes.end(), placement.notes.begin(), placement.notes.end());
   g.shaderDirs = {placed};
   GradeReport report;
   report.studentDirs = {sub.source.string()};
-  if (!sub.files.empty()) report.studentDirs = downloadEntries(sub, o.classDir);
+  if (!sub.id.empty()) report.studentDirs = downloadEntries(sub, o.classDir);
   report.date = gradeDate();
   report.command = "shadelab grade --class " + o.classDir.string() + " (submission " + sub.name + ")";
   CacheCount count;

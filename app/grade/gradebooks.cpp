@@ -484,7 +484,8 @@ GradebookFile canvasCsv(const std::vector<ClassRow>& rows, const PlatformIdentit
     }
     const auto who = identities.find(student);
     if (who != identities.end() && !who->second.id.empty())
-      file.text += csvField(who->second.person.empty() ? student : who->second.person) + "," + who->second.id + ",,,";
+      file.text +=
+          csvField(who->second.person.empty() ? student : who->second.person) + "," + csvField(who->second.id) + ",,,";
     else
       file.text += csvField(student) + ",,," + csvField(student) + ",";
     for (auto& c : columns) file.text += "," + formatPoints(rowOf(rows, student, c.id)->score);
