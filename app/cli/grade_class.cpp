@@ -263,6 +263,13 @@ int runGradeClass(const Options& o) {
   ClassIdentity who{folder.layout, {}};
   for (auto& sub : all)
     if (!sub.id.empty()) who.identities[sub.name] = {sub.id, sub.person};
+  // A platform's identities go only to that platform's gradebook: Moodle's participant ids mean
+  // nothing to Canvas, which would match them against its own users.
+  if ((o.format == "canvas" && folder.layout == ClassLayout::Moodle) ||
+      (o.format == "moodle" && folder.layout == ClassLayout::Canvas))
+    return cannotGrade("--format " + o.format + ": " + o.classDir.string() + " is " + layoutName(folder.layout) +
+                       ", whose ids " + o.format + " does not know; grade it with --format " +
+                       (o.format == "canvas" ? "moodle" : "canvas") + ", or lay the class out as a folder per student");
   if (folder.layout != ClassLayout::Named)
     std::printf("%s: read as %s (%zu students)\n", o.classDir.c_str(), layoutName(folder.layout), all.size());
   for (auto& i : folder.ignored) std::printf("  ignored: %s\n", i.c_str());

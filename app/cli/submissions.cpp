@@ -12,6 +12,7 @@
 #include <set>
 
 #include "app/shader/preprocessor.h"
+#include "app/util/format.h"
 
 namespace shadelab {
 
@@ -112,9 +113,9 @@ std::string readNamed(const fs::path& classDir, std::vector<Submission>& found) 
     const std::string name = it->path().filename().string();
     if (name.empty() || name[0] == '.') continue;
     if (it->is_directory(ec))
-      found.push_back({name, it->path(), false});
+      found.push_back({.name = name, .source = it->path(), .zip = false});
     else if (it->is_regular_file(ec) && endsWith(name, ".zip") && name.size() > 4)
-      found.push_back({name.substr(0, name.size() - 4), it->path(), true});
+      found.push_back({.name = name.substr(0, name.size() - 4), .source = it->path(), .zip = true});
   }
   return ec ? classDir.string() + ": " + ec.message() : "";
 }
@@ -130,6 +131,7 @@ void filesUnder(const fs::path& dir, std::vector<std::pair<fs::path, std::string
 std::string readDownload(const fs::path& classDir, ClassFolder& out) {
   std::map<std::string, Submission> byId;
   std::map<std::string, std::set<std::string>> names;  // Canvas: each student's upload names
+  std::map<fs::path, unsigned long long> fileIds;      // Canvas: each file's id, newest the largest
   std::vector<fs::directory_entry> entries;
   std::error_code ec;
   for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec))
@@ -139,6 +141,10 @@ std::string readDownload(const fs::path& classDir, ClassFolder& out) {
   const bool moodle = out.layout == ClassLayout::Moodle;
   for (auto& entry : entries) {
     const std::string n = entry.path().filename().string();
+    if (entry.is_symlink(ec)) {
+      out.ignored.push_back(n + " (a symbolic link; a download holds plain files and folders)");
+      continue;
+    }
     std::smatch m;
     const bool folder = entry.is_directory(ec);
     if (!std::regex_match(n, m, moodle ? kMoodleName : kCanvasName) || (folder && (!moodle || !m[4].str().empty())) ||
@@ -161,15 +167,24 @@ std::string readDownload(const fs::path& classDir, ClassFolder& out) {
     } else {
       sub.files.emplace_back(entry.path(), m[4].str());
       names[id].insert(m[4].str());
+      fileIds[entry.path()] = std::stoull(m[3].str().substr(0, 18));
     }
   }
   for (auto& [id, sub] : byId) {
-    for (auto& [path, name] : sub.files) {
-      if (moodle) continue;
-      const std::string given = canvasUploadName(name, names[id]);
-      if (given != name) {
-        sub.notes.push_back(name + " read as " + given + " (Canvas numbers a file uploaded again under its name)");
-        name = given;
+    if (!moodle) {
+      // The newest upload first (the larger file id): it keeps a name two files would share.
+      std::stable_sort(sub.files.begin(), sub.files.end(),
+                       [&](auto& a, auto& b) { return fileIds[a.first] > fileIds[b.first]; });
+      std::set<std::string> taken;
+      for (auto& [path, name] : sub.files) {
+        const std::string given = canvasUploadName(name, names[id]);
+        if (given != name && !taken.count(given)) {
+          sub.notes.push_back(name + " read as " + given + " (Canvas numbers a file uploaded again under its name)");
+          name = given;
+        } else if (taken.count(name)) {
+          sub.notes.push_back(name + ": an older upload under the same name, not taken");
+        }
+        taken.insert(name);
       }
     }
     out.submissions.push_back(std::move(sub));
@@ -182,16 +197,21 @@ std::string readDownload(const fs::path& classDir, ClassFolder& out) {
 std::string readClassFolder(const fs::path& classDir, ClassFolder& out) {
   out = ClassFolder{};
   std::error_code ec;
-  bool folders = false, canvasNames = false;
+  bool folders = false;
+  size_t entries = 0, canvasNames = 0;
   for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string n = it->path().filename().string();
     if (n.empty() || n[0] == '.') continue;
+    ++entries;
     if (n.find("_assignsubmission_") != std::string::npos) out.layout = ClassLayout::Moodle;
     if (it->is_directory(ec)) folders = true;
-    if (std::regex_match(n, kCanvasName)) canvasNames = true;
+    if (std::regex_match(n, kCanvasName)) ++canvasNames;
   }
   if (ec) return classDir.string() + ": " + ec.message();
-  if (out.layout == ClassLayout::Named && canvasNames && !folders) out.layout = ClassLayout::Canvas;
+  // Canvas's: loose files only, most of them named as Canvas names them (a teacher's own file or
+  // two beside them is listed, not graded).
+  if (out.layout == ClassLayout::Named && !folders && canvasNames > 0 && 2 * canvasNames > entries)
+    out.layout = ClassLayout::Canvas;
   std::vector<Submission>& found = out.submissions;
   if (auto e = out.layout == ClassLayout::Named ? readNamed(classDir, found) : readDownload(classDir, out); !e.empty())
     return e;
@@ -360,13 +380,7 @@ int matchOf(const UploadFile& f, const std::vector<std::string>& wanted) {
 }
 
 // "a, b and c", at most ten named.
-std::string namesOf(const std::vector<std::string>& names) {
-  std::string text;
-  const size_t shown = std::min<size_t>(names.size(), 10);
-  for (size_t i = 0; i < shown; ++i) text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-  if (names.size() > shown) text += " and " + std::to_string(names.size() - shown) + " more";
-  return text;
-}
+std::string namesOf(const std::vector<std::string>& names) { return englishList(names, "", 10); }
 
 }  // namespace
 

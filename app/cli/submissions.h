@@ -53,7 +53,9 @@ struct ClassFolder {
 };
 
 // Reads `classDir`. A platform's download is recognised by its names: any entry holding
-// "_assignsubmission_" is Moodle's; loose files only, named "name_USERID_FILEID_file", Canvas's.
+// "_assignsubmission_" is Moodle's (its folders end "_file_" or "_file", Moodle 3 and 4); loose
+// files only, most of them named "name_USERID_FILEID_file", Canvas's (of two files with one name,
+// the newer upload is taken, and a note says so).
 // Otherwise every subfolder and every .zip is one student's; hidden entries and other files are
 // skipped. "" or why the folder cannot be graded (two submissions with one name, e.g. ana/ and ana.zip).
 std::string readClassFolder(const std::filesystem::path& classDir, ClassFolder& out);

@@ -179,16 +179,24 @@ nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string
   std::string output;
   double score = 0.0;
   std::vector<Pictures> pictures;
+  std::vector<std::string> htmls;  // each test's output as HTML
   for (auto& e : report.value("exercises", nlohmann::json::array())) {
     const std::string id = e.value("id", ""), title = e.value("title", id);
     score += e.value("score", 0.0);
     output += exerciseSummary(e);
     std::set<std::string> seen;
     for (auto& c : e.value("checks", nlohmann::json::array())) {
-      std::string text = checkOutcome(c);
-      if (!c.value("message", "").empty()) text += "\n\n" + c["message"].get<std::string>();
-      for (auto& err : c.value("errors", nlohmann::json::array()))
+      // The same text in Markdown and, for a test that shows pictures, in HTML.
+      std::string text = checkOutcome(c), html = "<p>" + htmlEscaped(checkOutcome(c)) + "</p>";
+      if (!c.value("message", "").empty()) {
+        text += "\n\n" + c["message"].get<std::string>();
+        html += "<p>" + htmlEscaped(c["message"].get<std::string>()) + "</p>";
+      }
+      for (auto& err : c.value("errors", nlohmann::json::array())) {
         text += "\n\n```\n" + err.get<std::string>() + "\n```";
+        html += "<pre>" + htmlEscaped(err.get<std::string>()) + "</pre>";
+      }
+      htmls.push_back(html);
       const std::string own = c.value("visibility", "visible");
       tests.push_back({{"name", checkName(e, c)},
                        {"score", c.value("points", 0.0)},
@@ -202,11 +210,11 @@ nlohmann::json gradescopeResults(const nlohmann::json& report, const std::string
     }
   }
   // Gradescope shows an image only inline, as a data URL in an HTML output (a path is not served),
-  // so a test with pictures is written as HTML: its text as it was, then the pictures.
+  // so a test with pictures is written as HTML: its text, then the pictures.
   const std::vector<nlohmann::json> lists = fitPictures(pictures, reportDir, pictureBytes);
   for (size_t i = 0; i < lists.size(); ++i) {
     nlohmann::json& t = tests[pictures[i].test];
-    std::string html = "<pre style=\"white-space: pre-wrap\">" + htmlEscaped(t["output"].get<std::string>()) + "</pre>";
+    std::string html = htmls[pictures[i].test];
     for (auto& picture : lists[i])
       html += "<figure style=\"display: inline-block; margin: 0 8px 8px 0\"><img src=\"" +
               picture["url"].get<std::string>() + "\" alt=\"" + htmlEscaped(picture["label"]) + "\"><figcaption>" +
@@ -460,7 +468,9 @@ GradebookFile moodleWorksheetCsv(const std::vector<ClassRow>& rows, const Platfo
     for (auto& c : columns) {
       const ClassRow& r = *rowOf(rows, student, c.id);
       points += r.score;
-      feedback += (feedback.empty() ? "" : "\n") + (columns.size() > 1 ? c.title + ": " : "") + feedbackOf(r);
+      // Moodle keeps imported feedback comments as HTML: each exercise a line of its own, escaped.
+      feedback +=
+          (feedback.empty() ? "" : "<br>") + htmlEscaped((columns.size() > 1 ? c.title + ": " : "") + feedbackOf(r));
     }
     file.text += csvField("Participant " + who->second.id) + "," + csvField(who->second.person) + "," +
                  formatPoints(points) + "," + formatPoints(maximum) + "," + gradedAt + "," + csvField(feedback) + "\n";

@@ -115,5 +115,35 @@ TEST_F(ClassFolderTest, CanvassDownloadIsGatheredPerUserId) {
   EXPECT_NE(ada.notes[0].find("pcf-1.glsl read as pcf.glsl"), std::string::npos);
 }
 
+// Two uploads under one name: the newer (the larger file id, compared as a number) is taken.
+TEST_F(ClassFolderTest, CanvasTakesTheNewerOfTwoUploadsWithOneName) {
+  write("lovelaceada_4567_999_pcf.glsl", "older");
+  write("lovelaceada_4567_1000_pcf.glsl", "newer");
+  ClassFolder folder;
+  ASSERT_EQ(readClassFolder(dir, folder), "");
+  ASSERT_EQ(folder.submissions.size(), 1u);
+  const fs::path staged = dir.parent_path() / (dir.filename().string() + "-staged");
+  fs::remove_all(staged);
+  ASSERT_EQ(stageFiles(folder.submissions[0], staged), "");
+  std::ifstream in(staged / "pcf.glsl");
+  std::string text;
+  std::getline(in, text);
+  EXPECT_EQ(text, "newer");
+  ASSERT_EQ(folder.submissions[0].notes.size(), 1u);
+  EXPECT_NE(folder.submissions[0].notes[0].find("an older upload under the same name"), std::string::npos);
+  fs::remove_all(staged);
+}
+
+// One file named as Canvas names them beside a class of zips does not make it Canvas's download.
+TEST_F(ClassFolderTest, OneCanvasLikeNameAmongZipsIsNoDownload) {
+  write("ana.zip", "zip");
+  write("bo.zip", "zip");
+  write("roster_2024_09_x.csv");
+  ClassFolder folder;
+  ASSERT_EQ(readClassFolder(dir, folder), "");
+  EXPECT_EQ(folder.layout, ClassLayout::Named);
+  EXPECT_EQ(folder.submissions.size(), 2u);
+}
+
 }  // namespace
 }  // namespace shadelab

@@ -294,7 +294,8 @@ TEST(Gradebooks, GradescopeCarriesTheFailingConfigurationsPicturesInline) {
   size_t images = 0;
   for (size_t at = 0; (at = html.find("<img src=\"data:image/png;base64,", at)) != std::string::npos; ++at) ++images;
   EXPECT_EQ(images, 3u);
-  EXPECT_NE(html.find("Depths &lt;compared&gt; &amp; kept."), std::string::npos) << "the text escaped, not lost";
+  EXPECT_NE(html.find("<p>Depths &lt;compared&gt; &amp; kept.</p>"), std::string::npos) << "the text escaped, not lost";
+  EXPECT_EQ(html.find("```"), std::string::npos) << "no Markdown left in the HTML";
   EXPECT_NE(html.find("the solution's"), std::string::npos);
 
   EXPECT_EQ(gradescopeResults(r)["tests"][1]["output_format"], "md");  // no folder: text only
