@@ -22,7 +22,7 @@ namespace {
 void BM_ShadowFilter(benchmark::State& state) {
   LabHost host(ShaderSearchPath({builtinShaderDir()}));
   host.selectLab("shadows");
-  const std::string light(kLightTypes[state.range(0)]);
+  const std::string light(kLightTypes[state.range(0)].name);
   host.set("shadows.light_type=" + light);
   host.set("shadows.light_distance=1.2");
   const std::string filter = filterName(ShadowFilter(state.range(1)));

@@ -378,11 +378,9 @@ std::vector<ProbeFinding> analyseProbe(const FunctionProbe& probe, const ImageF&
         }
       }
       if (!says.empty()) {
-        std::string where, key;
-        for (size_t i = 0; i < says.size(); ++i) {
-          where += (i == 0 ? "" : i + 1 == says.size() ? " and " : ", ") + says[i];
-          key += (i == 0 ? "" : "+") + names[i];
-        }
+        const std::string where = englishList(says, "");
+        std::string key;
+        for (size_t i = 0; i < says.size(); ++i) key += (i == 0 ? "" : "+") + names[i];
         out.push_back({"only", key,
                        "Your function's " + probe.says + " matches the solution's on the lab's inputs" +
                            (labRowsAgree ? "" : " with the lab's defaults") + " and differs only " + where + " (on " +

@@ -19,6 +19,7 @@ namespace shadelab {
 enum class PixelFilter {
   Box,       // every point of the pixel's square counts the same
   Gaussian,  // sigma 0.5 px over a 3 x 3 px support: softer, less ringing at edges
+  Count,
 };
 
 struct JitterSample {

@@ -26,7 +26,7 @@ struct TextureSampling {
 // What a configuration requires. The host builds exactly this, and nothing else.
 // How a height map's values read: as the material says (a file's disp map is a height; LearnOpenGL's
 // *_disp images are depths), or as heights or depths (white = deep: height = 1 - value) whatever it says.
-enum class HeightConvention { AsLoaded, Height, Depth };
+enum class HeightConvention { AsLoaded, Height, Depth, Count };
 
 struct SceneNeeds {
   bool uvs = false;                // texture coordinates (else dropped before upload)

@@ -1,5 +1,6 @@
 #include "app/util/format.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -55,10 +56,13 @@ bool parseWholeNumber(const std::string& text, long lo, long hi, long& out) {
   return true;
 }
 
-std::string englishList(const std::vector<std::string>& names, const std::string& quote) {
+std::string englishList(const std::vector<std::string>& names, const std::string& quote, size_t most) {
+  const size_t shown = std::min(names.size(), most);
+  const bool more = shown < names.size();
   std::string s;
-  for (size_t i = 0; i < names.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + quote + names[i] + quote;
+  for (size_t i = 0; i < shown; ++i)
+    s += (i == 0 ? "" : i + 1 == shown && !more ? " and " : ", ") + quote + names[i] + quote;
+  if (more) s += " and " + std::to_string(names.size() - shown) + " more";
   return s;
 }
 

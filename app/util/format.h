@@ -16,8 +16,9 @@ std::string formatSignificant(double v, int digits = 6);
 // Between single quotes, as sentences name a check, a configuration or a setting: "'no acne'".
 std::string quoted(const std::string& s);
 
-// Names as an English list, each between `quote`s: "'a', 'b' and 'c'".
-std::string englishList(const std::vector<std::string>& names, const std::string& quote);
+// Names as an English list, each between `quote`s: "'a', 'b' and 'c'"; past `most` of them, the
+// rest counted: "'a', 'b' and 3 more".
+std::string englishList(const std::vector<std::string>& names, const std::string& quote, size_t most = size_t(-1));
 
 // Now as text in strftime's `format`: the local time ("%Y-%m-%d %H:%M" for people, "%Y%m%d-%H%M%S"
 // in file names), or UTC ("%Y-%m-%dT%H:%M:%SZ" for gradebooks).

@@ -41,8 +41,11 @@ constexpr NamedDefine<FilteringView> kFilteringViews[] = {
 };
 static_assert(coversEnum<FilteringView>(kFilteringViews));
 
-constexpr std::string_view kBuilders[] = {"box", "kaiser", "driver"};
-constexpr std::string_view kPixelFilters[] = {"box", "gaussian"};
+constexpr Named<MipBuilder> kBuilders[] = {
+    {MipBuilder::Box, "box"}, {MipBuilder::Kaiser, "kaiser"}, {MipBuilder::Driver, "driver"}};
+static_assert(coversEnum<MipBuilder>(kBuilders));
+constexpr Named<PixelFilter> kPixelFilters[] = {{PixelFilter::Box, "box"}, {PixelFilter::Gaussian, "gaussian"}};
+static_assert(coversEnum<PixelFilter>(kPixelFilters));
 
 constexpr int kUnit = 0;
 
@@ -115,7 +118,7 @@ void FilteringLab::visitParams(ParamVisitor& v) {
                "box: each texel the mean of the texels it covers (in linear light, exact "
                "for odd sizes); kaiser: a Kaiser-windowed sinc 3 texels wide (alpha 4), sharper levels; driver: "
                "glGenerateMipmap, whatever the driver does."},
-              p.builder, kBuilders);
+              p.builder, namesOf<kBuilders>());
   v.section("View");
   v.enumParam({"view", "View", "",
                "shaded; mip-level: the level read, one colour per level (red 0, orange 1, yellow 2, "
@@ -133,7 +136,7 @@ void FilteringLab::visitParams(ParamVisitor& v) {
   v.enumParam({"pixel_filter", "Reference pixel filter", "",
                "How the truth weighs its 16 x 16 samples over a pixel: box "
                "(the pixel's square) or gaussian (sigma 0.5 px over 3 x 3 px: softer, less ringing)."},
-              p.pixelFilter, kPixelFilters);
+              p.pixelFilter, namesOf<kPixelFilters>());
   v.intParam({"motion_frame", "Motion frame", "",
               "Frame of the slow forward move that flicker is measured over "
               "(each moves the camera 0.4 % of its distance)."},

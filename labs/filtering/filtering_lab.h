@@ -21,7 +21,7 @@ namespace shadelab {
 // Tables of names and defines in filtering_lab.cpp.
 enum class TexelFilter { Nearest, Bilinear, Bicubic, Count };
 enum class MipSelection { Off, NearestLevel, LinearLevel, Count };
-enum class MipBuilder { Box, Kaiser, Driver };
+enum class MipBuilder { Box, Kaiser, Driver, Count };
 enum class FilteringView { Shaded, MipLevel, Anisotropy, Count };
 
 struct FilteringParams {

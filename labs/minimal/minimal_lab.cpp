@@ -4,9 +4,12 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "app/lab/technique.h"
+
 namespace shadelab {
 namespace {
-constexpr std::string_view kViewNames[] = {"lit", "normals"};
+constexpr Named<MinimalView> kViewNames[] = {{MinimalView::Lit, "lit"}, {MinimalView::Normals, "normals"}};
+static_assert(coversEnum<MinimalView>(kViewNames));
 }  // namespace
 
 void MinimalLab::visitParams(ParamVisitor& v) {
@@ -14,7 +17,7 @@ void MinimalLab::visitParams(ParamVisitor& v) {
   v.enumParam({"view", "View", "",
                "lit: Lambert's max(N.L, 0) under one white light; normals: the world normal "
                "as colour (0.5 n + 0.5). A compile-time choice: each view is its own program."},
-              params.view, kViewNames);
+              params.view, namesOf<kViewNames>());
   v.floatParam({"light_elevation", "Light elevation", "deg",
                 "Height of the light above the horizon: at 90 it shines "
                 "straight down, near 0 it grazes the floor. A uniform: no recompile."},
@@ -23,7 +26,7 @@ void MinimalLab::visitParams(ParamVisitor& v) {
 
 ProgramSpec MinimalLab::programSpec(MinimalView view) const {
   ProgramSpec spec;
-  spec.name = "minimal/" + std::string(kViewNames[int(view)]);
+  spec.name = "minimal/" + std::string(rowOf(kViewNames, view).name);
   spec.stages = {{GL_VERTEX_SHADER, "minimal/minimal.vert"}, {GL_FRAGMENT_SHADER, "minimal/minimal.frag"}};
   if (view == MinimalView::Normals) spec.defines.emplace_back("VIEW_NORMALS", "1");
   return spec;

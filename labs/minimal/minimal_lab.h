@@ -7,7 +7,7 @@
 
 namespace shadelab {
 
-enum class MinimalView { Lit, Normals };
+enum class MinimalView { Lit, Normals, Count };
 
 struct MinimalParams {
   MinimalView view = MinimalView::Lit;

@@ -26,9 +26,16 @@ constexpr ShadingModeRow kShadingModes[] = {
     {ShadingMode::Phong, "phong", "MODE_PHONG", false},
 };
 static_assert(coversEnum<ShadingMode>(kShadingModes));
-constexpr std::string_view kSpecularNames[] = {"blinn-phong", "phong"};
-constexpr std::string_view kUvNames[] = {"perspective", "affine", "by-hand"};
-constexpr std::string_view kFlatFacesNames[] = {"geometry_shader", "unwelded"};
+constexpr Named<SpecularModel> kSpecularNames[] = {{SpecularModel::BlinnPhong, "blinn-phong"},
+                                                   {SpecularModel::Phong, "phong"}};
+static_assert(coversEnum<SpecularModel>(kSpecularNames));
+constexpr Named<UvInterpolation> kUvNames[] = {{UvInterpolation::Perspective, "perspective"},
+                                               {UvInterpolation::Affine, "affine"},
+                                               {UvInterpolation::ByHand, "by-hand"}};
+static_assert(coversEnum<UvInterpolation>(kUvNames));
+constexpr Named<FlatFaces> kFlatFacesNames[] = {{FlatFaces::GeometryShader, "geometry_shader"},
+                                                {FlatFaces::Unwelded, "unwelded"}};
+static_assert(coversEnum<FlatFaces>(kFlatFacesNames));
 
 // Flat mode drawn from unwelded faces: asked for, or where there are no geometry shaders (WebGL2).
 bool drawsUnwelded(const ShadingParams& p) {
@@ -98,13 +105,13 @@ void ShadingLab::visitParams(ParamVisitor& v) {
   v.enumParam({"specular", "Specular model", "",
                "blinn-phong: (N.H)^p with the half vector; phong: (R.V)^p "
                "with the reflected light. Blinn-Phong needs ~4x the exponent for the same highlight."},
-              p.specular, kSpecularNames);
+              p.specular, namesOf<kSpecularNames>());
   v.enumParam({"uv_interpolation", "UV interpolation", "",
                "perspective: correct (divide by w); affine: "
                "linear in screen space (noperspective), bends the checker on large triangles; by-hand: perspective-"
                "correct from screen-linear inputs, written in shading/perspective_correct.glsl (an exercise). "
                "WebGL2 has no noperspective: screen-linear values travel as (v w, w) there."},
-              p.uvInterpolation, kUvNames);
+              p.uvInterpolation, namesOf<kUvNames>());
   if (p.mode != ShadingMode::Flat)
     v.unavailable("only for mode flat");
   else if (glslDialect() == GlslDialect::Es300)
@@ -115,7 +122,7 @@ void ShadingLab::visitParams(ParamVisitor& v) {
                "the colour to its three corners. unwelded: no vertex is shared (three per triangle, each carrying its "
                "face's normal and centroid) and the vertex stage lights it: the way without geometry shaders "
                "(WebGL2), at three times the vertices. The two draw the same picture."},
-              p.flatFaces, kFlatFacesNames);
+              p.flatFaces, namesOf<kFlatFacesNames>());
   v.intParam({"tessellation", "Tessellation", "segments",
               "Segments around the procedural spheres and tori "
               "(rings = half). Files are drawn as loaded."},

@@ -12,10 +12,10 @@
 namespace shadelab {
 
 enum class ShadingMode { Flat, Gouraud, Phong, Count };  // a table in shading_lab.cpp
-enum class SpecularModel { BlinnPhong, Phong };
-enum class UvInterpolation { Perspective, Affine, ByHand };
+enum class SpecularModel { BlinnPhong, Phong, Count };
+enum class UvInterpolation { Perspective, Affine, ByHand, Count };
 // How flat mode gives each triangle one normal and one colour.
-enum class FlatFaces { GeometryShader, Unwelded };
+enum class FlatFaces { GeometryShader, Unwelded, Count };
 
 struct ShadingParams {
   ShadingMode mode = ShadingMode::Phong;

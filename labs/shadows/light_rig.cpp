@@ -19,6 +19,8 @@ float LightFrame::texelWorld(float depth, int resolution) const {
       return 2.0f * std::max(depth, nearPlane) * tanHalfFov / res;
     case LightType::Point:
       return 2.0f * std::max(depth, nearPlane) / res;
+    case LightType::Count:
+      break;
   }
   return 0.0f;
 }

@@ -11,7 +11,7 @@
 
 namespace shadelab {
 
-enum class LightType { Directional, Spot, Point };
+enum class LightType { Directional, Spot, Point, Count };
 
 // Where a light is and how large: the shadows lab's key-light parameters.
 struct LightPlacement {

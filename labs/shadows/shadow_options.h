@@ -13,7 +13,9 @@
 
 namespace shadelab {
 
-inline constexpr std::string_view kLightTypes[] = {"directional", "spot", "point"};
+inline constexpr Named<LightType> kLightTypes[] = {
+    {LightType::Directional, "directional"}, {LightType::Spot, "spot"}, {LightType::Point, "point"}};
+static_assert(coversEnum<LightType>(kLightTypes));
 
 // A filter's own parameters: each shapes its program, so check-shaders walks their values.
 enum class FilterSettings { None, PcfSize, PoissonDisk, PcssSamples, Count };
@@ -137,7 +139,11 @@ inline constexpr NamedDefine<ShadowView> kShadowViews[] = {
 };
 static_assert(coversEnum<ShadowView>(kShadowViews));
 
-inline constexpr std::string_view kFits[] = {"scene", "view", "cascades", "depth-range"};
+inline constexpr Named<MapFit> kFits[] = {{MapFit::Scene, "scene"},
+                                          {MapFit::View, "view"},
+                                          {MapFit::Cascades, "cascades"},
+                                          {MapFit::DepthRange, "depth-range"}};
+static_assert(coversEnum<MapFit>(kFits));
 inline constexpr std::string_view kCascadeIndices[] = {"1", "2", "3", "4"};
 // The depth formats: the name --set takes and the texture format the map is made with.
 struct DepthFormatRow {

@@ -330,7 +330,7 @@ void ShadowsLab::renderKeyMaps(Frame& frame, const LightFrame& key, const DepthP
                   !depthRangeFit ? ""
                   : drawnRange_  ? " drawn last frame"
                                  : ": the frustum's, no depth drawn yet");
-  const std::string kind = std::string(kLightTypes[int(params.key.type)]) +
+  const std::string kind = std::string(rowOf(kLightTypes, params.key.type).name) +
                            (depthRangeFit                                          ? " depth-range cascade "
                             : cascades_.size() >= 2                                ? " cascade "
                             : params.map.fit == MapFit::View && !cascades_.empty() ? " view-fitted"

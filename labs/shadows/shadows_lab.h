@@ -38,8 +38,8 @@ enum class ShadowView {
   Count
 };
 enum class DepthFormat { D16, D24, D32F, Count };
-enum class MapFit { Scene, View, Cascades, DepthRange };  // directional maps: what the map covers
-enum class TruthTracer { Auto, Embree, Gpu };             // who traces the ray-traced truth
+enum class MapFit { Scene, View, Cascades, DepthRange, Count };  // directional maps: what the map covers
+enum class TruthTracer { Auto, Embree, Gpu, Count };             // who traces the ray-traced truth
 
 // One nested struct per section of the panel, each visited by its own function (shadows_lab.cpp).
 struct ShadowsParams {

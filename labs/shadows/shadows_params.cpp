@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/lab/technique.h"
 #include "app/shader/preprocessor.h"
 #include "app/util/format.h"
 #include "labs/shadows/shadow_options.h"
@@ -16,7 +17,7 @@ void visitKeyLight(ParamVisitor& v, ShadowsParams::KeyLight& key, bool sceneLit)
   v.enumParam({"light_type", "Key light", "",
                "directional: orthographic map; spot: perspective map; point: a cube "
                "map drawn in one pass (geometry shader writes gl_Layer)."},
-              key.type, kLightTypes);
+              key.type, namesOf<kLightTypes>());
   v.boolParam({"key_casts", "Key casts shadows", "", "Off: no depth pass runs for the key light."}, key.casts);
   v.boolParam({"scene_light", "Scene's own light", "",
                "A scene with a light of its own (learnopengl: from (-2, 4, "
@@ -71,7 +72,7 @@ void visitMap(ParamVisitor& v, ShadowsParams::Map& map, LightType keyType) {
                  "depth-range: the same cascades split over the depth range the camera drew last frame (its depth "
                  "buffer's nearest and farthest, reduced on the GPU: sample distribution shadow maps), not the range "
                  "its frustum could see."},
-                map.fit, kFits);
+                map.fit, namesOf<kFits>());
     {
       const bool split = map.fit == MapFit::Cascades || map.fit == MapFit::DepthRange;
       const ParamVisitor::UnavailableGroup cascaded(v, split ? "" : "fit is neither 'cascades' nor 'depth-range'");
@@ -226,7 +227,9 @@ void visitView(ParamVisitor& v, ShadowsParams::View& view, MapFit fit) {
               view.showFrustum);
 }
 
-constexpr std::string_view kTracers[] = {"auto", "embree", "gpu"};
+constexpr Named<TruthTracer> kTracers[] = {
+    {TruthTracer::Auto, "auto"}, {TruthTracer::Embree, "embree"}, {TruthTracer::Gpu, "gpu"}};
+static_assert(coversEnum<TruthTracer>(kTracers));
 
 void visitTruth(ParamVisitor& v, ShadowsParams::Truth& truth) {
   v.enumParam({"truth_tracer", "Truth traced by", "",
@@ -235,7 +238,7 @@ void visitTruth(ParamVisitor& v, ShadowsParams::Truth& truth) {
                "the CPU, the whole truth at once; gpu: a BVH walked by a fragment shader, samples of the light's disk "
                "pass by pass, so the area truth converges while the window keeps drawing (and where there is no "
                "Embree). Both trace the same rays."},
-              truth.tracer, kTracers);
+              truth.tracer, namesOf<kTracers>());
 }
 
 void visitScene(ParamVisitor& v, ShadowsParams::SceneSettings& scene) {
@@ -329,7 +332,8 @@ std::vector<std::string> ShadowsLab::warnings() const {
                 "pcf (" +
                 std::to_string(p.filter.pcfSize) + "x" + std::to_string(p.filter.pcfSize) + ") instead");
   if (p.map.fit != MapFit::Scene && (p.key.type != LightType::Directional || !p.map.autoFit))
-    w.push_back("fit = " + std::string(kFits[int(p.map.fit)]) + " applies to an auto-fitted directional light only");
+    w.push_back("fit = " + std::string(rowOf(kFits, p.map.fit).name) +
+                " applies to an auto-fitted directional light only");
   if (p.view.mode == ShadowView::Cascades && cascadeCountOf(p) < 2)
     w.push_back("one map, one colour: the cascades view needs fit = cascades or depth-range");
   if (p.filter.type == ShadowFilter::Esm && p.filter.esmExponent > 80.0f)

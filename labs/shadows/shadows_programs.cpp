@@ -30,7 +30,7 @@ ProgramSpec ShadowsLab::litSpec(const ShadowsParams& p, InternalView internal) {
                             : internal == InternalView::Normal ? "VIEW_NORMAL"
                                                                : rowOf(kShadowViews, p.view.mode).define,
                             "1");
-  spec.name = "shadows/lit " + std::string(kLightTypes[int(p.key.type)]) + " " + filterName(filter);
+  spec.name = "shadows/lit " + std::string(rowOf(kLightTypes, p.key.type).name) + " " + filterName(filter);
   return spec;
 }
 

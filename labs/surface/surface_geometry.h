@@ -12,7 +12,7 @@
 
 namespace shadelab {
 
-enum class TangentSource { Generated, Mesh, Screen };
+enum class TangentSource { Generated, Mesh, Screen, Count };
 
 struct SurfaceDraw {
   GpuMesh mesh;

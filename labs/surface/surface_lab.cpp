@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "app/lab/technique.h"
 #include "app/lab/variants.h"
 #include "labs/surface/subdivide.h"
 #include "labs/surface/surface_scenes.h"
@@ -13,10 +14,17 @@
 namespace shadelab {
 namespace {
 
-constexpr std::string_view kSurfaceAt[] = {"top", "bottom"};
-constexpr std::string_view kHeightConventions[] = {"as-loaded", "height", "depth"};
-constexpr std::string_view kGreen[] = {"opengl", "directx"};
-constexpr std::string_view kDecoding[] = {"linear", "srgb"};
+constexpr Named<SurfaceAt> kSurfaceAt[] = {{SurfaceAt::Top, "top"}, {SurfaceAt::Bottom, "bottom"}};
+static_assert(coversEnum<SurfaceAt>(kSurfaceAt));
+constexpr Named<HeightConvention> kHeightConventions[] = {{HeightConvention::AsLoaded, "as-loaded"},
+                                                          {HeightConvention::Height, "height"},
+                                                          {HeightConvention::Depth, "depth"}};
+static_assert(coversEnum<HeightConvention>(kHeightConventions));
+constexpr Named<GreenConvention> kGreen[] = {{GreenConvention::OpenGl, "opengl"},
+                                             {GreenConvention::DirectX, "directx"}};
+static_assert(coversEnum<GreenConvention>(kGreen));
+constexpr Named<MapDecoding> kDecoding[] = {{MapDecoding::Linear, "linear"}, {MapDecoding::Srgb, "srgb"}};
+static_assert(coversEnum<MapDecoding>(kDecoding));
 // How the colour and normal maps are sampled.
 struct TextureFilterRow {
   TextureFilter value;
@@ -31,9 +39,15 @@ constexpr TextureFilterRow kTextureFilters[] = {
     {TextureFilter::Anisotropic, "anisotropic", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 16.0f},
 };
 static_assert(coversEnum<TextureFilter>(kTextureFilters));
-constexpr std::string_view kBumpForms[] = {"consistent", "games101"};
-constexpr std::string_view kDisplacedNormals[] = {"from-height", "unchanged", "per-vertex"};
-constexpr std::string_view kSources[] = {"generated", "mesh", "screen"};
+constexpr Named<BumpForm> kBumpForms[] = {{BumpForm::Consistent, "consistent"}, {BumpForm::Games101, "games101"}};
+static_assert(coversEnum<BumpForm>(kBumpForms));
+constexpr Named<DisplacedNormals> kDisplacedNormals[] = {{DisplacedNormals::FromHeight, "from-height"},
+                                                         {DisplacedNormals::Unchanged, "unchanged"},
+                                                         {DisplacedNormals::PerVertex, "per-vertex"}};
+static_assert(coversEnum<DisplacedNormals>(kDisplacedNormals));
+constexpr Named<TangentSource> kSources[] = {
+    {TangentSource::Generated, "generated"}, {TangentSource::Mesh, "mesh"}, {TangentSource::Screen, "screen"}};
+static_assert(coversEnum<TangentSource>(kSources));
 
 // Texture units of surface.frag's samplers.
 enum Unit { kColorUnit = 0, kNormalUnit = 1, kHeightUnit = 2 };
@@ -74,23 +88,23 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
   v.enumParam({"surface_at", "Surface at", "",
                "top: the polygon is the top of the height field and mortar is recessed "
                "(parallax mapping's convention); bottom: p' = p + n s h, bricks stand out (the GAMES101 form)."},
-              p.surfaceAt, kSurfaceAt);
+              p.surfaceAt, namesOf<kSurfaceAt>());
   v.enumParam({"height_map", "Height map reads", "",
                "as-loaded: as the material says (an MTL disp map is a height, "
                "white = high; LearnOpenGL's bricks2_disp is a depth map); height; depth: white = deep, height = 1 - "
                "value (LearnOpenGL's convention, for its maps in your own MTL)."},
-              p.heightMap, kHeightConventions);
+              p.heightMap, namesOf<kHeightConventions>());
   v.section("Normal map");
   v.floatParam({"normal_strength", "Strength", "", "Scales the map's x and y: 1 as baked."}, p.normalStrength, 0.0f,
                4.0f);
   v.enumParam({"green", "Green channel", "",
                "opengl: +Y along +v (how these maps are made); directx: +Y along -v. The "
                "wrong one lights every brick from the other side vertically."},
-              p.green, kGreen);
+              p.green, namesOf<kGreen>());
   v.enumParam({"decoding", "Decoding", "",
                "linear: the map's numbers as they are; srgb: decoded as a colour (a "
                "wrong step: vectors bend towards the tangent plane)."},
-              p.decoding, kDecoding);
+              p.decoding, namesOf<kDecoding>());
   v.enumParam({"filter", "Texture filter", "",
                "nearest, bilinear, trilinear (mipmapped) or 16x anisotropic, for the "
                "colour and normal maps (the height field, being geometry, is read trilinearly; "
@@ -101,7 +115,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                "consistent: the slope in world units from the height scale and the mesh's "
                "UV scale, agreeing with displacement; games101: dU = kh kn (h(u + 1/w, v) - h(u, v)), as in the "
                "assignment."},
-              p.bumpForm, kBumpForms);
+              p.bumpForm, namesOf<kBumpForms>());
   v.floatParam({"kh", "kh", "", "GAMES101 height scale."}, p.kh, 0.0f, 50.0f);
   v.floatParam({"kn", "kn", "", "GAMES101 normal scale."}, p.kn, 0.0f, 50.0f);
   v.section("Displacement");
@@ -116,7 +130,7 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
        "per pixel; unchanged: the base mesh's, so the displaced bricks are lit like a flat wall; per-vertex: the "
        "slope's normal computed at each vertex (surface/displace.glsl) and interpolated, as fine as the mesh "
        "(displacement only: the tessellated surface takes from-height)."},
-      p.displacedNormals, kDisplacedNormals);
+      p.displacedNormals, namesOf<kDisplacedNormals>());
   v.section("Parallax");
   v.intParam({"layers", "Layers", "", "Depth slices the steep parallax and POM march through (the loop's bound)."},
              p.layers, 1, 128);
@@ -130,9 +144,9 @@ void SurfaceLab::visitParams(ParamVisitor& v) {
                "generated: per vertex, angle-weighted, split where mirrored UVs meet "
                "(MikkTSpace's way); mesh: the file's own (glTF TANGENT); screen: per pixel, from screen-space "
                "derivatives."},
-              p.tangents, kSources);
+              p.tangents, namesOf<kSources>());
   v.enumParam({"compare_with", "Compare with", "", "The other source for the tangent-angle view."}, p.compareWith,
-              kSources);
+              namesOf<kSources>());
   v.floatParam({"angle_scale", "Angle scale", "deg", "Tangent-angle view: the angle drawn at full colour (yellow)."},
                p.angleScale, 0.1f, 90.0f, true);
   v.boolParam({"overlay", "Show T, B, N", "", "Draw each vertex's frame: tangent red, bitangent green, normal blue."},

@@ -54,12 +54,12 @@ static_assert(coversEnum<SurfaceTechnique>(kSurfaceTechniques));
 
 inline bool isParallax(SurfaceTechnique t) { return rowOf(kSurfaceTechniques, t).changes == SurfaceChange::Lookup; }
 inline bool isDisplacing(SurfaceTechnique t) { return rowOf(kSurfaceTechniques, t).changes == SurfaceChange::Geometry; }
-enum class SurfaceAt { Top, Bottom };
-enum class GreenConvention { OpenGl, DirectX };
-enum class MapDecoding { Linear, Srgb };
+enum class SurfaceAt { Top, Bottom, Count };
+enum class GreenConvention { OpenGl, DirectX, Count };
+enum class MapDecoding { Linear, Srgb, Count };
 enum class TextureFilter { Nearest, Bilinear, Trilinear, Anisotropic, Count };  // kTextureFilters in surface_lab.cpp
-enum class BumpForm { Consistent, Games101 };
-enum class DisplacedNormals { FromHeight, Unchanged, PerVertex };
+enum class BumpForm { Consistent, Games101, Count };
+enum class DisplacedNormals { FromHeight, Unchanged, PerVertex, Count };
 enum class SurfaceView { Shaded, Normals, TangentAngle, Height, Uv, Count };
 inline constexpr NamedDefine<SurfaceView> kSurfaceViews[] = {
     {SurfaceView::Shaded, "shaded", "VIEW_SHADED"},

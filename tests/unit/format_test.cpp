@@ -22,6 +22,9 @@ TEST(Format, FixedDecimalsAndQuotedNames) {
   EXPECT_EQ(formatFixed(2.0, 1), "2.0");
   EXPECT_EQ(quoted("no acne"), "'no acne'");
   EXPECT_EQ(englishList({"a", "b", "c"}, "'"), "'a', 'b' and 'c'");
+  EXPECT_EQ(englishList({"a", "b", "c", "d"}, "", 2), "a, b and 2 more");
+  EXPECT_EQ(englishList({"a", "b"}, "", 2), "a and b");
+  EXPECT_EQ(englishList({}, ""), "");
 }
 
 }  // namespace shadelab
