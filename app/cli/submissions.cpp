@@ -107,15 +107,23 @@ std::string canvasUploadName(const std::string& name, const std::set<std::string
   return theirs.count(plain) ? name : plain;
 }
 
+Submission namedSubmission(std::string name, fs::path source, bool zip) {
+  Submission s;
+  s.name = std::move(name);
+  s.source = std::move(source);
+  s.zip = zip;
+  return s;
+}
+
 std::string readNamed(const fs::path& classDir, std::vector<Submission>& found) {
   std::error_code ec;
   for (fs::directory_iterator it(classDir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();
     if (name.empty() || name[0] == '.') continue;
     if (it->is_directory(ec))
-      found.push_back({.name = name, .source = it->path(), .zip = false});
+      found.push_back(namedSubmission(name, it->path(), false));
     else if (it->is_regular_file(ec) && endsWith(name, ".zip") && name.size() > 4)
-      found.push_back({.name = name.substr(0, name.size() - 4), .source = it->path(), .zip = true});
+      found.push_back(namedSubmission(name.substr(0, name.size() - 4), it->path(), true));
   }
   return ec ? classDir.string() + ": " + ec.message() : "";
 }
