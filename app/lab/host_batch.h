@@ -1,6 +1,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <mutex>
 
 namespace shadelab {
 
@@ -18,6 +20,32 @@ class HostBatch {
   static bool open();
   // `release` runs each time the last open batch closes; register it once, before keeping anything.
   static void onClose(std::function<void()> release);
+};
+
+// Values a lab makes the same way for every host of a batch, kept by key while one is open and let
+// go when the last closes; outside a batch every get() makes its value afresh. Declare one static
+// per kind of value: `static BatchMemo<Key, Value> kept; return kept.get(key, [&] { return make(); });`
+template <typename Key, typename Value>
+class BatchMemo {
+ public:
+  BatchMemo() {
+    HostBatch::onClose([this] {
+      const std::lock_guard<std::mutex> held(lock_);
+      kept_.clear();
+    });
+  }
+  template <typename Make>
+  Value get(const Key& key, const Make& make) {
+    if (!HostBatch::open()) return make();
+    const std::lock_guard<std::mutex> held(lock_);
+    auto [it, added] = kept_.try_emplace(key);
+    if (added) it->second = make();
+    return it->second;
+  }
+
+ private:
+  std::mutex lock_;
+  std::map<Key, Value> kept_;
 };
 
 }  // namespace shadelab

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <mutex>
 #include <utility>
 
 #include "app/lab/host_batch.h"
@@ -105,35 +103,13 @@ BrickTextures drawBrickTextures(int size, float depthPerUv) {
   return t;
 }
 
-// The textures of each size and depth an open batch has made: a grading child builds its scene
-// once per host (the solution, each listed mistake, each slip, the trace's rounds), and the bricks
-// are the same every time. Let go when the last batch closes.
-class KeptBricks {
- public:
-  KeptBricks() {
-    HostBatch::onClose([this] {
-      const std::lock_guard<std::mutex> held(lock_);
-      kept_.clear();
-    });
-  }
-  BrickTextures get(int size, float depthPerUv) {
-    const std::lock_guard<std::mutex> held(lock_);
-    auto [it, made] = kept_.try_emplace({size, depthPerUv});
-    if (made) it->second = drawBrickTextures(size, depthPerUv);
-    return it->second;
-  }
-
- private:
-  std::mutex lock_;
-  std::map<std::pair<int, float>, BrickTextures> kept_;
-};
-
 }  // namespace
 
 BrickTextures makeBrickTextures(int size, float depthPerUv) {
-  if (!HostBatch::open()) return drawBrickTextures(size, depthPerUv);
-  static KeptBricks kept;
-  return kept.get(size, depthPerUv);
+  // A grading child builds its scene once per host (the solution, each listed mistake, each slip,
+  // the trace's rounds), and the bricks are the same every time: made once a batch.
+  static BatchMemo<std::pair<int, float>, BrickTextures> kept;
+  return kept.get({size, depthPerUv}, [&] { return drawBrickTextures(size, depthPerUv); });
 }
 
 }  // namespace shadelab

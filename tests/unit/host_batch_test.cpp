@@ -29,4 +29,22 @@ TEST(HostBatch, WorkKeptInABatchGoesWhenTheLastOneCloses) {
   EXPECT_EQ(releases, before + 1);
 }
 
+// A memo makes each key's value once while a batch is open, afresh outside one, and forgets it
+// when the last batch closes.
+TEST(HostBatch, AMemoMakesAValueOncePerBatch) {
+  static BatchMemo<int, int> memo;
+  int made = 0;
+  const auto make = [&] { return ++made; };
+  EXPECT_EQ(memo.get(1, make), 1);
+  EXPECT_EQ(memo.get(1, make), 2) << "outside a batch nothing is kept";
+  {
+    const HostBatch batch;
+    EXPECT_EQ(memo.get(1, make), 3);
+    EXPECT_EQ(memo.get(1, make), 3);
+    EXPECT_EQ(memo.get(2, make), 4);
+  }
+  const HostBatch next;
+  EXPECT_EQ(memo.get(1, make), 5) << "the closed batch's values were let go";
+}
+
 }  // namespace shadelab
