@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include "app/cli/session.h"
 #include "app/grade/configuration_frames.h"
@@ -104,7 +105,21 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   enter("student");
   ImageF image;
   std::string configError;
-  const nlohmann::json student = drawStudent(ex, c, job.studentDirs, built, image, configError);
+  // The solution at other settings, for a frame nothing else explains: read back, or drawn once
+  // and kept for the next student who needs them.
+  std::optional<SettingFrames> settings;
+  const SettingFramesSource settingFrames = [&]() -> const SettingFrames* {
+    if (settings) return &*settings;
+    const std::string settingsKey = ContentHash().add(key).add("\nsettings").hex();
+    settings.emplace();
+    if (CachedFrames kept; job.cache.load(settingsKey, kept) && settingFramesFromKept(kept, *settings))
+      return &*settings;
+    drawSettingFrames(ex, c, *settings);
+    if (auto e = job.cache.store(settingsKey, keptSettingFrames(*settings)); !e.empty())
+      std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
+    return &*settings;
+  };
+  const nlohmann::json student = drawStudent(ex, c, job.studentDirs, built, settingFrames, image, configError);
   if (!configError.empty()) return failSolution(configError);
   if (c.function < 0) {  // a function's table is evidence, not a picture for the report
     writePng((job.dir / (job.stem + "-student.png")).string(), image);

@@ -111,24 +111,44 @@ std::vector<std::string> otherValues(const Exercise& ex, const std::string& key,
   return out;
 }
 
-// Which setting the student's frame behaves as if it had: the solution drawn with one of the
-// configuration's settings at another value (otherValues), each setting's best value kept when it
-// lies far closer to the student's frame than the solution's does. Drawn only for a frame that
-// differs and that nothing else explains, so a class that makes the listed mistakes pays nothing.
-nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const ImageF& image, double distance) {
-  // A budget in frames keeps the result the same on a slow machine; the time is a safety net that
-  // keeps the phase well inside the watchdog's (grade --watchdog, 20 s by default).
-  constexpr int kMostFrames = 40;
-  constexpr auto kMostTime = std::chrono::seconds(10);
-  const auto start = std::chrono::steady_clock::now();
-  int frames = 0;
+// Which setting the student's frame behaves as if it had: of the solution's frames at other
+// settings (drawSettingFrames), each setting's best value kept when it lies far closer to the
+// student's frame than the solution's does. Asked only for a frame that differs and that nothing
+// else explains, so a class that makes the listed mistakes pays nothing.
+nlohmann::json settingMatches(const Configuration& c, const SettingFrames& frames, const ImageF& image,
+                              double distance) {
   std::vector<double> best(c.settings.size(), kFrameFit * distance);
   std::vector<std::string> bestValue(c.settings.size());
   std::vector<bool> found(c.settings.size(), false);
+  for (size_t k = 0; k < frames.tried.size() && k < frames.frames.size(); ++k) {
+    const auto& [i, value] = frames.tried[k];
+    if (i >= c.settings.size()) continue;
+    const double d = frameDistance(image, frames.frames[k]);
+    // Of values that draw the student's frame equally, a number the student can read beats
+    // "the lab's default".
+    if (d < best[i] || (d <= best[i] && found[i] && bestValue[i].empty() && !value.empty())) {
+      best[i] = d;
+      bestValue[i] = value;
+      found[i] = true;
+    }
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t i = 0; i < c.settings.size(); ++i)
+    if (found[i]) out.push_back({{"key", c.settings[i].first}, {"value", bestValue[i]}, {"distance", best[i]}});
+  return out;
+}
+
+}  // namespace
+
+void drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames& out) {
+  out = {};
+  constexpr auto kMostTime = std::chrono::seconds(10);
+  const auto start = std::chrono::steady_clock::now();
+  int frames = 0;
   for (const bool likeliest : {true, false})
     for (size_t i = 0; i < c.settings.size(); ++i)
       for (const std::string& value : otherValues(ex, c.settings[i].first, c.settings[i].second, likeliest)) {
-        if (++frames > kMostFrames || std::chrono::steady_clock::now() - start > kMostTime) break;
+        if (++frames > kMostSettingFrames || std::chrono::steady_clock::now() - start > kMostTime) return;
         Configuration other = c;
         if (value.empty())
           other.settings.erase(other.settings.begin() + std::ptrdiff_t(i));
@@ -139,21 +159,33 @@ nlohmann::json settingMatches(const Exercise& ex, const Configuration& c, const 
         if (!error.empty()) continue;  // a value the parameter does not take
         host->settle();
         host->renderFrame(ex.size);
-        const double d = frameDistance(image, host->readImage());
-        // Of values that draw the student's frame equally, a number the student can read beats
-        // "the lab's default".
-        const bool better = d < best[i] || (d <= best[i] && found[i] && bestValue[i].empty() && !value.empty());
-        if (better && buildErrors(*host).empty()) {
-          best[i] = d;
-          bestValue[i] = value;
-          found[i] = true;
-        }
+        if (!buildErrors(*host).empty()) continue;
+        out.tried.push_back({i, value});
+        out.frames.push_back(host->readImage());
       }
-  nlohmann::json out = nlohmann::json::array();
-  for (size_t i = 0; i < c.settings.size(); ++i)
-    if (found[i]) out.push_back({{"key", c.settings[i].first}, {"value", bestValue[i]}, {"distance", best[i]}});
+}
+
+CachedFrames keptSettingFrames(const SettingFrames& frames) {
+  CachedFrames out{{{"tried", nlohmann::json::array()}}, frames.frames};
+  for (auto& t : frames.tried) out.numbers["tried"].push_back({{"setting", t.setting}, {"value", t.value}});
   return out;
 }
+
+bool settingFramesFromKept(const CachedFrames& kept, SettingFrames& out) {
+  out = {};
+  const nlohmann::json& tried = kept.numbers.is_object() ? kept.numbers.value("tried", nlohmann::json()) : nullptr;
+  if (!tried.is_array() || tried.size() != kept.frames.size()) return false;
+  for (auto& t : tried) {
+    if (!t.is_object() || !t.value("setting", nlohmann::json()).is_number_unsigned() ||
+        !t.value("value", nlohmann::json()).is_string())
+      return false;
+    out.tried.push_back({t["setting"].get<size_t>(), t["value"].get<std::string>()});
+  }
+  out.frames = kept.frames;
+  return true;
+}
+
+namespace {
 
 // The student's side of a function probe: their table, its distance to the solution's and to
 // each mistake's, and what it says against them (grade/function_probe.h).
@@ -342,7 +374,8 @@ bool traceInDrawNext(const Exercise& ex, const std::vector<ConfigurationResult>&
 }
 
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std::vector<fs::path>& studentDirs,
-                           const CachedSolution& solution, ImageF& image, std::string& error) {
+                           const CachedSolution& solution, const SettingFramesSource& settingFrames, ImageF& image,
+                           std::string& error) {
   std::vector<fs::path> roots = studentDirs;
   roots.push_back(builtinShaderDir());
   if (c.function >= 0) return probeStudent(ex, c, roots, solution, image, error);
@@ -399,7 +432,8 @@ nlohmann::json drawStudent(const Exercise& ex, const Configuration& c, const std
       std::any_of(student["mistakes"].begin(), student["mistakes"].end(),
                   [&](const nlohmann::json& d) { return d.get<double>() <= kFramesDiffer; });
   if (!explained && student["errors"].empty() && properties.nonFinitePixels() == 0)
-    student["settings"] = settingMatches(ex, c, image, distance);
+    if (const SettingFrames* frames = settingFrames ? settingFrames() : nullptr)
+      student["settings"] = settingMatches(c, *frames, image, distance);
   if (student["errors"].empty()) student["slips"] = slipDistances(c, image, solution);
   student["properties"] = {{"nan_pixels", properties.nanPixels},
                            {"inf_pixels", properties.infPixels},

@@ -5,6 +5,7 @@
 // context between frames (grade/exercise_check.h). Both score what comes out with scoreChecks.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,14 +58,43 @@ std::string studentSlipDistances(const Exercise& ex, const Configuration& c,
                                  const std::vector<std::filesystem::path>& studentDirs, const CachedSolution& solution,
                                  nlohmann::json& out);
 
+// The solution drawn with one of the configuration's settings at another value each (the values
+// a setting is tried at when a student's frame may ignore or misuse it: the lab's default, the
+// values the rubric's other configurations give it, and for a number 0, 1, half, twice and the
+// reciprocal), likeliest first, at most kMostSettingFrames, those that build. A student's frame
+// that nothing else explains is measured against them (the "settings" of drawStudent). They depend
+// on the solution alone, so they are drawn once per configuration, never once per student: kept
+// in the cache beside the solution's entry by `shadelab grade`, in memory by the window's Check.
+struct SettingFrames {
+  struct Tried {
+    size_t setting = 0;  // its place in the configuration's settings
+    std::string value;   // "": the setting left at the lab's default
+  };
+  std::vector<Tried> tried;
+  std::vector<ImageF> frames;  // one for each of `tried`
+};
+constexpr int kMostSettingFrames = 40;
+// A budget in frames keeps the set the same on a slow machine; a time limit (10 s) is the safety
+// net that keeps it inside the watchdog's. A value the parameter does not take is left out.
+void drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames& out);
+// As the cache keeps them ({"tried": [{setting, value}]} and the frames), and back: false when the
+// kept entry does not read as a set of them.
+CachedFrames keptSettingFrames(const SettingFrames& frames);
+bool settingFramesFromKept(const CachedFrames& kept, SettingFrames& out);
+// Where drawStudent gets them when it needs them: drawn, or read back from where they were kept;
+// null when they cannot be had (then no setting is named).
+using SettingFramesSource = std::function<const SettingFrames*()>;
+
 // The student's side against the solution's: their frame in `image` and its numbers
 // {"errors": [...], "vs_solution": {rmse, covered_rmse, max_error, bad_pixel_pct, the frame's
 //  properties}, "distance", "mistakes": [distances], "properties": {NaN and Inf pixels, where, edges},
-//  "vs_truth": {the lab's metrics}}; "vs_truth" only when a check needs it and the frame built.
-// `error` receives what the rubric asked that could not be applied.
+//  "vs_truth": {the lab's metrics}, "settings": [{key, value, distance}]}; "vs_truth" only when a
+// check needs it and the frame built, "settings" only for a frame that differs and that nothing else
+// explains (`settingFrames` is asked then). `error` receives what the rubric asked that could not
+// be applied.
 nlohmann::json drawStudent(const Exercise& ex, const Configuration& c,
                            const std::vector<std::filesystem::path>& studentDirs, const CachedSolution& solution,
-                           ImageF& image, std::string& error);
+                           const SettingFramesSource& settingFrames, ImageF& image, std::string& error);
 
 // The student's function traced in the lab's draw where their frame (`image`, whose numbers
 // drawStudent gave as `student`) differs most from the solution's (grade/pixel_trace.h:

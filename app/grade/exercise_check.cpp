@@ -88,7 +88,10 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   content.addTree(builtinShaderDir());
   for (const auto& root : exerciseRoots()) content.add("\nexercises ").addTree(root);
   const std::string hash = content.hex();
-  if (hash != shadersHash_) solutions_.clear();
+  if (hash != shadersHash_) {
+    solutions_.clear();
+    settingFrames_.clear();
+  }
   shadersHash_ = hash;
   result_.id = exercise_.id;
   result_.title = exercise_.title;
@@ -132,7 +135,12 @@ void ExerciseCheck::step() {
     }
     ImageF image;
     std::string configError;
-    nlohmann::json student = drawStudent(exercise_, c, studentDirs_, kept->second, image, configError);
+    const SettingFramesSource settingFrames = [&]() -> const SettingFrames* {
+      auto [frames, fresh] = settingFrames_.try_emplace(key);
+      if (fresh) drawSettingFrames(exercise_, c, frames->second);
+      return &frames->second;
+    };
+    nlohmann::json student = drawStudent(exercise_, c, studentDirs_, kept->second, settingFrames, image, configError);
     if (!configError.empty()) return stop(configError);
     if (traceInDrawNext(exercise_, result_.configurations))
       if (const nlohmann::json trace = traceStudentFrame(exercise_, c, studentDirs_, student, image, kept->second);

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "app/grade/configuration_frames.h"
 #include "app/grade/grading.h"
 #include "app/grade/solution_cache.h"
 
@@ -84,8 +85,9 @@ class ExerciseCheck {
   int generation_ = 0;
   std::string error_;
   bool running_ = false;
-  std::string shadersHash_;                          // the built-in shaders and exercises they were drawn from
-  std::map<std::string, CachedSolution> solutions_;  // "id#configuration" -> the built-in side
+  std::string shadersHash_;                             // the built-in shaders and exercises they were drawn from
+  std::map<std::string, CachedSolution> solutions_;     // "id#configuration" -> the built-in side
+  std::map<std::string, SettingFrames> settingFrames_;  // ... -> the solution at other settings, once asked for
 };
 
 }  // namespace shadelab

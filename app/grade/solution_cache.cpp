@@ -1,5 +1,8 @@
 #include "app/grade/solution_cache.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -17,6 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view kMagic = "SHADELAB-SOLUTION 3\n";
+constexpr std::string_view kFramesMagic = "SHADELAB-FRAMES 1\n";
 constexpr int kMaxSide = 16384;
 
 template <typename T>
@@ -55,6 +59,35 @@ bool getImage(Reader& in, ImageF& image) {
   image.rgba.resize(floats);
   return in.take(image.rgba.data(), floats * sizeof(float));
 }
+
+// An entry's bytes, mapped rather than read into a string: an entry is tens of megabytes and each
+// grading child reads one, whose images are copied out of the map once.
+class MappedFile {
+ public:
+  explicit MappedFile(const fs::path& file) {
+    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return;
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && st.st_size > 0) {
+      void* at = ::mmap(nullptr, size_t(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+      if (at != MAP_FAILED) {
+        data_ = static_cast<const char*>(at);
+        size_ = size_t(st.st_size);
+      }
+    }
+    ::close(fd);
+  }
+  ~MappedFile() {
+    if (data_) ::munmap(const_cast<char*>(data_), size_);
+  }
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  std::string_view bytes() const { return {data_ ? data_ : "", size_}; }
+
+ private:
+  const char* data_ = nullptr;
+  size_t size_ = 0;
+};
 
 }  // namespace
 
@@ -133,48 +166,12 @@ void SolutionCache::prune(const fs::path& keep) const {
 
 fs::path SolutionCache::file(const std::string& key) const { return dir_ / (key + ".bin"); }
 
-bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
-  if (!enabled()) return false;
-  std::string bytes;
-  if (!readWholeFile(file(key), bytes)) return false;
-  Reader in{bytes};
-  if (bytes.compare(0, kMagic.size(), kMagic) != 0) return false;
-  in.at = kMagic.size();
-  uint32_t jsonBytes = 0, truths = 0, mistakes = 0, slips = 0;
-  if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
-  CachedSolution entry;
-  entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
-  in.at += jsonBytes;
-  if (entry.numbers.is_discarded() || !entry.numbers.is_object()) return false;
-  if (!in.get(truths) || !in.get(mistakes) || !in.get(slips) || truths > 64 || mistakes > 256 || slips > 256 ||
-      !getImage(in, entry.frame))
-    return false;
-  entry.truths.resize(truths);
-  entry.mistakes.resize(mistakes);
-  entry.slips.resize(slips);
-  for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
-    for (auto& image : *images)
-      if (!getImage(in, image)) return false;
-  if (in.at != bytes.size()) return false;
+void SolutionCache::markUsed(const std::string& key) const {
   std::error_code ec;
   fs::last_write_time(file(key), fs::file_time_type::clock::now(), ec);  // used: the last to be pruned
-  out = std::move(entry);
-  return true;
 }
 
-std::string SolutionCache::store(const std::string& key, const CachedSolution& entry) const {
-  if (!enabled()) return {};
-  std::string bytes(kMagic);
-  const std::string json = entry.numbers.dump();
-  put<uint32_t>(bytes, uint32_t(json.size()));
-  bytes += json;
-  put<uint32_t>(bytes, uint32_t(entry.truths.size()));
-  put<uint32_t>(bytes, uint32_t(entry.mistakes.size()));
-  put<uint32_t>(bytes, uint32_t(entry.slips.size()));
-  putImage(bytes, entry.frame);
-  for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
-    for (auto& image : *images) putImage(bytes, image);
-
+std::string SolutionCache::write(const std::string& key, const std::string& bytes) const {
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) return "the solution cache " + dir_.string() + ": " + ec.message();
@@ -195,6 +192,82 @@ std::string SolutionCache::store(const std::string& key, const CachedSolution& e
   }
   prune(file(key));
   return {};
+}
+
+bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
+  if (!enabled()) return false;
+  const MappedFile mapped(file(key));
+  const std::string_view bytes = mapped.bytes();
+  Reader in{bytes};
+  if (bytes.compare(0, kMagic.size(), kMagic) != 0) return false;
+  in.at = kMagic.size();
+  uint32_t jsonBytes = 0, truths = 0, mistakes = 0, slips = 0;
+  if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
+  CachedSolution entry;
+  entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
+  in.at += jsonBytes;
+  if (entry.numbers.is_discarded() || !entry.numbers.is_object()) return false;
+  if (!in.get(truths) || !in.get(mistakes) || !in.get(slips) || truths > 64 || mistakes > 256 || slips > 256 ||
+      !getImage(in, entry.frame))
+    return false;
+  entry.truths.resize(truths);
+  entry.mistakes.resize(mistakes);
+  entry.slips.resize(slips);
+  for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
+    for (auto& image : *images)
+      if (!getImage(in, image)) return false;
+  if (in.at != bytes.size()) return false;
+  markUsed(key);
+  out = std::move(entry);
+  return true;
+}
+
+std::string SolutionCache::store(const std::string& key, const CachedSolution& entry) const {
+  if (!enabled()) return {};
+  std::string bytes(kMagic);
+  const std::string json = entry.numbers.dump();
+  put<uint32_t>(bytes, uint32_t(json.size()));
+  bytes += json;
+  put<uint32_t>(bytes, uint32_t(entry.truths.size()));
+  put<uint32_t>(bytes, uint32_t(entry.mistakes.size()));
+  put<uint32_t>(bytes, uint32_t(entry.slips.size()));
+  putImage(bytes, entry.frame);
+  for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
+    for (auto& image : *images) putImage(bytes, image);
+  return write(key, bytes);
+}
+
+bool SolutionCache::load(const std::string& key, CachedFrames& out) const {
+  if (!enabled()) return false;
+  const MappedFile mapped(file(key));
+  const std::string_view bytes = mapped.bytes();
+  Reader in{bytes};
+  if (bytes.compare(0, kFramesMagic.size(), kFramesMagic) != 0) return false;
+  in.at = kFramesMagic.size();
+  uint32_t jsonBytes = 0, frames = 0;
+  if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
+  CachedFrames entry;
+  entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
+  in.at += jsonBytes;
+  if (entry.numbers.is_discarded() || !in.get(frames) || frames > 256) return false;
+  entry.frames.resize(frames);
+  for (auto& image : entry.frames)
+    if (!getImage(in, image)) return false;
+  if (in.at != bytes.size()) return false;
+  markUsed(key);
+  out = std::move(entry);
+  return true;
+}
+
+std::string SolutionCache::store(const std::string& key, const CachedFrames& entry) const {
+  if (!enabled()) return {};
+  std::string bytes(kFramesMagic);
+  const std::string json = entry.numbers.dump();
+  put<uint32_t>(bytes, uint32_t(json.size()));
+  bytes += json;
+  put<uint32_t>(bytes, uint32_t(entry.frames.size()));
+  for (auto& image : entry.frames) putImage(bytes, image);
+  return write(key, bytes);
 }
 
 fs::path defaultSolutionCacheDir() {

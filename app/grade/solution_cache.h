@@ -58,6 +58,13 @@ struct CachedSolution {
   nlohmann::json numbers;
 };
 
+// Frames kept under a key of their own, beside a solution's entry, and read only by the runs that
+// need them (the solution drawn at other settings, grade/configuration_frames.h: SettingFrames).
+struct CachedFrames {
+  nlohmann::json numbers;
+  std::vector<ImageF> frames;
+};
+
 class SolutionCache {
  public:
   SolutionCache() = default;  // off: every lookup misses, nothing is stored
@@ -71,9 +78,14 @@ class SolutionCache {
   bool load(const std::string& key, CachedSolution& out) const;
   // "" on success, else why it could not be stored (grading goes on without it).
   std::string store(const std::string& key, const CachedSolution& entry) const;
+  bool load(const std::string& key, CachedFrames& out) const;
+  std::string store(const std::string& key, const CachedFrames& entry) const;
 
  private:
   std::filesystem::path file(const std::string& key) const;
+  void markUsed(const std::string& key) const;  // the last to be pruned
+  // Written under a temporary name and renamed into place, then the folder pruned.
+  std::string write(const std::string& key, const std::string& bytes) const;
   // Removes the least recently used entries (by modification time) until the folder's entries
   // hold at most budget_ bytes, never `keep`.
   void prune(const std::filesystem::path& keep) const;

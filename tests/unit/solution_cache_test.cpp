@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "app/grade/configuration_frames.h"
 #include "app/grade/solution_cache.h"
 
 using namespace shadelab;
@@ -66,4 +67,38 @@ TEST(SolutionCache, TheBudgetComesFromTheEnvironmentOrIsFourGiB) {
     EXPECT_EQ(SolutionCache::defaultBudgetBytes(), 4096ull << 20) << bad;
   }
   unsetenv("SHADELAB_CACHE_MB");
+}
+
+// Frames kept under a key of their own (the solution at other settings) read back whole, and an
+// entry of the other kind, or a cut-short one, is a miss.
+TEST(SolutionCache, FramesKeptApartReadBackAndNeverAsASolution) {
+  const fs::path dir = fs::temp_directory_path() / "shadelab-cache-frames-test";
+  fs::remove_all(dir);
+  const SolutionCache cache(dir);
+  SettingFrames frames;
+  frames.tried = {{0, ""}, {2, "0.5"}};
+  frames.frames = {entryOf(0.25f).frame, entryOf(0.75f).frame};
+  ASSERT_EQ(cache.store("settings", keptSettingFrames(frames)), "");
+  CachedFrames kept;
+  ASSERT_TRUE(cache.load("settings", kept));
+  SettingFrames back;
+  ASSERT_TRUE(settingFramesFromKept(kept, back));
+  ASSERT_EQ(back.tried.size(), 2u);
+  EXPECT_EQ(back.tried[1].setting, 2u);
+  EXPECT_EQ(back.tried[1].value, "0.5");
+  EXPECT_EQ(back.tried[0].value, "");
+  ASSERT_EQ(back.frames.size(), 2u);
+  EXPECT_EQ(back.frames[1].rgba.back(), 0.75f);
+
+  CachedSolution notASolution;
+  EXPECT_FALSE(cache.load("settings", notASolution));
+  ASSERT_EQ(cache.store("solution", entryOf(1.0f)), "");
+  EXPECT_FALSE(cache.load("solution", kept));
+  // A set whose list and frames disagree is not taken for one.
+  kept.frames.pop_back();
+  EXPECT_FALSE(settingFramesFromKept(kept, back));
+  // Cut short: a miss, never an error.
+  fs::resize_file(dir / "settings.bin", fs::file_size(dir / "settings.bin") - 5);
+  EXPECT_FALSE(cache.load("settings", kept));
+  fs::remove_all(dir);
 }
