@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "app/cli/session.h"
+#include "app/gl/gl.h"
 #include "app/grade/configuration_frames.h"
 #include "app/lab/host_batch.h"
 #include "app/measure/report.h"
@@ -67,13 +68,30 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
     if (auto e = drawSolution(ex, c, built); !e.empty()) return failSolution(e);
     if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
   }
+  // The solution at other settings, for a frame nothing else explains: read back, or drawn once
+  // and kept for the next student who needs them (grade --prepare draws them ahead).
+  std::optional<SettingFrames> settings;
+  const SettingFramesSource settingFrames = [&]() -> const SettingFrames* {
+    if (settings) return &*settings;
+    const std::string settingsKey = ContentHash().add(key).add("\nsettings").hex();
+    settings.emplace();
+    if (CachedFrames kept; job.cache.load(settingsKey, kept) && settingFramesFromKept(kept, *settings))
+      return &*settings;
+    // Kept for the class only when whole and drawn in a context the student's draw left clean.
+    const bool whole = drawSettingFrames(ex, c, *settings);
+    if (whole && gl::drainErrors().empty())
+      if (auto e = job.cache.store(settingsKey, keptSettingFrames(*settings)); !e.empty())
+        std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
+    return &*settings;
+  };
   if (job.solutionOnly) {
-    // Filling the cache ahead of a class (grade --prepare keeps the slips too, so that no student's
-    // diagnosis has to draw them).
+    // Filling the cache ahead of a class (grade --prepare keeps the slips and the solution at other
+    // settings too, so that no student's diagnosis has to draw them).
     if (job.slips && !built.numbers.contains("slips")) {
       if (auto e = drawSlips(ex, c, built); !e.empty()) return failSolution(e);
       if (auto e = job.cache.store(key, built); !e.empty()) std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
     }
+    if (job.slips && c.function < 0) settingFrames();
     nlohmann::json numbers = built.numbers;
     numbers["from_cache"] = cached;
     writeResult(job, "solution", numbers);
@@ -105,20 +123,6 @@ int renderConfiguration(const ConfigurationJob& job, const std::function<void(co
   enter("student");
   ImageF image;
   std::string configError;
-  // The solution at other settings, for a frame nothing else explains: read back, or drawn once
-  // and kept for the next student who needs them.
-  std::optional<SettingFrames> settings;
-  const SettingFramesSource settingFrames = [&]() -> const SettingFrames* {
-    if (settings) return &*settings;
-    const std::string settingsKey = ContentHash().add(key).add("\nsettings").hex();
-    settings.emplace();
-    if (CachedFrames kept; job.cache.load(settingsKey, kept) && settingFramesFromKept(kept, *settings))
-      return &*settings;
-    drawSettingFrames(ex, c, *settings);
-    if (auto e = job.cache.store(settingsKey, keptSettingFrames(*settings)); !e.empty())
-      std::fprintf(stderr, "shadelab: grade: %s\n", e.c_str());
-    return &*settings;
-  };
   const nlohmann::json student = drawStudent(ex, c, job.studentDirs, built, settingFrames, image, configError);
   if (!configError.empty()) return failSolution(configError);
   if (c.function < 0) {  // a function's table is evidence, not a picture for the report

@@ -140,7 +140,7 @@ nlohmann::json settingMatches(const Configuration& c, const SettingFrames& frame
 
 }  // namespace
 
-void drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames& out) {
+bool drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames& out) {
   out = {};
   constexpr auto kMostTime = std::chrono::seconds(10);
   const auto start = std::chrono::steady_clock::now();
@@ -148,7 +148,8 @@ void drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames
   for (const bool likeliest : {true, false})
     for (size_t i = 0; i < c.settings.size(); ++i)
       for (const std::string& value : otherValues(ex, c.settings[i].first, c.settings[i].second, likeliest)) {
-        if (++frames > kMostSettingFrames || std::chrono::steady_clock::now() - start > kMostTime) return;
+        if (++frames > kMostSettingFrames) return true;
+        if (std::chrono::steady_clock::now() - start > kMostTime) return false;
         Configuration other = c;
         if (value.empty())
           other.settings.erase(other.settings.begin() + std::ptrdiff_t(i));
@@ -163,6 +164,7 @@ void drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames
         out.tried.push_back({i, value});
         out.frames.push_back(host->readImage());
       }
+  return true;
 }
 
 CachedFrames keptSettingFrames(const SettingFrames& frames) {

@@ -76,7 +76,9 @@ struct SettingFrames {
 constexpr int kMostSettingFrames = 40;
 // A budget in frames keeps the set the same on a slow machine; a time limit (10 s) is the safety
 // net that keeps it inside the watchdog's. A value the parameter does not take is left out.
-void drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames& out);
+// Returns false when the time limit cut the set short: such a set serves the student at hand
+// and is never kept for others.
+bool drawSettingFrames(const Exercise& ex, const Configuration& c, SettingFrames& out);
 // As the cache keeps them ({"tried": [{setting, value}]} and the frames), and back: false when the
 // kept entry does not read as a set of them.
 CachedFrames keptSettingFrames(const SettingFrames& frames);

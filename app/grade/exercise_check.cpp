@@ -88,10 +88,11 @@ std::string ExerciseCheck::start(const std::string& id, std::vector<fs::path> st
   content.addTree(builtinShaderDir());
   for (const auto& root : exerciseRoots()) content.add("\nexercises ").addTree(root);
   const std::string hash = content.hex();
-  if (hash != shadersHash_) {
-    solutions_.clear();
-    settingFrames_.clear();
-  }
+  if (hash != shadersHash_) solutions_.clear();
+  // The solution at other settings is large (tens of frames a configuration): kept for the
+  // exercise being checked only.
+  std::erase_if(settingFrames_,
+                [&](const auto& kept) { return hash != shadersHash_ || kept.first.rfind(exercise_.id + "#", 0) != 0; });
   shadersHash_ = hash;
   result_.id = exercise_.id;
   result_.title = exercise_.title;

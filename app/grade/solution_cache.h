@@ -79,6 +79,7 @@ class SolutionCache {
   // "" on success, else why it could not be stored (grading goes on without it).
   std::string store(const std::string& key, const CachedSolution& entry) const;
   bool load(const std::string& key, CachedFrames& out) const;
+  // As above; a set over 128 MiB is not kept (it would pass a grading child's file-size limit).
   std::string store(const std::string& key, const CachedFrames& entry) const;
 
  private:
