@@ -19,7 +19,11 @@ targets=$(sed -n 's/^set(SHADELAB_FUZZ_TARGETS \(.*\))$/\1/p' "$root/tests/fuzz/
 
 build_all() {
   "$root/tools/install_deps.sh" fuzz
+  # -O1 and line tables only: what AddressSanitizer's reports need (file and line), at half the
+  # build time of -O2 -g (rubric.cpp: 56 s -> 27 s).
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
     -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
     -DSHADELAB_FUZZ=ON -DSHADELAB_TESTS=OFF -DSHADELAB_BENCH=OFF -DSHADELAB_WINDOW=OFF >/dev/null
   cmake --build "$build" --target "${1:-fuzzers}"
