@@ -91,6 +91,37 @@ class MappedFile {
   size_t size_ = 0;
 };
 
+// An entry opened: its bytes (mapped, or read where a file system cannot map them), its kind's
+// magic checked and its JSON parsed; `in` stands after the JSON. Not `ok` when any of it fails.
+struct OpenedEntry {
+  OpenedEntry(const fs::path& file, std::string_view magic) : mapped(file) {
+    if (!mapped.mapped() && !readWholeFile(file, read)) return;
+    const std::string_view bytes = mapped.mapped() ? mapped.bytes() : std::string_view(read);
+    in.bytes = bytes;
+    uint32_t jsonBytes = 0;
+    if (bytes.compare(0, magic.size(), magic) != 0) return;
+    in.at = magic.size();
+    if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return;
+    numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
+    in.at += jsonBytes;
+    ok = !numbers.is_discarded();
+  }
+  bool atEnd() const { return in.at == in.bytes.size(); }
+  MappedFile mapped;
+  std::string read;
+  Reader in;
+  nlohmann::json numbers;
+  bool ok = false;
+};
+
+// An entry's first bytes: its kind's magic and its JSON.
+std::string entryHead(std::string_view magic, const nlohmann::json& numbers) {
+  std::string bytes(magic);
+  const std::string json = numbers.dump();
+  put<uint32_t>(bytes, uint32_t(json.size()));
+  return bytes += json;
+}
+
 }  // namespace
 
 ContentHash& ContentHash::add(std::string_view bytes) {
@@ -198,29 +229,21 @@ std::string SolutionCache::write(const std::string& key, const std::string& byte
 
 bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
   if (!enabled()) return false;
-  const MappedFile mapped(file(key));
-  std::string read;  // where a file system cannot map it
-  if (!mapped.mapped() && !readWholeFile(file(key), read)) return false;
-  const std::string_view bytes = mapped.mapped() ? mapped.bytes() : std::string_view(read);
-  Reader in{bytes};
-  if (bytes.compare(0, kMagic.size(), kMagic) != 0) return false;
-  in.at = kMagic.size();
-  uint32_t jsonBytes = 0, truths = 0, mistakes = 0, slips = 0;
-  if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
-  CachedSolution entry;
-  entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
-  in.at += jsonBytes;
-  if (entry.numbers.is_discarded() || !entry.numbers.is_object()) return false;
-  if (!in.get(truths) || !in.get(mistakes) || !in.get(slips) || truths > 64 || mistakes > 256 || slips > 256 ||
-      !getImage(in, entry.frame))
+  OpenedEntry e(file(key), kMagic);
+  uint32_t truths = 0, mistakes = 0, slips = 0;
+  if (!e.ok || !e.numbers.is_object() || !e.in.get(truths) || !e.in.get(mistakes) || !e.in.get(slips) || truths > 64 ||
+      mistakes > 256 || slips > 256)
     return false;
+  CachedSolution entry;
+  entry.numbers = std::move(e.numbers);
+  if (!getImage(e.in, entry.frame)) return false;
   entry.truths.resize(truths);
   entry.mistakes.resize(mistakes);
   entry.slips.resize(slips);
   for (auto* images : {&entry.truths, &entry.mistakes, &entry.slips})
     for (auto& image : *images)
-      if (!getImage(in, image)) return false;
-  if (in.at != bytes.size()) return false;
+      if (!getImage(e.in, image)) return false;
+  if (!e.atEnd()) return false;
   markUsed(key);
   out = std::move(entry);
   return true;
@@ -228,10 +251,7 @@ bool SolutionCache::load(const std::string& key, CachedSolution& out) const {
 
 std::string SolutionCache::store(const std::string& key, const CachedSolution& entry) const {
   if (!enabled()) return {};
-  std::string bytes(kMagic);
-  const std::string json = entry.numbers.dump();
-  put<uint32_t>(bytes, uint32_t(json.size()));
-  bytes += json;
+  std::string bytes = entryHead(kMagic, entry.numbers);
   put<uint32_t>(bytes, uint32_t(entry.truths.size()));
   put<uint32_t>(bytes, uint32_t(entry.mistakes.size()));
   put<uint32_t>(bytes, uint32_t(entry.slips.size()));
@@ -243,23 +263,15 @@ std::string SolutionCache::store(const std::string& key, const CachedSolution& e
 
 bool SolutionCache::load(const std::string& key, CachedFrames& out) const {
   if (!enabled()) return false;
-  const MappedFile mapped(file(key));
-  std::string read;  // where a file system cannot map it
-  if (!mapped.mapped() && !readWholeFile(file(key), read)) return false;
-  const std::string_view bytes = mapped.mapped() ? mapped.bytes() : std::string_view(read);
-  Reader in{bytes};
-  if (bytes.compare(0, kFramesMagic.size(), kFramesMagic) != 0) return false;
-  in.at = kFramesMagic.size();
-  uint32_t jsonBytes = 0, frames = 0;
-  if (!in.get(jsonBytes) || jsonBytes > bytes.size() - in.at) return false;
+  OpenedEntry e(file(key), kFramesMagic);
+  uint32_t frames = 0;
+  if (!e.ok || !e.in.get(frames) || frames > 256) return false;
   CachedFrames entry;
-  entry.numbers = nlohmann::json::parse(bytes.substr(in.at, jsonBytes), nullptr, false);
-  in.at += jsonBytes;
-  if (entry.numbers.is_discarded() || !in.get(frames) || frames > 256) return false;
+  entry.numbers = std::move(e.numbers);
   entry.frames.resize(frames);
   for (auto& image : entry.frames)
-    if (!getImage(in, image)) return false;
-  if (in.at != bytes.size()) return false;
+    if (!getImage(e.in, image)) return false;
+  if (!e.atEnd()) return false;
   markUsed(key);
   out = std::move(entry);
   return true;
@@ -267,10 +279,7 @@ bool SolutionCache::load(const std::string& key, CachedFrames& out) const {
 
 std::string SolutionCache::store(const std::string& key, const CachedFrames& entry) const {
   if (!enabled()) return {};
-  std::string bytes(kFramesMagic);
-  const std::string json = entry.numbers.dump();
-  put<uint32_t>(bytes, uint32_t(json.size()));
-  bytes += json;
+  std::string bytes = entryHead(kFramesMagic, entry.numbers);
   put<uint32_t>(bytes, uint32_t(entry.frames.size()));
   for (auto& image : entry.frames) putImage(bytes, image);
   // Frames of a large rubric size could pass the grading child's file-size limit (grade/watchdog.h):
