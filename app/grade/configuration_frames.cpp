@@ -120,7 +120,7 @@ nlohmann::json settingMatches(const Configuration& c, const SettingFrames& frame
   std::vector<double> best(c.settings.size(), kFrameFit * distance);
   std::vector<std::string> bestValue(c.settings.size());
   std::vector<bool> found(c.settings.size(), false);
-  for (size_t k = 0; k < frames.tried.size() && k < frames.frames.size(); ++k) {
+  for (size_t k = 0; k < frames.tried.size(); ++k) {
     const auto& [i, value] = frames.tried[k];
     if (i >= c.settings.size()) continue;
     const double d = frameDistance(image, frames.frames[k]);

@@ -21,7 +21,7 @@ namespace {
 
 constexpr std::string_view kMagic = "SHADELAB-SOLUTION 3\n";
 constexpr std::string_view kFramesMagic = "SHADELAB-FRAMES 1\n";
-constexpr size_t kMostFramesBytes = size_t(128) << 20;
+constexpr size_t kMostEntryBytes = size_t(128) << 20;
 constexpr int kMaxSide = 16384;
 
 template <typename T>
@@ -205,6 +205,9 @@ void SolutionCache::markUsed(const std::string& key) const {
 }
 
 std::string SolutionCache::write(const std::string& key, const std::string& bytes) const {
+  // An entry of a large rubric size could pass a grading child's file-size limit (grade/watchdog.h):
+  // it is drawn again where needed rather than kept.
+  if (bytes.size() > kMostEntryBytes) return {};
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec) return "the solution cache " + dir_.string() + ": " + ec.message();
@@ -282,9 +285,6 @@ std::string SolutionCache::store(const std::string& key, const CachedFrames& ent
   std::string bytes = entryHead(kFramesMagic, entry.numbers);
   put<uint32_t>(bytes, uint32_t(entry.frames.size()));
   for (auto& image : entry.frames) putImage(bytes, image);
-  // Frames of a large rubric size could pass the grading child's file-size limit (grade/watchdog.h):
-  // such a set is drawn again where needed rather than kept.
-  if (bytes.size() > kMostFramesBytes) return {};
   return write(key, bytes);
 }
 

@@ -76,10 +76,10 @@ class SolutionCache {
   const std::filesystem::path& dir() const { return dir_; }
 
   bool load(const std::string& key, CachedSolution& out) const;
-  // "" on success, else why it could not be stored (grading goes on without it).
+  // "" on success, else why it could not be stored (grading goes on without it). An entry over
+  // 128 MiB is not kept (it would pass a grading child's file-size limit).
   std::string store(const std::string& key, const CachedSolution& entry) const;
   bool load(const std::string& key, CachedFrames& out) const;
-  // As above; a set over 128 MiB is not kept (it would pass a grading child's file-size limit).
   std::string store(const std::string& key, const CachedFrames& entry) const;
 
  private:
